@@ -1,0 +1,164 @@
+/* SPDX-License-Identifier: MIT */
+/* impulse2d: a 2D rigid-body physics engine behind a C API.
+ *
+ * A short manual
+ * - Units are metres, kilograms, seconds and radians; y points up. Scalars are float.
+ * - The world and everything in it are named by 8-byte value ids (id.h). The null id
+ *   has bits == 0. A destroyed object's id, or an id of a destroyed world, stays
+ *   detectably stale: calls answer I2D_ERR_INVALID_HANDLE.
+ * - Creation takes a def from i2d_default_*_def(), edited by the caller. A def that did
+ *   not come from the default function is refused.
+ * - Calls that act return an i2d_status; calls that create return an id (null on
+ *   failure); getters on a bad id return a zero value. Every call records its status
+ *   and a message for this thread: i2d_last_status(), i2d_last_error_message().
+ *   A refused call leaves the world exactly as it was.
+ * - Query callbacks run on the calling thread while the world is locked: inside them,
+ *   calls that change the world (create, destroy, step, every setter but user data,
+ *   forces and impulses) answer I2D_ERR_WORLD_LOCKED; getters and queries work.
+ * - A world is used from one thread at a time; different worlds may be used from
+ *   different threads at once.
+ * - Limits: 256 worlds alive at once; 16,777,215 bodies and as many shapes per world;
+ *   shape sizes from 0.0001 to 100,000 m; positions within 1e9 m of the origin. Past
+ *   them calls answer I2D_ERR_CAPACITY or I2D_ERR_INVALID_ARGUMENT. */
+#ifndef IMPULSE2D_H
+#define IMPULSE2D_H
+
+#include "base.h"
+#include "collision.h"
+#include "id.h"
+#include "types.h"
+
+/* ---- Definitions ---------------------------------------------------------------- */
+
+I2D_API i2d_world_def i2d_default_world_def(void);
+I2D_API i2d_body_def i2d_default_body_def(void);
+I2D_API i2d_shape_def i2d_default_shape_def(void);
+/** Every category and mask bit: a query filter that sees every shape (whose own
+ *  mask_bits are not all zero). */
+I2D_API i2d_query_filter i2d_default_query_filter(void);
+/** Category 1, mask every bit, group 0. */
+I2D_API i2d_filter i2d_default_filter(void);
+
+/* ---- World ---------------------------------------------------------------------- */
+
+/** Creates a world. Null id with I2D_ERR_INVALID_ARGUMENT for a bad def, or
+ *  I2D_ERR_CAPACITY when 256 worlds are alive. */
+I2D_API i2d_world_id i2d_world_create(const i2d_world_def* def);
+/** Destroys the world and everything in it; all its ids become stale. */
+I2D_API i2d_status i2d_world_destroy(i2d_world_id world);
+I2D_API bool i2d_world_is_valid(i2d_world_id world);
+/** Advances the world by time_step seconds ([0, 1000]; 0 does nothing), split into
+ *  substep_count equal substeps (1 to 1000); each substep finds contacts, resolves
+ *  them and integrates. 1/60 s with 4 substeps is a good start. */
+I2D_API i2d_status i2d_world_step(i2d_world_id world, float time_step, int32_t substep_count);
+I2D_API i2d_status i2d_world_set_gravity(i2d_world_id world, i2d_vec2 gravity);
+I2D_API i2d_vec2 i2d_world_get_gravity(i2d_world_id world);
+I2D_API i2d_world_counters i2d_world_get_counters(i2d_world_id world);
+
+/* ---- Bodies --------------------------------------------------------------------- */
+
+/** Creates a body with no shapes. A dynamic body without shapes has a mass of 1 kg. */
+I2D_API i2d_body_id i2d_body_create(i2d_world_id world, const i2d_body_def* def);
+/** Destroys the body and its shapes. */
+I2D_API i2d_status i2d_body_destroy(i2d_body_id body);
+I2D_API bool i2d_body_is_valid(i2d_body_id body);
+I2D_API i2d_world_id i2d_body_get_world(i2d_body_id body);
+I2D_API i2d_body_type i2d_body_get_type(i2d_body_id body);
+/** The body origin in world coordinates, m. */
+I2D_API i2d_vec2 i2d_body_get_position(i2d_body_id body);
+I2D_API i2d_rot i2d_body_get_rotation(i2d_body_id body);
+I2D_API i2d_transform i2d_body_get_transform(i2d_body_id body);
+/** Teleports the body. Rotation must be identity until rotation lands. */
+I2D_API i2d_status i2d_body_set_transform(i2d_body_id body, i2d_vec2 position, i2d_rot rotation);
+/** Velocity of the centre of mass, m/s. */
+I2D_API i2d_vec2 i2d_body_get_linear_velocity(i2d_body_id body);
+/** Finite values only; ignored for static bodies (which never move) but still checked.
+ *  Speeds above the world's maximum_linear_speed are clamped at the next step. */
+I2D_API i2d_status i2d_body_set_linear_velocity(i2d_body_id body, i2d_vec2 v);
+I2D_API float i2d_body_get_angular_velocity(i2d_body_id body);
+/** Must be 0 until rotation lands. */
+I2D_API i2d_status i2d_body_set_angular_velocity(i2d_body_id body, float w);
+/** kg; 0 for static and kinematic bodies. */
+I2D_API float i2d_body_get_mass(i2d_body_id body);
+/** Centre of mass in world coordinates, m. */
+I2D_API i2d_vec2 i2d_body_get_world_center_of_mass(i2d_body_id body);
+/** Adds a force (N) at a world point (within 1e9 m of the origin) for the next step;
+ *  cleared after each step. Only dynamic bodies respond. The point produces no torque
+ *  until rotation lands. A force that would make the accumulated total overflow is
+ *  refused. */
+I2D_API i2d_status i2d_body_apply_force(i2d_body_id body, i2d_vec2 force, i2d_vec2 point, bool wake);
+/** Changes velocity at once by impulse / mass (N s) at a world point (within 1e9 m of
+ *  the origin). Only dynamic bodies respond; an impulse that would make the velocity
+ *  overflow is refused. */
+I2D_API i2d_status i2d_body_apply_linear_impulse(i2d_body_id body, i2d_vec2 impulse, i2d_vec2 point,
+                                                 bool wake);
+/** False for static bodies; other bodies are awake until sleeping lands. */
+I2D_API bool i2d_body_is_awake(i2d_body_id body);
+I2D_API void* i2d_body_get_user_data(i2d_body_id body);
+I2D_API i2d_status i2d_body_set_user_data(i2d_body_id body, void* user_data);
+I2D_API int32_t i2d_body_get_shape_count(i2d_body_id body);
+/** Fills out with up to capacity shape ids; returns how many the body has. */
+I2D_API int32_t i2d_body_get_shapes(i2d_body_id body, i2d_shape_id* out, int32_t capacity);
+
+/* ---- Shapes --------------------------------------------------------------------- */
+
+/** A circle in the body frame. Radius in [0.0001, 100000] m. */
+I2D_API i2d_shape_id i2d_shape_create_circle(i2d_body_id body, const i2d_shape_def* def,
+                                             const i2d_circle* circle);
+/** A box axis-aligned in the body's frame, centred on the body origin. On a
+ *  fixed-rotation body it is the seed's AABB. Half sizes in [0.0001, 100000] m. */
+I2D_API i2d_shape_id i2d_shape_create_box(i2d_body_id body, const i2d_shape_def* def, float half_width,
+                                          float half_height);
+/** Destroys the shape; its body's mass is updated. */
+I2D_API i2d_status i2d_shape_destroy(i2d_shape_id shape);
+I2D_API bool i2d_shape_is_valid(i2d_shape_id shape);
+I2D_API i2d_body_id i2d_shape_get_body(i2d_shape_id shape);
+I2D_API i2d_shape_type i2d_shape_get_type(i2d_shape_id shape);
+/** The circle in the body frame; zero for another kind (I2D_ERR_INVALID_ARGUMENT). */
+I2D_API i2d_circle i2d_shape_get_circle(i2d_shape_id shape);
+/** Half width and height of a box; zero for another kind (I2D_ERR_INVALID_ARGUMENT). */
+I2D_API i2d_vec2 i2d_shape_get_box_half_extents(i2d_shape_id shape);
+/** Tight world-space bounds. */
+I2D_API i2d_aabb i2d_shape_get_aabb(i2d_shape_id shape);
+I2D_API float i2d_shape_get_density(i2d_shape_id shape);
+I2D_API float i2d_shape_get_friction(i2d_shape_id shape);
+I2D_API i2d_status i2d_shape_set_friction(i2d_shape_id shape, float friction);
+I2D_API float i2d_shape_get_restitution(i2d_shape_id shape);
+I2D_API i2d_status i2d_shape_set_restitution(i2d_shape_id shape, float restitution);
+I2D_API i2d_filter i2d_shape_get_filter(i2d_shape_id shape);
+I2D_API i2d_status i2d_shape_set_filter(i2d_shape_id shape, i2d_filter filter);
+I2D_API bool i2d_shape_is_sensor(i2d_shape_id shape);
+I2D_API void* i2d_shape_get_user_data(i2d_shape_id shape);
+I2D_API i2d_status i2d_shape_set_user_data(i2d_shape_id shape, void* user_data);
+
+/* ---- Queries -------------------------------------------------------------------- */
+
+/** Return false to stop the query. Runs on the calling thread with the world locked. */
+typedef bool i2d_overlap_fn(i2d_shape_id shape, void* context);
+
+/** Calls fn for every shape whose geometry overlaps or touches aabb, in a fixed order. */
+I2D_API i2d_status i2d_world_overlap_aabb(i2d_world_id world, i2d_aabb aabb, i2d_query_filter filter,
+                                          i2d_overlap_fn* fn, void* context);
+/** Calls fn for every shape that contains the point (boundary included). */
+I2D_API i2d_status i2d_world_overlap_point(i2d_world_id world, i2d_vec2 point, i2d_query_filter filter,
+                                           i2d_overlap_fn* fn, void* context);
+/** The same as i2d_world_overlap_aabb without a callback, for FFI: fills out with up to
+ *  capacity ids and returns the total found (so a second call can size the buffer);
+ *  -1 on error. out may be NULL when capacity is 0. */
+I2D_API int32_t i2d_world_overlap_aabb_ids(i2d_world_id world, i2d_aabb aabb, i2d_query_filter filter,
+                                           i2d_shape_id* out, int32_t capacity);
+
+typedef struct i2d_ray_result {
+    i2d_shape_id shape;
+    i2d_vec2 point;   /**< where the ray enters the shape */
+    i2d_vec2 normal;  /**< unit surface normal there */
+    float fraction;   /**< point = origin + fraction * translation, in [0, 1] */
+    bool hit;
+} i2d_ray_result;
+
+/** The first shape along origin + t * translation, t in [0, 1]. A shape that contains
+ *  the origin is not hit (the ray starts inside it). Zero translation hits nothing. */
+I2D_API i2d_ray_result i2d_world_cast_ray_closest(i2d_world_id world, i2d_vec2 origin, i2d_vec2 translation,
+                                                  i2d_query_filter filter);
+
+#endif

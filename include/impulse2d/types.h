@@ -1,0 +1,124 @@
+/* SPDX-License-Identifier: MIT */
+/* Value types, definitions with defaults, filters and counters. */
+#ifndef IMPULSE2D_TYPES_H
+#define IMPULSE2D_TYPES_H
+
+#include "base.h"
+#include "id.h"
+
+typedef struct i2d_vec2 { float x, y; } i2d_vec2;
+/** A rotation as cosine and sine. Identity is (c = 1, s = 0). */
+typedef struct i2d_rot { float c, s; } i2d_rot;
+typedef struct i2d_transform { i2d_vec2 p; i2d_rot q; } i2d_transform;
+/** Axis-aligned box; min is the lower-left corner (y points up). */
+typedef struct i2d_aabb { i2d_vec2 min, max; } i2d_aabb;
+
+typedef enum i2d_body_type {
+    I2D_BODY_STATIC = 0, /**< never moves; infinite mass */
+    I2D_BODY_KINEMATIC,  /**< moves by its velocity only; infinite mass; pushes dynamic bodies */
+    I2D_BODY_DYNAMIC     /**< moved by gravity, forces and contacts */
+} i2d_body_type;
+
+typedef enum i2d_shape_type {
+    I2D_SHAPE_CIRCLE = 0,
+    I2D_SHAPE_BOX /**< axis-aligned in the body frame, centred on the body origin */
+} i2d_shape_type;
+
+/** Which shapes collide. Two shapes collide when each one's category_bits meet the
+ *  other's mask_bits, unless they share a group_index: a shared positive group always
+ *  collides, a shared negative group never does. */
+typedef struct i2d_filter {
+    uint64_t category_bits; /**< default 1 */
+    uint64_t mask_bits;     /**< default all bits */
+    int32_t group_index;    /**< default 0 (no group) */
+} i2d_filter;
+
+/** Which shapes a query sees: those whose category_bits meet mask_bits and whose
+ *  mask_bits meet category_bits. The default sees every shape. */
+typedef struct i2d_query_filter {
+    uint64_t category_bits;
+    uint64_t mask_bits;
+} i2d_query_filter;
+
+/** World settings. Obtain with i2d_default_world_def(), then edit. */
+typedef struct i2d_world_def {
+    /** m/s^2; default (0, -10). Finite. */
+    i2d_vec2 gravity;
+    /** Penetration allowed at rest before positions are corrected, m; default 0.005.
+     *  Range [0, 1]. Stops resting contacts from jittering. */
+    float contact_slop;
+    /** Share of the penetration beyond the slop removed per substep; default 0.8.
+     *  Range [1e-6, 1]: low values let stacks sink, values near 1 may jitter. */
+    float contact_correction_percent;
+    /** Impacts slower than this (m/s) do not bounce; default 1. Range [0, 1e5]. */
+    float restitution_threshold;
+    /** Speed limit for every body, m/s; default 400. Range [1e-6, 1e5]. Guards the
+     *  world against runaway values from huge forces or impulses. */
+    float maximum_linear_speed;
+    /** Sequential-impulse iterations per substep; default 10. Range [1, 1000]. More
+     *  iterations let tall stacks sink less. */
+    int32_t velocity_iterations;
+    /** Lets resting bodies sleep. Default true. Sleeping arrives with the solver issue;
+     *  until then every non-static body stays awake whatever this says. */
+    bool enable_sleep;
+    /** Set by i2d_default_world_def(); do not set. */
+    uint32_t internal_cookie;
+} i2d_world_def;
+
+/** Body settings. Obtain with i2d_default_body_def(), then edit. */
+typedef struct i2d_body_def {
+    i2d_body_type type;        /**< default I2D_BODY_STATIC */
+    /** Body origin in world, m; default (0, 0). Within 1e9 m of the origin. */
+    i2d_vec2 position;
+    /** Default identity. Bodies do not rotate yet: anything but identity (within 1e-6)
+     *  is refused with I2D_ERR_INVALID_ARGUMENT until rotation lands. */
+    i2d_rot rotation;
+    i2d_vec2 linear_velocity;  /**< m/s; default (0, 0). Finite. */
+    /** rad/s; default 0. Must be 0 until rotation lands. */
+    float angular_velocity;
+    /** 1/s; default 0. Range [0, inf). Each substep h scales velocity by 1/(1 + h c). */
+    float linear_damping;
+    float angular_damping;     /**< 1/s; default 0. Range [0, inf). */
+    float gravity_scale;       /**< default 1. Finite; may be negative. */
+    /** Default false. Every body behaves as fixed-rotation until rotation lands. */
+    bool fixed_rotation;
+    /** Default true. See i2d_world_def.enable_sleep. */
+    bool enable_sleep;
+    /** Default false. Continuous collision for fast bodies; arrives with the solver
+     *  issue and has no effect until then. */
+    bool is_bullet;
+    void* user_data;           /**< default NULL; returned by i2d_body_get_user_data */
+    /** Set by i2d_default_body_def(); do not set. */
+    uint32_t internal_cookie;
+} i2d_body_def;
+
+/** Shape settings. Obtain with i2d_default_shape_def(), then edit. */
+typedef struct i2d_shape_def {
+    /** kg/m^2; default 1. Range [0, 1e10]. Body mass is the sum of density x area. */
+    float density;
+    /** Coulomb friction coefficient; default 0.6. Range [0, inf). Mixed as the
+     *  geometric mean of the two shapes'. */
+    float friction;
+    /** Bounciness; default 0. Range [0, 100] (1 = elastic, above 1 adds energy). A
+     *  contact uses the minimum of the two shapes'. */
+    float restitution;
+    /** Default false. A sensor detects overlaps but never pushes; sensor events arrive
+     *  with the broadphase issue. */
+    bool is_sensor;
+    /** Default true. Contact events arrive with the broadphase issue. */
+    bool enable_contact_events;
+    i2d_filter filter; /**< default: category 1, collides with everything, group 0 */
+    void* user_data;   /**< default NULL */
+    /** Set by i2d_default_shape_def(); do not set. */
+    uint32_t internal_cookie;
+} i2d_shape_def;
+
+/** Sizes of a world, for tools and benchmarks. */
+typedef struct i2d_world_counters {
+    int32_t body_count;
+    int32_t shape_count;
+    int32_t contact_count;  /**< touching shape pairs after the last step */
+    int32_t pair_count;     /**< candidate pairs the broadphase found in the last step */
+} i2d_world_counters;
+
+#endif
