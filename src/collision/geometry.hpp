@@ -1,0 +1,28 @@
+// SPDX-License-Identifier: MIT
+// Per-shape geometry: mass, bounds, point and box overlap, ray casts.
+#pragma once
+
+#include "collision/shapes.hpp"
+
+namespace i2d {
+
+MassData compute_mass(const Geometry& g, float density);
+float area(const Geometry& g);
+AABB compute_aabb(const Geometry& g, const Transform& xf);
+
+/// Exact tests, boundary included.
+bool contains_point(const Geometry& g, const Transform& xf, Vec2 p);
+bool overlaps_aabb(const Geometry& g, const Transform& xf, const AABB& box);
+
+struct RayHit {
+    Vec2 point;
+    Vec2 normal;
+    float fraction = 0.0f;
+    bool hit = false;
+};
+
+/// First entry of origin + t * translation, t in [0, max_fraction]. A shape that
+/// strictly contains the origin is not hit.
+RayHit ray_cast(const Geometry& g, const Transform& xf, Vec2 origin, Vec2 translation, float max_fraction);
+
+}  // namespace i2d

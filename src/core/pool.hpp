@@ -1,0 +1,86 @@
+// SPDX-License-Identifier: MIT
+// Pool: objects in one contiguous array, reused through a free list, with a generation
+// per slot so that stale handles are detected.
+//
+// Design note: handles carry (index, generation). Freeing a slot bumps its generation,
+// so every handle to the old object stops matching. A slot whose generation would wrap
+// is retired for good rather than reused (reuse after a wrap would let a very old handle
+// match again). The alternative, a plain vector with erase, would move objects and
+// invalidate indices held by other objects.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+namespace i2d {
+
+constexpr int32_t null_index = -1;
+
+template <class T>
+class Pool {
+public:
+    /// Largest number of slots; keeps index + 1 within the 24 bits a handle has for it.
+    static constexpr int32_t max_slots = (1 << 24) - 1;
+    static constexpr uint16_t last_generation = 0xFFFF;
+
+    /// Returns the new slot or null_index when the pool is full. May throw bad_alloc.
+    int32_t allocate() {
+        if (!free_.empty()) {
+            int32_t index = free_.back();
+            free_.pop_back();
+            alive_[index] = 1;
+            items_[index] = T{};
+            ++count_;
+            return index;
+        }
+        if (static_cast<int32_t>(items_.size()) >= max_slots) {
+            return null_index;
+        }
+        // Grow all arrays before changing any so a bad_alloc leaves the pool as it was.
+        // The free list gets room for every slot now so that free() never allocates.
+        items_.reserve(items_.size() + 1);
+        generations_.reserve(items_.size() + 1);
+        alive_.reserve(items_.size() + 1);
+        free_.reserve(items_.size() + 1);
+        items_.emplace_back();
+        generations_.push_back(1);
+        alive_.push_back(1);
+        ++count_;
+        return static_cast<int32_t>(items_.size()) - 1;
+    }
+
+    /// Frees a live slot; its generation moves on so that old handles go stale.
+    void free(int32_t index) {
+        alive_[index] = 0;
+        --count_;
+        if (generations_[index] == last_generation) {
+            return;  // retired: never handed out again
+        }
+        ++generations_[index];
+        free_.push_back(index);
+    }
+
+    bool is_live(int32_t index) const {
+        return index >= 0 && index < static_cast<int32_t>(items_.size()) && alive_[index] != 0;
+    }
+    bool is_live(int32_t index, uint16_t generation) const {
+        return is_live(index) && generations_[index] == generation;
+    }
+    uint16_t generation(int32_t index) const { return generations_[index]; }
+
+    T& operator[](int32_t index) { return items_[index]; }
+    const T& operator[](int32_t index) const { return items_[index]; }
+
+    /// Slots ever used (live or not): iterate 0..capacity() and skip dead ones.
+    int32_t capacity() const { return static_cast<int32_t>(items_.size()); }
+    int32_t count() const { return count_; }
+
+private:
+    std::vector<T> items_;
+    std::vector<uint16_t> generations_;
+    std::vector<uint8_t> alive_;
+    std::vector<int32_t> free_;
+    int32_t count_ = 0;
+};
+
+}  // namespace i2d

@@ -1,0 +1,53 @@
+// SPDX-License-Identifier: MIT
+// Body: a rigid body's state and settings, kept in the world's body pool.
+//
+// Design note: one struct for now; the solver issue splits the hot velocity state into a
+// dense awake-only array (Box2D's BodyState) once sleeping and islands exist. Angular
+// state is carried already so that rotation fills it in without a layout change.
+#pragma once
+
+#include <cstdint>
+
+#include "core/pool.hpp"
+#include "math/vec2.hpp"
+
+namespace i2d {
+
+enum class BodyType : uint8_t { static_body, kinematic, dynamic, count };
+
+struct BodyDef {
+    BodyType type = BodyType::static_body;
+    Vec2 position;
+    Rot rotation;
+    Vec2 linear_velocity;
+    float angular_velocity = 0.0f;
+    float linear_damping = 0.0f;
+    float angular_damping = 0.0f;
+    float gravity_scale = 1.0f;
+    bool fixed_rotation = false;
+    bool enable_sleep = true;
+    bool is_bullet = false;
+    void* user_data = nullptr;
+};
+
+struct Body {
+    BodyType type = BodyType::static_body;
+    Transform transform;  // body origin and rotation
+    Vec2 local_center;    // centre of mass in the body frame
+    Vec2 center;          // centre of mass in the world
+    Vec2 linear_velocity; // of the centre of mass
+    float angular_velocity = 0.0f;
+    Vec2 force;           // accumulated until the end of the next step
+    float torque = 0.0f;
+    float mass = 0.0f, inv_mass = 0.0f;
+    float linear_damping = 0.0f, angular_damping = 0.0f;
+    float gravity_scale = 1.0f;
+    bool fixed_rotation = false;
+    bool enable_sleep = true;
+    bool is_bullet = false;
+    void* user_data = nullptr;
+    int32_t head_shape = null_index;  // list of the body's shapes, linked through Shape
+    int32_t shape_count = 0;
+};
+
+}  // namespace i2d

@@ -1,0 +1,40 @@
+// SPDX-License-Identifier: MIT
+// Tuning numbers and limits, each with its unit and what changing it risks.
+#pragma once
+
+#include <cstdint>
+
+namespace i2d {
+
+/// Largest radius or half extent of a shape, m. Larger sizes make float precision
+/// useless at the contact and let mass overflow.
+constexpr float max_shape_extent = 100000.0f;
+
+/// Smallest radius or half extent, m. Far below the contact slop (0.005 m) already;
+/// smaller shapes have masses whose inverse overflows.
+constexpr float min_shape_extent = 1.0e-4f;
+
+/// Largest |coordinate| accepted for positions and points, m. Float has about 60 m of
+/// resolution out there: beyond it geometry is meaningless.
+constexpr float max_coordinate = 1.0e9f;
+
+/// Rotations within this of identity count as identity while bodies do not rotate.
+constexpr float identity_rotation_tolerance = 1.0e-6f;
+
+/// Largest shape density, kg/m^2: keeps mass x offset finite for the largest shapes.
+constexpr float max_density = 1.0e10f;
+
+/// Largest restitution and speed limit a world accepts: restitution x speed must stay
+/// a finite impulse target.
+constexpr float max_restitution = 100.0f;
+constexpr float max_speed_limit = 1.0e5f;
+
+/// Longest step, s. Longer steps only lose accuracy, and speed x step must stay far
+/// from float overflow.
+constexpr float max_time_step = 1000.0f;
+
+/// Largest number of substeps or velocity iterations a caller may ask for.
+constexpr int32_t max_substeps = 1000;
+constexpr int32_t max_velocity_iterations = 1000;
+
+}  // namespace i2d

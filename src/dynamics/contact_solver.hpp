@@ -1,0 +1,71 @@
+// SPDX-License-Identifier: MIT
+// ContactSolver: the seed's impulse resolution as sequential impulses, plus friction and
+// the seed's positional correction.
+//
+// Every normal impulse is the seed's j = -(vn - vn_target) / (invMassA + invMassB), where
+// vn_target = -e * vn_before for impacts faster than the restitution threshold (else 0),
+// so that the first pass over an isolated contact is exactly j = -(1 + e) vn / (...).
+// Iterating over all contacts lets impulses travel through stacks; clamping the
+// accumulated normal impulse at zero keeps contacts from pulling.
+//
+// Warm starting: a contact that persists from the previous substep starts from the
+// impulses it accumulated there (matched by shape pair and feature id) instead of zero.
+// Without it, ten iterations leave a 20-box column sinking 1.8 m in 500 steps, because
+// Gauss-Seidel needs far more passes than that to carry the weight down a long chain.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "collision/shapes.hpp"
+#include "core/pool.hpp"
+#include "dynamics/body.hpp"
+
+namespace i2d {
+
+struct ContactPointConstraint {
+    uint32_t id = 0;  // feature key: matches the point to the same one a substep earlier
+    float penetration = 0.0f;
+    float normal_impulse = 0.0f;   // accumulated over the iterations
+    float tangent_impulse = 0.0f;
+    float target_normal_speed = 0.0f;  // restitution target, m/s
+};
+
+struct ContactConstraint {
+    // Shape index and generation of each side: identify the pair across substeps.
+    uint64_t key_a = 0, key_b = 0;
+    int32_t body_a = 0, body_b = 0;
+    float inv_mass_a = 0.0f, inv_mass_b = 0.0f;
+    float inv_mass_sum = 0.0f;
+    Vec2 normal;
+    float friction = 0.0f, restitution = 0.0f;
+    int32_t point_count = 0;
+    ContactPointConstraint points[2];
+};
+
+struct SolverSettings {
+    float restitution_threshold;
+    float contact_slop;
+    float correction_percent;
+    int32_t velocity_iterations;
+};
+
+/// Orders contacts by shape pair, the order carry_impulses relies on.
+void sort_contacts(std::vector<ContactConstraint>& contacts);
+/// Copies accumulated impulses from the previous substep's contacts (both sorted) onto
+/// the points of the same pair and feature.
+void carry_impulses(std::vector<ContactConstraint>& contacts, const std::vector<ContactConstraint>& previous);
+
+/// Fills masses and restitution targets from the bodies' velocities before solving.
+void prepare_contacts(std::vector<ContactConstraint>& contacts, Pool<Body>& bodies,
+                      const SolverSettings& settings);
+/// Applies the carried impulses so that the iterations start near the last answer.
+void warm_start_contacts(const std::vector<ContactConstraint>& contacts, Pool<Body>& bodies);
+void solve_contact_velocities(std::vector<ContactConstraint>& contacts, Pool<Body>& bodies,
+                              const SolverSettings& settings);
+/// The seed's linear projection: pushes pairs apart by a share of the penetration
+/// beyond the slop, split by inverse mass.
+void correct_contact_positions(const std::vector<ContactConstraint>& contacts, Pool<Body>& bodies,
+                               const SolverSettings& settings);
+
+}  // namespace i2d

@@ -1,0 +1,58 @@
+// SPDX-License-Identifier: MIT
+// Shape: geometry attached to a body, with material, filter and cached world bounds.
+#pragma once
+
+#include <cstdint>
+
+#include "collision/shapes.hpp"
+#include "core/pool.hpp"
+
+namespace i2d {
+
+struct Filter {
+    uint64_t category_bits = 1;
+    uint64_t mask_bits = ~uint64_t(0);
+    int32_t group_index = 0;
+};
+
+struct QueryFilter {
+    uint64_t category_bits = ~uint64_t(0);
+    uint64_t mask_bits = ~uint64_t(0);
+};
+
+struct ShapeDef {
+    float density = 1.0f;
+    float friction = 0.6f;
+    float restitution = 0.0f;
+    bool is_sensor = false;
+    bool enable_contact_events = true;
+    Filter filter;
+    void* user_data = nullptr;
+};
+
+struct Shape {
+    int32_t body = null_index;
+    int32_t prev_in_body = null_index, next_in_body = null_index;
+    Geometry geometry;
+    float density = 0.0f, friction = 0.0f, restitution = 0.0f;
+    Filter filter;
+    bool is_sensor = false;
+    bool enable_contact_events = true;
+    void* user_data = nullptr;
+    AABB aabb;  // tight world bounds, current after every step and every move
+};
+
+/// A shared positive group always collides, a shared negative group never does;
+/// otherwise each shape's category must meet the other's mask.
+inline bool should_collide(const Filter& a, const Filter& b) {
+    if (a.group_index == b.group_index && a.group_index != 0) {
+        return a.group_index > 0;
+    }
+    return (a.category_bits & b.mask_bits) != 0 && (b.category_bits & a.mask_bits) != 0;
+}
+
+inline bool should_query(const Filter& shape, const QueryFilter& query) {
+    return (shape.category_bits & query.mask_bits) != 0 && (shape.mask_bits & query.category_bits) != 0;
+}
+
+}  // namespace i2d

@@ -1,0 +1,19 @@
+// SPDX-License-Identifier: MIT
+// Scalar helpers and the finiteness checks that guard every value entering the core.
+#pragma once
+
+#include <cmath>
+
+#include "math/vec2.hpp"
+
+namespace i2d {
+
+constexpr float pi = 3.14159265358979323846f;
+
+inline bool is_finite(float a) { return std::isfinite(a); }
+inline bool is_finite(Vec2 a) { return std::isfinite(a.x) && std::isfinite(a.y); }
+inline bool is_finite(Rot q) { return std::isfinite(q.c) && std::isfinite(q.s); }
+
+inline float clamp(float a, float lo, float hi) { return a < lo ? lo : (a > hi ? hi : a); }
+
+}  // namespace i2d

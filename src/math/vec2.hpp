@@ -1,0 +1,64 @@
+// SPDX-License-Identifier: MIT
+// Vec2, Rot, Transform and AABB: the engine's own small value types and their operators.
+#pragma once
+
+#include <cmath>
+
+namespace i2d {
+
+struct Vec2 {
+    float x = 0.0f, y = 0.0f;
+};
+
+inline Vec2 operator+(Vec2 a, Vec2 b) { return {a.x + b.x, a.y + b.y}; }
+inline Vec2 operator-(Vec2 a, Vec2 b) { return {a.x - b.x, a.y - b.y}; }
+inline Vec2 operator-(Vec2 a) { return {-a.x, -a.y}; }
+inline Vec2 operator*(float s, Vec2 a) { return {s * a.x, s * a.y}; }
+inline Vec2 operator*(Vec2 a, float s) { return {s * a.x, s * a.y}; }
+inline Vec2& operator+=(Vec2& a, Vec2 b) { a.x += b.x; a.y += b.y; return a; }
+inline Vec2& operator-=(Vec2& a, Vec2 b) { a.x -= b.x; a.y -= b.y; return a; }
+inline bool operator==(Vec2 a, Vec2 b) { return a.x == b.x && a.y == b.y; }
+
+inline float dot(Vec2 a, Vec2 b) { return a.x * b.x + a.y * b.y; }
+inline float cross(Vec2 a, Vec2 b) { return a.x * b.y - a.y * b.x; }
+/// The vector turned a quarter turn counter-clockwise.
+inline Vec2 left_perp(Vec2 a) { return {-a.y, a.x}; }
+inline float length_squared(Vec2 a) { return dot(a, a); }
+inline float length(Vec2 a) { return std::sqrt(dot(a, a)); }
+inline float distance_squared(Vec2 a, Vec2 b) { return length_squared(b - a); }
+inline Vec2 min(Vec2 a, Vec2 b) { return {a.x < b.x ? a.x : b.x, a.y < b.y ? a.y : b.y}; }
+inline Vec2 max(Vec2 a, Vec2 b) { return {a.x > b.x ? a.x : b.x, a.y > b.y ? a.y : b.y}; }
+inline Vec2 lerp(Vec2 a, Vec2 b, float t) { return {a.x + t * (b.x - a.x), a.y + t * (b.y - a.y)}; }
+
+/// Rotation as cosine and sine; kept normalised.
+struct Rot {
+    float c = 1.0f, s = 0.0f;
+};
+
+inline Vec2 rotate(Rot q, Vec2 v) { return {q.c * v.x - q.s * v.y, q.s * v.x + q.c * v.y}; }
+inline Vec2 inv_rotate(Rot q, Vec2 v) { return {q.c * v.x + q.s * v.y, -q.s * v.x + q.c * v.y}; }
+
+struct Transform {
+    Vec2 p;
+    Rot q;
+};
+
+inline Vec2 transform_point(const Transform& xf, Vec2 v) { return rotate(xf.q, v) + xf.p; }
+
+/// Axis-aligned box; lower is the lower-left corner (y up).
+struct AABB {
+    Vec2 lower, upper;
+};
+
+inline bool overlaps(const AABB& a, const AABB& b) {
+    // Closed intervals: touching boxes overlap, as touching shapes are in contact.
+    return !(a.upper.x < b.lower.x || b.upper.x < a.lower.x || a.upper.y < b.lower.y || b.upper.y < a.lower.y);
+}
+inline bool contains_point(const AABB& a, Vec2 p) {
+    return p.x >= a.lower.x && p.x <= a.upper.x && p.y >= a.lower.y && p.y <= a.upper.y;
+}
+inline Vec2 center(const AABB& a) { return 0.5f * (a.lower + a.upper); }
+inline Vec2 extents(const AABB& a) { return 0.5f * (a.upper - a.lower); }
+inline Vec2 clamp_to(const AABB& a, Vec2 p) { return max(a.lower, min(a.upper, p)); }
+
+}  // namespace i2d
