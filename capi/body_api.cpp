@@ -1,0 +1,310 @@
+// SPDX-License-Identifier: MIT
+// i2d_body_*: create, destroy, transform, velocity, mass, forces, user data, shapes.
+#include <cfloat>
+#include <cmath>
+#include <cstring>
+#include <type_traits>
+
+#include "boundary.hpp"
+#include "convert.hpp"
+#include "dynamics/constants.hpp"
+#include "math/math.hpp"
+
+using namespace i2d;
+using namespace i2d::capi;
+
+namespace {
+
+// Bodies do not rotate until the rotation issue lands: refuse, rather than silently
+// drop, a rotation the caller asked for.
+bool identity_rotation(Call& call, i2d_rot q, const char* what) {
+    if (!call.finite(q.c, what) || !call.finite(q.s, what)) {
+        return false;
+    }
+    if (std::fabs(q.c - 1.0f) > identity_rotation_tolerance || std::fabs(q.s) > identity_rotation_tolerance) {
+        return call.fail(I2D_ERR_INVALID_ARGUMENT,
+                         "%s (c=%g, s=%g) is not identity: bodies do not rotate yet in this version",
+                         what, static_cast<double>(q.c), static_cast<double>(q.s));
+    }
+    return true;
+}
+
+bool validate_body_def(Call& call, const i2d_body_def* def) {
+    if (!call.not_null(def, "body def") || !call.cookie(def->internal_cookie, "body_def")) {
+        return false;
+    }
+    // A C caller can store any integer in the enum; in C++ merely loading an
+    // out-of-range enum value is undefined, so read the raw bytes.
+    std::underlying_type_t<i2d_body_type> type = 0;
+    std::memcpy(&type, &def->type, sizeof type);
+    if (type != I2D_BODY_STATIC && type != I2D_BODY_KINEMATIC && type != I2D_BODY_DYNAMIC) {
+        return call.fail(I2D_ERR_INVALID_ARGUMENT, "body def: type %lld is not an i2d_body_type",
+                         static_cast<long long>(type));
+    }
+    if (!call.coordinate(def->position, "body def: position") ||
+        !identity_rotation(call, def->rotation, "body def: rotation") ||
+        !call.finite(def->linear_velocity, "body def: linear_velocity") ||
+        !call.finite(def->angular_velocity, "body def: angular_velocity")) {
+        return false;
+    }
+    if (def->angular_velocity != 0.0f) {
+        return call.fail(I2D_ERR_INVALID_ARGUMENT,
+                         "body def: angular_velocity is %g: bodies do not rotate yet in this version",
+                         static_cast<double>(def->angular_velocity));
+    }
+    return call.in_range(def->linear_damping, 0.0f, FLT_MAX, "body def: linear_damping") &&
+           call.in_range(def->angular_damping, 0.0f, FLT_MAX, "body def: angular_damping") &&
+           call.finite(def->gravity_scale, "body def: gravity_scale");
+}
+
+BodyDef to_core(const i2d_body_def& def) {
+    BodyDef core;
+    core.type = static_cast<BodyType>(def.type);
+    core.position = capi::to_core(def.position);
+    core.rotation = Rot{};  // checked to be identity
+    core.linear_velocity = capi::to_core(def.linear_velocity);
+    core.angular_velocity = 0.0f;
+    core.linear_damping = def.linear_damping;
+    core.angular_damping = def.angular_damping;
+    core.gravity_scale = def.gravity_scale;
+    core.fixed_rotation = def.fixed_rotation;
+    core.enable_sleep = def.enable_sleep;
+    core.is_bullet = def.is_bullet;
+    core.user_data = def.user_data;
+    return core;
+}
+
+// The common prologue of calls that change a body: a live id and an unlocked world.
+bool mutable_body(Call& call, i2d_body_id id, BodyRef& b) { return call.body(id, b) && call.unlocked(*b.world); }
+
+}  // namespace
+
+I2D_API i2d_body_id i2d_body_create(i2d_world_id world_id, const i2d_body_def* def) {
+    return guarded("i2d_body_create", I2D_NULL_BODY_ID, [&](Call& call) -> i2d_body_id {
+        WorldRef w;
+        if (!call.world(world_id, w) || !call.unlocked(*w.world) || !validate_body_def(call, def)) {
+            return I2D_NULL_BODY_ID;
+        }
+        const int32_t index = w.world->create_body(to_core(*def));
+        if (index == null_index) {
+            call.fail(I2D_ERR_CAPACITY, "the world holds %d bodies, the most it can", Pool<Body>::max_slots);
+            return I2D_NULL_BODY_ID;
+        }
+        return make_body_id(w.id, index, w.world->bodies.generation(index));
+    });
+}
+
+I2D_API i2d_status i2d_body_destroy(i2d_body_id id) {
+    return guarded("i2d_body_destroy", I2D_ERR_OUT_OF_MEMORY, [&](Call& call) {
+        BodyRef b;
+        if (!mutable_body(call, id, b)) {
+            return last_status();
+        }
+        b.world->destroy_body(b.index);
+        return I2D_OK;
+    });
+}
+
+I2D_API bool i2d_body_is_valid(i2d_body_id id) {
+    return guarded("i2d_body_is_valid", false, [&](Call& call) {
+        BodyRef b;
+        return call.body(id, b);
+    });
+}
+
+I2D_API i2d_world_id i2d_body_get_world(i2d_body_id id) {
+    return guarded("i2d_body_get_world", I2D_NULL_WORLD_ID, [&](Call& call) {
+        BodyRef b;
+        return call.body(id, b) ? make_world_id(b.id) : I2D_NULL_WORLD_ID;
+    });
+}
+
+I2D_API i2d_body_type i2d_body_get_type(i2d_body_id id) {
+    return guarded("i2d_body_get_type", I2D_BODY_STATIC, [&](Call& call) {
+        BodyRef b;
+        return call.body(id, b) ? static_cast<i2d_body_type>(b.body().type) : I2D_BODY_STATIC;
+    });
+}
+
+I2D_API i2d_vec2 i2d_body_get_position(i2d_body_id id) {
+    return guarded("i2d_body_get_position", i2d_vec2{0, 0}, [&](Call& call) {
+        BodyRef b;
+        return call.body(id, b) ? to_public(b.body().transform.p) : i2d_vec2{0, 0};
+    });
+}
+
+I2D_API i2d_rot i2d_body_get_rotation(i2d_body_id id) {
+    return guarded("i2d_body_get_rotation", i2d_rot{0, 0}, [&](Call& call) {
+        BodyRef b;
+        return call.body(id, b) ? to_public(b.body().transform.q) : i2d_rot{0, 0};
+    });
+}
+
+I2D_API i2d_transform i2d_body_get_transform(i2d_body_id id) {
+    return guarded("i2d_body_get_transform", i2d_transform{}, [&](Call& call) {
+        BodyRef b;
+        return call.body(id, b) ? to_public(b.body().transform) : i2d_transform{};
+    });
+}
+
+I2D_API i2d_status i2d_body_set_transform(i2d_body_id id, i2d_vec2 position, i2d_rot rotation) {
+    return guarded("i2d_body_set_transform", I2D_ERR_OUT_OF_MEMORY, [&](Call& call) {
+        BodyRef b;
+        if (!mutable_body(call, id, b) || !call.coordinate(position, "position") ||
+            !identity_rotation(call, rotation, "rotation")) {
+            return last_status();
+        }
+        b.world->set_transform(b.index, Transform{capi::to_core(position), Rot{}});
+        return I2D_OK;
+    });
+}
+
+I2D_API i2d_vec2 i2d_body_get_linear_velocity(i2d_body_id id) {
+    return guarded("i2d_body_get_linear_velocity", i2d_vec2{0, 0}, [&](Call& call) {
+        BodyRef b;
+        return call.body(id, b) ? to_public(b.body().linear_velocity) : i2d_vec2{0, 0};
+    });
+}
+
+I2D_API i2d_status i2d_body_set_linear_velocity(i2d_body_id id, i2d_vec2 v) {
+    return guarded("i2d_body_set_linear_velocity", I2D_ERR_OUT_OF_MEMORY, [&](Call& call) {
+        BodyRef b;
+        if (!mutable_body(call, id, b) || !call.finite(v, "velocity")) {
+            return last_status();
+        }
+        if (b.body().type != BodyType::static_body) {
+            b.body().linear_velocity = capi::to_core(v);
+        }
+        return I2D_OK;
+    });
+}
+
+I2D_API float i2d_body_get_angular_velocity(i2d_body_id id) {
+    return guarded("i2d_body_get_angular_velocity", 0.0f, [&](Call& call) {
+        BodyRef b;
+        return call.body(id, b) ? b.body().angular_velocity : 0.0f;
+    });
+}
+
+I2D_API i2d_status i2d_body_set_angular_velocity(i2d_body_id id, float w) {
+    return guarded("i2d_body_set_angular_velocity", I2D_ERR_OUT_OF_MEMORY, [&](Call& call) {
+        BodyRef b;
+        if (!mutable_body(call, id, b) || !call.finite(w, "angular velocity")) {
+            return last_status();
+        }
+        if (w != 0.0f) {
+            call.fail(I2D_ERR_INVALID_ARGUMENT, "angular velocity is %g: bodies do not rotate yet in this version",
+                      static_cast<double>(w));
+            return last_status();
+        }
+        return I2D_OK;
+    });
+}
+
+I2D_API float i2d_body_get_mass(i2d_body_id id) {
+    return guarded("i2d_body_get_mass", 0.0f, [&](Call& call) {
+        BodyRef b;
+        return call.body(id, b) ? b.body().mass : 0.0f;
+    });
+}
+
+I2D_API i2d_vec2 i2d_body_get_world_center_of_mass(i2d_body_id id) {
+    return guarded("i2d_body_get_world_center_of_mass", i2d_vec2{0, 0}, [&](Call& call) {
+        BodyRef b;
+        return call.body(id, b) ? to_public(b.body().center) : i2d_vec2{0, 0};
+    });
+}
+
+I2D_API i2d_status i2d_body_apply_force(i2d_body_id id, i2d_vec2 force, i2d_vec2 point, bool wake) {
+    (void)wake;  // every body is awake until sleeping lands
+    return guarded("i2d_body_apply_force", I2D_ERR_OUT_OF_MEMORY, [&](Call& call) {
+        BodyRef b;
+        if (!mutable_body(call, id, b) || !call.finite(force, "force") || !call.coordinate(point, "point")) {
+            return last_status();
+        }
+        Body& body = b.body();
+        if (body.type != BodyType::dynamic) {
+            return I2D_OK;
+        }
+        const Vec2 total = body.force + capi::to_core(force);
+        if (!is_finite(total)) {
+            call.fail(I2D_ERR_INVALID_ARGUMENT, "the body's accumulated force would overflow");
+            return last_status();
+        }
+        body.force = total;
+        return I2D_OK;
+    });
+}
+
+I2D_API i2d_status i2d_body_apply_linear_impulse(i2d_body_id id, i2d_vec2 impulse, i2d_vec2 point, bool wake) {
+    (void)wake;
+    return guarded("i2d_body_apply_linear_impulse", I2D_ERR_OUT_OF_MEMORY, [&](Call& call) {
+        BodyRef b;
+        if (!mutable_body(call, id, b) || !call.finite(impulse, "impulse") || !call.coordinate(point, "point")) {
+            return last_status();
+        }
+        Body& body = b.body();
+        if (body.type != BodyType::dynamic) {
+            return I2D_OK;
+        }
+        const Vec2 v = body.linear_velocity + body.inv_mass * capi::to_core(impulse);
+        if (!is_finite(v)) {
+            call.fail(I2D_ERR_INVALID_ARGUMENT, "the impulse would make the body's velocity overflow");
+            return last_status();
+        }
+        body.linear_velocity = v;
+        return I2D_OK;
+    });
+}
+
+I2D_API bool i2d_body_is_awake(i2d_body_id id) {
+    return guarded("i2d_body_is_awake", false, [&](Call& call) {
+        BodyRef b;
+        return call.body(id, b) && b.body().type != BodyType::static_body;
+    });
+}
+
+I2D_API void* i2d_body_get_user_data(i2d_body_id id) {
+    return guarded("i2d_body_get_user_data", static_cast<void*>(nullptr), [&](Call& call) {
+        BodyRef b;
+        return call.body(id, b) ? b.body().user_data : nullptr;
+    });
+}
+
+// User data does not touch the simulation, so it may be set from inside a callback.
+I2D_API i2d_status i2d_body_set_user_data(i2d_body_id id, void* user_data) {
+    return guarded("i2d_body_set_user_data", I2D_ERR_OUT_OF_MEMORY, [&](Call& call) {
+        BodyRef b;
+        if (!call.body(id, b)) {
+            return last_status();
+        }
+        b.body().user_data = user_data;
+        return I2D_OK;
+    });
+}
+
+I2D_API int32_t i2d_body_get_shape_count(i2d_body_id id) {
+    return guarded("i2d_body_get_shape_count", int32_t(0), [&](Call& call) {
+        BodyRef b;
+        return call.body(id, b) ? b.body().shape_count : 0;
+    });
+}
+
+I2D_API int32_t i2d_body_get_shapes(i2d_body_id id, i2d_shape_id* out, int32_t capacity) {
+    return guarded("i2d_body_get_shapes", int32_t(0), [&](Call& call) -> int32_t {
+        BodyRef b;
+        if (!call.body(id, b)) {
+            return 0;
+        }
+        if (capacity < 0 || (capacity > 0 && out == nullptr)) {
+            call.fail(I2D_ERR_INVALID_ARGUMENT, "out is NULL or capacity (%d) is negative", capacity);
+            return 0;
+        }
+        int32_t written = 0;
+        for (int32_t s = b.body().head_shape; s != null_index && written < capacity;
+             s = b.world->shapes[s].next_in_body) {
+            out[written++] = make_shape_id(b.id, s, b.world->shapes.generation(s));
+        }
+        return b.body().shape_count;
+    });
+}

@@ -1,0 +1,68 @@
+// SPDX-License-Identifier: MIT
+// i2d_default_*: every def field's default, and the cookie that marks a def as initialised.
+#include "boundary.hpp"
+#include "convert.hpp"
+
+using namespace i2d;
+using namespace i2d::capi;
+
+I2D_API i2d_world_def i2d_default_world_def(void) {
+    set_ok();
+    const WorldDef core;
+    i2d_world_def def{};
+    def.gravity = to_public(core.gravity);
+    def.contact_slop = core.contact_slop;
+    def.contact_correction_percent = core.contact_correction_percent;
+    def.restitution_threshold = core.restitution_threshold;
+    def.maximum_linear_speed = core.maximum_linear_speed;
+    def.velocity_iterations = core.velocity_iterations;
+    def.enable_sleep = core.enable_sleep;
+    def.internal_cookie = def_cookie;
+    return def;
+}
+
+I2D_API i2d_body_def i2d_default_body_def(void) {
+    set_ok();
+    const BodyDef core;
+    i2d_body_def def{};
+    def.type = I2D_BODY_STATIC;
+    def.position = to_public(core.position);
+    def.rotation = to_public(core.rotation);
+    def.linear_velocity = to_public(core.linear_velocity);
+    def.angular_velocity = core.angular_velocity;
+    def.linear_damping = core.linear_damping;
+    def.angular_damping = core.angular_damping;
+    def.gravity_scale = core.gravity_scale;
+    def.fixed_rotation = core.fixed_rotation;
+    def.enable_sleep = core.enable_sleep;
+    def.is_bullet = core.is_bullet;
+    def.user_data = nullptr;
+    def.internal_cookie = def_cookie;
+    return def;
+}
+
+I2D_API i2d_shape_def i2d_default_shape_def(void) {
+    set_ok();
+    const ShapeDef core;
+    i2d_shape_def def{};
+    def.density = core.density;
+    def.friction = core.friction;
+    def.restitution = core.restitution;
+    def.is_sensor = core.is_sensor;
+    def.enable_contact_events = core.enable_contact_events;
+    def.filter = to_public(core.filter);
+    def.user_data = nullptr;
+    def.internal_cookie = def_cookie;
+    return def;
+}
+
+I2D_API i2d_query_filter i2d_default_query_filter(void) {
+    set_ok();
+    const QueryFilter core;
+    return {core.category_bits, core.mask_bits};
+}
+
+I2D_API i2d_filter i2d_default_filter(void) {
+    set_ok();
+    return to_public(Filter{});
+}

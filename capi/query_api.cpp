@@ -1,0 +1,122 @@
+// SPDX-License-Identifier: MIT
+// i2d_world_overlap_*, i2d_world_cast_ray_closest: queries with exact geometry.
+#include "boundary.hpp"
+#include "convert.hpp"
+
+using namespace i2d;
+using namespace i2d::capi;
+
+namespace {
+
+bool valid_box(Call& call, i2d_aabb box) {
+    if (!call.finite(box.min, "aabb.min") || !call.finite(box.max, "aabb.max")) {
+        return false;
+    }
+    if (box.min.x > box.max.x || box.min.y > box.max.y) {
+        return call.fail(I2D_ERR_INVALID_ARGUMENT, "aabb.min (%g, %g) is above or right of aabb.max (%g, %g)",
+                         static_cast<double>(box.min.x), static_cast<double>(box.min.y),
+                         static_cast<double>(box.max.x), static_cast<double>(box.max.y));
+    }
+    return true;
+}
+
+// Turns the core's shape indices into public ids for a user callback.
+struct CallbackAdapter {
+    const World* world;
+    IdFields world_id;
+    i2d_overlap_fn* fn;
+    void* context;
+
+    static bool visit(int32_t shape, void* self) {
+        const auto* a = static_cast<const CallbackAdapter*>(self);
+        return a->fn(make_shape_id(a->world_id, shape, a->world->shapes.generation(shape)), a->context);
+    }
+};
+
+// Fills a caller's array and counts everything found.
+struct IdCollector {
+    const World* world;
+    IdFields world_id;
+    i2d_shape_id* out;
+    int32_t capacity;
+    int32_t total;
+
+    static bool visit(int32_t shape, void* self) {
+        auto* c = static_cast<IdCollector*>(self);
+        if (c->total < c->capacity) {
+            c->out[c->total] = make_shape_id(c->world_id, shape, c->world->shapes.generation(shape));
+        }
+        ++c->total;
+        return true;
+    }
+};
+
+}  // namespace
+
+I2D_API i2d_status i2d_world_overlap_aabb(i2d_world_id world, i2d_aabb aabb, i2d_query_filter filter,
+                                          i2d_overlap_fn* fn, void* context) {
+    return guarded("i2d_world_overlap_aabb", I2D_ERR_OUT_OF_MEMORY, [&](Call& call) {
+        WorldRef w;
+        if (!call.world(world, w) || !valid_box(call, aabb) || !call.not_null(reinterpret_cast<void*>(fn), "fn")) {
+            return last_status();
+        }
+        CallbackAdapter adapter{w.world, w.id, fn, context};
+        w.world->overlap_aabb(capi::to_core(aabb), capi::to_core(filter), &CallbackAdapter::visit, &adapter);
+        set_ok();  // the callbacks may have made calls of their own
+        return I2D_OK;
+    });
+}
+
+I2D_API i2d_status i2d_world_overlap_point(i2d_world_id world, i2d_vec2 point, i2d_query_filter filter,
+                                           i2d_overlap_fn* fn, void* context) {
+    return guarded("i2d_world_overlap_point", I2D_ERR_OUT_OF_MEMORY, [&](Call& call) {
+        WorldRef w;
+        if (!call.world(world, w) || !call.finite(point, "point") ||
+            !call.not_null(reinterpret_cast<void*>(fn), "fn")) {
+            return last_status();
+        }
+        CallbackAdapter adapter{w.world, w.id, fn, context};
+        w.world->overlap_point(capi::to_core(point), capi::to_core(filter), &CallbackAdapter::visit, &adapter);
+        set_ok();
+        return I2D_OK;
+    });
+}
+
+I2D_API int32_t i2d_world_overlap_aabb_ids(i2d_world_id world, i2d_aabb aabb, i2d_query_filter filter,
+                                           i2d_shape_id* out, int32_t capacity) {
+    return guarded("i2d_world_overlap_aabb_ids", int32_t(-1), [&](Call& call) -> int32_t {
+        WorldRef w;
+        if (!call.world(world, w) || !valid_box(call, aabb)) {
+            return -1;
+        }
+        if (capacity < 0 || (capacity > 0 && out == nullptr)) {
+            call.fail(I2D_ERR_INVALID_ARGUMENT, "out is NULL or capacity (%d) is negative", capacity);
+            return -1;
+        }
+        IdCollector collector{w.world, w.id, out, capacity, 0};
+        w.world->overlap_aabb(capi::to_core(aabb), capi::to_core(filter), &IdCollector::visit, &collector);
+        return collector.total;
+    });
+}
+
+I2D_API i2d_ray_result i2d_world_cast_ray_closest(i2d_world_id world, i2d_vec2 origin, i2d_vec2 translation,
+                                                  i2d_query_filter filter) {
+    return guarded("i2d_world_cast_ray_closest", i2d_ray_result{}, [&](Call& call) {
+        WorldRef w;
+        if (!call.world(world, w) || !call.coordinate(origin, "origin") ||
+            !call.coordinate(translation, "translation")) {
+            return i2d_ray_result{};
+        }
+        const RayResult r = w.world->cast_ray_closest(capi::to_core(origin), capi::to_core(translation),
+                                                      capi::to_core(filter));
+        i2d_ray_result out{};
+        if (r.hit) {
+            out.shape = make_shape_id(w.id, r.shape, w.world->shapes.generation(r.shape));
+            out.point = to_public(r.point);
+            out.normal = to_public(r.normal);
+            out.fraction = r.fraction;
+            out.hit = true;
+        }
+        return out;
+    });
+}

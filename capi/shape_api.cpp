@@ -1,0 +1,234 @@
+// SPDX-License-Identifier: MIT
+// i2d_shape_*: create circles and boxes, destroy, and read or change materials and filters.
+#include <cfloat>
+
+#include "boundary.hpp"
+#include "collision/geometry.hpp"
+#include "convert.hpp"
+#include "dynamics/constants.hpp"
+
+using namespace i2d;
+using namespace i2d::capi;
+
+namespace {
+
+bool validate_shape_def(Call& call, const i2d_shape_def* def) {
+    return call.not_null(def, "shape def") && call.cookie(def->internal_cookie, "shape_def") &&
+           call.in_range(def->density, 0.0f, max_density, "shape def: density") &&
+           call.in_range(def->friction, 0.0f, FLT_MAX, "shape def: friction") &&
+           call.in_range(def->restitution, 0.0f, max_restitution, "shape def: restitution");
+}
+
+ShapeDef to_core(const i2d_shape_def& def) {
+    ShapeDef core;
+    core.density = def.density;
+    core.friction = def.friction;
+    core.restitution = def.restitution;
+    core.is_sensor = def.is_sensor;
+    core.enable_contact_events = def.enable_contact_events;
+    core.filter = capi::to_core(def.filter);
+    core.user_data = def.user_data;
+    return core;
+}
+
+i2d_shape_id create_shape(Call& call, const BodyRef& b, const i2d_shape_def* def, const Geometry& geometry) {
+    const int32_t index = b.world->create_shape(b.index, to_core(*def), geometry);
+    if (index == null_index) {
+        call.fail(I2D_ERR_CAPACITY, "the world holds %d shapes, the most it can", Pool<Shape>::max_slots);
+        return I2D_NULL_SHAPE_ID;
+    }
+    return make_shape_id(b.id, index, b.world->shapes.generation(index));
+}
+
+bool mutable_shape(Call& call, i2d_shape_id id, ShapeRef& s) { return call.shape(id, s) && call.unlocked(*s.world); }
+
+}  // namespace
+
+I2D_API i2d_shape_id i2d_shape_create_circle(i2d_body_id body, const i2d_shape_def* def, const i2d_circle* circle) {
+    return guarded("i2d_shape_create_circle", I2D_NULL_SHAPE_ID, [&](Call& call) -> i2d_shape_id {
+        BodyRef b;
+        if (!call.body(body, b) || !call.unlocked(*b.world) || !validate_shape_def(call, def) ||
+            !call.not_null(circle, "circle") || !call.coordinate(circle->center, "circle: center") ||
+            !call.extent(circle->radius, "circle: radius")) {
+            return I2D_NULL_SHAPE_ID;
+        }
+        Geometry g;
+        g.type = ShapeType::circle;
+        g.circle = {capi::to_core(circle->center), circle->radius};
+        return create_shape(call, b, def, g);
+    });
+}
+
+I2D_API i2d_shape_id i2d_shape_create_box(i2d_body_id body, const i2d_shape_def* def, float half_width,
+                                          float half_height) {
+    return guarded("i2d_shape_create_box", I2D_NULL_SHAPE_ID, [&](Call& call) -> i2d_shape_id {
+        BodyRef b;
+        if (!call.body(body, b) || !call.unlocked(*b.world) || !validate_shape_def(call, def) ||
+            !call.extent(half_width, "half_width") || !call.extent(half_height, "half_height")) {
+            return I2D_NULL_SHAPE_ID;
+        }
+        Geometry g;
+        g.type = ShapeType::box;
+        g.box = {{half_width, half_height}};
+        return create_shape(call, b, def, g);
+    });
+}
+
+I2D_API i2d_status i2d_shape_destroy(i2d_shape_id id) {
+    return guarded("i2d_shape_destroy", I2D_ERR_OUT_OF_MEMORY, [&](Call& call) {
+        ShapeRef s;
+        if (!mutable_shape(call, id, s)) {
+            return last_status();
+        }
+        s.world->destroy_shape(s.index);
+        return I2D_OK;
+    });
+}
+
+I2D_API bool i2d_shape_is_valid(i2d_shape_id id) {
+    return guarded("i2d_shape_is_valid", false, [&](Call& call) {
+        ShapeRef s;
+        return call.shape(id, s);
+    });
+}
+
+I2D_API i2d_body_id i2d_shape_get_body(i2d_shape_id id) {
+    return guarded("i2d_shape_get_body", I2D_NULL_BODY_ID, [&](Call& call) {
+        ShapeRef s;
+        if (!call.shape(id, s)) {
+            return I2D_NULL_BODY_ID;
+        }
+        const int32_t body = s.shape().body;
+        return make_body_id(s.id, body, s.world->bodies.generation(body));
+    });
+}
+
+I2D_API i2d_shape_type i2d_shape_get_type(i2d_shape_id id) {
+    return guarded("i2d_shape_get_type", I2D_SHAPE_CIRCLE, [&](Call& call) {
+        ShapeRef s;
+        return call.shape(id, s) ? static_cast<i2d_shape_type>(s.shape().geometry.type) : I2D_SHAPE_CIRCLE;
+    });
+}
+
+I2D_API i2d_circle i2d_shape_get_circle(i2d_shape_id id) {
+    return guarded("i2d_shape_get_circle", i2d_circle{}, [&](Call& call) {
+        ShapeRef s;
+        if (!call.shape(id, s)) {
+            return i2d_circle{};
+        }
+        const Geometry& g = s.shape().geometry;
+        if (g.type != ShapeType::circle) {
+            call.fail(I2D_ERR_INVALID_ARGUMENT, "the shape is not a circle");
+            return i2d_circle{};
+        }
+        return i2d_circle{to_public(g.circle.center), g.circle.radius};
+    });
+}
+
+I2D_API i2d_vec2 i2d_shape_get_box_half_extents(i2d_shape_id id) {
+    return guarded("i2d_shape_get_box_half_extents", i2d_vec2{0, 0}, [&](Call& call) {
+        ShapeRef s;
+        if (!call.shape(id, s)) {
+            return i2d_vec2{0, 0};
+        }
+        const Geometry& g = s.shape().geometry;
+        if (g.type != ShapeType::box) {
+            call.fail(I2D_ERR_INVALID_ARGUMENT, "the shape is not a box");
+            return i2d_vec2{0, 0};
+        }
+        return to_public(g.box.half_extents);
+    });
+}
+
+I2D_API i2d_aabb i2d_shape_get_aabb(i2d_shape_id id) {
+    return guarded("i2d_shape_get_aabb", i2d_aabb{}, [&](Call& call) {
+        ShapeRef s;
+        return call.shape(id, s) ? to_public(s.shape().aabb) : i2d_aabb{};
+    });
+}
+
+I2D_API float i2d_shape_get_density(i2d_shape_id id) {
+    return guarded("i2d_shape_get_density", 0.0f, [&](Call& call) {
+        ShapeRef s;
+        return call.shape(id, s) ? s.shape().density : 0.0f;
+    });
+}
+
+I2D_API float i2d_shape_get_friction(i2d_shape_id id) {
+    return guarded("i2d_shape_get_friction", 0.0f, [&](Call& call) {
+        ShapeRef s;
+        return call.shape(id, s) ? s.shape().friction : 0.0f;
+    });
+}
+
+I2D_API i2d_status i2d_shape_set_friction(i2d_shape_id id, float friction) {
+    return guarded("i2d_shape_set_friction", I2D_ERR_OUT_OF_MEMORY, [&](Call& call) {
+        ShapeRef s;
+        if (!mutable_shape(call, id, s) || !call.in_range(friction, 0.0f, FLT_MAX, "friction")) {
+            return last_status();
+        }
+        s.shape().friction = friction;
+        return I2D_OK;
+    });
+}
+
+I2D_API float i2d_shape_get_restitution(i2d_shape_id id) {
+    return guarded("i2d_shape_get_restitution", 0.0f, [&](Call& call) {
+        ShapeRef s;
+        return call.shape(id, s) ? s.shape().restitution : 0.0f;
+    });
+}
+
+I2D_API i2d_status i2d_shape_set_restitution(i2d_shape_id id, float restitution) {
+    return guarded("i2d_shape_set_restitution", I2D_ERR_OUT_OF_MEMORY, [&](Call& call) {
+        ShapeRef s;
+        if (!mutable_shape(call, id, s) || !call.in_range(restitution, 0.0f, max_restitution, "restitution")) {
+            return last_status();
+        }
+        s.shape().restitution = restitution;
+        return I2D_OK;
+    });
+}
+
+I2D_API i2d_filter i2d_shape_get_filter(i2d_shape_id id) {
+    return guarded("i2d_shape_get_filter", i2d_filter{}, [&](Call& call) {
+        ShapeRef s;
+        return call.shape(id, s) ? to_public(s.shape().filter) : i2d_filter{};
+    });
+}
+
+I2D_API i2d_status i2d_shape_set_filter(i2d_shape_id id, i2d_filter filter) {
+    return guarded("i2d_shape_set_filter", I2D_ERR_OUT_OF_MEMORY, [&](Call& call) {
+        ShapeRef s;
+        if (!mutable_shape(call, id, s)) {
+            return last_status();
+        }
+        s.shape().filter = capi::to_core(filter);
+        return I2D_OK;
+    });
+}
+
+I2D_API bool i2d_shape_is_sensor(i2d_shape_id id) {
+    return guarded("i2d_shape_is_sensor", false, [&](Call& call) {
+        ShapeRef s;
+        return call.shape(id, s) && s.shape().is_sensor;
+    });
+}
+
+I2D_API void* i2d_shape_get_user_data(i2d_shape_id id) {
+    return guarded("i2d_shape_get_user_data", static_cast<void*>(nullptr), [&](Call& call) {
+        ShapeRef s;
+        return call.shape(id, s) ? s.shape().user_data : nullptr;
+    });
+}
+
+I2D_API i2d_status i2d_shape_set_user_data(i2d_shape_id id, void* user_data) {
+    return guarded("i2d_shape_set_user_data", I2D_ERR_OUT_OF_MEMORY, [&](Call& call) {
+        ShapeRef s;
+        if (!call.shape(id, s)) {
+            return last_status();
+        }
+        s.shape().user_data = user_data;
+        return I2D_OK;
+    });
+}

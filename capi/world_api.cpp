@@ -1,0 +1,124 @@
+// SPDX-License-Identifier: MIT
+// i2d_world_*: create, destroy, step, gravity, counters.
+#include <memory>
+
+#include "boundary.hpp"
+#include "convert.hpp"
+#include "dynamics/constants.hpp"
+#include "registry.hpp"
+
+using namespace i2d;
+using namespace i2d::capi;
+
+namespace {
+
+bool validate_world_def(Call& call, const i2d_world_def* def) {
+    return call.not_null(def, "world def") && call.cookie(def->internal_cookie, "world_def") &&
+           call.finite(def->gravity, "world def: gravity") &&
+           call.in_range(def->contact_slop, 0.0f, 1.0f, "world def: contact_slop") &&
+           call.in_range(def->contact_correction_percent, 1.0e-6f, 1.0f, "world def: contact_correction_percent") &&
+           call.in_range(def->restitution_threshold, 0.0f, max_speed_limit, "world def: restitution_threshold") &&
+           call.in_range(def->maximum_linear_speed, 1.0e-6f, max_speed_limit, "world def: maximum_linear_speed") &&
+           (def->velocity_iterations >= 1 && def->velocity_iterations <= max_velocity_iterations
+                ? true
+                : call.fail(I2D_ERR_INVALID_ARGUMENT, "world def: velocity_iterations is %d; it must be in [1, %d]",
+                            def->velocity_iterations, max_velocity_iterations));
+}
+
+WorldDef to_core(const i2d_world_def& def) {
+    WorldDef core;
+    core.gravity = capi::to_core(def.gravity);
+    core.contact_slop = def.contact_slop;
+    core.contact_correction_percent = def.contact_correction_percent;
+    core.restitution_threshold = def.restitution_threshold;
+    core.maximum_linear_speed = def.maximum_linear_speed;
+    core.velocity_iterations = def.velocity_iterations;
+    core.enable_sleep = def.enable_sleep;
+    return core;
+}
+
+}  // namespace
+
+I2D_API i2d_world_id i2d_world_create(const i2d_world_def* def) {
+    return guarded("i2d_world_create", I2D_NULL_WORLD_ID, [&](Call& call) -> i2d_world_id {
+        if (!validate_world_def(call, def)) {
+            return I2D_NULL_WORLD_ID;
+        }
+        auto world = std::make_unique<World>(to_core(*def));
+        const WorldSlotRef ref = register_world(world.get());
+        if (ref.slot < 0) {
+            call.fail(I2D_ERR_CAPACITY, "%d worlds exist already; destroy one first", max_worlds);
+            return I2D_NULL_WORLD_ID;
+        }
+        world.release();
+        IdFields f;
+        f.world_slot = ref.slot;
+        f.world_generation = ref.generation;
+        return make_world_id(f);
+    });
+}
+
+I2D_API i2d_status i2d_world_destroy(i2d_world_id id) {
+    return guarded("i2d_world_destroy", I2D_ERR_INVALID_HANDLE, [&](Call& call) {
+        WorldRef w;
+        if (!call.world(id, w) || !call.unlocked(*w.world)) {
+            return last_status();
+        }
+        release_world(w.id.world_slot);
+        delete w.world;
+        return I2D_OK;
+    });
+}
+
+I2D_API bool i2d_world_is_valid(i2d_world_id id) {
+    return guarded("i2d_world_is_valid", false, [&](Call& call) {
+        WorldRef w;
+        return call.world(id, w);
+    });
+}
+
+I2D_API i2d_status i2d_world_step(i2d_world_id id, float time_step, int32_t substep_count) {
+    return guarded("i2d_world_step", I2D_ERR_OUT_OF_MEMORY, [&](Call& call) {
+        WorldRef w;
+        if (!call.world(id, w) || !call.unlocked(*w.world) ||
+            !call.in_range(time_step, 0.0f, max_time_step, "time_step")) {
+            return last_status();
+        }
+        if (substep_count < 1 || substep_count > max_substeps) {
+            call.fail(I2D_ERR_INVALID_ARGUMENT, "substep_count is %d; it must be in [1, %d]", substep_count,
+                      max_substeps);
+            return last_status();
+        }
+        w.world->step(time_step, substep_count);
+        return I2D_OK;
+    });
+}
+
+I2D_API i2d_status i2d_world_set_gravity(i2d_world_id id, i2d_vec2 gravity) {
+    return guarded("i2d_world_set_gravity", I2D_ERR_OUT_OF_MEMORY, [&](Call& call) {
+        WorldRef w;
+        if (!call.world(id, w) || !call.unlocked(*w.world) || !call.finite(gravity, "gravity")) {
+            return last_status();
+        }
+        w.world->settings.gravity = capi::to_core(gravity);
+        return I2D_OK;
+    });
+}
+
+I2D_API i2d_vec2 i2d_world_get_gravity(i2d_world_id id) {
+    return guarded("i2d_world_get_gravity", i2d_vec2{0, 0}, [&](Call& call) {
+        WorldRef w;
+        return call.world(id, w) ? to_public(w.world->settings.gravity) : i2d_vec2{0, 0};
+    });
+}
+
+I2D_API i2d_world_counters i2d_world_get_counters(i2d_world_id id) {
+    return guarded("i2d_world_get_counters", i2d_world_counters{}, [&](Call& call) {
+        WorldRef w;
+        if (!call.world(id, w)) {
+            return i2d_world_counters{};
+        }
+        const WorldCounters c = w.world->counters();
+        return i2d_world_counters{c.body_count, c.shape_count, c.contact_count, c.pair_count};
+    });
+}
