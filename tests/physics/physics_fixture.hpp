@@ -1,0 +1,158 @@
+// SPDX-License-Identifier: MIT
+// A fixture for the physics validation scenes: a world, a ground, bodies in one line each.
+//
+// In the spirit of Jolt's PhysicsTestContext: tests build a scene in a few lines and
+// step it at the engine's recommended rate, 1/60 s with 4 substeps, then compare with
+// closed-form answers computed in the test itself.
+#ifndef I2D_TESTS_PHYSICS_FIXTURE_HPP
+#define I2D_TESTS_PHYSICS_FIXTURE_HPP
+
+#include <impulse2d/impulse2d.h>
+
+#include <cmath>
+#include <cstdio>
+
+#include "check.h"
+
+namespace phys {
+
+constexpr float time_step = 1.0f / 60.0f;
+constexpr int substeps = 4;
+constexpr double substep = double(time_step) / substeps;  // h in the integrator
+constexpr double pi = 3.14159265358979323846;
+
+/** Steps that make up `seconds` at time_step. */
+inline int steps_for(double seconds) { return int(std::lround(seconds / time_step)); }
+
+/** What a shape is made of. Defaults are the shape def's (density 1, friction 0.6,
+ *  restitution 0). */
+struct Material {
+    float density = 1.0f;
+    float restitution = 0.0f;
+    float friction = 0.6f;
+};
+
+inline Material with_restitution(float e, float density = 1.0f) {
+    Material m;
+    m.restitution = e;
+    m.density = density;
+    return m;
+}
+
+inline i2d_body_def body_def(i2d_body_type type, i2d_vec2 position, i2d_vec2 velocity = i2d_vec2{0, 0}) {
+    i2d_body_def def = i2d_default_body_def();
+    def.type = type;
+    def.position = position;
+    def.linear_velocity = velocity;
+    return def;
+}
+
+inline i2d_shape_def shape_def(const Material& m) {
+    i2d_shape_def def = i2d_default_shape_def();
+    def.density = m.density;
+    def.restitution = m.restitution;
+    def.friction = m.friction;
+    return def;
+}
+
+/** A world that is destroyed with the fixture. Bodies come back null on failure, so
+ *  tests I2D_REQUIRE them before use. */
+class Scene {
+public:
+    explicit Scene(const i2d_world_def& def = i2d_default_world_def()) : world(i2d_world_create(&def)) {}
+    ~Scene() {
+        if (!I2D_IS_NULL(world)) {
+            i2d_world_destroy(world);
+        }
+    }
+    Scene(const Scene&) = delete;
+    Scene& operator=(const Scene&) = delete;
+
+    /** The default world without gravity: isolated collisions. */
+    static i2d_world_def zero_gravity_def() {
+        i2d_world_def def = i2d_default_world_def();
+        def.gravity = i2d_vec2{0, 0};
+        return def;
+    }
+
+    /** A body with one box of the given half sizes centred on its origin. */
+    i2d_body_id box(const i2d_body_def& def, float half_width, float half_height, const Material& m = Material{}) {
+        i2d_body_id body = i2d_body_create(world, &def);
+        i2d_shape_def sd = shape_def(m);
+        if (I2D_IS_NULL(body) || I2D_IS_NULL(i2d_shape_create_box(body, &sd, half_width, half_height))) {
+            fprintf(stderr, "    fixture: box creation failed: %s\n", i2d_last_error_message());
+            return I2D_NULL_BODY_ID;
+        }
+        return body;
+    }
+
+    /** A body with one circle centred on its origin. */
+    i2d_body_id circle(const i2d_body_def& def, float radius, const Material& m = Material{}) {
+        i2d_body_id body = i2d_body_create(world, &def);
+        i2d_shape_def sd = shape_def(m);
+        i2d_circle c{i2d_vec2{0, 0}, radius};
+        if (I2D_IS_NULL(body) || I2D_IS_NULL(i2d_shape_create_circle(body, &sd, &c))) {
+            fprintf(stderr, "    fixture: circle creation failed: %s\n", i2d_last_error_message());
+            return I2D_NULL_BODY_ID;
+        }
+        return body;
+    }
+
+    /** A static ground box, 1 m thick, whose top face is at y = top. */
+    i2d_body_id ground(float top = 0.0f, float half_width = 50.0f, const Material& m = Material{}) {
+        return box(body_def(I2D_BODY_STATIC, i2d_vec2{0, top - 0.5f}), half_width, 0.5f, m);
+    }
+
+    i2d_body_id dynamic_box(i2d_vec2 center, float half_width, float half_height, const Material& m = Material{},
+                            i2d_vec2 velocity = i2d_vec2{0, 0}) {
+        return box(body_def(I2D_BODY_DYNAMIC, center, velocity), half_width, half_height, m);
+    }
+
+    i2d_body_id dynamic_circle(i2d_vec2 center, float radius, const Material& m = Material{},
+                               i2d_vec2 velocity = i2d_vec2{0, 0}) {
+        return circle(body_def(I2D_BODY_DYNAMIC, center, velocity), radius, m);
+    }
+
+    /** One step of time_step with `substeps` substeps; false (and a message) on failure. */
+    bool step() {
+        i2d_status s = i2d_world_step(world, time_step, substeps);
+        if (s != I2D_OK) {
+            fprintf(stderr, "    fixture: step failed: %s (%s)\n", i2d_status_string(s), i2d_last_error_message());
+            return false;
+        }
+        return true;
+    }
+
+    bool step(int count) {
+        for (int i = 0; i < count; ++i) {
+            if (!step()) {
+                return false;
+            }
+        }
+        return true;
+    }
+
+    i2d_world_id world;
+};
+
+inline i2d_vec2 position(i2d_body_id b) { return i2d_body_get_position(b); }
+inline i2d_vec2 velocity(i2d_body_id b) { return i2d_body_get_linear_velocity(b); }
+inline double speed(i2d_vec2 v) { return std::hypot(double(v.x), double(v.y)); }
+
+/** Closed-form masses: density x area. */
+inline double box_mass(double half_width, double half_height, double density) {
+    return density * 4.0 * half_width * half_height;
+}
+inline double circle_mass(double radius, double density) { return density * pi * radius * radius; }
+
+/** Prints the scenario when checks failed since `failures_before`, so a failure inside a
+ *  loop over cases says which case it was. */
+inline void report_case(int failures_before, const char* what) {
+    if (i2d_check_failures != failures_before) {
+        fprintf(stderr, "    ... in case: %s\n", what);
+    }
+}
+
+}  // namespace phys
+
+#endif

@@ -1,0 +1,131 @@
+// SPDX-License-Identifier: MIT
+// Shape geometry: mass against closed form, bounds, point and box overlap, and ray casts
+// against dense sampling along the ray.
+#include <cmath>
+
+#include "check.h"
+#include "collision/geometry.hpp"
+#include "math/math.hpp"
+#include "test_rng.hpp"
+
+using namespace i2d;
+
+namespace {
+
+Geometry make_circle(Vec2 center, float radius) {
+    Geometry g;
+    g.type = ShapeType::circle;
+    g.circle = {center, radius};
+    return g;
+}
+
+Geometry make_box(float hx, float hy) {
+    Geometry g;
+    g.type = ShapeType::box;
+    g.box = {{hx, hy}};
+    return g;
+}
+
+Transform at(float x, float y) { return {{x, y}, Rot{}}; }
+
+// First sample along the ray that lies inside the shape, as a fraction; -1 if none.
+float sampled_entry(const Geometry& g, const Transform& xf, Vec2 origin, Vec2 translation, int32_t samples) {
+    for (int32_t i = 0; i <= samples; ++i) {
+        const float t = float(i) / float(samples);
+        if (contains_point(g, xf, origin + t * translation)) {
+            return t;
+        }
+    }
+    return -1.0f;
+}
+
+}  // namespace
+
+I2D_TEST(unit_geometry_mass_closed_form) {
+    const MassData disc = compute_mass(make_circle({0.5f, -2.0f}, 0.75f), 3.0f);
+    I2D_CHECK_NEAR(disc.mass, 3.0 * 3.14159265358979 * 0.75 * 0.75, 1e-5);
+    I2D_CHECK(disc.center == (Vec2{0.5f, -2.0f}));
+    const MassData box = compute_mass(make_box(0.5f, 2.0f), 2.0f);
+    I2D_CHECK_NEAR(box.mass, 2.0 * 1.0 * 4.0, 1e-6);
+    I2D_CHECK(box.center == (Vec2{0.0f, 0.0f}));
+}
+
+I2D_TEST(unit_geometry_aabb_is_tight) {
+    const AABB c = compute_aabb(make_circle({1.0f, 0.0f}, 0.5f), at(2.0f, 3.0f));
+    I2D_CHECK(c.lower == (Vec2{2.5f, 2.5f}) && c.upper == (Vec2{3.5f, 3.5f}));
+    const AABB b = compute_aabb(make_box(1.0f, 0.25f), at(-1.0f, 1.0f));
+    I2D_CHECK(b.lower == (Vec2{-2.0f, 0.75f}) && b.upper == (Vec2{0.0f, 1.25f}));
+}
+
+I2D_TEST(unit_geometry_contains_point_includes_boundary) {
+    const Geometry circle = make_circle({0.0f, 0.0f}, 1.0f);
+    I2D_CHECK(contains_point(circle, at(0, 0), {1.0f, 0.0f}));
+    I2D_CHECK(!contains_point(circle, at(0, 0), {1.0001f, 0.0f}));
+    I2D_CHECK(!contains_point(circle, at(0, 0), {0.71f, 0.71f}));
+    const Geometry box = make_box(1.0f, 2.0f);
+    I2D_CHECK(contains_point(box, at(1, 1), {2.0f, 3.0f}));
+    I2D_CHECK(!contains_point(box, at(1, 1), {2.0f, 3.001f}));
+}
+
+I2D_TEST(unit_geometry_circle_overlaps_box_only_near_corner_arc) {
+    const Geometry circle = make_circle({0.0f, 0.0f}, 1.0f);
+    // The query box's corner (0.75, 0.75) is outside the circle although the bounds overlap.
+    I2D_CHECK(!overlaps_aabb(circle, at(0, 0), {{0.75f, 0.75f}, {2.0f, 2.0f}}));
+    I2D_CHECK(overlaps_aabb(circle, at(0, 0), {{0.7f, 0.7f}, {2.0f, 2.0f}}));
+    I2D_CHECK(overlaps_aabb(circle, at(0, 0), {{1.0f, -5.0f}, {2.0f, 5.0f}}));  // touching
+}
+
+I2D_TEST(unit_geometry_ray_cast_matches_sampling) {
+    TestRng rng(7);
+    const int32_t samples = 20000;
+    int32_t hits = 0;
+    for (int32_t trial = 0; trial < 400; ++trial) {
+        const bool circle = trial % 2 == 0;
+        const Geometry g = circle ? make_circle({rng.uniform(-0.5f, 0.5f), rng.uniform(-0.5f, 0.5f)},
+                                                rng.uniform(0.2f, 2.0f))
+                                  : make_box(rng.uniform(0.2f, 2.0f), rng.uniform(0.2f, 2.0f));
+        const Transform xf = at(rng.uniform(-2.0f, 2.0f), rng.uniform(-2.0f, 2.0f));
+        const Vec2 origin{rng.uniform(-8.0f, 8.0f), rng.uniform(-8.0f, 8.0f)};
+        // Aim near the shape, and stop short of or past it, so that hits, misses and
+        // rays too short to reach all occur.
+        const Vec2 target = xf.p + Vec2{rng.uniform(-2.5f, 2.5f), rng.uniform(-2.5f, 2.5f)};
+        const Vec2 translation = rng.uniform(0.3f, 1.6f) * (target - origin);
+        const RayHit hit = ray_cast(g, xf, origin, translation, 1.0f);
+        const float entry = sampled_entry(g, xf, origin, translation, samples);
+        if (contains_point(g, xf, origin)) {
+            I2D_CHECK(!hit.hit);  // starts inside: no hit
+            continue;
+        }
+        // A grazing ray may touch between samples; allow one sample step either way.
+        const float step = 1.0f / float(samples);
+        if (entry < 0.0f) {
+            I2D_CHECK(!hit.hit || hit.fraction >= 0.0f);
+            continue;
+        }
+        I2D_REQUIRE(hit.hit);
+        ++hits;
+        I2D_CHECK(hit.fraction <= entry + step && hit.fraction >= entry - 2.0f * step);
+        I2D_CHECK_NEAR(length(hit.normal), 1.0, 1e-5);
+        // The normal faces the incoming ray and the point lies on the surface.
+        I2D_CHECK(dot(hit.normal, translation) <= 0.0f);
+        I2D_CHECK(contains_point(g, xf, hit.point + 1e-4f * -hit.normal) || !circle);
+    }
+    I2D_CHECK(hits > 100);  // the scene generator must actually produce hits
+}
+
+I2D_TEST(unit_geometry_ray_cast_box_face_normals) {
+    const Geometry box = make_box(1.0f, 1.0f);
+    const RayHit from_left = ray_cast(box, at(0, 0), {-3.0f, 0.5f}, {4.0f, 0.0f}, 1.0f);
+    I2D_REQUIRE(from_left.hit);
+    I2D_CHECK_NEAR(from_left.fraction, 0.5, 1e-6);
+    I2D_CHECK(from_left.normal == (Vec2{-1.0f, 0.0f}));
+    const RayHit from_above = ray_cast(box, at(0, 0), {0.25f, 5.0f}, {0.0f, -8.0f}, 1.0f);
+    I2D_REQUIRE(from_above.hit);
+    I2D_CHECK_NEAR(from_above.fraction, 0.5, 1e-6);
+    I2D_CHECK(from_above.normal == (Vec2{0.0f, 1.0f}));
+    // Too short to reach, and clipped by max_fraction.
+    I2D_CHECK(!ray_cast(box, at(0, 0), {-3.0f, 0.0f}, {1.9f, 0.0f}, 1.0f).hit);
+    I2D_CHECK(!ray_cast(box, at(0, 0), {-3.0f, 0.0f}, {4.0f, 0.0f}, 0.4f).hit);
+    // Zero translation hits nothing.
+    I2D_CHECK(!ray_cast(box, at(0, 0), {-3.0f, 0.0f}, {0.0f, 0.0f}, 1.0f).hit);
+}

@@ -1,0 +1,122 @@
+// SPDX-License-Identifier: MIT
+// World internals: mass from shapes, shape lists across destruction, filters, and the
+// pair rules that keep static and kinematic bodies out of the narrowphase.
+#include <cmath>
+
+#include "check.h"
+#include "dynamics/world.hpp"
+
+using namespace i2d;
+
+namespace {
+
+int32_t add_body(World& world, BodyType type, Vec2 position) {
+    BodyDef def;
+    def.type = type;
+    def.position = position;
+    return world.create_body(def);
+}
+
+int32_t add_box(World& world, int32_t body, float hx, float hy, float density = 1.0f) {
+    Geometry g;
+    g.type = ShapeType::box;
+    g.box = {{hx, hy}};
+    ShapeDef def;
+    def.density = density;
+    return world.create_shape(body, def, g);
+}
+
+int32_t add_circle(World& world, int32_t body, Vec2 center, float radius) {
+    Geometry g;
+    g.type = ShapeType::circle;
+    g.circle = {center, radius};
+    return world.create_shape(body, ShapeDef{}, g);
+}
+
+}  // namespace
+
+I2D_TEST(unit_world_mass_and_center_follow_shapes) {
+    World world{WorldDef{}};
+    const int32_t body = add_body(world, BodyType::dynamic, {10.0f, 0.0f});
+    I2D_CHECK(world.bodies[body].mass == 1.0f);  // no shapes yet: 1 kg
+    add_box(world, body, 1.0f, 1.0f);           // 4 kg at the origin
+    add_circle(world, body, {3.0f, 0.0f}, 1.0f);  // pi kg at x = 3
+    const float pi_f = 3.14159265f;
+    I2D_CHECK_NEAR(world.bodies[body].mass, 4.0 + pi_f, 1e-5);
+    I2D_CHECK_NEAR(world.bodies[body].local_center.x, 3.0 * pi_f / (4.0 + pi_f), 1e-5);
+    I2D_CHECK_NEAR(world.bodies[body].center.x, 10.0 + 3.0 * pi_f / (4.0 + pi_f), 1e-5);
+    I2D_CHECK_NEAR(world.bodies[body].inv_mass, 1.0 / (4.0 + pi_f), 1e-6);
+}
+
+I2D_TEST(unit_world_static_and_kinematic_have_no_mass) {
+    World world{WorldDef{}};
+    const int32_t s = add_body(world, BodyType::static_body, {});
+    const int32_t k = add_body(world, BodyType::kinematic, {});
+    add_box(world, s, 1.0f, 1.0f);
+    add_box(world, k, 1.0f, 1.0f);
+    I2D_CHECK(world.bodies[s].mass == 0.0f && world.bodies[s].inv_mass == 0.0f);
+    I2D_CHECK(world.bodies[k].mass == 0.0f && world.bodies[k].inv_mass == 0.0f);
+}
+
+I2D_TEST(unit_world_destroying_shapes_keeps_lists_consistent) {
+    World world{WorldDef{}};
+    const int32_t body = add_body(world, BodyType::dynamic, {});
+    const int32_t a = add_box(world, body, 1.0f, 1.0f);
+    const int32_t b = add_box(world, body, 0.5f, 0.5f);
+    const int32_t c = add_box(world, body, 0.25f, 0.25f);
+    world.destroy_shape(b);  // from the middle of the list
+    I2D_CHECK(world.bodies[body].shape_count == 2);
+    int32_t seen = 0;
+    for (int32_t s = world.bodies[body].head_shape; s != null_index; s = world.shapes[s].next_in_body) {
+        I2D_CHECK(s == a || s == c);
+        ++seen;
+    }
+    I2D_CHECK(seen == 2);
+    I2D_CHECK_NEAR(world.bodies[body].mass, 4.0 + 0.25, 1e-6);
+    world.destroy_body(body);
+    I2D_CHECK(world.shapes.count() == 0 && world.bodies.count() == 0);
+}
+
+I2D_TEST(unit_world_filter_truth_table) {
+    Filter a, b;
+    I2D_CHECK(should_collide(a, b));
+    b.mask_bits = 0x2;  // b ignores category 1
+    I2D_CHECK(!should_collide(a, b));
+    b.mask_bits = ~uint64_t(0);
+    a.category_bits = 0x4, b.mask_bits = 0x4;
+    I2D_CHECK(should_collide(a, b));
+    a.mask_bits = 0x0;
+    I2D_CHECK(!should_collide(a, b));
+    // Groups override the bits: same positive group always, same negative group never.
+    a.group_index = b.group_index = 3;
+    I2D_CHECK(should_collide(a, b));
+    a = b = Filter{};
+    a.group_index = b.group_index = -3;
+    I2D_CHECK(!should_collide(a, b));
+    b.group_index = -4;  // different groups fall back to the bits
+    I2D_CHECK(should_collide(a, b));
+}
+
+I2D_TEST(unit_world_no_contacts_between_static_and_kinematic) {
+    World world{WorldDef{}};
+    const int32_t s = add_body(world, BodyType::static_body, {});
+    const int32_t k = add_body(world, BodyType::kinematic, {0.5f, 0.0f});
+    add_box(world, s, 1.0f, 1.0f);
+    add_box(world, k, 1.0f, 1.0f);
+    world.step(1.0f / 60.0f, 4);
+    I2D_CHECK(world.counters().pair_count == 0);
+    const int32_t d = add_body(world, BodyType::dynamic, {0.0f, 1.5f});
+    add_box(world, d, 0.5f, 0.6f);
+    world.step(1.0f / 60.0f, 1);
+    I2D_CHECK(world.counters().pair_count == 2);
+    I2D_CHECK(world.counters().contact_count == 2);
+}
+
+I2D_TEST(unit_world_shapes_on_one_body_never_collide) {
+    World world{WorldDef{}};
+    const int32_t d = add_body(world, BodyType::dynamic, {});
+    add_box(world, d, 1.0f, 1.0f);
+    add_box(world, d, 1.0f, 1.0f);
+    world.step(1.0f / 60.0f, 1);
+    I2D_CHECK(world.counters().pair_count == 0);
+}
