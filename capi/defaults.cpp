@@ -50,6 +50,7 @@ I2D_API i2d_shape_def i2d_default_shape_def(void) {
     def.restitution = core.restitution;
     def.is_sensor = core.is_sensor;
     def.enable_contact_events = core.enable_contact_events;
+    def.enable_sensor_events = core.enable_sensor_events;
     def.filter = to_public(core.filter);
     def.user_data = nullptr;
     def.internal_cookie = def_cookie;

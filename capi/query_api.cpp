@@ -99,6 +99,39 @@ I2D_API int32_t i2d_world_overlap_aabb_ids(i2d_world_id world, i2d_aabb aabb, i2
     });
 }
 
+namespace {
+
+struct RayAdapter {
+    const World* world;
+    IdFields world_id;
+    i2d_cast_result_fn* fn;
+    void* context;
+
+    static float visit(int32_t shape, Vec2 point, Vec2 normal, float fraction, void* self) {
+        const auto* a = static_cast<const RayAdapter*>(self);
+        return a->fn(make_shape_id(a->world_id, shape, a->world->shapes.generation(shape)), to_public(point),
+                     to_public(normal), fraction, a->context);
+    }
+};
+
+}  // namespace
+
+I2D_API i2d_status i2d_world_cast_ray(i2d_world_id world, i2d_vec2 origin, i2d_vec2 translation,
+                                      i2d_query_filter filter, i2d_cast_result_fn* fn, void* context) {
+    return guarded("i2d_world_cast_ray", I2D_ERR_OUT_OF_MEMORY, [&](Call& call) {
+        WorldRef w;
+        if (!call.world(world, w) || !call.coordinate(origin, "origin") ||
+            !call.coordinate(translation, "translation") || !call.not_null(reinterpret_cast<void*>(fn), "fn")) {
+            return last_status();
+        }
+        RayAdapter adapter{w.world, w.id, fn, context};
+        w.world->cast_ray(capi::to_core(origin), capi::to_core(translation), capi::to_core(filter),
+                          &RayAdapter::visit, &adapter);
+        set_ok();  // the callbacks may have made calls of their own
+        return I2D_OK;
+    });
+}
+
 I2D_API i2d_ray_result i2d_world_cast_ray_closest(i2d_world_id world, i2d_vec2 origin, i2d_vec2 translation,
                                                   i2d_query_filter filter) {
     return guarded("i2d_world_cast_ray_closest", i2d_ray_result{}, [&](Call& call) {

@@ -26,6 +26,7 @@ ShapeDef to_core(const i2d_shape_def& def) {
     core.restitution = def.restitution;
     core.is_sensor = def.is_sensor;
     core.enable_contact_events = def.enable_contact_events;
+    core.enable_sensor_events = def.enable_sensor_events;
     core.filter = capi::to_core(def.filter);
     core.user_data = def.user_data;
     return core;
@@ -203,7 +204,7 @@ I2D_API i2d_status i2d_shape_set_filter(i2d_shape_id id, i2d_filter filter) {
         if (!mutable_shape(call, id, s)) {
             return last_status();
         }
-        s.shape().filter = capi::to_core(filter);
+        s.world->set_filter(s.index, capi::to_core(filter));
         return I2D_OK;
     });
 }

@@ -25,6 +25,14 @@ bool validate_world_def(Call& call, const i2d_world_def* def) {
                             def->velocity_iterations, max_velocity_iterations));
 }
 
+uint64_t encode_body(uint64_t world_bits, int32_t index, uint16_t generation) {
+    return make_body_id(decode_id(world_bits), index, generation).bits;
+}
+
+uint64_t encode_shape(uint64_t world_bits, int32_t index, uint16_t generation) {
+    return make_shape_id(decode_id(world_bits), index, generation).bits;
+}
+
 WorldDef to_core(const i2d_world_def& def) {
     WorldDef core;
     core.gravity = capi::to_core(def.gravity);
@@ -50,11 +58,13 @@ I2D_API i2d_world_id i2d_world_create(const i2d_world_def* def) {
             call.fail(I2D_ERR_CAPACITY, "%d worlds exist already; destroy one first", max_worlds);
             return I2D_NULL_WORLD_ID;
         }
-        world.release();
         IdFields f;
         f.world_slot = ref.slot;
         f.world_generation = ref.generation;
-        return make_world_id(f);
+        const i2d_world_id id = make_world_id(f);
+        world->id_encoder = {encode_body, encode_shape, id.bits};
+        world.release();
+        return id;
     });
 }
 
@@ -119,6 +129,23 @@ I2D_API i2d_world_counters i2d_world_get_counters(i2d_world_id id) {
             return i2d_world_counters{};
         }
         const WorldCounters c = w.world->counters();
-        return i2d_world_counters{c.body_count, c.shape_count, c.contact_count, c.pair_count};
+        return i2d_world_counters{c.body_count,
+                                  c.shape_count,
+                                  c.contact_count,
+                                  c.pair_count,
+                                  c.tree_heights[int32_t(ProxyKind::static_proxy)],
+                                  c.tree_heights[int32_t(ProxyKind::kinematic_proxy)],
+                                  c.tree_heights[int32_t(ProxyKind::dynamic_proxy)]};
+    });
+}
+
+I2D_API i2d_status i2d_world_rebuild_static_tree(i2d_world_id id) {
+    return guarded("i2d_world_rebuild_static_tree", I2D_ERR_OUT_OF_MEMORY, [&](Call& call) {
+        WorldRef w;
+        if (!call.world(id, w) || !call.unlocked(*w.world)) {
+            return last_status();
+        }
+        w.world->rebuild_static_tree();
+        return I2D_OK;
     });
 }

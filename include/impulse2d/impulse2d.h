@@ -161,4 +161,30 @@ typedef struct i2d_ray_result {
 I2D_API i2d_ray_result i2d_world_cast_ray_closest(i2d_world_id world, i2d_vec2 origin, i2d_vec2 translation,
                                                   i2d_query_filter filter);
 
+/** Called for each shape a ray hits, in no particular order. Return -1 to ignore this
+ *  shape (the ray goes on), 0 to stop the cast, `fraction` to clip the ray there (the
+ *  closest hit is then found last), or 1 to go on unclipped. Runs with the world locked. */
+typedef float i2d_cast_result_fn(i2d_shape_id shape, i2d_vec2 point, i2d_vec2 normal, float fraction,
+                                 void* context);
+
+/** Casts a ray through the world and reports hits to fn (see i2d_cast_result_fn). */
+I2D_API i2d_status i2d_world_cast_ray(i2d_world_id world, i2d_vec2 origin, i2d_vec2 translation,
+                                      i2d_query_filter filter, i2d_cast_result_fn* fn, void* context);
+
+/* ---- Events --------------------------------------------------------------------- */
+/* The arrays belong to the world and describe the last step. They stay valid until the
+ * next i2d_world_step or i2d_world_destroy, whatever else the caller does meanwhile.
+ * End events caused between steps (destroying a touching shape or its body) are
+ * reported with the next step's events. Ids in end events may be stale. Empty arrays
+ * (count 0) on a bad world id. */
+
+I2D_API i2d_contact_events i2d_world_get_contact_events(i2d_world_id world);
+I2D_API i2d_sensor_events i2d_world_get_sensor_events(i2d_world_id world);
+/** Every body that moved during the last step: one call per frame instead of one per body. */
+I2D_API i2d_body_events i2d_world_get_body_events(i2d_world_id world);
+
+/** Rebuilds the static tree top-down for the best query cost; worth calling once after
+ *  creating a large static level. */
+I2D_API i2d_status i2d_world_rebuild_static_tree(i2d_world_id world);
+
 #endif

@@ -102,11 +102,14 @@ typedef struct i2d_shape_def {
     /** Bounciness; default 0. Range [0, 100] (1 = elastic, above 1 adds energy). A
      *  contact uses the minimum of the two shapes'. */
     float restitution;
-    /** Default false. A sensor detects overlaps but never pushes; sensor events arrive
-     *  with the broadphase issue. */
+    /** Default false. A sensor detects overlaps but never pushes: it reports sensor
+     *  begin/end events for shapes that enter and leave it. */
     bool is_sensor;
-    /** Default true. Contact events arrive with the broadphase issue. */
+    /** Default true. Contact begin/end events are reported for a pair when both shapes
+     *  enable them. */
     bool enable_contact_events;
+    /** Default true. Whether sensors report this shape entering and leaving them. */
+    bool enable_sensor_events;
     i2d_filter filter; /**< default: category 1, collides with everything, group 0 */
     void* user_data;   /**< default NULL */
     /** Set by i2d_default_shape_def(); do not set. */
@@ -117,8 +120,48 @@ typedef struct i2d_shape_def {
 typedef struct i2d_world_counters {
     int32_t body_count;
     int32_t shape_count;
-    int32_t contact_count;  /**< touching shape pairs after the last step */
-    int32_t pair_count;     /**< candidate pairs the broadphase found in the last step */
+    int32_t contact_count;  /**< touching shape pairs (sensors excluded) after the last step */
+    int32_t pair_count;     /**< contacts alive: shape pairs whose fat bounds overlap */
+    int32_t static_tree_height;
+    int32_t kinematic_tree_height;
+    int32_t dynamic_tree_height;
 } i2d_world_counters;
+
+/* ---- Events: arrays owned by the world, valid until the next step or world change ---- */
+
+/** Two shapes started touching during the last step (both enable contact events). */
+typedef struct i2d_contact_begin_event { i2d_shape_id shape_a, shape_b; } i2d_contact_begin_event;
+/** Two shapes stopped touching, or one of them was destroyed while touching. The ids
+ *  may be stale by the time you read them. */
+typedef struct i2d_contact_end_event { i2d_shape_id shape_a, shape_b; } i2d_contact_end_event;
+typedef struct i2d_contact_events {
+    const i2d_contact_begin_event* begin_events;
+    int32_t begin_count;
+    const i2d_contact_end_event* end_events;
+    int32_t end_count;
+} i2d_contact_events;
+
+/** A shape (the visitor) started overlapping a sensor shape. */
+typedef struct i2d_sensor_begin_event { i2d_shape_id sensor_shape, visitor_shape; } i2d_sensor_begin_event;
+/** A visitor stopped overlapping a sensor, or one of the two was destroyed. */
+typedef struct i2d_sensor_end_event { i2d_shape_id sensor_shape, visitor_shape; } i2d_sensor_end_event;
+typedef struct i2d_sensor_events {
+    const i2d_sensor_begin_event* begin_events;
+    int32_t begin_count;
+    const i2d_sensor_end_event* end_events;
+    int32_t end_count;
+} i2d_sensor_events;
+
+/** A body that moved during the last step (dynamic and kinematic bodies). */
+typedef struct i2d_body_move_event {
+    i2d_transform transform;
+    i2d_body_id body;
+    void* user_data;
+    bool fell_asleep; /**< always false until sleeping lands */
+} i2d_body_move_event;
+typedef struct i2d_body_events {
+    const i2d_body_move_event* move_events;
+    int32_t move_count;
+} i2d_body_events;
 
 #endif

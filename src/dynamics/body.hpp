@@ -48,6 +48,9 @@ struct Body {
     void* user_data = nullptr;
     int32_t head_shape = null_index;  // list of the body's shapes, linked through Shape
     int32_t shape_count = 0;
+    int32_t head_contact_key = null_index;  // list of contacts, linked through ContactEdge
+    int32_t contact_count = 0;
+    Vec2 step_start_position;  // to tell whether the body moved during the step
 };
 
 }  // namespace i2d

@@ -14,6 +14,10 @@ constexpr float max_shape_extent = 100000.0f;
 /// smaller shapes have masses whose inverse overflows.
 constexpr float min_shape_extent = 1.0e-4f;
 
+/// How far a moving shape's fat box reaches beyond its tight box, m. Larger margins
+/// re-insert shapes into the tree less often but give the narrowphase more pairs.
+constexpr float aabb_margin = 0.1f;
+
 /// Largest |coordinate| accepted for positions and points, m. Float has about 60 m of
 /// resolution out there: beyond it geometry is meaningless.
 constexpr float max_coordinate = 1.0e9f;

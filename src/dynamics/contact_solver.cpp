@@ -2,46 +2,44 @@
 // Sequential impulses with restitution and Coulomb friction; the seed's positional correction.
 #include "dynamics/contact_solver.hpp"
 
-#include <algorithm>
 #include <cmath>
 
 #include "math/math.hpp"
 
 namespace i2d {
 
-namespace {
-
-bool precedes(const ContactConstraint& l, const ContactConstraint& r) {
-    return l.key_a != r.key_a ? l.key_a < r.key_a : l.key_b < r.key_b;
-}
-
-}  // namespace
-
-void sort_contacts(std::vector<ContactConstraint>& contacts) {
-    std::sort(contacts.begin(), contacts.end(), precedes);
-}
-
-// A merge of two sorted lists: linear in their lengths, no hashing.
-void carry_impulses(std::vector<ContactConstraint>& contacts, const std::vector<ContactConstraint>& previous) {
-    size_t j = 0;
-    for (ContactConstraint& c : contacts) {
-        while (j < previous.size() && precedes(previous[j], c)) {
-            ++j;
-        }
-        if (j == previous.size()) {
-            return;
-        }
-        const ContactConstraint& old = previous[j];
-        if (old.key_a != c.key_a || old.key_b != c.key_b) {
+void gather_constraints(const Pool<Contact>& contacts, std::vector<ContactConstraint>& out) {
+    out.clear();
+    for (int32_t i = 0; i < contacts.capacity(); ++i) {
+        if (!contacts.is_live(i)) {
             continue;
         }
-        for (int32_t i = 0; i < c.point_count; ++i) {
-            for (int32_t k = 0; k < old.point_count; ++k) {
-                if (old.points[k].id == c.points[i].id) {
-                    c.points[i].normal_impulse = old.points[k].normal_impulse;
-                    c.points[i].tangent_impulse = old.points[k].tangent_impulse;
-                }
-            }
+        const Contact& contact = contacts[i];
+        if ((contact.flags & contact_touching) == 0 || (contact.flags & contact_sensor) != 0) {
+            continue;
+        }
+        ContactConstraint c;
+        c.contact = i;
+        c.body_a = contact.edges[0].body;
+        c.body_b = contact.edges[1].body;
+        c.normal = contact.manifold.normal;
+        c.friction = contact.friction;
+        c.restitution = contact.restitution;
+        c.point_count = contact.manifold.point_count;
+        for (int32_t p = 0; p < c.point_count; ++p) {
+            c.points[p].penetration = contact.manifold.points[p].penetration;
+            c.points[p].normal_impulse = contact.impulses[p].normal;
+            c.points[p].tangent_impulse = contact.impulses[p].tangent;
+        }
+        out.push_back(c);
+    }
+}
+
+void scatter_impulses(const std::vector<ContactConstraint>& constraints, Pool<Contact>& contacts) {
+    for (const ContactConstraint& c : constraints) {
+        Contact& contact = contacts[c.contact];
+        for (int32_t p = 0; p < c.point_count; ++p) {
+            contact.impulses[p] = {c.points[p].normal_impulse, c.points[p].tangent_impulse};
         }
     }
 }

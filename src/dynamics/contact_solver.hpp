@@ -9,9 +9,9 @@
 // accumulated normal impulse at zero keeps contacts from pulling.
 //
 // Warm starting: a contact that persists from the previous substep starts from the
-// impulses it accumulated there (matched by shape pair and feature id) instead of zero.
-// Without it, ten iterations leave a 20-box column sinking 1.8 m in 500 steps, because
-// Gauss-Seidel needs far more passes than that to carry the weight down a long chain.
+// impulses it accumulated there (kept in the contact, matched by feature id) instead of
+// zero. Without it, ten iterations leave a 20-box column sinking 1.8 m in 500 steps,
+// because Gauss-Seidel needs far more passes than that to carry weight down a chain.
 #pragma once
 
 #include <cstdint>
@@ -20,11 +20,11 @@
 #include "collision/shapes.hpp"
 #include "core/pool.hpp"
 #include "dynamics/body.hpp"
+#include "dynamics/contact.hpp"
 
 namespace i2d {
 
 struct ContactPointConstraint {
-    uint32_t id = 0;  // feature key: matches the point to the same one a substep earlier
     float penetration = 0.0f;
     float normal_impulse = 0.0f;   // accumulated over the iterations
     float tangent_impulse = 0.0f;
@@ -32,8 +32,7 @@ struct ContactPointConstraint {
 };
 
 struct ContactConstraint {
-    // Shape index and generation of each side: identify the pair across substeps.
-    uint64_t key_a = 0, key_b = 0;
+    int32_t contact = null_index;  // where the impulses come from and go back to
     int32_t body_a = 0, body_b = 0;
     float inv_mass_a = 0.0f, inv_mass_b = 0.0f;
     float inv_mass_sum = 0.0f;
@@ -50,11 +49,11 @@ struct SolverSettings {
     int32_t velocity_iterations;
 };
 
-/// Orders contacts by shape pair, the order carry_impulses relies on.
-void sort_contacts(std::vector<ContactConstraint>& contacts);
-/// Copies accumulated impulses from the previous substep's contacts (both sorted) onto
-/// the points of the same pair and feature.
-void carry_impulses(std::vector<ContactConstraint>& contacts, const std::vector<ContactConstraint>& previous);
+/// One constraint per touching, non-sensor contact, in contact order, with the
+/// contact's accumulated impulses as the starting point.
+void gather_constraints(const Pool<Contact>& contacts, std::vector<ContactConstraint>& out);
+/// Writes the accumulated impulses back into the contacts for the next substep.
+void scatter_impulses(const std::vector<ContactConstraint>& constraints, Pool<Contact>& contacts);
 
 /// Fills masses and restitution targets from the bodies' velocities before solving.
 void prepare_contacts(std::vector<ContactConstraint>& contacts, Pool<Body>& bodies,

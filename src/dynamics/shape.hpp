@@ -26,6 +26,7 @@ struct ShapeDef {
     float restitution = 0.0f;
     bool is_sensor = false;
     bool enable_contact_events = true;
+    bool enable_sensor_events = true;
     Filter filter;
     void* user_data = nullptr;
 };
@@ -38,8 +39,10 @@ struct Shape {
     Filter filter;
     bool is_sensor = false;
     bool enable_contact_events = true;
+    bool enable_sensor_events = true;
     void* user_data = nullptr;
     AABB aabb;  // tight world bounds, current after every step and every move
+    int32_t proxy_key = null_index;  // in the broadphase
 };
 
 /// A shared positive group always collides, a shared negative group never does;

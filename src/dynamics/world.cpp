@@ -1,16 +1,67 @@
 // SPDX-License-Identifier: MIT
-// World lifecycle (bodies, shapes, mass) and the step.
+// World lifecycle (bodies, shapes, mass, proxies) and the step.
 #include "dynamics/world.hpp"
 
 #include <cfloat>
 #include <cmath>
 
 #include "collision/geometry.hpp"
-#include "collision/manifold.hpp"
+#include "dynamics/constants.hpp"
 
 namespace i2d {
 
+namespace {
+
+ProxyKind proxy_kind_of(BodyType type) {
+    switch (type) {
+        case BodyType::static_body: return ProxyKind::static_proxy;
+        case BodyType::kinematic: return ProxyKind::kinematic_proxy;
+        default: return ProxyKind::dynamic_proxy;
+    }
+}
+
+// Static shapes never move, so their fat box is their tight box.
+AABB fatten(const AABB& box, BodyType type) {
+    const float margin = type == BodyType::static_body ? 0.0f : aabb_margin;
+    return {box.lower - Vec2{margin, margin}, box.upper + Vec2{margin, margin}};
+}
+
+// The float update overflowed or broke the speed limit: redo it in double, where no
+// finite float input can overflow, then scale down to the limit. Rare, so off the fast path.
+Vec2 limited_velocity(const Body& b, Vec2 gravity, float h, float max_speed) {
+    double ax = 0.0, ay = 0.0, damping_factor = 1.0;
+    if (b.type == BodyType::dynamic) {
+        ax = double(h) * (double(b.gravity_scale) * gravity.x + double(b.inv_mass) * b.force.x);
+        ay = double(h) * (double(b.gravity_scale) * gravity.y + double(b.inv_mass) * b.force.y);
+        damping_factor = 1.0 / (1.0 + double(h) * b.linear_damping);
+    }
+    const double vx = (b.linear_velocity.x + ax) * damping_factor;
+    const double vy = (b.linear_velocity.y + ay) * damping_factor;
+    const double speed = std::sqrt(vx * vx + vy * vy);
+    const double scale = speed > max_speed ? max_speed / speed : 1.0;
+    return {float(vx * scale), float(vy * scale)};
+}
+
+bool contains(const AABB& outer, const AABB& inner) {
+    return outer.lower.x <= inner.lower.x && outer.lower.y <= inner.lower.y && inner.upper.x <= outer.upper.x &&
+           inner.upper.y <= outer.upper.y;
+}
+
+}  // namespace
+
 World::World(const WorldDef& def) : settings(def) {}
+
+uint64_t World::shape_id(int32_t shape) const {
+    const uint16_t generation = shapes.generation(shape);
+    return id_encoder.shape ? id_encoder.shape(id_encoder.tag, shape, generation)
+                            : (uint64_t(generation) << 32) | uint32_t(shape);
+}
+
+uint64_t World::body_id(int32_t body) const {
+    const uint16_t generation = bodies.generation(body);
+    return id_encoder.body ? id_encoder.body(id_encoder.tag, body, generation)
+                           : (uint64_t(generation) << 32) | uint32_t(body);
+}
 
 int32_t World::create_body(const BodyDef& def) {
     const int32_t index = bodies.allocate();
@@ -35,11 +86,19 @@ int32_t World::create_body(const BodyDef& def) {
 }
 
 void World::destroy_body(int32_t body) {
+    // Shapes first: each takes its contacts (and their end events) with it.
     while (bodies[body].head_shape != null_index) {
         destroy_shape(bodies[body].head_shape);
     }
     bodies.free(body);
     validate();
+}
+
+void World::create_proxy(int32_t shape, bool query_now) {
+    Shape& s = shapes[shape];
+    const BodyType type = bodies[s.body].type;
+    s.proxy_key = broad_phase_.create_proxy(fatten(s.aabb, type), s.filter.category_bits, shape,
+                                            proxy_kind_of(type), query_now);
 }
 
 int32_t World::create_shape(int32_t body, const ShapeDef& def, const Geometry& geometry) {
@@ -56,6 +115,7 @@ int32_t World::create_shape(int32_t body, const ShapeDef& def, const Geometry& g
     s.filter = def.filter;
     s.is_sensor = def.is_sensor;
     s.enable_contact_events = def.enable_contact_events;
+    s.enable_sensor_events = def.enable_sensor_events;
     s.user_data = def.user_data;
 
     Body& b = bodies[body];
@@ -66,13 +126,17 @@ int32_t World::create_shape(int32_t body, const ShapeDef& def, const Geometry& g
     b.head_shape = index;
     ++b.shape_count;
     s.aabb = compute_aabb(geometry, b.transform);
+    // A new static shape may land on resting bodies: let it look for pairs too.
+    create_proxy(index, true);
     update_mass(body);
     validate();
     return index;
 }
 
 void World::destroy_shape(int32_t shape) {
+    destroy_contacts_of_shape(shape);
     const Shape& s = shapes[shape];
+    broad_phase_.destroy_proxy(s.proxy_key);
     Body& b = bodies[s.body];
     if (s.prev_in_body != null_index) {
         shapes[s.prev_in_body].next_in_body = s.next_in_body;
@@ -116,10 +180,16 @@ void World::update_mass(int32_t body) {
     b.center = transform_point(b.transform, b.local_center);
 }
 
-void World::update_shape_bounds(int32_t body) {
+// Tight boxes follow the body; a shape whose tight box left its fat box is re-inserted
+// with a new fat box and queued for pair finding.
+void World::sync_proxies(int32_t body) {
     const Body& b = bodies[body];
     for (int32_t s = b.head_shape; s != null_index; s = shapes[s].next_in_body) {
-        shapes[s].aabb = compute_aabb(shapes[s].geometry, b.transform);
+        Shape& shape = shapes[s];
+        shape.aabb = compute_aabb(shape.geometry, b.transform);
+        if (!contains(broad_phase_.fat_aabb(shape.proxy_key), shape.aabb)) {
+            broad_phase_.move_proxy(shape.proxy_key, fatten(shape.aabb, b.type));
+        }
     }
 }
 
@@ -127,144 +197,123 @@ void World::set_transform(int32_t body, const Transform& xf) {
     Body& b = bodies[body];
     b.transform = xf;
     b.center = transform_point(xf, b.local_center);
-    update_shape_bounds(body);
+    sync_proxies(body);
+}
+
+void World::set_filter(int32_t shape, const Filter& filter) {
+    destroy_contacts_of_shape(shape);
+    broad_phase_.destroy_proxy(shapes[shape].proxy_key);
+    shapes[shape].filter = filter;
+    create_proxy(shape, true);
 }
 
 void World::step(float time_step, int32_t substep_count) {
+    events_.clear();
+    events_.contact_end.swap(pending_contact_ends_);
+    events_.sensor_end.swap(pending_sensor_ends_);
+    for (int32_t i = 0; i < bodies.capacity(); ++i) {
+        if (bodies.is_live(i)) {
+            bodies[i].step_start_position = bodies[i].transform.p;
+        }
+    }
+    begin_contact_step();
     if (time_step > 0.0f) {
         const float h = time_step / static_cast<float>(substep_count);
         for (int32_t i = 0; i < substep_count; ++i) {
             substep(h);
         }
     }
+    end_contact_step();
     for (int32_t i = 0; i < bodies.capacity(); ++i) {
         if (bodies.is_live(i)) {
             bodies[i].force = {};
             bodies[i].torque = 0.0f;
         }
     }
+    report_body_moves();
     validate();
 }
 
-// One substep of the seed's pipeline: forces, contacts, impulses, positions, correction.
+// One substep of the seed's pipeline: contacts, forces, impulses, positions, correction.
 void World::substep(float h) {
+    find_new_contacts();
+    update_contacts();
     integrate_velocities(h);
-    find_contacts();
     const SolverSettings solver{settings.restitution_threshold, settings.contact_slop,
                                 settings.contact_correction_percent, settings.velocity_iterations};
-    prepare_contacts(contacts_, bodies, solver);
-    warm_start_contacts(contacts_, bodies);
-    solve_contact_velocities(contacts_, bodies, solver);
+    gather_constraints(contacts, constraints_);
+    prepare_contacts(constraints_, bodies, solver);
+    warm_start_contacts(constraints_, bodies);
+    solve_contact_velocities(constraints_, bodies, solver);
     integrate_positions(h);
-    correct_contact_positions(contacts_, bodies, solver);
+    correct_contact_positions(constraints_, bodies, solver);
+    scatter_impulses(constraints_, contacts);
     for (int32_t i = 0; i < bodies.capacity(); ++i) {
         if (bodies.is_live(i) && bodies[i].type != BodyType::static_body) {
-            update_shape_bounds(i);
+            sync_proxies(i);
         }
     }
 }
 
+// Gravity, forces and damping for dynamic bodies; the speed limit for every moving body
+// (kinematic ones too: a caller may set any finite velocity).
 void World::integrate_velocities(float h) {
-    const float max_speed_sq = settings.maximum_linear_speed * settings.maximum_linear_speed;
-    for (int32_t i = 0; i < bodies.capacity(); ++i) {
-        if (!bodies.is_live(i) || bodies[i].type != BodyType::dynamic) {
-            continue;
-        }
-        Body& b = bodies[i];
-        Vec2 v = b.linear_velocity + h * (b.gravity_scale * settings.gravity + b.inv_mass * b.force);
-        // Implicit damping: stable for any damping and step, v -> v / (1 + h c).
-        v = (1.0f / (1.0f + h * b.linear_damping)) * v;
-        const float speed_sq = length_squared(v);
-        if (speed_sq > max_speed_sq) {
-            v = (settings.maximum_linear_speed / std::sqrt(speed_sq)) * v;
-        }
-        b.linear_velocity = v;
-    }
-}
-
-void World::integrate_positions(float h) {
-    const float max_speed_sq = settings.maximum_linear_speed * settings.maximum_linear_speed;
+    const float max_speed = settings.maximum_linear_speed;
     for (int32_t i = 0; i < bodies.capacity(); ++i) {
         if (!bodies.is_live(i) || bodies[i].type == BodyType::static_body) {
             continue;
         }
         Body& b = bodies[i];
-        // Kinematic bodies skip integrate_velocities, so clamp here too.
-        const float speed_sq = length_squared(b.linear_velocity);
-        if (speed_sq > max_speed_sq) {
-            b.linear_velocity = (settings.maximum_linear_speed / std::sqrt(speed_sq)) * b.linear_velocity;
+        Vec2 v = b.linear_velocity;
+        if (b.type == BodyType::dynamic) {
+            v += h * (b.gravity_scale * settings.gravity + b.inv_mass * b.force);
+            // Implicit damping: stable for any damping and step, v -> v / (1 + h c).
+            v = (1.0f / (1.0f + h * b.linear_damping)) * v;
         }
+        // NaN-safe: an overflow anywhere above fails this test too.
+        b.linear_velocity = length_squared(v) <= max_speed * max_speed ? v
+                                                                     : limited_velocity(b, settings.gravity, h, max_speed);
+    }
+}
+
+void World::integrate_positions(float h) {
+    for (int32_t i = 0; i < bodies.capacity(); ++i) {
+        if (!bodies.is_live(i) || bodies[i].type == BodyType::static_body) {
+            continue;
+        }
+        Body& b = bodies[i];
         const Vec2 delta = h * b.linear_velocity;
         b.center += delta;
         b.transform.p += delta;
     }
 }
 
-// Broadphase over every shape's bounds, then a manifold per candidate pair. Pairs of
-// shapes on one body, of two bodies that cannot move each other, of sensors and of
-// filtered shapes never reach the narrowphase.
-void World::find_contacts() {
-    proxy_bounds_.clear();
-    proxy_shapes_.clear();
-    for (int32_t i = 0; i < shapes.capacity(); ++i) {
-        if (shapes.is_live(i) && !shapes[i].is_sensor) {
-            proxy_bounds_.push_back(shapes[i].aabb);
-            proxy_shapes_.push_back(i);
-        }
-    }
-    pairs_.clear();
-    broadphase_.find_pairs(
-        proxy_bounds_,
-        [this](int32_t pa, int32_t pb) {
-            const Shape& a = shapes[proxy_shapes_[pa]];
-            const Shape& b = shapes[proxy_shapes_[pb]];
-            if (a.body == b.body) {
-                return false;
-            }
-            const BodyType ta = bodies[a.body].type, tb = bodies[b.body].type;
-            if (ta != BodyType::dynamic && tb != BodyType::dynamic) {
-                return false;
-            }
-            return should_collide(a.filter, b.filter);
-        },
-        pairs_);
-    last_pair_count_ = static_cast<int32_t>(pairs_.size());
-
-    contacts_.swap(previous_contacts_);
-    contacts_.clear();
-    for (const BroadphasePair& pair : pairs_) {
-        const int32_t shape_a = proxy_shapes_[pair.a], shape_b = proxy_shapes_[pair.b];
-        const Shape& a = shapes[shape_a];
-        const Shape& b = shapes[shape_b];
-        const Manifold m = collide_shapes(a.geometry, bodies[a.body].transform, b.geometry, bodies[b.body].transform);
-        if (m.point_count == 0) {
+void World::report_body_moves() {
+    for (int32_t i = 0; i < bodies.capacity(); ++i) {
+        if (!bodies.is_live(i) || bodies[i].type == BodyType::static_body) {
             continue;
         }
-        ContactConstraint c;
-        c.key_a = (uint64_t(shapes.generation(shape_a)) << 32) | uint32_t(shape_a);
-        c.key_b = (uint64_t(shapes.generation(shape_b)) << 32) | uint32_t(shape_b);
-        c.body_a = a.body;
-        c.body_b = b.body;
-        c.normal = m.normal;
-        c.friction = std::sqrt(a.friction * b.friction);
-        c.restitution = std::fmin(a.restitution, b.restitution);
-        c.point_count = m.point_count;
-        for (int32_t i = 0; i < m.point_count; ++i) {
-            c.points[i].id = m.points[i].id;
-            c.points[i].penetration = m.points[i].penetration;
+        const Body& b = bodies[i];
+        if (b.transform.p == b.step_start_position) {
+            continue;
         }
-        contacts_.push_back(c);
+        events_.body_moves.push_back({b.transform, body_id(i), b.user_data, false});
     }
-    sort_contacts(contacts_);
-    carry_impulses(contacts_, previous_contacts_);
 }
 
 WorldCounters World::counters() const {
     WorldCounters c;
     c.body_count = bodies.count();
     c.shape_count = shapes.count();
-    c.contact_count = static_cast<int32_t>(contacts_.size());
-    c.pair_count = last_pair_count_;
+    c.pair_count = contacts.count();
+    for (int32_t i = 0; i < contacts.capacity(); ++i) {
+        if (contacts.is_live(i) && (contacts[i].flags & (contact_touching | contact_sensor)) == contact_touching) {
+            ++c.contact_count;
+        }
+    }
+    for (int32_t k = 0; k < int32_t(ProxyKind::count); ++k) {
+        c.tree_heights[k] = broad_phase_.tree(ProxyKind(k)).height();
+    }
     return c;
 }
 

@@ -1,19 +1,24 @@
 // SPDX-License-Identifier: MIT
-// World: owns bodies and shapes, creates and destroys them, and runs the step.
+// World: owns bodies, shapes and contacts, creates and destroys them, and runs the step.
 //
-// Design note: bodies and shapes live in pools (contiguous, free-listed, generation per
-// slot); a body links its shapes through index links in Shape, so nothing is allocated
-// per object beyond pool growth, and the step reuses its scratch arrays from step to
-// step. Queries live in world_query.cpp.
+// Design note: bodies, shapes and contacts live in pools (contiguous, free-listed,
+// generation per slot) linked by indices; shapes sit in the broadphase's trees and
+// contacts persist while their shapes' fat boxes overlap. Nothing is allocated per
+// object beyond pool growth, and the step reuses its scratch arrays. The step lives in
+// world.cpp, contact bookkeeping in world_contacts.cpp, queries in world_query.cpp,
+// checks in world_validate.cpp.
 #pragma once
 
 #include <cstdint>
 #include <vector>
 
-#include "broadphase/sweep_and_prune.hpp"
+#include "broadphase/broad_phase.hpp"
+#include "core/hash_set.hpp"
 #include "core/pool.hpp"
 #include "dynamics/body.hpp"
+#include "dynamics/contact.hpp"
 #include "dynamics/contact_solver.hpp"
+#include "dynamics/events.hpp"
 #include "dynamics/shape.hpp"
 
 namespace i2d {
@@ -31,8 +36,9 @@ struct WorldDef {
 struct WorldCounters {
     int32_t body_count = 0;
     int32_t shape_count = 0;
-    int32_t contact_count = 0;
-    int32_t pair_count = 0;
+    int32_t contact_count = 0;  // touching, sensors excluded
+    int32_t pair_count = 0;     // contacts alive
+    int32_t tree_heights[int32_t(ProxyKind::count)] = {};
 };
 
 struct RayResult {
@@ -45,6 +51,8 @@ struct RayResult {
 
 /// Called per query result; return false to stop.
 using ShapeVisitor = bool (*)(int32_t shape, void* context);
+/// Called per ray hit; returns -1 (ignore), 0 (stop), a fraction (clip) or 1 (go on).
+using RayVisitor = float (*)(int32_t shape, Vec2 point, Vec2 normal, float fraction, void* context);
 
 class World {
 public:
@@ -58,39 +66,62 @@ public:
     void destroy_shape(int32_t shape);
 
     void set_transform(int32_t body, const Transform& xf);
+    /// Changes a shape's filter; its contacts are rebuilt at the next step.
+    void set_filter(int32_t shape, const Filter& filter);
     void step(float time_step, int32_t substep_count);
 
     void overlap_aabb(const AABB& box, const QueryFilter& filter, ShapeVisitor visit, void* context) const;
     void overlap_point(Vec2 point, const QueryFilter& filter, ShapeVisitor visit, void* context) const;
+    void cast_ray(Vec2 origin, Vec2 translation, const QueryFilter& filter, RayVisitor visit, void* context) const;
     RayResult cast_ray_closest(Vec2 origin, Vec2 translation, const QueryFilter& filter) const;
+    void rebuild_static_tree() { broad_phase_.tree(ProxyKind::static_proxy).rebuild(); }
 
     WorldCounters counters() const;
+    const WorldEvents& events() const { return events_; }
+    bool is_locked() const { return lock_depth_ > 0; }
     /// Aborts on a broken internal invariant; does nothing unless built with I2D_VALIDATE.
     void validate() const;
-    bool is_locked() const { return lock_depth_ > 0; }
 
     WorldDef settings;
+    IdEncoder id_encoder;
     Pool<Body> bodies;
     Pool<Shape> shapes;
+    Pool<Contact> contacts;
 
 private:
     friend class QueryLock;
 
+    // Bodies and shapes.
     void update_mass(int32_t body);
-    void update_shape_bounds(int32_t body);
+    void create_proxy(int32_t shape, bool query_now);
+    void sync_proxies(int32_t body);
+    // Contacts (world_contacts.cpp).
+    void create_contact(int32_t shape_a, int32_t shape_b);
+    ShapePairEvent event_of(const Contact& contact) const;
+    /// during_step: the narrowphase dropped it; otherwise the caller changed the world.
+    void destroy_contact(int32_t contact, bool during_step);
+    void report_touch_changes(const Contact& contact, bool touching_now);
+    void begin_contact_step();
+    void end_contact_step();
+    void destroy_contacts_of_shape(int32_t shape);
+    void find_new_contacts();
+    void update_contacts();
+    // The step.
+    void substep(float h);
     void integrate_velocities(float h);
     void integrate_positions(float h);
-    void find_contacts();
-    void substep(float h);
+    void report_body_moves();
+    uint64_t shape_id(int32_t shape) const;
+    uint64_t body_id(int32_t body) const;
 
+    BroadPhase broad_phase_;
+    HashSet pair_set_;  // pair_key of the shapes of every contact
+    WorldEvents events_;
+    std::vector<ShapePairEvent> pending_contact_ends_;  // caused between steps
+    std::vector<ShapePairEvent> pending_sensor_ends_;
     // Step scratch, kept between steps so that a steady state allocates nothing.
-    SweepAndPrune broadphase_;
-    std::vector<AABB> proxy_bounds_;
-    std::vector<int32_t> proxy_shapes_;
-    std::vector<BroadphasePair> pairs_;
-    std::vector<ContactConstraint> contacts_;
-    std::vector<ContactConstraint> previous_contacts_;  // last substep's, for warm starting
-    int32_t last_pair_count_ = 0;
+    std::vector<ShapePairCandidate> new_pairs_;
+    std::vector<ContactConstraint> constraints_;
     mutable int32_t lock_depth_ = 0;
 };
 

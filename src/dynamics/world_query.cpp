@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: MIT
-// World queries: shapes overlapping a box or a point, and the closest ray hit.
+// World queries through the broadphase trees, with exact geometry on the leaves.
 //
-// Each query walks the shape pool in index order (a fixed order) and tests the cached
-// bounds before the exact geometry. The broadphase issue replaces the walk with tree
-// queries; the exact tests stay.
+// Trees are walked static, kinematic, dynamic, each in its traversal order: a fixed
+// order for the same world. Fat boxes only narrow the search; every reported shape
+// passed the exact test.
 #include "collision/geometry.hpp"
 #include "dynamics/world.hpp"
 
@@ -11,52 +11,83 @@ namespace i2d {
 
 void World::overlap_aabb(const AABB& box, const QueryFilter& filter, ShapeVisitor visit, void* context) const {
     QueryLock lock(*this);
-    for (int32_t i = 0; i < shapes.capacity(); ++i) {
-        if (!shapes.is_live(i)) {
-            continue;
-        }
-        const Shape& s = shapes[i];
-        if (!should_query(s.filter, filter) || !overlaps(s.aabb, box)) {
-            continue;
-        }
-        if (overlaps_aabb(s.geometry, bodies[s.body].transform, box) && !visit(i, context)) {
-            return;
-        }
+    bool go_on = true;
+    for (int32_t k = 0; k < int32_t(ProxyKind::count) && go_on; ++k) {
+        broad_phase_.tree(ProxyKind(k)).query(box, filter.mask_bits, [&](int32_t, int32_t shape) {
+            const Shape& s = shapes[shape];
+            if (should_query(s.filter, filter) && overlaps(s.aabb, box) &&
+                overlaps_aabb(s.geometry, bodies[s.body].transform, box)) {
+                go_on = visit(shape, context);
+            }
+            return go_on;
+        });
     }
 }
 
 void World::overlap_point(Vec2 point, const QueryFilter& filter, ShapeVisitor visit, void* context) const {
     QueryLock lock(*this);
-    for (int32_t i = 0; i < shapes.capacity(); ++i) {
-        if (!shapes.is_live(i)) {
-            continue;
-        }
-        const Shape& s = shapes[i];
-        if (!should_query(s.filter, filter) || !contains_point(s.aabb, point)) {
-            continue;
-        }
-        if (contains_point(s.geometry, bodies[s.body].transform, point) && !visit(i, context)) {
-            return;
-        }
+    const AABB box{point, point};
+    bool go_on = true;
+    for (int32_t k = 0; k < int32_t(ProxyKind::count) && go_on; ++k) {
+        broad_phase_.tree(ProxyKind(k)).query(box, filter.mask_bits, [&](int32_t, int32_t shape) {
+            const Shape& s = shapes[shape];
+            if (should_query(s.filter, filter) && contains_point(s.aabb, point) &&
+                contains_point(s.geometry, bodies[s.body].transform, point)) {
+                go_on = visit(shape, context);
+            }
+            return go_on;
+        });
     }
 }
 
-RayResult World::cast_ray_closest(Vec2 origin, Vec2 translation, const QueryFilter& filter) const {
-    RayResult best;
-    float max_fraction = 1.0f;
-    for (int32_t i = 0; i < shapes.capacity(); ++i) {
-        if (!shapes.is_live(i) || !should_query(shapes[i].filter, filter)) {
-            continue;
-        }
-        const Shape& s = shapes[i];
-        const RayHit hit = ray_cast(s.geometry, bodies[s.body].transform, origin, translation, max_fraction);
-        // Strictly closer only: on equal fractions the lower index wins, a fixed answer.
-        if (hit.hit && (!best.hit || hit.fraction < max_fraction)) {
-            best = {i, hit.point, hit.normal, hit.fraction, true};
-            max_fraction = hit.fraction;
-        }
+// One clip fraction shared by the three trees, so that a hit in one tree shortens the
+// ray for the next.
+void World::cast_ray(Vec2 origin, Vec2 translation, const QueryFilter& filter, RayVisitor visit,
+                     void* context) const {
+    QueryLock lock(*this);
+    TreeRayInput input{origin, translation, 1.0f};
+    bool stopped = false;
+    for (int32_t k = 0; k < int32_t(ProxyKind::count) && !stopped; ++k) {
+        broad_phase_.tree(ProxyKind(k)).ray_cast(
+            input, filter.mask_bits, [&](const TreeRayInput& current, int32_t, int32_t shape) -> float {
+                const Shape& s = shapes[shape];
+                if (!should_query(s.filter, filter)) {
+                    return -1.0f;
+                }
+                const RayHit hit = ray_cast(s.geometry, bodies[s.body].transform, current.origin,
+                                            current.translation, current.max_fraction);
+                if (!hit.hit) {
+                    return -1.0f;
+                }
+                const float value = visit(shape, hit.point, hit.normal, hit.fraction, context);
+                if (value == 0.0f) {
+                    stopped = true;
+                } else if (value > 0.0f && value < input.max_fraction) {
+                    input.max_fraction = value;
+                }
+                return value;
+            });
     }
-    return best;
+}
+
+namespace {
+
+struct ClosestHit {
+    RayResult result;
+};
+
+float keep_closest(int32_t shape, Vec2 point, Vec2 normal, float fraction, void* context) {
+    auto* closest = static_cast<ClosestHit*>(context);
+    closest->result = {shape, point, normal, fraction, true};
+    return fraction;  // clip: only nearer hits can follow
+}
+
+}  // namespace
+
+RayResult World::cast_ray_closest(Vec2 origin, Vec2 translation, const QueryFilter& filter) const {
+    ClosestHit closest;
+    cast_ray(origin, translation, filter, keep_closest, &closest);
+    return closest.result;
 }
 
 }  // namespace i2d

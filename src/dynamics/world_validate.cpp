@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// World::validate: cross-checks bodies, shapes and their links (I2D_VALIDATE builds).
+// World::validate: cross-checks bodies, shapes, contacts and their links (I2D_VALIDATE).
 #include <cmath>
 
 #include "core/assert.hpp"
@@ -10,7 +10,7 @@ namespace i2d {
 
 void World::validate() const {
 #if defined(I2D_VALIDATE)
-    int32_t shapes_seen = 0;
+    int32_t shapes_seen = 0, contact_edges_seen = 0;
     for (int32_t i = 0; i < bodies.capacity(); ++i) {
         if (!bodies.is_live(i)) {
             continue;
@@ -22,23 +22,52 @@ void World::validate() const {
         int32_t count = 0;
         int32_t prev = null_index;
         for (int32_t s = b.head_shape; s != null_index; s = shapes[s].next_in_body) {
-            I2D_ASSERT(shapes.is_live(s));
-            I2D_ASSERT(shapes[s].body == i);
-            I2D_ASSERT(shapes[s].prev_in_body == prev);
+            I2D_ASSERT(shapes.is_live(s) && shapes[s].body == i && shapes[s].prev_in_body == prev);
             I2D_ASSERT(count <= b.shape_count);  // no cycle
             prev = s;
             ++count;
         }
         I2D_ASSERT(count == b.shape_count);
         shapes_seen += count;
+
+        count = 0;
+        int32_t prev_key = null_index;
+        for (int32_t key = b.head_contact_key; key != null_index;) {
+            const Contact& c = contacts[key >> 1];
+            const ContactEdge& edge = c.edges[key & 1];
+            I2D_ASSERT(contacts.is_live(key >> 1) && edge.body == i && edge.prev_key == prev_key);
+            I2D_ASSERT(count <= b.contact_count);
+            prev_key = key;
+            key = edge.next_key;
+            ++count;
+        }
+        I2D_ASSERT(count == b.contact_count);
+        contact_edges_seen += count;
     }
     I2D_ASSERT(shapes_seen == shapes.count());
+    I2D_ASSERT(contact_edges_seen == 2 * contacts.count());
+    I2D_ASSERT(pair_set_.count() == contacts.count());
     for (int32_t i = 0; i < shapes.capacity(); ++i) {
-        if (shapes.is_live(i)) {
-            const AABB& box = shapes[i].aabb;
-            I2D_ASSERT(is_finite(box.lower) && is_finite(box.upper));
-            I2D_ASSERT(box.lower.x <= box.upper.x && box.lower.y <= box.upper.y);
+        if (!shapes.is_live(i)) {
+            continue;
         }
+        const Shape& s = shapes[i];
+        I2D_ASSERT(is_finite(s.aabb.lower) && is_finite(s.aabb.upper));
+        I2D_ASSERT(s.aabb.lower.x <= s.aabb.upper.x && s.aabb.lower.y <= s.aabb.upper.y);
+        const AABB& fat = broad_phase_.fat_aabb(s.proxy_key);
+        I2D_ASSERT(fat.lower.x <= s.aabb.lower.x && fat.lower.y <= s.aabb.lower.y);
+        I2D_ASSERT(s.aabb.upper.x <= fat.upper.x && s.aabb.upper.y <= fat.upper.y);
+        I2D_ASSERT(broad_phase_.tree(proxy_kind(s.proxy_key)).user_value(proxy_id(s.proxy_key)) == i);
+    }
+    for (int32_t i = 0; i < contacts.capacity(); ++i) {
+        if (contacts.is_live(i)) {
+            const Contact& c = contacts[i];
+            I2D_ASSERT(c.shape_a < c.shape_b && shapes.is_live(c.shape_a) && shapes.is_live(c.shape_b));
+            I2D_ASSERT(pair_set_.contains(pair_key(c.shape_a, c.shape_b)));
+        }
+    }
+    for (int32_t k = 0; k < int32_t(ProxyKind::count); ++k) {
+        broad_phase_.tree(ProxyKind(k)).validate();
     }
 #endif
 }

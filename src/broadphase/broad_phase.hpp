@@ -1,0 +1,65 @@
+// SPDX-License-Identifier: MIT
+// BroadPhase: one dynamic tree per body type, a move buffer, and pair finding.
+//
+// Design note: static shapes sit in their own tree and are never re-inserted, so a large
+// static level costs nothing per step; only proxies whose tight box left their fat box
+// (the move buffer) are queried, against the trees they can collide with (a moved
+// dynamic proxy against all three trees, a moved kinematic or static one against the
+// dynamic tree). Pairs come out in move-buffer order and, per proxy, in tree order: the
+// same inputs give the same pairs in the same order. Existing pairs are skipped through
+// a caller's test (the world keeps the set of shape pairs that have a contact).
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "broadphase/dynamic_tree.hpp"
+#include "core/hash_set.hpp"
+
+namespace i2d {
+
+enum class ProxyKind : uint8_t { static_proxy = 0, kinematic_proxy = 1, dynamic_proxy = 2, count };
+
+/// A proxy key packs the tree (low 2 bits) and the proxy id within it.
+inline int32_t make_proxy_key(int32_t proxy, ProxyKind kind) { return (proxy << 2) | int32_t(kind); }
+inline ProxyKind proxy_kind(int32_t key) { return ProxyKind(key & 3); }
+inline int32_t proxy_id(int32_t key) { return key >> 2; }
+
+struct ShapePairCandidate {
+    int32_t shape_a, shape_b;  // shape_a < shape_b
+};
+
+class BroadPhase {
+public:
+    /// Adds a proxy; it is queried for pairs at the next update_pairs unless it is
+    /// static and `query_now` is false (static against static never pairs).
+    int32_t create_proxy(const AABB& fat_aabb, uint64_t category_bits, int32_t shape, ProxyKind kind,
+                         bool query_now);
+    void destroy_proxy(int32_t key);
+    /// Re-inserts with a new fat box and queues the proxy for pair finding.
+    void move_proxy(int32_t key, const AABB& fat_aabb);
+    /// Grows the fat box in place and queues the proxy for pair finding.
+    void enlarge_proxy(int32_t key, const AABB& fat_aabb);
+
+    /// Finds new candidate pairs of the queued proxies and clears the queue. Appends each
+    /// pair once to `out` (shape_a < shape_b) if `accept(shape_a, shape_b)` says so; the
+    /// caller's accept rejects pairs that already have a contact or must not collide.
+    template <class Accept>
+    void update_pairs(Accept&& accept, std::vector<ShapePairCandidate>& out);
+
+    const DynamicTree& tree(ProxyKind kind) const { return trees_[int32_t(kind)]; }
+    DynamicTree& tree(ProxyKind kind) { return trees_[int32_t(kind)]; }
+    const AABB& fat_aabb(int32_t key) const { return tree(proxy_kind(key)).fat_aabb(proxy_id(key)); }
+    int32_t move_count() const { return int32_t(move_buffer_.size()); }
+
+private:
+    void buffer_move(int32_t key);
+
+    DynamicTree trees_[int32_t(ProxyKind::count)];
+    std::vector<int32_t> move_buffer_;  // proxy keys, in the order they moved
+    HashSet move_set_;                  // the same keys, for "did the other one move too"
+};
+
+}  // namespace i2d
+
+#include "broadphase/broad_phase_pairs.inl"

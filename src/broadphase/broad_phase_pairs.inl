@@ -1,0 +1,46 @@
+// SPDX-License-Identifier: MIT
+// BroadPhase::update_pairs, templated on the caller's accept test so that it inlines.
+#pragma once
+
+namespace i2d {
+
+template <class Accept>
+void BroadPhase::update_pairs(Accept&& accept, std::vector<ShapePairCandidate>& out) {
+    for (const int32_t key : move_buffer_) {
+        if (key == null_index) {
+            continue;  // destroyed after it moved
+        }
+        const ProxyKind kind = proxy_kind(key);
+        const DynamicTree& own = tree(kind);
+        const AABB box = own.fat_aabb(proxy_id(key));
+        const int32_t shape = own.user_value(proxy_id(key));
+        // Static and kinematic proxies only pair with dynamic ones.
+        for (int32_t t = 0; t < int32_t(ProxyKind::count); ++t) {
+            const ProxyKind other_kind = ProxyKind(t);
+            if (kind != ProxyKind::dynamic_proxy && other_kind != ProxyKind::dynamic_proxy) {
+                continue;
+            }
+            tree(other_kind).query(box, ~uint64_t(0), [&](int32_t proxy, int32_t other_shape) {
+                const int32_t other_key = make_proxy_key(proxy, other_kind);
+                // Itself, or a pair both of whose proxies moved: the lower key reports it.
+                if (other_key == key || (other_key < key && move_set_.contains(uint64_t(other_key) + 1))) {
+                    return true;
+                }
+                const int32_t a = shape < other_shape ? shape : other_shape;
+                const int32_t b = shape < other_shape ? other_shape : shape;
+                if (accept(a, b)) {
+                    out.push_back({a, b});
+                }
+                return true;
+            });
+        }
+    }
+    for (const int32_t key : move_buffer_) {
+        if (key != null_index) {
+            move_set_.remove(uint64_t(key) + 1);
+        }
+    }
+    move_buffer_.clear();
+}
+
+}  // namespace i2d

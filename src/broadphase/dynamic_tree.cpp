@@ -1,0 +1,430 @@
+// SPDX-License-Identifier: MIT
+// DynamicTree: insertion by surface-area heuristic, removal, rotations, rebuild, checks.
+#include "broadphase/dynamic_tree.hpp"
+
+#include <algorithm>
+#include <cfloat>
+
+#include "core/assert.hpp"
+
+namespace i2d {
+
+namespace {
+
+AABB union_of(const AABB& a, const AABB& b) { return {min(a.lower, b.lower), max(a.upper, b.upper)}; }
+
+// 2D's surface area: what the cost of a node in a ray or box query grows with.
+float perimeter(const AABB& a) { return 2.0f * ((a.upper.x - a.lower.x) + (a.upper.y - a.lower.y)); }
+
+bool contains(const AABB& outer, const AABB& inner) {
+    return outer.lower.x <= inner.lower.x && outer.lower.y <= inner.lower.y && inner.upper.x <= outer.upper.x &&
+           inner.upper.y <= outer.upper.y;
+}
+
+}  // namespace
+
+int32_t DynamicTree::allocate_node() {
+    if (free_list_ != null_index) {
+        const int32_t index = free_list_;
+        free_list_ = nodes_[index].parent;
+        nodes_[index] = TreeNode{};
+        return index;
+    }
+    nodes_.emplace_back();
+    return int32_t(nodes_.size()) - 1;
+}
+
+void DynamicTree::free_node(int32_t node) {
+    nodes_[node].height = -1;
+    nodes_[node].parent = free_list_;
+    free_list_ = node;
+}
+
+int32_t DynamicTree::create_proxy(const AABB& fat_aabb, uint64_t category_bits, int32_t user_value) {
+    const int32_t leaf = allocate_node();
+    TreeNode& node = nodes_[leaf];
+    node.aabb = fat_aabb;
+    node.category_bits = category_bits;
+    node.user_value = user_value;
+    node.height = 0;
+    insert_leaf(leaf);
+    ++proxy_count_;
+    return leaf;
+}
+
+void DynamicTree::destroy_proxy(int32_t proxy) {
+    I2D_ASSERT(nodes_[proxy].is_leaf() && nodes_[proxy].height == 0);
+    remove_leaf(proxy);
+    free_node(proxy);
+    --proxy_count_;
+}
+
+void DynamicTree::move_proxy(int32_t proxy, const AABB& fat_aabb) {
+    remove_leaf(proxy);
+    nodes_[proxy].aabb = fat_aabb;
+    insert_leaf(proxy);
+}
+
+void DynamicTree::enlarge_proxy(int32_t proxy, const AABB& fat_aabb) {
+    I2D_ASSERT(contains(fat_aabb, nodes_[proxy].aabb));
+    nodes_[proxy].aabb = fat_aabb;
+    nodes_[proxy].enlarged = true;
+    // Ancestors grow until one already holds the new box; above it nothing changes.
+    for (int32_t index = nodes_[proxy].parent; index != null_index; index = nodes_[index].parent) {
+        if (contains(nodes_[index].aabb, fat_aabb)) {
+            break;
+        }
+        nodes_[index].aabb = union_of(nodes_[index].aabb, fat_aabb);
+    }
+}
+
+// Branch and bound down one path: the cost of making node X the new leaf's sibling is
+// the perimeter of X grown by the leaf plus how much every ancestor of X grows (the
+// "inherited" cost). Descending into a child can never cost less than the inherited
+// cost plus the child's own growth plus the leaf's perimeter, which prunes the search.
+int32_t DynamicTree::find_best_sibling(const AABB& box) const {
+    const float box_perimeter = perimeter(box);
+    int32_t best = root_;
+    float best_cost = perimeter(union_of(nodes_[root_].aabb, box));
+    float inherited = 0.0f;
+    int32_t index = root_;
+    while (!nodes_[index].is_leaf()) {
+        const TreeNode& node = nodes_[index];
+        inherited += perimeter(union_of(node.aabb, box)) - perimeter(node.aabb);
+
+        float descend_bound[2] = {FLT_MAX, FLT_MAX};
+        const int32_t children[2] = {node.child1, node.child2};
+        for (int k = 0; k < 2; ++k) {
+            const TreeNode& child = nodes_[children[k]];
+            const float direct = perimeter(union_of(child.aabb, box));
+            const float cost = direct + inherited;
+            if (cost < best_cost) {
+                best_cost = cost;
+                best = children[k];
+            }
+            if (!child.is_leaf()) {
+                descend_bound[k] = inherited + (direct - perimeter(child.aabb)) + box_perimeter;
+            }
+        }
+        const int k = descend_bound[0] <= descend_bound[1] ? 0 : 1;
+        if (descend_bound[k] >= best_cost) {
+            break;
+        }
+        index = children[k];
+    }
+    return best;
+}
+
+void DynamicTree::insert_leaf(int32_t leaf) {
+    if (root_ == null_index) {
+        root_ = leaf;
+        nodes_[leaf].parent = null_index;
+        return;
+    }
+    const int32_t sibling = find_best_sibling(nodes_[leaf].aabb);
+    const int32_t old_parent = nodes_[sibling].parent;
+    const int32_t new_parent = allocate_node();  // may move nodes_: index from here on
+
+    TreeNode& parent = nodes_[new_parent];
+    parent.parent = old_parent;
+    parent.aabb = union_of(nodes_[leaf].aabb, nodes_[sibling].aabb);
+    parent.category_bits = nodes_[leaf].category_bits | nodes_[sibling].category_bits;
+    parent.height = int16_t(nodes_[sibling].height + 1);
+    parent.child1 = sibling;
+    parent.child2 = leaf;
+    if (old_parent == null_index) {
+        root_ = new_parent;
+    } else if (nodes_[old_parent].child1 == sibling) {
+        nodes_[old_parent].child1 = new_parent;
+    } else {
+        nodes_[old_parent].child2 = new_parent;
+    }
+    nodes_[sibling].parent = new_parent;
+    nodes_[leaf].parent = new_parent;
+    refit_upward(old_parent, true);
+}
+
+void DynamicTree::remove_leaf(int32_t leaf) {
+    if (leaf == root_) {
+        root_ = null_index;
+        return;
+    }
+    const int32_t parent = nodes_[leaf].parent;
+    const int32_t grand = nodes_[parent].parent;
+    const int32_t sibling = nodes_[parent].child1 == leaf ? nodes_[parent].child2 : nodes_[parent].child1;
+    if (grand == null_index) {
+        root_ = sibling;
+        nodes_[sibling].parent = null_index;
+    } else {
+        if (nodes_[grand].child1 == parent) {
+            nodes_[grand].child1 = sibling;
+        } else {
+            nodes_[grand].child2 = sibling;
+        }
+        nodes_[sibling].parent = grand;
+        refit_upward(grand, false);
+    }
+    free_node(parent);
+    nodes_[leaf].parent = null_index;
+}
+
+void DynamicTree::refit_upward(int32_t index, bool rotate_nodes) {
+    while (index != null_index) {
+        TreeNode& node = nodes_[index];
+        const TreeNode& c1 = nodes_[node.child1];
+        const TreeNode& c2 = nodes_[node.child2];
+        node.aabb = union_of(c1.aabb, c2.aabb);
+        node.category_bits = c1.category_bits | c2.category_bits;
+        node.height = int16_t(1 + std::max(c1.height, c2.height));
+        if (rotate_nodes) {
+            rotate(index);
+        }
+        index = nodes_[index].parent;
+    }
+}
+
+// Tree rotation by perimeter: for node A with children B and C, try swapping B with a
+// child of C, or C with a child of B, and apply the swap that shrinks the perimeter of
+// the rebuilt child the most. A's own box is the same afterwards (same leaves).
+void DynamicTree::rotate(int32_t a) {
+    const int32_t b = nodes_[a].child1, c = nodes_[a].child2;
+    struct Swap {
+        int32_t outer;  // the child of A that moves down
+        int32_t inner;  // the grandchild that moves up
+        int32_t host;   // the child of A that receives `outer`
+        float gain;
+    } best{null_index, null_index, null_index, 0.0f};
+
+    auto consider = [&](int32_t outer, int32_t host) {
+        const TreeNode& h = nodes_[host];
+        if (h.is_leaf()) {
+            return;
+        }
+        const float before = perimeter(h.aabb);
+        // Swap outer with host.child1: host then holds outer and host.child2, and vice versa.
+        const float after1 = perimeter(union_of(nodes_[outer].aabb, nodes_[h.child2].aabb));
+        const float after2 = perimeter(union_of(nodes_[outer].aabb, nodes_[h.child1].aabb));
+        if (before - after1 > best.gain) {
+            best = {outer, h.child1, host, before - after1};
+        }
+        if (before - after2 > best.gain) {
+            best = {outer, h.child2, host, before - after2};
+        }
+    };
+    consider(b, c);
+    consider(c, b);
+    if (best.outer == null_index) {
+        return;
+    }
+
+    TreeNode& host = nodes_[best.host];
+    if (host.child1 == best.inner) {
+        host.child1 = best.outer;
+    } else {
+        host.child2 = best.outer;
+    }
+    nodes_[best.outer].parent = best.host;
+    TreeNode& node = nodes_[a];
+    if (node.child1 == best.outer) {
+        node.child1 = best.inner;
+    } else {
+        node.child2 = best.inner;
+    }
+    nodes_[best.inner].parent = a;
+
+    const TreeNode& h1 = nodes_[host.child1];
+    const TreeNode& h2 = nodes_[host.child2];
+    host.aabb = union_of(h1.aabb, h2.aabb);
+    host.category_bits = h1.category_bits | h2.category_bits;
+    host.height = int16_t(1 + std::max(h1.height, h2.height));
+    node.height = int16_t(1 + std::max(nodes_[node.child1].height, nodes_[node.child2].height));
+}
+
+float DynamicTree::total_perimeter() const {
+    float total = 0.0f;
+    for (const TreeNode& node : nodes_) {
+        if (node.height > 0) {
+            total += perimeter(node.aabb);
+        }
+    }
+    return total;
+}
+
+namespace {
+
+constexpr int32_t bin_count = 16;
+// Beyond this depth the build splits at the median, which bounds the depth whatever the
+// geometry (coincident boxes give the SAH nothing to separate).
+constexpr int32_t max_sah_depth = 40;
+
+}  // namespace
+
+void DynamicTree::rebuild() {
+    rebuild_scratch_.clear();
+    for (int32_t i = 0; i < int32_t(nodes_.size()); ++i) {
+        if (nodes_[i].height < 0) {
+            continue;
+        }
+        if (nodes_[i].is_leaf()) {
+            nodes_[i].parent = null_index;
+            nodes_[i].enlarged = false;
+            rebuild_scratch_.push_back(i);
+        } else {
+            free_node(i);
+        }
+    }
+    root_ = rebuild_scratch_.empty() ? null_index
+                                     : build_top_down(rebuild_scratch_.data(), int32_t(rebuild_scratch_.size()));
+    if (root_ != null_index) {
+        nodes_[root_].parent = null_index;
+    }
+    validate();
+}
+
+// Binned SAH over the leaves' centres: the split plane that minimises
+// perimeter(left) * count(left) + perimeter(right) * count(right).
+int32_t DynamicTree::build_top_down(int32_t* leaves, int32_t count) {
+    struct Task {
+        int32_t* leaves;
+        int32_t count;
+        int32_t parent;
+        int32_t depth;
+        bool first_child;
+    };
+    std::vector<Task> tasks{{leaves, count, null_index, 0, true}};
+    int32_t root = null_index;
+    while (!tasks.empty()) {
+        const Task task = tasks.back();
+        tasks.pop_back();
+        int32_t node;
+        if (task.count == 1) {
+            node = task.leaves[0];
+        } else {
+            node = allocate_node();
+            AABB centres{nodes_[task.leaves[0]].aabb.lower, nodes_[task.leaves[0]].aabb.lower};
+            for (int32_t i = 0; i < task.count; ++i) {
+                const Vec2 c = center(nodes_[task.leaves[i]].aabb);
+                centres.lower = min(centres.lower, c);
+                centres.upper = max(centres.upper, c);
+            }
+            const bool split_x = centres.upper.x - centres.lower.x >= centres.upper.y - centres.lower.y;
+            const float lo = split_x ? centres.lower.x : centres.lower.y;
+            const float extent = split_x ? centres.upper.x - centres.lower.x : centres.upper.y - centres.lower.y;
+            auto coord = [&](int32_t leaf) {
+                const Vec2 c = center(nodes_[leaf].aabb);
+                return split_x ? c.x : c.y;
+            };
+            int32_t split = task.count / 2;
+            if (extent > 0.0f && task.depth < max_sah_depth) {
+                AABB bin_box[bin_count];
+                int32_t bin_n[bin_count] = {};
+                auto bin_of = [&](int32_t leaf) {
+                    const int32_t b = int32_t(float(bin_count) * (coord(leaf) - lo) / extent);
+                    return std::min(std::max(b, 0), bin_count - 1);
+                };
+                for (int32_t i = 0; i < task.count; ++i) {
+                    const int32_t b = bin_of(task.leaves[i]);
+                    bin_box[b] = bin_n[b] == 0 ? nodes_[task.leaves[i]].aabb
+                                               : union_of(bin_box[b], nodes_[task.leaves[i]].aabb);
+                    ++bin_n[b];
+                }
+                // Sweep from the right to know every right side's cost, then from the left.
+                float right_cost[bin_count] = {};
+                AABB acc{};
+                int32_t acc_n = 0;
+                for (int32_t b = bin_count - 1; b > 0; --b) {
+                    if (bin_n[b] > 0) {
+                        acc = acc_n == 0 ? bin_box[b] : union_of(acc, bin_box[b]);
+                        acc_n += bin_n[b];
+                    }
+                    right_cost[b] = acc_n == 0 ? 0.0f : perimeter(acc) * float(acc_n);
+                }
+                float best_cost = FLT_MAX;
+                int32_t best_bin = -1;
+                acc_n = 0;
+                for (int32_t b = 0; b < bin_count - 1; ++b) {
+                    if (bin_n[b] > 0) {
+                        acc = acc_n == 0 ? bin_box[b] : union_of(acc, bin_box[b]);
+                        acc_n += bin_n[b];
+                    }
+                    if (acc_n == 0 || acc_n == task.count) {
+                        continue;
+                    }
+                    const float cost = perimeter(acc) * float(acc_n) + right_cost[b + 1];
+                    if (cost < best_cost) {
+                        best_cost = cost;
+                        best_bin = b;
+                    }
+                }
+                if (best_bin >= 0) {
+                    int32_t* mid = std::partition(task.leaves, task.leaves + task.count,
+                                                  [&](int32_t leaf) { return bin_of(leaf) <= best_bin; });
+                    split = int32_t(mid - task.leaves);
+                }
+            } else {
+                std::nth_element(task.leaves, task.leaves + split, task.leaves + task.count,
+                                 [&](int32_t l, int32_t r) { return coord(l) < coord(r); });
+            }
+            nodes_[node].child1 = null_index;  // filled in by the child tasks
+            tasks.push_back({task.leaves, split, node, task.depth + 1, true});
+            tasks.push_back({task.leaves + split, task.count - split, node, task.depth + 1, false});
+        }
+        if (task.parent == null_index) {
+            root = node;
+        } else {
+            (task.first_child ? nodes_[task.parent].child1 : nodes_[task.parent].child2) = node;
+            nodes_[node].parent = task.parent;
+        }
+    }
+    // Boxes, categories and heights bottom-up: children were allocated after parents, and
+    // leaves are final, so a pass in reverse allocation order is not enough in general;
+    // recompute by walking up from every leaf instead.
+    for (int32_t i = 0; i < count; ++i) {
+        for (int32_t index = nodes_[leaves[i]].parent; index != null_index; index = nodes_[index].parent) {
+            TreeNode& n = nodes_[index];
+            if (n.child1 == null_index || n.child2 == null_index) {
+                break;
+            }
+            const TreeNode& c1 = nodes_[n.child1];
+            const TreeNode& c2 = nodes_[n.child2];
+            n.aabb = union_of(c1.aabb, c2.aabb);
+            n.category_bits = c1.category_bits | c2.category_bits;
+            n.height = int16_t(1 + std::max(c1.height, c2.height));
+        }
+    }
+    return root;
+}
+
+void DynamicTree::validate() const {
+#if defined(I2D_VALIDATE)
+    int32_t leaves = 0, live = 0;
+    for (int32_t i = 0; i < int32_t(nodes_.size()); ++i) {
+        const TreeNode& n = nodes_[i];
+        if (n.height < 0) {
+            continue;
+        }
+        ++live;
+        I2D_ASSERT(n.parent == null_index ? i == root_ : nodes_[n.parent].child1 == i || nodes_[n.parent].child2 == i);
+        if (n.is_leaf()) {
+            I2D_ASSERT(n.height == 0 && n.child2 == null_index);
+            ++leaves;
+            continue;
+        }
+        const TreeNode& c1 = nodes_[n.child1];
+        const TreeNode& c2 = nodes_[n.child2];
+        I2D_ASSERT(c1.parent == i && c2.parent == i);
+        I2D_ASSERT(n.height == 1 + std::max(c1.height, c2.height));
+        I2D_ASSERT(contains(n.aabb, c1.aabb) && contains(n.aabb, c2.aabb));
+        I2D_ASSERT(n.category_bits == (c1.category_bits | c2.category_bits));
+    }
+    I2D_ASSERT(leaves == proxy_count_);
+    int32_t free_count = 0;
+    for (int32_t i = free_list_; i != null_index; i = nodes_[i].parent) {
+        I2D_ASSERT(nodes_[i].height == -1);
+        ++free_count;
+    }
+    I2D_ASSERT(live + free_count == int32_t(nodes_.size()));
+#endif
+}
+
+}  // namespace i2d

@@ -1,0 +1,96 @@
+// SPDX-License-Identifier: MIT
+// DynamicTree: a bounding volume hierarchy of fat AABBs with incremental insert, remove
+// and move, kept shallow by the surface-area heuristic and tree rotations.
+//
+// Design note: nodes live in one array with a free list and index links (no pointers),
+// leaves hold a proxy's fat box, category bits and user value (a shape index). Inserting
+// walks down choosing the sibling that adds the least perimeter (2D's surface area),
+// counting the growth of every ancestor (Bittner et al., "Fast, Effective BVH Updates
+// for Animated Scenes", as Box2D v3 uses it); rotations on the way back up keep the
+// height near log2(n). A top-down binned SAH rebuild serves bulk creation. The
+// alternative, a loose grid, needs a cell size that suits every scene.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "core/pool.hpp"
+#include "math/vec2.hpp"
+
+namespace i2d {
+
+struct TreeNode {
+    AABB aabb;
+    uint64_t category_bits = 0;  // leaves: the shape's; internal nodes: the union below
+    int32_t parent = null_index; // also the free list link for free nodes
+    int32_t child1 = null_index;
+    int32_t child2 = null_index;
+    int32_t user_value = -1;     // leaves: the shape index
+    int16_t height = 0;          // leaves 0; -1 when free
+    bool enlarged = false;       // the broadphase grew this leaf outside a re-insert
+    bool is_leaf() const { return child1 == null_index; }
+};
+
+struct TreeRayInput {
+    Vec2 origin;
+    Vec2 translation;
+    float max_fraction = 1.0f;
+};
+
+class DynamicTree {
+public:
+    /// Adds a leaf; returns its proxy id (a node index).
+    int32_t create_proxy(const AABB& fat_aabb, uint64_t category_bits, int32_t user_value);
+    void destroy_proxy(int32_t proxy);
+    /// Removes and re-inserts the leaf with a new fat box.
+    void move_proxy(int32_t proxy, const AABB& fat_aabb);
+    /// Grows the leaf's box in place (ancestors grow to contain it); cheaper than a move
+    /// when the box only gets bigger. The box must contain the old one.
+    void enlarge_proxy(int32_t proxy, const AABB& fat_aabb);
+
+    const AABB& fat_aabb(int32_t proxy) const { return nodes_[proxy].aabb; }
+    int32_t user_value(int32_t proxy) const { return nodes_[proxy].user_value; }
+    uint64_t category_bits(int32_t proxy) const { return nodes_[proxy].category_bits; }
+
+    /// Calls visit(proxy, user_value) for every leaf whose box overlaps `box` (touching
+    /// included) and whose category meets `mask_bits`; visit returns false to stop.
+    template <class Visit>
+    void query(const AABB& box, uint64_t mask_bits, Visit&& visit) const;
+
+    /// Calls visit(input, proxy, user_value) -> float for every leaf whose box the ray
+    /// (origin + t translation, t up to the current max fraction) crosses. The returned
+    /// value: 0 stops, a value in (0, max) clips the ray, -1 or >= max leaves it as is.
+    template <class Visit>
+    void ray_cast(const TreeRayInput& input, uint64_t mask_bits, Visit&& visit) const;
+
+    /// Rebuilds the whole tree top-down with a binned surface-area heuristic.
+    void rebuild();
+
+    int32_t height() const { return root_ == null_index ? 0 : nodes_[root_].height; }
+    int32_t proxy_count() const { return proxy_count_; }
+    /// Sum of the perimeters of all internal nodes: the quality measure the SAH minimises.
+    float total_perimeter() const;
+    /// Aborts on a broken invariant (parent links, heights, containment, counts); a
+    /// no-op unless the build defines I2D_VALIDATE.
+    void validate() const;
+
+private:
+    int32_t allocate_node();
+    void free_node(int32_t node);
+    void insert_leaf(int32_t leaf);
+    void remove_leaf(int32_t leaf);
+    int32_t find_best_sibling(const AABB& box) const;
+    void rotate(int32_t node);
+    void refit_upward(int32_t node, bool rotate_nodes);
+    int32_t build_top_down(int32_t* leaves, int32_t count);
+
+    std::vector<TreeNode> nodes_;
+    int32_t root_ = null_index;
+    int32_t free_list_ = null_index;
+    int32_t proxy_count_ = 0;
+    std::vector<int32_t> rebuild_scratch_;
+};
+
+}  // namespace i2d
+
+#include "broadphase/dynamic_tree_query.inl"

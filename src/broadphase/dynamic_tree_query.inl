@@ -1,0 +1,94 @@
+// SPDX-License-Identifier: MIT
+// DynamicTree's traversals, templated on the visitor so that the per-leaf call inlines.
+#pragma once
+
+#include "core/growable_stack.hpp"
+
+namespace i2d {
+
+template <class Visit>
+void DynamicTree::query(const AABB& box, uint64_t mask_bits, Visit&& visit) const {
+    if (root_ == null_index) {
+        return;
+    }
+    GrowableStack<int32_t, 256> stack;
+    stack.push(root_);
+    while (!stack.empty()) {
+        const int32_t index = stack.pop();
+        const TreeNode& node = nodes_[index];
+        if ((node.category_bits & mask_bits) == 0 || !overlaps(node.aabb, box)) {
+            continue;
+        }
+        if (node.is_leaf()) {
+            if (!visit(index, node.user_value)) {
+                return;
+            }
+        } else {
+            stack.push(node.child1);
+            stack.push(node.child2);
+        }
+    }
+}
+
+namespace tree_detail {
+
+// Does the segment origin + t d, t in [0, max_t], touch the box? Slab test, inclusive.
+inline bool segment_touches(Vec2 origin, Vec2 d, float max_t, const AABB& box) {
+    float t_min = 0.0f, t_max = max_t;
+    const float o[2] = {origin.x, origin.y}, dir[2] = {d.x, d.y};
+    const float lo[2] = {box.lower.x, box.lower.y}, hi[2] = {box.upper.x, box.upper.y};
+    for (int axis = 0; axis < 2; ++axis) {
+        if (dir[axis] == 0.0f) {
+            if (o[axis] < lo[axis] || o[axis] > hi[axis]) {
+                return false;
+            }
+            continue;
+        }
+        const float inv = 1.0f / dir[axis];
+        float t1 = (lo[axis] - o[axis]) * inv, t2 = (hi[axis] - o[axis]) * inv;
+        if (t1 > t2) {
+            const float tmp = t1;
+            t1 = t2, t2 = tmp;
+        }
+        t_min = t1 > t_min ? t1 : t_min;
+        t_max = t2 < t_max ? t2 : t_max;
+        if (t_min > t_max) {
+            return false;
+        }
+    }
+    return true;
+}
+
+}  // namespace tree_detail
+
+template <class Visit>
+void DynamicTree::ray_cast(const TreeRayInput& input, uint64_t mask_bits, Visit&& visit) const {
+    if (root_ == null_index) {
+        return;
+    }
+    TreeRayInput current = input;
+    GrowableStack<int32_t, 256> stack;
+    stack.push(root_);
+    while (!stack.empty()) {
+        const int32_t index = stack.pop();
+        const TreeNode& node = nodes_[index];
+        if ((node.category_bits & mask_bits) == 0 ||
+            !tree_detail::segment_touches(current.origin, current.translation, current.max_fraction, node.aabb)) {
+            continue;
+        }
+        if (!node.is_leaf()) {
+            stack.push(node.child1);
+            stack.push(node.child2);
+            continue;
+        }
+        const float value = visit(static_cast<const TreeRayInput&>(current), index, node.user_value);
+        if (value == 0.0f) {
+            return;
+        }
+        if (value > 0.0f && value < current.max_fraction) {
+            current.max_fraction = value;  // clip: farther boxes are skipped from now on
+        }
+    }
+}
+
+}  // namespace i2d

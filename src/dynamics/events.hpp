@@ -1,0 +1,47 @@
+// SPDX-License-Identifier: MIT
+// Event records the step fills and the C API hands out as arrays.
+//
+// Design note: they are laid out exactly like the public event structs (the C boundary
+// checks that with static_asserts), so the public arrays are these arrays: no copy per
+// read. Ids inside them are the public 64-bit ids, made by the encoder the C boundary
+// installs in the world; without one (core tests) an id is index | generation << 32.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "math/vec2.hpp"
+
+namespace i2d {
+
+struct ShapePairEvent {
+    uint64_t shape_a;  // contact events: the two shapes; sensor events: sensor, visitor
+    uint64_t shape_b;
+};
+
+struct BodyMoveEvent {
+    Transform transform;
+    uint64_t body;
+    void* user_data;
+    bool fell_asleep;
+};
+
+/// Turns a pool slot into the id callers see.
+struct IdEncoder {
+    uint64_t (*body)(uint64_t tag, int32_t index, uint16_t generation) = nullptr;
+    uint64_t (*shape)(uint64_t tag, int32_t index, uint16_t generation) = nullptr;
+    uint64_t tag = 0;
+};
+
+struct WorldEvents {
+    std::vector<ShapePairEvent> contact_begin, contact_end;
+    std::vector<ShapePairEvent> sensor_begin, sensor_end;
+    std::vector<BodyMoveEvent> body_moves;
+
+    void clear() {
+        contact_begin.clear(), contact_end.clear(), sensor_begin.clear(), sensor_end.clear();
+        body_moves.clear();
+    }
+};
+
+}  // namespace i2d
