@@ -20,10 +20,15 @@ ProxyKind proxy_kind_of(BodyType type) {
     }
 }
 
-// Static shapes never move, so their fat box is their tight box.
-AABB fatten(const AABB& box, BodyType type) {
-    const float margin = type == BodyType::static_body ? 0.0f : aabb_margin;
-    return {box.lower - Vec2{margin, margin}, box.upper + Vec2{margin, margin}};
+// Static shapes never move, so their fat box is their tight box. A moving shape's box
+// grows by the margin and stretches along the displacement expected over one step, so
+// that a falling body is re-inserted about once a step rather than every substep.
+AABB fatten(const AABB& box, BodyType type, Vec2 displacement) {
+    if (type == BodyType::static_body) {
+        return box;
+    }
+    const Vec2 margin{aabb_margin, aabb_margin};
+    return {min(box.lower, box.lower + displacement) - margin, max(box.upper, box.upper + displacement) + margin};
 }
 
 // The float update overflowed or broke the speed limit: redo it in double, where no
@@ -97,7 +102,7 @@ void World::destroy_body(int32_t body) {
 void World::create_proxy(int32_t shape, bool query_now) {
     Shape& s = shapes[shape];
     const BodyType type = bodies[s.body].type;
-    s.proxy_key = broad_phase_.create_proxy(fatten(s.aabb, type), s.filter.category_bits, shape,
+    s.proxy_key = broad_phase_.create_proxy(fatten(s.aabb, type, Vec2{}), s.filter.category_bits, shape,
                                             proxy_kind_of(type), query_now);
 }
 
@@ -134,7 +139,7 @@ int32_t World::create_shape(int32_t body, const ShapeDef& def, const Geometry& g
 }
 
 void World::destroy_shape(int32_t shape) {
-    destroy_contacts_of_shape(shape);
+    destroy_contacts_of_shape(shape, false);
     const Shape& s = shapes[shape];
     broad_phase_.destroy_proxy(s.proxy_key);
     Body& b = bodies[s.body];
@@ -184,11 +189,12 @@ void World::update_mass(int32_t body) {
 // with a new fat box and queued for pair finding.
 void World::sync_proxies(int32_t body) {
     const Body& b = bodies[body];
+    const Vec2 displacement = last_time_step_ * b.linear_velocity;
     for (int32_t s = b.head_shape; s != null_index; s = shapes[s].next_in_body) {
         Shape& shape = shapes[s];
         shape.aabb = compute_aabb(shape.geometry, b.transform);
         if (!contains(broad_phase_.fat_aabb(shape.proxy_key), shape.aabb)) {
-            broad_phase_.move_proxy(shape.proxy_key, fatten(shape.aabb, b.type));
+            broad_phase_.move_proxy(shape.proxy_key, fatten(shape.aabb, b.type, displacement));
         }
     }
 }
@@ -200,10 +206,12 @@ void World::set_transform(int32_t body, const Transform& xf) {
     sync_proxies(body);
 }
 
+// The proxy is re-created because the trees keep category bits for query masks; its
+// new pairs are found at the next step (known pairs are skipped).
 void World::set_filter(int32_t shape, const Filter& filter) {
-    destroy_contacts_of_shape(shape);
-    broad_phase_.destroy_proxy(shapes[shape].proxy_key);
     shapes[shape].filter = filter;
+    destroy_contacts_of_shape(shape, true);
+    broad_phase_.destroy_proxy(shapes[shape].proxy_key);
     create_proxy(shape, true);
 }
 
@@ -217,6 +225,7 @@ void World::step(float time_step, int32_t substep_count) {
         }
     }
     begin_contact_step();
+    last_time_step_ = time_step;
     if (time_step > 0.0f) {
         const float h = time_step / static_cast<float>(substep_count);
         for (int32_t i = 0; i < substep_count; ++i) {

@@ -103,7 +103,7 @@ private:
     void report_touch_changes(const Contact& contact, bool touching_now);
     void begin_contact_step();
     void end_contact_step();
-    void destroy_contacts_of_shape(int32_t shape);
+    void destroy_contacts_of_shape(int32_t shape, bool only_filtered_out);
     void find_new_contacts();
     void update_contacts();
     // The step.
@@ -122,6 +122,7 @@ private:
     // Step scratch, kept between steps so that a steady state allocates nothing.
     std::vector<ShapePairCandidate> new_pairs_;
     std::vector<ContactConstraint> constraints_;
+    float last_time_step_ = 0.0f;  // predicts how far bodies move in a step
     mutable int32_t lock_depth_ = 0;
 };
 

@@ -108,14 +108,16 @@ void World::destroy_contact(int32_t index, bool during_step) {
     contacts.free(index);
 }
 
-// Called between steps: destroying a shape, changing its filter.
-void World::destroy_contacts_of_shape(int32_t shape) {
+// Called between steps: destroying a shape (all its contacts go), changing its filter
+// (only the contacts the new filter forbids go; the others keep touching, no events).
+void World::destroy_contacts_of_shape(int32_t shape, bool only_filtered_out) {
     const Body& body = bodies[shapes[shape].body];
     int32_t key = body.head_contact_key;
     while (key != null_index) {
         const Contact& c = contacts[contact_of(key)];
         const int32_t next = c.edges[edge_of(key)].next_key;
-        if (c.shape_a == shape || c.shape_b == shape) {
+        const bool involved = c.shape_a == shape || c.shape_b == shape;
+        if (involved && (!only_filtered_out || !should_collide(shapes[c.shape_a].filter, shapes[c.shape_b].filter))) {
             destroy_contact(contact_of(key), false);
         }
         key = next;
