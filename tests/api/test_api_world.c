@@ -635,11 +635,14 @@ I2D_TEST(api_world_struct_layout) {
     CHECK_LAYOUT(offsetof(i2d_ray_result, fraction), 24);
     CHECK_LAYOUT(offsetof(i2d_ray_result, hit), 28);
 
-    CHECK_LAYOUT(sizeof(i2d_world_counters), 16);
+    CHECK_LAYOUT(sizeof(i2d_world_counters), 28);
     CHECK_LAYOUT(offsetof(i2d_world_counters, body_count), 0);
     CHECK_LAYOUT(offsetof(i2d_world_counters, shape_count), 4);
     CHECK_LAYOUT(offsetof(i2d_world_counters, contact_count), 8);
     CHECK_LAYOUT(offsetof(i2d_world_counters, pair_count), 12);
+    CHECK_LAYOUT(offsetof(i2d_world_counters, static_tree_height), 16);
+    CHECK_LAYOUT(offsetof(i2d_world_counters, kinematic_tree_height), 20);
+    CHECK_LAYOUT(offsetof(i2d_world_counters, dynamic_tree_height), 24);
 
     CHECK_LAYOUT(sizeof(i2d_world_def), 36);
     CHECK_LAYOUT(offsetof(i2d_world_def, gravity), 0);
@@ -672,9 +675,49 @@ I2D_TEST(api_world_struct_layout) {
     CHECK_LAYOUT(offsetof(i2d_shape_def, restitution), 8);
     CHECK_LAYOUT(offsetof(i2d_shape_def, is_sensor), 12);
     CHECK_LAYOUT(offsetof(i2d_shape_def, enable_contact_events), 13);
+    CHECK_LAYOUT(offsetof(i2d_shape_def, enable_sensor_events), 14);
     CHECK_LAYOUT(offsetof(i2d_shape_def, filter), 16);
     CHECK_LAYOUT(offsetof(i2d_shape_def, user_data), 40);
     CHECK_LAYOUT(offsetof(i2d_shape_def, internal_cookie), 48);
+
+    /* Events: ids are 8 bytes; the arrays are a pointer and an int32 count each. */
+    CHECK_LAYOUT(sizeof(i2d_contact_begin_event), 16);
+    CHECK_LAYOUT(offsetof(i2d_contact_begin_event, shape_a), 0);
+    CHECK_LAYOUT(offsetof(i2d_contact_begin_event, shape_b), 8);
+
+    CHECK_LAYOUT(sizeof(i2d_contact_end_event), 16);
+    CHECK_LAYOUT(offsetof(i2d_contact_end_event, shape_a), 0);
+    CHECK_LAYOUT(offsetof(i2d_contact_end_event, shape_b), 8);
+
+    CHECK_LAYOUT(sizeof(i2d_contact_events), 32);
+    CHECK_LAYOUT(offsetof(i2d_contact_events, begin_events), 0);
+    CHECK_LAYOUT(offsetof(i2d_contact_events, begin_count), 8);
+    CHECK_LAYOUT(offsetof(i2d_contact_events, end_events), 16);
+    CHECK_LAYOUT(offsetof(i2d_contact_events, end_count), 24);
+
+    CHECK_LAYOUT(sizeof(i2d_sensor_begin_event), 16);
+    CHECK_LAYOUT(offsetof(i2d_sensor_begin_event, sensor_shape), 0);
+    CHECK_LAYOUT(offsetof(i2d_sensor_begin_event, visitor_shape), 8);
+
+    CHECK_LAYOUT(sizeof(i2d_sensor_end_event), 16);
+    CHECK_LAYOUT(offsetof(i2d_sensor_end_event, sensor_shape), 0);
+    CHECK_LAYOUT(offsetof(i2d_sensor_end_event, visitor_shape), 8);
+
+    CHECK_LAYOUT(sizeof(i2d_sensor_events), 32);
+    CHECK_LAYOUT(offsetof(i2d_sensor_events, begin_events), 0);
+    CHECK_LAYOUT(offsetof(i2d_sensor_events, begin_count), 8);
+    CHECK_LAYOUT(offsetof(i2d_sensor_events, end_events), 16);
+    CHECK_LAYOUT(offsetof(i2d_sensor_events, end_count), 24);
+
+    CHECK_LAYOUT(sizeof(i2d_body_move_event), 40);
+    CHECK_LAYOUT(offsetof(i2d_body_move_event, transform), 0);
+    CHECK_LAYOUT(offsetof(i2d_body_move_event, body), 16);
+    CHECK_LAYOUT(offsetof(i2d_body_move_event, user_data), 24);
+    CHECK_LAYOUT(offsetof(i2d_body_move_event, fell_asleep), 32);
+
+    CHECK_LAYOUT(sizeof(i2d_body_events), 16);
+    CHECK_LAYOUT(offsetof(i2d_body_events, move_events), 0);
+    CHECK_LAYOUT(offsetof(i2d_body_events, move_count), 8);
 
     /* Enums cross the FFI as 32-bit integers. */
     CHECK_LAYOUT(sizeof(i2d_status), 4);

@@ -1,0 +1,1573 @@
+/* SPDX-License-Identifier: MIT */
+/* C API ray casts with callbacks, and queries while the world changes, against brute force; tree heights. */
+#include <impulse2d/impulse2d.h>
+
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "check.h"
+
+/* ---- Small helpers ---------------------------------------------------------------- */
+
+static i2d_vec2 v2(float x, float y) {
+    i2d_vec2 v;
+    v.x = x;
+    v.y = y;
+    return v;
+}
+
+static i2d_rot identity_rot(void) {
+    i2d_rot q;
+    q.c = 1.0f;
+    q.s = 0.0f;
+    return q;
+}
+
+static i2d_aabb box(float min_x, float min_y, float max_x, float max_y) {
+    i2d_aabb b;
+    b.min = v2(min_x, min_y);
+    b.max = v2(max_x, max_y);
+    return b;
+}
+
+static i2d_query_filter query_filter(uint64_t category_bits, uint64_t mask_bits) {
+    i2d_query_filter f;
+    f.category_bits = category_bits;
+    f.mask_bits = mask_bits;
+    return f;
+}
+
+/* splitmix64: a fixed-seed generator, the same on every platform (rand() is not). */
+typedef struct rng {
+    uint64_t state;
+} rng;
+
+static uint64_t rng_next(rng* r) {
+    uint64_t z = (r->state += UINT64_C(0x9E3779B97F4A7C15));
+    z = (z ^ (z >> 30)) * UINT64_C(0xBF58476D1CE4E5B9);
+    z = (z ^ (z >> 27)) * UINT64_C(0x94D049BB133111EB);
+    return z ^ (z >> 31);
+}
+
+/* Uniform in [lo, hi). */
+static float rng_float(rng* r, float lo, float hi) {
+    double unit = (double)(rng_next(r) >> 11) / 9007199254740992.0; /* 2^53 */
+    return (float)(lo + (hi - lo) * unit);
+}
+
+/* Uniform in [0, n). */
+static int rng_int(rng* r, int n) { return (int)(rng_next(r) % (uint64_t)n); }
+
+/* Mismatch reports are capped so that a broken query does not flood the log. */
+static int g_reports_left;
+
+static void report(const char* format, ...) {
+    if (g_reports_left <= 0) {
+        return;
+    }
+    --g_reports_left;
+    va_list args;
+    va_start(args, format);
+    fprintf(stderr, "%s: ", __FILE__);
+    vfprintf(stderr, format, args);
+    fputc('\n', stderr);
+    va_end(args);
+}
+
+static const float k_dt = 1.0f / 60.0f;
+
+static int compare_ids(const void* a, const void* b) {
+    uint64_t x = ((const i2d_shape_id*)a)->bits, y = ((const i2d_shape_id*)b)->bits;
+    return x < y ? -1 : (x > y ? 1 : 0);
+}
+
+/* ---- The reference model: every shape's exact geometry, kept by the test ----------- */
+
+enum { MAX_BODIES = 1200, MAX_SHAPES = 2400 };
+
+typedef struct ref_shape {
+    i2d_shape_id id;
+    int body; /* index into scene.bodies */
+    i2d_shape_type type;
+    i2d_vec2 local_center; /* circles; boxes are centred on the body origin */
+    float radius;
+    i2d_vec2 half;
+    i2d_filter filter;
+    bool alive;
+    double cx, cy; /* world centre, refreshed from the body position */
+} ref_shape;
+
+typedef struct scene {
+    i2d_world_id world;
+    int body_count;
+    i2d_body_id bodies[MAX_BODIES];
+    i2d_body_type body_types[MAX_BODIES];
+    bool body_alive[MAX_BODIES];
+    int shape_count;
+    ref_shape shapes[MAX_SHAPES];
+} scene;
+
+/* A random filter over four bits, often the default. */
+static i2d_filter random_filter(rng* r) {
+    i2d_filter f = i2d_default_filter();
+    if (rng_int(r, 3) == 0) {
+        f.category_bits = UINT64_C(1) << rng_int(r, 4);
+        f.mask_bits = rng_int(r, 3) == 0 ? UINT64_MAX : (uint64_t)rng_int(r, 16);
+    }
+    return f;
+}
+
+static i2d_query_filter random_query_filter(rng* r) {
+    if (rng_int(r, 2) == 0) {
+        return i2d_default_query_filter();
+    }
+    return query_filter((uint64_t)rng_int(r, 16), rng_int(r, 4) == 0 ? UINT64_MAX : (uint64_t)rng_int(r, 16));
+}
+
+static bool filter_passes(i2d_filter shape, i2d_query_filter query) {
+    return (shape.category_bits & query.mask_bits) != 0 && (shape.mask_bits & query.category_bits) != 0;
+}
+
+static bool scene_init(scene* s) {
+    memset(s, 0, sizeof *s);
+    i2d_world_def def = i2d_default_world_def();
+    def.gravity = v2(0.0f, 0.0f);
+    s->world = i2d_world_create(&def);
+    return !I2D_IS_NULL(s->world);
+}
+
+static int scene_add_body(scene* s, i2d_body_type type, i2d_vec2 position, i2d_vec2 velocity) {
+    if (s->body_count >= MAX_BODIES) {
+        return -1;
+    }
+    i2d_body_def def = i2d_default_body_def();
+    def.type = type;
+    def.position = position;
+    def.linear_velocity = type == I2D_BODY_STATIC ? v2(0.0f, 0.0f) : velocity;
+    i2d_body_id id = i2d_body_create(s->world, &def);
+    if (I2D_IS_NULL(id)) {
+        return -1;
+    }
+    int b = s->body_count++;
+    s->bodies[b] = id;
+    s->body_types[b] = type;
+    s->body_alive[b] = true;
+    return b;
+}
+
+/* Sizes from 0.1 m to `size` m. */
+static bool scene_add_shape(scene* s, rng* r, int body, float size) {
+    if (s->shape_count >= MAX_SHAPES || body < 0) {
+        return false;
+    }
+    ref_shape* ref = &s->shapes[s->shape_count];
+    memset(ref, 0, sizeof *ref);
+    ref->body = body;
+    ref->filter = random_filter(r);
+    i2d_shape_def def = i2d_default_shape_def();
+    def.filter = ref->filter;
+    if (rng_int(r, 2) == 0) {
+        ref->type = I2D_SHAPE_CIRCLE;
+        ref->local_center = v2(rng_float(r, -1.0f, 1.0f), rng_float(r, -1.0f, 1.0f));
+        ref->radius = rng_float(r, 0.1f, size);
+        i2d_circle circle = {ref->local_center, ref->radius};
+        ref->id = i2d_shape_create_circle(s->bodies[body], &def, &circle);
+    } else {
+        ref->type = I2D_SHAPE_BOX;
+        ref->half = v2(rng_float(r, 0.1f, size), rng_float(r, 0.1f, size));
+        ref->id = i2d_shape_create_box(s->bodies[body], &def, ref->half.x, ref->half.y);
+    }
+    ref->alive = !I2D_IS_NULL(ref->id);
+    ++s->shape_count;
+    return ref->alive;
+}
+
+static void scene_destroy_body(scene* s, int b) {
+    if (b < 0 || !s->body_alive[b] || i2d_body_destroy(s->bodies[b]) != I2D_OK) {
+        return;
+    }
+    s->body_alive[b] = false;
+    for (int k = 0; k < s->shape_count; ++k) {
+        if (s->shapes[k].body == b) {
+            s->shapes[k].alive = false;
+        }
+    }
+}
+
+static void scene_destroy_shape(scene* s, int k) {
+    if (k >= 0 && s->shapes[k].alive && i2d_shape_destroy(s->shapes[k].id) == I2D_OK) {
+        s->shapes[k].alive = false;
+    }
+}
+
+static int alive_shape_count(const scene* s) {
+    int n = 0;
+    for (int k = 0; k < s->shape_count; ++k) {
+        n += s->shapes[k].alive ? 1 : 0;
+    }
+    return n;
+}
+
+/* Reads the bodies' positions into the model and checks the library's tight bounds agree
+ * with it, so that the brute force below describes the same shapes the library has. */
+static int scene_refresh(scene* s) {
+    int bad = 0;
+    for (int k = 0; k < s->shape_count; ++k) {
+        ref_shape* ref = &s->shapes[k];
+        if (!ref->alive) {
+            continue;
+        }
+        i2d_vec2 p = i2d_body_get_position(s->bodies[ref->body]);
+        ref->cx = (double)p.x + ref->local_center.x;
+        ref->cy = (double)p.y + ref->local_center.y;
+        double hx = ref->type == I2D_SHAPE_CIRCLE ? ref->radius : ref->half.x;
+        double hy = ref->type == I2D_SHAPE_CIRCLE ? ref->radius : ref->half.y;
+        i2d_aabb b = i2d_shape_get_aabb(ref->id);
+        double tol = 1e-4 + 1e-6 * (fabs(ref->cx) + fabs(ref->cy));
+        if (fabs(b.min.x - (ref->cx - hx)) > tol || fabs(b.min.y - (ref->cy - hy)) > tol ||
+            fabs(b.max.x - (ref->cx + hx)) > tol || fabs(b.max.y - (ref->cy + hy)) > tol) {
+            ++bad;
+            report("shape %d: i2d_shape_get_aabb (%g, %g)-(%g, %g), expected (%g, %g)-(%g, %g)", k, b.min.x, b.min.y,
+                   b.max.x, b.max.y, ref->cx - hx, ref->cy - hy, ref->cx + hx, ref->cy + hy);
+        }
+    }
+    return bad;
+}
+
+/* Shape index by id: an open-addressing table rebuilt when shapes are added. */
+enum { ID_TABLE = 8192 };
+static int g_id_table[ID_TABLE];
+static const scene* g_id_table_scene;
+static int g_id_table_count;
+
+static uint32_t id_hash(uint64_t bits) { return (uint32_t)((bits * UINT64_C(0x9E3779B97F4A7C15)) >> 51); }
+
+static int find_shape(const scene* s, i2d_shape_id id) {
+    if (g_id_table_scene != s || g_id_table_count != s->shape_count) {
+        for (int i = 0; i < ID_TABLE; ++i) {
+            g_id_table[i] = -1;
+        }
+        for (int k = 0; k < s->shape_count; ++k) {
+            uint32_t i = id_hash(s->shapes[k].id.bits);
+            while (g_id_table[i] >= 0) {
+                i = (i + 1) & (ID_TABLE - 1);
+            }
+            g_id_table[i] = k;
+        }
+        g_id_table_scene = s;
+        g_id_table_count = s->shape_count;
+    }
+    for (uint32_t i = id_hash(id.bits); g_id_table[i] >= 0; i = (i + 1) & (ID_TABLE - 1)) {
+        if (I2D_ID_EQUALS(s->shapes[g_id_table[i]].id, id)) {
+            return g_id_table[i];
+        }
+    }
+    return -1;
+}
+
+/* ---- Brute force rays ----------------------------------------------------------------- */
+
+typedef struct ray_case {
+    double ox, oy, dx, dy;
+} ray_case;
+
+typedef struct ray_hit {
+    bool hit;
+    double t;    /* fraction where the ray enters */
+    int axis;    /* boxes: the slab entered last, 0 = x, 1 = y */
+    bool corner; /* boxes: both slabs entered at nearly the same fraction */
+} ray_hit;
+
+static const ray_hit k_no_hit = {false, 0.0, -1, false};
+
+/* Circle: the smaller root of |o + t d - c|^2 = r^2; no hit from inside (closed disc). */
+static ray_hit ray_circle(double cx, double cy, double r, const ray_case* ray) {
+    if (r <= 0.0) {
+        return k_no_hit;
+    }
+    double mx = ray->ox - cx, my = ray->oy - cy;
+    double c = mx * mx + my * my - r * r;
+    if (c <= 0.0) {
+        return k_no_hit;
+    }
+    double a = ray->dx * ray->dx + ray->dy * ray->dy;
+    double b = mx * ray->dx + my * ray->dy;
+    double disc = b * b - a * c;
+    if (a == 0.0 || disc < 0.0) {
+        return k_no_hit;
+    }
+    double t = (-b - sqrt(disc)) / a;
+    if (t < 0.0 || t > 1.0) {
+        return k_no_hit;
+    }
+    ray_hit h = {true, t, -1, false};
+    return h;
+}
+
+/* Box: slab test; no hit from inside (closed box). */
+static ray_hit ray_box(double cx, double cy, double hx, double hy, const ray_case* ray) {
+    if (hx <= 0.0 || hy <= 0.0) {
+        return k_no_hit;
+    }
+    double o[2] = {ray->ox - cx, ray->oy - cy};
+    double d[2] = {ray->dx, ray->dy};
+    double h[2] = {hx, hy};
+    if (fabs(o[0]) <= h[0] && fabs(o[1]) <= h[1]) {
+        return k_no_hit;
+    }
+    double enter[2] = {-INFINITY, -INFINITY};
+    double t_exit = INFINITY;
+    for (int i = 0; i < 2; ++i) {
+        if (d[i] == 0.0) {
+            if (fabs(o[i]) > h[i]) {
+                return k_no_hit;
+            }
+            continue;
+        }
+        double t1 = (-h[i] - o[i]) / d[i];
+        double t2 = (h[i] - o[i]) / d[i];
+        enter[i] = fmin(t1, t2);
+        t_exit = fmin(t_exit, fmax(t1, t2));
+    }
+    int axis = enter[0] >= enter[1] ? 0 : 1;
+    double t = enter[axis];
+    if (t > t_exit || t < 0.0 || t > 1.0) {
+        return k_no_hit;
+    }
+    ray_hit hit = {true, t, axis, fabs(enter[0] - enter[1]) <= 1e-4};
+    return hit;
+}
+
+static ray_hit ray_shape(const ref_shape* s, double delta, const ray_case* ray) {
+    if (s->type == I2D_SHAPE_CIRCLE) {
+        return ray_circle(s->cx, s->cy, s->radius + delta, ray);
+    }
+    return ray_box(s->cx, s->cy, s->half.x + delta, s->half.y + delta, ray);
+}
+
+/* Float rounding in the library can move a boundary by about 1e-5 m: shapes grown and
+ * shrunk by EPS that disagree (or enter more than GRAZING_SPREAD apart) are judged
+ * neither hit nor missed. */
+#define EPS 1e-3
+#define FRACTION_TOL 1e-5
+#define GRAZING_SPREAD 1e-3
+
+enum { RAY_MISS, RAY_HIT, RAY_AMBIGUOUS };
+
+typedef struct ray_class {
+    int kind;
+    double t; /* RAY_HIT: the exact entry; RAY_AMBIGUOUS: the earliest entry of the three */
+} ray_class;
+
+static ray_class classify_ray(const ref_shape* ref, const ray_case* ray) {
+    ray_hit exact = ray_shape(ref, 0.0, ray);
+    ray_hit grown = ray_shape(ref, EPS, ray);
+    ray_hit shrunk = ray_shape(ref, -EPS, ray);
+    ray_class c;
+    if (exact.hit && grown.hit && shrunk.hit && shrunk.t - grown.t <= GRAZING_SPREAD) {
+        c.kind = RAY_HIT;
+        c.t = exact.t;
+    } else if (!exact.hit && !grown.hit && !shrunk.hit) {
+        c.kind = RAY_MISS;
+        c.t = INFINITY;
+    } else {
+        c.kind = RAY_AMBIGUOUS;
+        c.t = INFINITY;
+        c.t = exact.hit ? fmin(c.t, exact.t) : c.t;
+        c.t = grown.hit ? fmin(c.t, grown.t) : c.t;
+        c.t = shrunk.hit ? fmin(c.t, shrunk.t) : c.t;
+    }
+    return c;
+}
+
+/* Checks a reported hit's point and unit normal against the exact entry of shape ref. */
+static int check_ray_surface(const ref_shape* ref, const ray_case* ray, i2d_vec2 point, i2d_vec2 normal,
+                             float fraction, const char* what, int index) {
+    int bad = 0;
+    double length = sqrt(ray->dx * ray->dx + ray->dy * ray->dy);
+    double px = ray->ox + fraction * ray->dx, py = ray->oy + fraction * ray->dy;
+    double ptol = 1e-4 + 1e-6 * (length + fabs(ray->ox) + fabs(ray->oy));
+    if (fabs(point.x - px) > ptol || fabs(point.y - py) > ptol) {
+        ++bad;
+        report("%s %d: point (%g, %g) is not origin + fraction * translation (%g, %g)", what, index, point.x, point.y,
+               px, py);
+    }
+    const double tol = 1e-3;
+    double dx = point.x - ref->cx, dy = point.y - ref->cy;
+    bool on_surface;
+    if (ref->type == I2D_SHAPE_CIRCLE) {
+        on_surface = fabs(sqrt(dx * dx + dy * dy) - ref->radius) <= tol;
+    } else {
+        bool inside = fabs(dx) <= ref->half.x + tol && fabs(dy) <= ref->half.y + tol;
+        on_surface = inside && (fabs(fabs(dx) - ref->half.x) <= tol || fabs(fabs(dy) - ref->half.y) <= tol);
+    }
+    if (!on_surface) {
+        ++bad;
+        report("%s %d: point (%g, %g) is not on the surface of the shape hit", what, index, point.x, point.y);
+    }
+    double n_length = sqrt((double)normal.x * normal.x + (double)normal.y * normal.y);
+    if (fabs(n_length - 1.0) > 1e-4) {
+        ++bad;
+        report("%s %d: normal (%g, %g) is not unit", what, index, normal.x, normal.y);
+    }
+    ray_hit exact = ray_shape(ref, 0.0, ray);
+    bool normal_ok;
+    if (ref->type == I2D_SHAPE_CIRCLE) {
+        double ex = (ray->ox + exact.t * ray->dx - ref->cx) / ref->radius;
+        double ey = (ray->oy + exact.t * ray->dy - ref->cy) / ref->radius;
+        normal_ok = fabs(normal.x - ex) <= 1e-3 && fabs(normal.y - ey) <= 1e-3;
+    } else {
+        /* The face of the slab entered last, facing the ray; either face at a corner. */
+        double nx = ray->dx > 0.0 ? -1.0 : 1.0, ny = ray->dy > 0.0 ? -1.0 : 1.0;
+        bool is_x = fabs(normal.x - nx) <= 1e-4 && fabs(normal.y) <= 1e-4;
+        bool is_y = fabs(normal.y - ny) <= 1e-4 && fabs(normal.x) <= 1e-4;
+        normal_ok = exact.corner ? (is_x || is_y) : (exact.axis == 0 ? is_x : is_y);
+    }
+    if (!normal_ok) {
+        ++bad;
+        report("%s %d: normal (%g, %g) is not the surface normal of the %s hit", what, index, normal.x, normal.y,
+               ref->type == I2D_SHAPE_CIRCLE ? "circle" : "box");
+    }
+    return bad;
+}
+
+/* ---- Callback logs ---------------------------------------------------------------- */
+
+enum { LOG_MAX = 2400 };
+enum { MODE_ALL, MODE_CLIP, MODE_STOP, MODE_IGNORE };
+
+typedef struct ray_report {
+    i2d_shape_id shape;
+    i2d_vec2 point, normal;
+    float fraction;
+} ray_report;
+
+typedef struct ray_log {
+    int mode;
+    int count;
+    ray_report reports[LOG_MAX];
+    float clip;         /* MODE_CLIP, MODE_IGNORE: the fraction last returned (1 at the start) */
+    int clip_violations; /* reports beyond the clip */
+    uint64_t salt;      /* MODE_IGNORE: which shapes to ignore */
+    i2d_shape_id also_ignore;
+} ray_log;
+
+/* MODE_IGNORE ignores about a third of the shapes, chosen by id, and also_ignore. */
+static bool is_ignored(const ray_log* log, i2d_shape_id shape) {
+    if (I2D_ID_EQUALS(shape, log->also_ignore)) {
+        return true;
+    }
+    return ((shape.bits ^ log->salt) * UINT64_C(0x9E3779B97F4A7C15)) >> 62 == 0;
+}
+
+static float log_ray(i2d_shape_id shape, i2d_vec2 point, i2d_vec2 normal, float fraction, void* context) {
+    ray_log* log = (ray_log*)context;
+    if (log->count < LOG_MAX) {
+        ray_report* r = &log->reports[log->count];
+        r->shape = shape;
+        r->point = point;
+        r->normal = normal;
+        r->fraction = fraction;
+    }
+    ++log->count;
+    switch (log->mode) {
+    case MODE_ALL:
+        return 1.0f;
+    case MODE_STOP:
+        return 0.0f;
+    case MODE_IGNORE:
+        if (is_ignored(log, shape)) {
+            return -1.0f;
+        }
+        /* fall through */
+    default:
+        if (!(fraction <= log->clip)) {
+            ++log->clip_violations;
+        }
+        log->clip = fraction;
+        return fraction;
+    }
+}
+
+static void log_reset(ray_log* log, int mode) {
+    log->mode = mode;
+    log->count = 0;
+    log->clip = 1.0f;
+    log->clip_violations = 0;
+}
+
+/* A reported hit is a shape of the scene, alive, seen by the filter, really on the ray
+ * (not clearly missed), entered at the fraction reported, with the right point and normal. */
+static int check_report(const scene* s, const ray_case* ray, i2d_query_filter qf, const ray_report* r,
+                        const char* what, int index) {
+    int k = find_shape(s, r->shape);
+    if (k < 0 || !s->shapes[k].alive) {
+        report("%s %d: reported %s shape 0x%llx", what, index, k < 0 ? "an unknown" : "a destroyed",
+               (unsigned long long)r->shape.bits);
+        return 1;
+    }
+    const ref_shape* ref = &s->shapes[k];
+    if (!filter_passes(ref->filter, qf)) {
+        report("%s %d: shape %d reported though the filter excludes it", what, index, k);
+        return 1;
+    }
+    if (!(r->fraction >= 0.0f && r->fraction <= 1.0f)) {
+        report("%s %d: fraction %g outside [0, 1]", what, index, r->fraction);
+        return 1;
+    }
+    ray_class c = classify_ray(ref, ray);
+    if (c.kind == RAY_MISS) {
+        report("%s %d: shape %d (%s at %g, %g) reported at %g but the ray misses it", what, index, k,
+               ref->type == I2D_SHAPE_CIRCLE ? "circle" : "box", ref->cx, ref->cy, r->fraction);
+        return 1;
+    }
+    if (c.kind == RAY_HIT) {
+        if (fabs(r->fraction - c.t) > FRACTION_TOL) {
+            report("%s %d: shape %d reported at fraction %.9g, enters at %.9g", what, index, k, r->fraction, c.t);
+            return 1;
+        }
+        return check_ray_surface(ref, ray, r->point, r->normal, r->fraction, what, index);
+    }
+    return 0;
+}
+
+static ray_case random_ray(const scene* s, rng* r, float lo, float hi) {
+    ray_case ray;
+    /* One ray in five starts at the centre of a shape: that shape must not be hit. */
+    int k = rng_int(r, s->shape_count);
+    if (rng_int(r, 5) == 0 && s->shapes[k].alive) {
+        ray.ox = s->shapes[k].cx;
+        ray.oy = s->shapes[k].cy;
+    } else {
+        ray.ox = rng_float(r, lo, hi);
+        ray.oy = rng_float(r, lo, hi);
+    }
+    float angle = rng_float(r, 0.0f, 6.2831853f);
+    float length = rng_float(r, 0.2f, 1.0f) * (hi - lo);
+    /* Store what the library will see: float inputs. */
+    ray.ox = (float)ray.ox;
+    ray.oy = (float)ray.oy;
+    ray.dx = (float)(length * cos(angle));
+    ray.dy = (float)(length * sin(angle));
+    return ray;
+}
+
+static i2d_status cast(const scene* s, const ray_case* ray, i2d_query_filter qf, ray_log* log) {
+    return i2d_world_cast_ray(s->world, v2((float)ray->ox, (float)ray->oy), v2((float)ray->dx, (float)ray->dy), qf,
+                              log_ray, log);
+}
+
+/* ---- Callback semantics on random scenes ------------------------------------------------ */
+
+/* Static, kinematic and dynamic bodies with one to three shapes in [-40, 40]^2, some
+ * destroyed, a few steps without gravity. */
+static bool build_random_scene(scene* s, uint64_t seed, int bodies) {
+    if (!scene_init(s)) {
+        return false;
+    }
+    rng r = {seed};
+    static const i2d_body_type types[3] = {I2D_BODY_STATIC, I2D_BODY_KINEMATIC, I2D_BODY_DYNAMIC};
+    for (int i = 0; i < bodies; ++i) {
+        i2d_vec2 p = v2(rng_float(&r, -40.0f, 40.0f), rng_float(&r, -40.0f, 40.0f));
+        i2d_vec2 v = v2(rng_float(&r, -3.0f, 3.0f), rng_float(&r, -3.0f, 3.0f));
+        int b = scene_add_body(s, types[rng_int(&r, 3)], p, v);
+        int shapes = 1 + rng_int(&r, 3);
+        for (int k = 0; k < shapes; ++k) {
+            if (!scene_add_shape(s, &r, b, 4.0f)) {
+                return false;
+            }
+        }
+    }
+    for (int n = 0; n < 15; ++n) {
+        scene_destroy_shape(s, rng_int(&r, s->shape_count));
+    }
+    for (int n = 0; n < 5; ++n) {
+        scene_destroy_body(s, rng_int(&r, s->body_count));
+    }
+    for (int n = 0; n < 3; ++n) {
+        if (i2d_world_step(s->world, k_dt, 4) != I2D_OK) {
+            return false;
+        }
+    }
+    return true;
+}
+
+/* The brute force's view of one ray: the clear hits and the nearest of them, and
+ * whether an unclear shape could change the answer. */
+typedef struct ray_truth {
+    int clear_hits;
+    double best;        /* nearest clear hit */
+    int best_shape;
+    double ambiguous;   /* nearest unclear entry */
+    int ambiguous_count;
+} ray_truth;
+
+/* skip_ignored: leave out the shapes a MODE_IGNORE log ignores. */
+static ray_truth brute_force_ray(const scene* s, const ray_case* ray, i2d_query_filter qf, const ray_log* ignoring) {
+    ray_truth t = {0, INFINITY, -1, INFINITY, 0};
+    for (int k = 0; k < s->shape_count; ++k) {
+        const ref_shape* ref = &s->shapes[k];
+        if (!ref->alive || !filter_passes(ref->filter, qf)) {
+            continue;
+        }
+        if (ignoring != NULL && is_ignored(ignoring, ref->id)) {
+            continue;
+        }
+        ray_class c = classify_ray(ref, ray);
+        if (c.kind == RAY_HIT) {
+            ++t.clear_hits;
+            if (c.t < t.best) {
+                t.best = c.t;
+                t.best_shape = k;
+            }
+        } else if (c.kind == RAY_AMBIGUOUS) {
+            ++t.ambiguous_count;
+            t.ambiguous = fmin(t.ambiguous, c.t);
+        }
+    }
+    return t;
+}
+
+/* Return 1: every hit shape once, with its fraction, point and normal. */
+static int check_visit_all(const scene* s, const ray_case* ray, i2d_query_filter qf, int index, ray_log* log,
+                           int* total_hits) {
+    static bool seen[MAX_SHAPES];
+    log_reset(log, MODE_ALL);
+    if (cast(s, ray, qf, log) != I2D_OK) {
+        report("ray %d: status %s", index, i2d_status_string(i2d_last_status()));
+        return 1;
+    }
+    int bad = 0;
+    memset(seen, 0, sizeof seen);
+    for (int i = 0; i < log->count && i < LOG_MAX; ++i) {
+        bad += check_report(s, ray, qf, &log->reports[i], "visit-all ray", index);
+        int k = find_shape(s, log->reports[i].shape);
+        if (k >= 0) {
+            if (seen[k]) {
+                ++bad;
+                report("visit-all ray %d: shape %d reported twice", index, k);
+            }
+            seen[k] = true;
+        }
+    }
+    for (int k = 0; k < s->shape_count; ++k) {
+        const ref_shape* ref = &s->shapes[k];
+        if (ref->alive && !seen[k] && filter_passes(ref->filter, qf) && classify_ray(ref, ray).kind == RAY_HIT) {
+            ++bad;
+            report("visit-all ray %d from (%g, %g) by (%g, %g): shape %d (%s at %g, %g) is hit at %g but was not "
+                   "reported",
+                   index, ray->ox, ray->oy, ray->dx, ray->dy, k, ref->type == I2D_SHAPE_CIRCLE ? "circle" : "box",
+                   ref->cx, ref->cy, classify_ray(ref, ray).t);
+        }
+    }
+    *total_hits += log->count;
+    return bad;
+}
+
+/* Return the fraction: the reports never go beyond the clip, and the last one is the
+ * closest hit, the same as i2d_world_cast_ray_closest. */
+static int check_clip(const scene* s, const ray_case* ray, i2d_query_filter qf, int index, ray_log* log,
+                      int* skipped) {
+    log_reset(log, MODE_CLIP);
+    if (cast(s, ray, qf, log) != I2D_OK) {
+        report("clip ray %d: status %s", index, i2d_status_string(i2d_last_status()));
+        return 1;
+    }
+    int bad = 0;
+    for (int i = 0; i < log->count && i < LOG_MAX; ++i) {
+        bad += check_report(s, ray, qf, &log->reports[i], "clip ray", index);
+    }
+    if (log->clip_violations != 0) {
+        ++bad;
+        report("clip ray %d: %d reports beyond the clip returned before", index, log->clip_violations);
+    }
+    i2d_ray_result closest =
+        i2d_world_cast_ray_closest(s->world, v2((float)ray->ox, (float)ray->oy), v2((float)ray->dx, (float)ray->dy), qf);
+    if (log->count == 0) {
+        if (closest.hit) {
+            ++bad;
+            report("clip ray %d: no report, cast_ray_closest hits at %g", index, closest.fraction);
+        }
+    } else {
+        const ray_report* last = &log->reports[log->count - 1];
+        if (!closest.hit || !I2D_ID_EQUALS(last->shape, closest.shape) || last->fraction != closest.fraction ||
+            fabsf(last->point.x - closest.point.x) > 1e-5f || fabsf(last->point.y - closest.point.y) > 1e-5f ||
+            fabsf(last->normal.x - closest.normal.x) > 1e-6f || fabsf(last->normal.y - closest.normal.y) > 1e-6f) {
+            ++bad;
+            report("clip ray %d: last report (0x%llx at %.9g) differs from cast_ray_closest (%s 0x%llx at %.9g)", index,
+                   (unsigned long long)last->shape.bits, last->fraction, closest.hit ? "hit" : "no hit",
+                   (unsigned long long)closest.shape.bits, closest.fraction);
+        }
+    }
+    /* And both are the brute force's nearest hit, unless an unclear shape is as near. */
+    ray_truth t = brute_force_ray(s, ray, qf, NULL);
+    if (t.ambiguous < INFINITY && t.ambiguous <= t.best + 1e-4) {
+        ++*skipped;
+        return bad;
+    }
+    if (t.clear_hits == 0) {
+        if (log->count != 0) {
+            ++bad;
+            report("clip ray %d: %d reports, brute force hits nothing", index, log->count);
+        }
+    } else if (log->count == 0 || fabs(log->reports[log->count - 1].fraction - t.best) > FRACTION_TOL) {
+        ++bad;
+        report("clip ray %d from (%g, %g) by (%g, %g): ends at %g, brute force nearest %.9g (shape %d)", index, ray->ox,
+               ray->oy, ray->dx, ray->dy, log->count > 0 ? log->reports[log->count - 1].fraction : -1.0f, t.best,
+               t.best_shape);
+    }
+    return bad;
+}
+
+/* Return 0: the cast stops after the first report. */
+static int check_stop(const scene* s, const ray_case* ray, i2d_query_filter qf, int index, ray_log* log) {
+    log_reset(log, MODE_STOP);
+    if (cast(s, ray, qf, log) != I2D_OK) {
+        report("stop ray %d: status %s", index, i2d_status_string(i2d_last_status()));
+        return 1;
+    }
+    ray_truth t = brute_force_ray(s, ray, qf, NULL);
+    int bad = 0;
+    if (log->count > 1) {
+        ++bad;
+        report("stop ray %d: %d reports after returning 0", index, log->count);
+    } else if (log->count == 1) {
+        bad += check_report(s, ray, qf, &log->reports[0], "stop ray", index);
+    }
+    if (t.clear_hits > 0 && log->count != 1) {
+        ++bad;
+        report("stop ray %d: %d reports, brute force hits %d shapes", index, log->count, t.clear_hits);
+    }
+    if (t.clear_hits == 0 && t.ambiguous_count == 0 && log->count != 0) {
+        ++bad;
+        report("stop ray %d: %d reports, brute force hits nothing", index, log->count);
+    }
+    return bad;
+}
+
+/* Return -1 for some shapes (among them the nearest hit), the fraction for the others:
+ * ignored shapes do not clip; the last report is the nearest shape not ignored. */
+static int check_ignore(const scene* s, const ray_case* ray, i2d_query_filter qf, int index, ray_log* log,
+                        uint64_t salt, int* skipped, int* ignored_nearer) {
+    ray_truth all = brute_force_ray(s, ray, qf, NULL);
+    log_reset(log, MODE_IGNORE);
+    log->salt = salt;
+    log->also_ignore = all.best_shape >= 0 ? s->shapes[all.best_shape].id : I2D_NULL_SHAPE_ID;
+    if (cast(s, ray, qf, log) != I2D_OK) {
+        report("ignore ray %d: status %s", index, i2d_status_string(i2d_last_status()));
+        return 1;
+    }
+    int bad = 0;
+    for (int i = 0; i < log->count && i < LOG_MAX; ++i) {
+        bad += check_report(s, ray, qf, &log->reports[i], "ignore ray", index);
+    }
+    if (log->clip_violations != 0) {
+        ++bad;
+        report("ignore ray %d: %d reports beyond the clip", index, log->clip_violations);
+    }
+    ray_truth kept = brute_force_ray(s, ray, qf, log);
+    if (kept.ambiguous < INFINITY && kept.ambiguous <= kept.best + 1e-4) {
+        ++*skipped;
+        return bad;
+    }
+    /* The last report that was not ignored. */
+    int last = -1;
+    for (int i = 0; i < log->count && i < LOG_MAX; ++i) {
+        if (!is_ignored(log, log->reports[i].shape)) {
+            last = i;
+        }
+    }
+    if (kept.clear_hits == 0) {
+        if (last >= 0) {
+            ++bad;
+            report("ignore ray %d: a kept shape reported, brute force hits none", index);
+        }
+        return bad;
+    }
+    *ignored_nearer += all.best < kept.best ? 1 : 0;
+    if (last < 0 || fabs(log->reports[last].fraction - kept.best) > FRACTION_TOL) {
+        ++bad;
+        report("ignore ray %d from (%g, %g) by (%g, %g): nearest kept report at %g, brute force %.9g (ignored nearest "
+               "%.9g)",
+               index, ray->ox, ray->oy, ray->dx, ray->dy, last >= 0 ? log->reports[last].fraction : -1.0f, kept.best,
+               all.best);
+    }
+    return bad;
+}
+
+static void run_callback_semantics(scene* s, uint64_t seed) {
+    static ray_log log;
+    rng r = {seed};
+    g_reports_left = 25;
+    int bad = scene_refresh(s);
+    enum { RAYS = 300 };
+    int total_hits = 0, skipped = 0, ignore_skipped = 0, ignored_nearer = 0;
+    for (int i = 0; i < RAYS; ++i) {
+        i2d_query_filter qf = random_query_filter(&r);
+        ray_case ray = random_ray(s, &r, -50.0f, 50.0f);
+        bad += check_visit_all(s, &ray, qf, i, &log, &total_hits);
+        bad += check_clip(s, &ray, qf, i, &log, &skipped);
+        bad += check_stop(s, &ray, qf, i, &log);
+        bad += check_ignore(s, &ray, qf, i, &log, rng_next(&r), &ignore_skipped, &ignored_nearer);
+    }
+    printf("cast_ray: %d shapes, %d rays, %d hits reported; %d clip and %d ignore rays skipped as grazing; %d rays "
+           "with an ignored nearer shape\n",
+           alive_shape_count(s), RAYS, total_hits, skipped, ignore_skipped, ignored_nearer);
+    I2D_CHECK(bad == 0);
+    /* Dense enough to mean something: several hits per ray on average. */
+    I2D_CHECK(total_hits >= 2 * RAYS);
+    I2D_CHECK(skipped <= RAYS / 10);
+    I2D_CHECK(ignored_nearer >= RAYS / 4);
+}
+
+I2D_TEST(api_cast_ray_callback_random) {
+    static scene s;
+    if (build_random_scene(&s, 0xCA57u, 150)) {
+        run_callback_semantics(&s, 0x5EEDu);
+    } else {
+        I2D_CHECK(!"build_random_scene");
+    }
+    if (!I2D_IS_NULL(s.world)) {
+        i2d_world_destroy(s.world);
+    }
+}
+
+/* ---- Exact cases ----------------------------------------------------------------------- */
+
+/* Returns -1 for the shapes in `ignored`, and for the others the fraction (clip_others)
+ * or 1; remembers the last shape not ignored. */
+typedef struct ignoring {
+    i2d_shape_id ignored[2];
+    bool clip_others;
+    int calls, kept_calls;
+    i2d_shape_id last_kept;
+    float last_kept_fraction;
+} ignoring;
+
+static float ignore_some(i2d_shape_id shape, i2d_vec2 point, i2d_vec2 normal, float fraction, void* context) {
+    ignoring* ig = (ignoring*)context;
+    (void)point;
+    (void)normal;
+    ++ig->calls;
+    if (I2D_ID_EQUALS(shape, ig->ignored[0]) || I2D_ID_EQUALS(shape, ig->ignored[1])) {
+        return -1.0f;
+    }
+    ++ig->kept_calls;
+    ig->last_kept = shape;
+    ig->last_kept_fraction = fraction;
+    return ig->clip_others ? fraction : 1.0f;
+}
+
+/* Five unit circles on the x axis at x = 4, 8, 12, 16, 20; rays from the origin along +x. */
+static void run_row_cases(i2d_world_id world) {
+    i2d_shape_id discs[5];
+    i2d_body_def def = i2d_default_body_def();
+    i2d_shape_def shape_def = i2d_default_shape_def();
+    for (int i = 0; i < 5; ++i) {
+        def.position = v2(4.0f * (float)(i + 1), 0.0f);
+        i2d_body_id b = i2d_body_create(world, &def);
+        i2d_circle c = {{0.0f, 0.0f}, 1.0f};
+        discs[i] = i2d_shape_create_circle(b, &shape_def, &c);
+        I2D_REQUIRE(!I2D_IS_NULL(discs[i]));
+    }
+    static ray_log log;
+    const i2d_query_filter all = i2d_default_query_filter();
+    const i2d_vec2 origin = v2(0.0f, 0.0f), along = v2(25.0f, 0.0f);
+
+    /* 1: all five, each at (4 (i + 1) - 1) / 25, normal (-1, 0). */
+    log_reset(&log, MODE_ALL);
+    I2D_CHECK_STATUS(i2d_world_cast_ray(world, origin, along, all, log_ray, &log), I2D_OK);
+    I2D_CHECK(log.count == 5);
+    for (int i = 0; i < log.count && i < 5; ++i) {
+        int which = -1;
+        for (int k = 0; k < 5; ++k) {
+            which = I2D_ID_EQUALS(log.reports[i].shape, discs[k]) ? k : which;
+        }
+        I2D_REQUIRE(which >= 0);
+        I2D_CHECK_NEAR(log.reports[i].fraction, (4.0 * (which + 1) - 1.0) / 25.0, 1e-6);
+        I2D_CHECK_NEAR(log.reports[i].point.x, 4.0 * (which + 1) - 1.0, 1e-5);
+        I2D_CHECK_NEAR(log.reports[i].normal.x, -1.0, 1e-6);
+        I2D_CHECK_NEAR(log.reports[i].normal.y, 0.0, 1e-6);
+    }
+
+    /* Clip: ends on the first disc. */
+    log_reset(&log, MODE_CLIP);
+    I2D_CHECK_STATUS(i2d_world_cast_ray(world, origin, along, all, log_ray, &log), I2D_OK);
+    I2D_REQUIRE(log.count >= 1);
+    I2D_CHECK(I2D_ID_EQUALS(log.reports[log.count - 1].shape, discs[0]));
+    I2D_CHECK_NEAR(log.reports[log.count - 1].fraction, 3.0 / 25.0, 1e-6);
+    I2D_CHECK(log.clip_violations == 0);
+
+    /* 0: one report. */
+    log_reset(&log, MODE_STOP);
+    I2D_CHECK_STATUS(i2d_world_cast_ray(world, origin, along, all, log_ray, &log), I2D_OK);
+    I2D_CHECK(log.count == 1);
+
+    /* -1 for the first two, clip otherwise: ends on the third, whatever the order. */
+    ignoring ig;
+    memset(&ig, 0, sizeof ig);
+    ig.ignored[0] = discs[0];
+    ig.ignored[1] = discs[1];
+    ig.clip_others = true;
+    I2D_CHECK_STATUS(i2d_world_cast_ray(world, origin, along, all, ignore_some, &ig), I2D_OK);
+    I2D_CHECK(I2D_ID_EQUALS(ig.last_kept, discs[2]));
+    I2D_CHECK_NEAR(ig.last_kept_fraction, 11.0 / 25.0, 1e-6);
+    /* -1 for one disc (each in turn, whatever order the cast visits them in), 1 for the
+     * others: -1 neither stops nor clips, so all five are reported. */
+    for (int k = 0; k < 10; ++k) {
+        /* Both ways along the row, so that some cast meets the ignored disc first. */
+        const bool back = k >= 5;
+        memset(&ig, 0, sizeof ig);
+        ig.ignored[0] = discs[k % 5];
+        I2D_CHECK_STATUS(i2d_world_cast_ray(world, back ? v2(24.0f, 0.0f) : origin, back ? v2(-25.0f, 0.0f) : along,
+                                            all, ignore_some, &ig),
+                         I2D_OK);
+        I2D_CHECK(ig.calls == 5);
+        I2D_CHECK(ig.kept_calls == 4);
+    }
+
+    /* A ray that starts inside disc 0 does not report it. */
+    log_reset(&log, MODE_ALL);
+    I2D_CHECK_STATUS(i2d_world_cast_ray(world, v2(4.0f, 0.0f), v2(21.0f, 0.0f), all, log_ray, &log), I2D_OK);
+    I2D_CHECK(log.count == 4);
+    for (int i = 0; i < log.count && i < LOG_MAX; ++i) {
+        I2D_CHECK(!I2D_ID_EQUALS(log.reports[i].shape, discs[0]));
+    }
+    /* Zero translation and a ray that misses: no report. */
+    log_reset(&log, MODE_ALL);
+    I2D_CHECK_STATUS(i2d_world_cast_ray(world, origin, v2(0.0f, 0.0f), all, log_ray, &log), I2D_OK);
+    I2D_CHECK(log.count == 0);
+    I2D_CHECK_STATUS(i2d_world_cast_ray(world, v2(0.0f, 2.0f), along, all, log_ray, &log), I2D_OK);
+    I2D_CHECK(log.count == 0);
+    /* A query filter that sees nothing. */
+    I2D_CHECK_STATUS(i2d_world_cast_ray(world, origin, along, query_filter(0, UINT64_MAX), log_ray, &log), I2D_OK);
+    I2D_CHECK(log.count == 0);
+}
+
+I2D_TEST(api_cast_ray_row_cases) {
+    i2d_world_def def = i2d_default_world_def();
+    i2d_world_id world = i2d_world_create(&def);
+    I2D_REQUIRE(!I2D_IS_NULL(world));
+    run_row_cases(world);
+    i2d_world_destroy(world);
+}
+
+/* ---- Refused input and the lock ---------------------------------------------------------- */
+
+typedef struct lock_probe {
+    i2d_world_id world;
+    i2d_body_id body;
+    i2d_shape_id shape;
+    int calls;
+    int refused;  /* changes refused with WORLD_LOCKED */
+    int attempts; /* changes tried */
+    int reads_ok;
+} lock_probe;
+
+static void expect_locked(lock_probe* p, i2d_status status, const char* what) {
+    ++p->attempts;
+    if (status == I2D_ERR_WORLD_LOCKED && i2d_last_status() == I2D_ERR_WORLD_LOCKED) {
+        ++p->refused;
+    } else {
+        fprintf(stderr, "%s: %s inside a ray callback: %s, expected I2D_ERR_WORLD_LOCKED\n", __FILE__, what,
+                i2d_status_string(status));
+    }
+}
+
+static float probe_ray(i2d_shape_id shape, i2d_vec2 point, i2d_vec2 normal, float fraction, void* context) {
+    lock_probe* p = (lock_probe*)context;
+    (void)point;
+    (void)normal;
+    ++p->calls;
+    if (p->calls > 1) {
+        return 1.0f;
+    }
+    i2d_body_def body_def = i2d_default_body_def();
+    i2d_shape_def shape_def = i2d_default_shape_def();
+    i2d_circle circle = {{0.0f, 0.0f}, 0.5f};
+    i2d_body_id created = i2d_body_create(p->world, &body_def);
+    expect_locked(p, I2D_IS_NULL(created) ? i2d_last_status() : I2D_OK, "i2d_body_create");
+    i2d_shape_id shape_created = i2d_shape_create_circle(p->body, &shape_def, &circle);
+    expect_locked(p, I2D_IS_NULL(shape_created) ? i2d_last_status() : I2D_OK, "i2d_shape_create_circle");
+    shape_created = i2d_shape_create_box(p->body, &shape_def, 1.0f, 1.0f);
+    expect_locked(p, I2D_IS_NULL(shape_created) ? i2d_last_status() : I2D_OK, "i2d_shape_create_box");
+    expect_locked(p, i2d_shape_destroy(shape), "i2d_shape_destroy");
+    expect_locked(p, i2d_body_destroy(p->body), "i2d_body_destroy");
+    expect_locked(p, i2d_body_set_transform(p->body, v2(50.0f, 50.0f), identity_rot()), "i2d_body_set_transform");
+    expect_locked(p, i2d_shape_set_filter(shape, i2d_default_filter()), "i2d_shape_set_filter");
+    expect_locked(p, i2d_world_step(p->world, k_dt, 4), "i2d_world_step");
+    expect_locked(p, i2d_world_rebuild_static_tree(p->world), "i2d_world_rebuild_static_tree");
+    expect_locked(p, i2d_world_set_gravity(p->world, v2(0.0f, 5.0f)), "i2d_world_set_gravity");
+    expect_locked(p, i2d_world_destroy(p->world), "i2d_world_destroy");
+    /* Reads and nested queries work. */
+    i2d_vec2 pos = i2d_body_get_position(p->body);
+    p->reads_ok += i2d_last_status() == I2D_OK && pos.x == 10.0f ? 1 : 0;
+    i2d_ray_result r = i2d_world_cast_ray_closest(p->world, v2(0.0f, 0.0f), v2(20.0f, 0.0f), i2d_default_query_filter());
+    p->reads_ok += i2d_last_status() == I2D_OK && r.hit ? 1 : 0;
+    i2d_contact_events e = i2d_world_get_contact_events(p->world);
+    p->reads_ok += i2d_last_status() == I2D_OK && e.begin_count >= 0 ? 1 : 0;
+    return fraction;
+}
+
+static void run_lock(i2d_world_id world) {
+    i2d_body_def def = i2d_default_body_def();
+    def.position = v2(10.0f, 0.0f);
+    i2d_body_id body = i2d_body_create(world, &def);
+    i2d_shape_def shape_def = i2d_default_shape_def();
+    i2d_shape_id shape = i2d_shape_create_box(body, &shape_def, 1.0f, 1.0f);
+    I2D_REQUIRE(!I2D_IS_NULL(shape));
+    I2D_REQUIRE(i2d_world_step(world, k_dt, 4) == I2D_OK);
+    i2d_world_counters before = i2d_world_get_counters(world);
+
+    lock_probe p;
+    memset(&p, 0, sizeof p);
+    p.world = world;
+    p.body = body;
+    p.shape = shape;
+    I2D_CHECK_STATUS(i2d_world_cast_ray(world, v2(0.0f, 0.0f), v2(20.0f, 0.0f), i2d_default_query_filter(), probe_ray,
+                                        &p),
+                     I2D_OK);
+    I2D_CHECK(p.calls == 1);
+    I2D_CHECK(p.attempts == 11 && p.refused == p.attempts);
+    I2D_CHECK(p.reads_ok == 3);
+
+    /* Nothing changed. */
+    I2D_CHECK(i2d_world_is_valid(world));
+    I2D_CHECK(i2d_body_is_valid(body) && i2d_shape_is_valid(shape));
+    i2d_vec2 pos = i2d_body_get_position(body);
+    I2D_CHECK(pos.x == 10.0f && pos.y == 0.0f);
+    i2d_world_counters after = i2d_world_get_counters(world);
+    I2D_CHECK(after.body_count == before.body_count && after.shape_count == before.shape_count);
+    i2d_vec2 g = i2d_world_get_gravity(world);
+    I2D_CHECK(g.x == 0.0f && g.y == -10.0f);
+    /* And the world is unlocked after the cast. */
+    I2D_CHECK_STATUS(i2d_world_step(world, k_dt, 4), I2D_OK);
+}
+
+I2D_TEST(api_cast_ray_callback_locked) {
+    i2d_world_def def = i2d_default_world_def();
+    i2d_world_id world = i2d_world_create(&def);
+    I2D_REQUIRE(!I2D_IS_NULL(world));
+    run_lock(world);
+    if (i2d_world_is_valid(world)) {
+        i2d_world_destroy(world);
+    }
+}
+
+static float count_calls(i2d_shape_id shape, i2d_vec2 point, i2d_vec2 normal, float fraction, void* context) {
+    (void)shape;
+    (void)point;
+    (void)normal;
+    ++*(int*)context;
+    return fraction;
+}
+
+I2D_TEST(api_cast_ray_refused_input) {
+    i2d_world_def def = i2d_default_world_def();
+    i2d_world_id world = i2d_world_create(&def);
+    I2D_REQUIRE(!I2D_IS_NULL(world));
+    i2d_body_def body_def = i2d_default_body_def();
+    body_def.position = v2(5.0f, 0.0f);
+    i2d_body_id body = i2d_body_create(world, &body_def);
+    i2d_shape_def shape_def = i2d_default_shape_def();
+    I2D_REQUIRE(!I2D_IS_NULL(i2d_shape_create_box(body, &shape_def, 1.0f, 1.0f)));
+    const i2d_query_filter all = i2d_default_query_filter();
+    const i2d_vec2 o = v2(0.0f, 0.0f), d = v2(10.0f, 0.0f);
+    int calls = 0;
+
+    I2D_CHECK_STATUS(i2d_world_cast_ray(world, o, d, all, NULL, &calls), I2D_ERR_INVALID_ARGUMENT);
+    I2D_CHECK(i2d_last_status() == I2D_ERR_INVALID_ARGUMENT && i2d_last_error_message()[0] != '\0');
+    static const float bad_values[3] = {NAN, INFINITY, -INFINITY};
+    for (int i = 0; i < 3; ++i) {
+        const float x = bad_values[i];
+        I2D_CHECK_STATUS(i2d_world_cast_ray(world, v2(x, 0.0f), d, all, count_calls, &calls), I2D_ERR_INVALID_ARGUMENT);
+        I2D_CHECK_STATUS(i2d_world_cast_ray(world, v2(0.0f, x), d, all, count_calls, &calls), I2D_ERR_INVALID_ARGUMENT);
+        I2D_CHECK_STATUS(i2d_world_cast_ray(world, o, v2(x, 0.0f), all, count_calls, &calls), I2D_ERR_INVALID_ARGUMENT);
+        I2D_CHECK_STATUS(i2d_world_cast_ray(world, o, v2(10.0f, x), all, count_calls, &calls),
+                         I2D_ERR_INVALID_ARGUMENT);
+    }
+    I2D_CHECK(calls == 0);
+    I2D_CHECK_STATUS(i2d_world_cast_ray(I2D_NULL_WORLD_ID, o, d, all, count_calls, &calls), I2D_ERR_INVALID_HANDLE);
+    I2D_CHECK(calls == 0);
+    /* A good call still works (and hits the box once). */
+    I2D_CHECK_STATUS(i2d_world_cast_ray(world, o, d, all, count_calls, &calls), I2D_OK);
+    I2D_CHECK(calls == 1);
+    i2d_world_destroy(world);
+    I2D_CHECK_STATUS(i2d_world_cast_ray(world, o, d, all, count_calls, &calls), I2D_ERR_INVALID_HANDLE);
+    I2D_CHECK(calls == 1);
+}
+
+/* ---- Queries while the world changes -------------------------------------------------- */
+
+typedef bool (*overlap_test)(const ref_shape* s, double delta, const void* query);
+
+static bool circle_overlaps_aabb(double cx, double cy, double r, const i2d_aabb* q) {
+    double dx = fmax(fmax(q->min.x - cx, 0.0), cx - q->max.x);
+    double dy = fmax(fmax(q->min.y - cy, 0.0), cy - q->max.y);
+    return r >= 0.0 && dx * dx + dy * dy <= r * r;
+}
+
+static bool shape_overlaps_aabb(const ref_shape* s, double delta, const void* query) {
+    const i2d_aabb* q = (const i2d_aabb*)query;
+    if (s->type == I2D_SHAPE_CIRCLE) {
+        return circle_overlaps_aabb(s->cx, s->cy, s->radius + delta, q);
+    }
+    double hx = s->half.x + delta, hy = s->half.y + delta;
+    return hx >= 0.0 && hy >= 0.0 && s->cx - hx <= q->max.x && s->cx + hx >= q->min.x && s->cy - hy <= q->max.y &&
+           s->cy + hy >= q->min.y;
+}
+
+static bool shape_contains_point(const ref_shape* s, double delta, const void* query) {
+    const i2d_vec2* p = (const i2d_vec2*)query;
+    double dx = p->x - s->cx, dy = p->y - s->cy;
+    if (s->type == I2D_SHAPE_CIRCLE) {
+        double r = s->radius + delta;
+        return r >= 0.0 && dx * dx + dy * dy <= r * r;
+    }
+    double hx = s->half.x + delta, hy = s->half.y + delta;
+    return hx >= 0.0 && hy >= 0.0 && fabs(dx) <= hx && fabs(dy) <= hy;
+}
+
+enum { CLEARLY_OUT, CLEARLY_IN, ON_EDGE };
+
+static int classify(const ref_shape* s, overlap_test test, const void* query) {
+    if (test(s, -EPS, query)) {
+        return CLEARLY_IN;
+    }
+    if (!test(s, EPS, query)) {
+        return CLEARLY_OUT;
+    }
+    return ON_EDGE;
+}
+
+typedef struct id_list {
+    int count;
+    i2d_shape_id ids[LOG_MAX];
+} id_list;
+
+static bool collect(i2d_shape_id shape, void* context) {
+    id_list* list = (id_list*)context;
+    if (list->count < LOG_MAX) {
+        list->ids[list->count] = shape;
+    }
+    ++list->count;
+    return true;
+}
+
+/* No unknown, destroyed, filtered-out, clearly-outside or repeated shape; no
+ * clearly-inside shape left out. */
+static int check_reported_set(const scene* s, const i2d_shape_id* ids, int n, overlap_test test, const void* query,
+                              i2d_query_filter qf, const char* what, int index) {
+    static bool seen[MAX_SHAPES];
+    memset(seen, 0, sizeof seen);
+    int bad = 0;
+    for (int i = 0; i < n && i < LOG_MAX; ++i) {
+        int k = find_shape(s, ids[i]);
+        if (k < 0 || !s->shapes[k].alive) {
+            ++bad;
+            report("%s %d: reported %s shape (bits 0x%llx)", what, index, k < 0 ? "an unknown" : "a destroyed",
+                   (unsigned long long)ids[i].bits);
+            continue;
+        }
+        if (seen[k]) {
+            ++bad;
+            report("%s %d: shape %d reported twice", what, index, k);
+        }
+        seen[k] = true;
+        if (!filter_passes(s->shapes[k].filter, qf)) {
+            ++bad;
+            report("%s %d: shape %d reported though the filter excludes it", what, index, k);
+        } else if (classify(&s->shapes[k], test, query) == CLEARLY_OUT) {
+            ++bad;
+            report("%s %d: shape %d reported though it is clearly outside", what, index, k);
+        }
+    }
+    for (int k = 0; k < s->shape_count; ++k) {
+        const ref_shape* ref = &s->shapes[k];
+        if (ref->alive && !seen[k] && filter_passes(ref->filter, qf) && classify(ref, test, query) == CLEARLY_IN) {
+            ++bad;
+            report("%s %d: shape %d (%s at %g, %g) overlaps but was not reported", what, index, k,
+                   ref->type == I2D_SHAPE_CIRCLE ? "circle" : "box", ref->cx, ref->cy);
+        }
+    }
+    return bad;
+}
+
+/* The region the alive shapes occupy. */
+static i2d_aabb scene_extent(const scene* s) {
+    double lo_x = INFINITY, lo_y = INFINITY, hi_x = -INFINITY, hi_y = -INFINITY;
+    for (int k = 0; k < s->shape_count; ++k) {
+        if (s->shapes[k].alive) {
+            lo_x = fmin(lo_x, s->shapes[k].cx);
+            lo_y = fmin(lo_y, s->shapes[k].cy);
+            hi_x = fmax(hi_x, s->shapes[k].cx);
+            hi_y = fmax(hi_y, s->shapes[k].cy);
+        }
+    }
+    if (lo_x > hi_x) {
+        return box(-1.0f, -1.0f, 1.0f, 1.0f);
+    }
+    return box((float)lo_x, (float)lo_y, (float)hi_x, (float)hi_y);
+}
+
+typedef struct query_stats {
+    int boxes_nonempty, points_nonempty, ray_hits, ray_skipped;
+} query_stats;
+
+/* Random AABB, point and closest-ray queries over the scene's current extent. */
+static int run_exact_queries(scene* s, rng* r, int queries, query_stats* stats) {
+    static id_list list;
+    int bad = scene_refresh(s);
+    i2d_aabb ext = scene_extent(s);
+    /* Near shapes: drawn from around a random alive shape half of the time. */
+    for (int i = 0; i < queries; ++i) {
+        i2d_query_filter qf = random_query_filter(r);
+        float cx, cy;
+        int k = rng_int(r, s->shape_count);
+        if (rng_int(r, 2) == 0 && s->shapes[k].alive) {
+            cx = (float)s->shapes[k].cx + rng_float(r, -3.0f, 3.0f);
+            cy = (float)s->shapes[k].cy + rng_float(r, -3.0f, 3.0f);
+        } else {
+            cx = rng_float(r, ext.min.x, ext.max.x);
+            cy = rng_float(r, ext.min.y, ext.max.y);
+        }
+        float hx = rng_float(r, 0.0f, 6.0f), hy = rng_float(r, 0.0f, 6.0f);
+        i2d_aabb q = box(cx - hx, cy - hy, cx + hx, cy + hy);
+        list.count = 0;
+        if (i2d_world_overlap_aabb(s->world, q, qf, collect, &list) != I2D_OK) {
+            ++bad;
+            report("aabb query %d: status %s", i, i2d_status_string(i2d_last_status()));
+            continue;
+        }
+        stats->boxes_nonempty += list.count > 0 ? 1 : 0;
+        bad += check_reported_set(s, list.ids, list.count, shape_overlaps_aabb, &q, qf, "aabb query", i);
+
+        i2d_vec2 p = v2(cx, cy);
+        list.count = 0;
+        if (i2d_world_overlap_point(s->world, p, qf, collect, &list) != I2D_OK) {
+            ++bad;
+            report("point query %d: status %s", i, i2d_status_string(i2d_last_status()));
+            continue;
+        }
+        stats->points_nonempty += list.count > 0 ? 1 : 0;
+        bad += check_reported_set(s, list.ids, list.count, shape_contains_point, &p, qf, "point query", i);
+
+        ray_case ray;
+        ray.ox = cx;
+        ray.oy = cy;
+        float angle = rng_float(r, 0.0f, 6.2831853f), length = rng_float(r, 5.0f, 60.0f);
+        ray.dx = (float)(length * cos(angle));
+        ray.dy = (float)(length * sin(angle));
+        ray_truth t = brute_force_ray(s, &ray, qf, NULL);
+        if (t.ambiguous < INFINITY && t.ambiguous <= t.best + 1e-4) {
+            ++stats->ray_skipped;
+            continue;
+        }
+        i2d_ray_result rr = i2d_world_cast_ray_closest(s->world, v2(cx, cy), v2((float)ray.dx, (float)ray.dy), qf);
+        if (t.clear_hits == 0) {
+            if (rr.hit) {
+                ++bad;
+                report("ray %d: hit 0x%llx at %g, brute force hits nothing", i, (unsigned long long)rr.shape.bits,
+                       rr.fraction);
+            }
+            continue;
+        }
+        ++stats->ray_hits;
+        ray_report rep = {rr.shape, rr.point, rr.normal, rr.fraction};
+        if (!rr.hit) {
+            ++bad;
+            report("ray %d: no hit, brute force hits shape %d at %g", i, t.best_shape, t.best);
+        } else if (fabs(rr.fraction - t.best) > FRACTION_TOL) {
+            ++bad;
+            report("ray %d: hit at %.9g, brute force nearest %.9g", i, rr.fraction, t.best);
+        } else {
+            bad += check_report(s, &ray, qf, &rep, "closest ray", i);
+        }
+    }
+    return bad;
+}
+
+/* Bodies move far (up to 15 m/s for 6 s), are teleported farther, destroyed and
+ * created; after each second the queries still agree with brute force. */
+static void run_moving_queries(scene* s, uint64_t seed) {
+    rng r = {seed};
+    g_reports_left = 25;
+    static const i2d_body_type types[5] = {I2D_BODY_STATIC, I2D_BODY_STATIC, I2D_BODY_KINEMATIC, I2D_BODY_DYNAMIC,
+                                           I2D_BODY_DYNAMIC};
+    for (int i = 0; i < 300; ++i) {
+        i2d_body_type type = types[rng_int(&r, 5)];
+        float speed = type == I2D_BODY_KINEMATIC ? 15.0f : 8.0f;
+        int b = scene_add_body(s, type, v2(rng_float(&r, -50.0f, 50.0f), rng_float(&r, -50.0f, 50.0f)),
+                               v2(rng_float(&r, -speed, speed), rng_float(&r, -speed, speed)));
+        int shapes = 1 + rng_int(&r, 2);
+        for (int k = 0; k < shapes; ++k) {
+            I2D_REQUIRE(scene_add_shape(s, &r, b, 2.0f));
+        }
+    }
+    query_stats stats;
+    memset(&stats, 0, sizeof stats);
+    int bad = 0;
+    for (int round = 0; round < 6; ++round) {
+        for (int step = 0; step < 60; ++step) {
+            I2D_REQUIRE(i2d_world_step(s->world, k_dt, 4) == I2D_OK);
+        }
+        bad += run_exact_queries(s, &r, 60, &stats);
+        /* Changes between steps, then one step and the queries again. */
+        for (int n = 0; n < 8; ++n) {
+            scene_destroy_shape(s, rng_int(&r, s->shape_count));
+        }
+        for (int n = 0; n < 4; ++n) {
+            scene_destroy_body(s, rng_int(&r, s->body_count));
+        }
+        for (int n = 0; n < 10; ++n) {
+            int b = rng_int(&r, s->body_count);
+            if (s->body_alive[b]) {
+                i2d_vec2 to = v2(rng_float(&r, -200.0f, 200.0f), rng_float(&r, -200.0f, 200.0f));
+                I2D_CHECK_STATUS(i2d_body_set_transform(s->bodies[b], to, identity_rot()), I2D_OK);
+            }
+        }
+        for (int n = 0; n < 12; ++n) {
+            i2d_body_type type = types[rng_int(&r, 5)];
+            int b = scene_add_body(s, type, v2(rng_float(&r, -100.0f, 100.0f), rng_float(&r, -100.0f, 100.0f)),
+                                   v2(rng_float(&r, -8.0f, 8.0f), rng_float(&r, -8.0f, 8.0f)));
+            I2D_REQUIRE(scene_add_shape(s, &r, b, 2.0f));
+        }
+        /* Queries right after the changes, before any step: the trees must already know. */
+        bad += run_exact_queries(s, &r, 30, &stats);
+        I2D_REQUIRE(i2d_world_step(s->world, k_dt, 4) == I2D_OK);
+        bad += run_exact_queries(s, &r, 30, &stats);
+        I2D_CHECK(i2d_world_get_counters(s->world).shape_count == alive_shape_count(s));
+    }
+    i2d_aabb ext = scene_extent(s);
+    printf("moving queries: %d shapes over (%.0f, %.0f)-(%.0f, %.0f); %d boxes and %d points found shapes, %d rays hit, "
+           "%d skipped\n",
+           alive_shape_count(s), ext.min.x, ext.min.y, ext.max.x, ext.max.y, stats.boxes_nonempty,
+           stats.points_nonempty, stats.ray_hits, stats.ray_skipped);
+    I2D_CHECK(bad == 0);
+    /* The bodies did spread far, and the queries found things. */
+    I2D_CHECK(ext.max.x - ext.min.x > 200.0f);
+    I2D_CHECK(stats.boxes_nonempty >= 200);
+    I2D_CHECK(stats.points_nonempty >= 40);
+    I2D_CHECK(stats.ray_hits >= 150);
+    I2D_CHECK(stats.ray_skipped <= 60);
+}
+
+I2D_TEST(api_cast_ray_queries_while_moving) {
+    static scene s;
+    if (scene_init(&s)) {
+        run_moving_queries(&s, 0x40E5u);
+    } else {
+        I2D_CHECK(!"scene_init");
+    }
+    if (!I2D_IS_NULL(s.world)) {
+        i2d_world_destroy(s.world);
+    }
+}
+
+/* ---- Rebuilding the static tree ------------------------------------------------------- */
+
+enum { FIXED_QUERIES = 200 };
+
+typedef struct query_answers {
+    int aabb_count[FIXED_QUERIES];
+    int point_count[FIXED_QUERIES];
+    uint64_t aabb_hash[FIXED_QUERIES], point_hash[FIXED_QUERIES], all_hits_hash[FIXED_QUERIES];
+    int all_hits_count[FIXED_QUERIES];
+    i2d_ray_result closest[FIXED_QUERIES];
+} query_answers;
+
+/* An order-free digest of a set of ids. */
+static uint64_t set_hash(i2d_shape_id* ids, int n) {
+    qsort(ids, (size_t)n, sizeof ids[0], compare_ids);
+    uint64_t h = UINT64_C(1469598103934665603);
+    for (int i = 0; i < n; ++i) {
+        h = (h ^ ids[i].bits) * UINT64_C(1099511628211);
+    }
+    return h;
+}
+
+static void answer_fixed_queries(const scene* s, uint64_t seed, query_answers* a) {
+    static id_list list;
+    static ray_log log;
+    rng r = {seed};
+    for (int i = 0; i < FIXED_QUERIES; ++i) {
+        float cx = rng_float(&r, -60.0f, 60.0f), cy = rng_float(&r, -60.0f, 60.0f);
+        float hx = rng_float(&r, 0.0f, 10.0f), hy = rng_float(&r, 0.0f, 10.0f);
+        i2d_query_filter qf = random_query_filter(&r);
+        list.count = 0;
+        i2d_world_overlap_aabb(s->world, box(cx - hx, cy - hy, cx + hx, cy + hy), qf, collect, &list);
+        a->aabb_count[i] = list.count;
+        a->aabb_hash[i] = set_hash(list.ids, list.count < LOG_MAX ? list.count : LOG_MAX);
+        list.count = 0;
+        i2d_world_overlap_point(s->world, v2(cx, cy), qf, collect, &list);
+        a->point_count[i] = list.count;
+        a->point_hash[i] = set_hash(list.ids, list.count < LOG_MAX ? list.count : LOG_MAX);
+        float angle = rng_float(&r, 0.0f, 6.2831853f), length = rng_float(&r, 10.0f, 100.0f);
+        i2d_vec2 d = v2((float)(length * cos(angle)), (float)(length * sin(angle)));
+        a->closest[i] = i2d_world_cast_ray_closest(s->world, v2(cx, cy), d, qf);
+        log_reset(&log, MODE_ALL);
+        i2d_world_cast_ray(s->world, v2(cx, cy), d, qf, log_ray, &log);
+        a->all_hits_count[i] = log.count;
+        list.count = 0;
+        for (int k = 0; k < log.count && k < LOG_MAX; ++k) {
+            list.ids[list.count++] = log.reports[k].shape;
+        }
+        a->all_hits_hash[i] = set_hash(list.ids, list.count);
+    }
+}
+
+static int compare_answers(const query_answers* x, const query_answers* y, const char* when) {
+    int bad = 0;
+    for (int i = 0; i < FIXED_QUERIES; ++i) {
+        const i2d_ray_result* a = &x->closest[i];
+        const i2d_ray_result* b = &y->closest[i];
+        bool same_ray = a->hit == b->hit &&
+                        (!a->hit || (I2D_ID_EQUALS(a->shape, b->shape) && a->fraction == b->fraction &&
+                                     a->point.x == b->point.x && a->point.y == b->point.y &&
+                                     a->normal.x == b->normal.x && a->normal.y == b->normal.y));
+        if (x->aabb_count[i] != y->aabb_count[i] || x->aabb_hash[i] != y->aabb_hash[i] ||
+            x->point_count[i] != y->point_count[i] || x->point_hash[i] != y->point_hash[i] ||
+            x->all_hits_count[i] != y->all_hits_count[i] || x->all_hits_hash[i] != y->all_hits_hash[i] || !same_ray) {
+            ++bad;
+            report("query %d differs %s: aabb %d/%d, point %d/%d, all hits %d/%d, closest %s", i, when,
+                   x->aabb_count[i], y->aabb_count[i], x->point_count[i], y->point_count[i], x->all_hits_count[i],
+                   y->all_hits_count[i], same_ray ? "same" : "different");
+        }
+    }
+    return bad;
+}
+
+static void run_rebuild(scene* s, uint64_t seed) {
+    rng r = {seed};
+    g_reports_left = 25;
+    /* A large static level, some dynamic bodies at rest among it. */
+    for (int i = 0; i < 900; ++i) {
+        int b = scene_add_body(s, I2D_BODY_STATIC, v2(rng_float(&r, -60.0f, 60.0f), rng_float(&r, -60.0f, 60.0f)),
+                               v2(0.0f, 0.0f));
+        I2D_REQUIRE(scene_add_shape(s, &r, b, 2.5f));
+    }
+    for (int i = 0; i < 100; ++i) {
+        int b = scene_add_body(s, I2D_BODY_DYNAMIC, v2(rng_float(&r, -60.0f, 60.0f), rng_float(&r, -60.0f, 60.0f)),
+                               v2(0.0f, 0.0f));
+        I2D_REQUIRE(scene_add_shape(s, &r, b, 1.0f));
+    }
+    static query_answers before, after;
+    query_stats stats;
+    memset(&stats, 0, sizeof stats);
+
+    int bad = run_exact_queries(s, &r, 100, &stats);
+    answer_fixed_queries(s, 77, &before);
+    I2D_CHECK_STATUS(i2d_world_rebuild_static_tree(s->world), I2D_OK);
+    answer_fixed_queries(s, 77, &after);
+    bad += compare_answers(&before, &after, "after the first rebuild");
+    bad += run_exact_queries(s, &r, 100, &stats);
+
+    /* The rebuilt tree keeps working as the level changes: add and remove statics. */
+    for (int i = 0; i < 100; ++i) {
+        int b = scene_add_body(s, I2D_BODY_STATIC, v2(rng_float(&r, -60.0f, 60.0f), rng_float(&r, -60.0f, 60.0f)),
+                               v2(0.0f, 0.0f));
+        I2D_REQUIRE(scene_add_shape(s, &r, b, 2.5f));
+    }
+    for (int i = 0; i < 80; ++i) {
+        int b = rng_int(&r, 900);
+        scene_destroy_body(s, b);
+    }
+    bad += run_exact_queries(s, &r, 100, &stats);
+    answer_fixed_queries(s, 78, &before);
+    I2D_CHECK_STATUS(i2d_world_rebuild_static_tree(s->world), I2D_OK);
+    I2D_CHECK_STATUS(i2d_world_rebuild_static_tree(s->world), I2D_OK); /* twice: the same */
+    answer_fixed_queries(s, 78, &after);
+    bad += compare_answers(&before, &after, "after the second rebuild");
+
+    /* Stepping after a rebuild: the dynamic bodies push apart, the statics stay. */
+    for (int i = 0; i < 30; ++i) {
+        I2D_REQUIRE(i2d_world_step(s->world, k_dt, 4) == I2D_OK);
+    }
+    bad += run_exact_queries(s, &r, 100, &stats);
+    printf("rebuild: %d shapes; %d boxes and %d points found shapes, %d rays hit\n", alive_shape_count(s),
+           stats.boxes_nonempty, stats.points_nonempty, stats.ray_hits);
+    I2D_CHECK(bad == 0);
+    I2D_CHECK(stats.boxes_nonempty >= 200);
+    I2D_CHECK(stats.ray_hits >= 100);
+}
+
+I2D_TEST(api_cast_ray_rebuild_static_tree) {
+    static scene s;
+    if (scene_init(&s)) {
+        run_rebuild(&s, 0x7EEEu);
+    } else {
+        I2D_CHECK(!"scene_init");
+    }
+    if (!I2D_IS_NULL(s.world)) {
+        i2d_world_destroy(s.world);
+    }
+}
+
+/* ---- Tree heights ------------------------------------------------------------------ */
+
+static int height_bound(int n) { return (int)(3.0 * log2((double)n) + 4.0); }
+
+static void check_heights(i2d_world_id world, int statics, int kinematics, int dynamics, const char* when) {
+    i2d_world_counters c = i2d_world_get_counters(world);
+    printf("tree heights %s: static %d (%d shapes), kinematic %d (%d), dynamic %d (%d)\n", when,
+           (int)c.static_tree_height, statics, (int)c.kinematic_tree_height, kinematics, (int)c.dynamic_tree_height,
+           dynamics);
+    int before = i2d_check_failures;
+    I2D_CHECK(c.static_tree_height >= 1 && c.static_tree_height <= height_bound(statics));
+    I2D_CHECK(c.kinematic_tree_height >= 1 && c.kinematic_tree_height <= height_bound(kinematics));
+    I2D_CHECK(c.dynamic_tree_height >= 1 && c.dynamic_tree_height <= height_bound(dynamics));
+    I2D_CHECK(c.shape_count == statics + kinematics + dynamics);
+    if (i2d_check_failures != before) {
+        fprintf(stderr, "  (tree heights %s; bounds %d, %d, %d)\n", when, height_bound(statics),
+                height_bound(kinematics), height_bound(dynamics));
+    }
+}
+
+static void run_heights(i2d_world_id world) {
+    rng r = {0x4EE7u};
+    enum { STATICS = 3000, KINEMATICS = 300, DYNAMICS = 1500 };
+    i2d_shape_def def = i2d_default_shape_def();
+    /* Statics in a sorted sweep, the worst order for an incremental tree without rotations. */
+    for (int i = 0; i < STATICS; ++i) {
+        i2d_body_def bd = i2d_default_body_def();
+        bd.position = v2(-300.0f + 0.2f * (float)i, (float)(i % 7) * 3.0f);
+        i2d_body_id b = i2d_body_create(world, &bd);
+        I2D_REQUIRE(!I2D_IS_NULL(i2d_shape_create_box(b, &def, 0.1f, 0.1f)));
+    }
+    for (int i = 0; i < KINEMATICS; ++i) {
+        i2d_body_def bd = i2d_default_body_def();
+        bd.type = I2D_BODY_KINEMATIC;
+        bd.position = v2(rng_float(&r, -300.0f, 300.0f), rng_float(&r, 50.0f, 100.0f));
+        bd.linear_velocity = v2(rng_float(&r, -10.0f, 10.0f), rng_float(&r, -10.0f, 10.0f));
+        i2d_body_id b = i2d_body_create(world, &bd);
+        I2D_REQUIRE(!I2D_IS_NULL(i2d_shape_create_box(b, &def, 0.3f, 0.3f)));
+    }
+    for (int i = 0; i < DYNAMICS; ++i) {
+        i2d_body_def bd = i2d_default_body_def();
+        bd.type = I2D_BODY_DYNAMIC;
+        bd.position = v2(-300.0f + 0.4f * (float)i, 200.0f + (float)(i % 5) * 2.0f);
+        bd.linear_velocity = v2(rng_float(&r, -5.0f, 5.0f), rng_float(&r, -5.0f, 5.0f));
+        i2d_body_id b = i2d_body_create(world, &bd);
+        i2d_circle c = {{0.0f, 0.0f}, 0.15f};
+        I2D_REQUIRE(!I2D_IS_NULL(i2d_shape_create_circle(b, &def, &c)));
+    }
+    check_heights(world, STATICS, KINEMATICS, DYNAMICS, "after creation");
+    for (int i = 0; i < 30; ++i) {
+        I2D_REQUIRE(i2d_world_step(world, k_dt, 2) == I2D_OK);
+    }
+    check_heights(world, STATICS, KINEMATICS, DYNAMICS, "after 30 steps");
+    I2D_CHECK_STATUS(i2d_world_rebuild_static_tree(world), I2D_OK);
+    check_heights(world, STATICS, KINEMATICS, DYNAMICS, "after rebuilding the static tree");
+}
+
+I2D_TEST(api_cast_ray_tree_heights) {
+    i2d_world_def def = i2d_default_world_def();
+    def.gravity = v2(0.0f, 0.0f);
+    i2d_world_id world = i2d_world_create(&def);
+    I2D_REQUIRE(!I2D_IS_NULL(world));
+    run_heights(world);
+    i2d_world_destroy(world);
+}
