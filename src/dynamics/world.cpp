@@ -248,10 +248,19 @@ void World::find_contacts() {
         c.normal = m.normal;
         c.friction = std::sqrt(a.friction * b.friction);
         c.restitution = std::fmin(a.restitution, b.restitution);
-        c.point_count = m.point_count;
+        c.point_count = 0;
         for (int32_t i = 0; i < m.point_count; ++i) {
-            c.points[i].id = m.points[i].id;
-            c.points[i].penetration = m.points[i].penetration;
+            // Speculative points (penetration < 0) are dropped until the soft-step
+            // solver issue lands: it handles them; this solver would pull them together.
+            if (m.points[i].penetration < 0.0f) {
+                continue;
+            }
+            c.points[c.point_count].id = m.points[i].id;
+            c.points[c.point_count].penetration = m.points[i].penetration;
+            ++c.point_count;
+        }
+        if (c.point_count == 0) {
+            continue;
         }
         contacts_.push_back(c);
     }

@@ -1,0 +1,115 @@
+// SPDX-License-Identifier: MIT
+// Segment-segment closest points (Ericson, Real-Time Collision Detection, 5.1.9) and a
+// brute-force convex distance for the exact overlap tests.
+#include "collision/distance.hpp"
+
+#include <cfloat>
+#include <cmath>
+
+#include "math/math.hpp"
+
+namespace i2d {
+
+// Ericson 5.1.9: minimise |p1 + s d1 - (p2 + t d2)|^2 over the unit square. The
+// unconstrained s is clamped first; t follows from s and, when it must be clamped too,
+// s is recomputed for the clamped t. Degenerate segments (points) are handled up front.
+SegmentDistance segment_distance(Vec2 p1, Vec2 q1, Vec2 p2, Vec2 q2) {
+    const Vec2 d1 = q1 - p1, d2 = q2 - p2, r = p1 - p2;
+    const float dd1 = dot(d1, d1), dd2 = dot(d2, d2);
+    const float rd1 = dot(r, d1), rd2 = dot(r, d2);
+    const float eps = FLT_EPSILON * FLT_EPSILON;
+    float s = 0.0f, t = 0.0f;
+    if (dd1 <= eps && dd2 <= eps) {
+        // two points
+    } else if (dd1 <= eps) {
+        t = clamp(rd2 / dd2, 0.0f, 1.0f);
+    } else if (dd2 <= eps) {
+        s = clamp(-rd1 / dd1, 0.0f, 1.0f);
+    } else {
+        const float d12 = dot(d1, d2);
+        const float denom = dd1 * dd2 - d12 * d12;
+        // Parallel segments (denom 0): any s works; 0 is as good as another.
+        s = denom > 0.0f ? clamp((d12 * rd2 - rd1 * dd2) / denom, 0.0f, 1.0f) : 0.0f;
+        t = (d12 * s + rd2) / dd2;
+        if (t < 0.0f) {
+            t = 0.0f;
+            s = clamp(-rd1 / dd1, 0.0f, 1.0f);
+        } else if (t > 1.0f) {
+            t = 1.0f;
+            s = clamp((d12 - rd1) / dd1, 0.0f, 1.0f);
+        }
+    }
+    SegmentDistance out;
+    out.fraction1 = s;
+    out.fraction2 = t;
+    out.closest1 = p1 + s * d1;
+    out.closest2 = p2 + t * d2;
+    out.distance_squared = distance_squared(out.closest1, out.closest2);
+    return out;
+}
+
+Vec2 closest_point_on_segment(Vec2 a, Vec2 b, Vec2 p) {
+    const Vec2 e = b - a;
+    const float ee = dot(e, e);
+    if (ee <= 0.0f) {
+        return a;
+    }
+    return a + clamp(dot(p - a, e) / ee, 0.0f, 1.0f) * e;
+}
+
+namespace {
+
+// True if some edge normal of `a` separates the two sets (closed: touching is not separated).
+bool has_separating_edge(const Vec2* a, int32_t na, const Vec2* b, int32_t nb) {
+    const int32_t edges = na >= 3 ? na : (na == 2 ? 2 : 0);
+    for (int32_t i = 0; i < edges; ++i) {
+        const Vec2 v = a[i];
+        const Vec2 normal = right_perp(a[i + 1 == na ? 0 : i + 1] - v);
+        float lowest = FLT_MAX;
+        for (int32_t j = 0; j < nb; ++j) {
+            lowest = std::fmin(lowest, dot(normal, b[j] - v));
+        }
+        // A 2-point set has both sides as faces; its reversed edge covers the other side.
+        if (lowest > 0.0f) {
+            return true;
+        }
+    }
+    return false;
+}
+
+float vertex_edge_distance_sq(const Vec2* a, int32_t na, const Vec2* b, int32_t nb) {
+    float best = FLT_MAX;
+    for (int32_t i = 0; i < na; ++i) {
+        if (nb == 1) {
+            best = std::fmin(best, distance_squared(a[i], b[0]));
+            continue;
+        }
+        for (int32_t j = 0; j < nb; ++j) {
+            const Vec2 q = closest_point_on_segment(b[j], b[j + 1 == nb ? 0 : j + 1], a[i]);
+            best = std::fmin(best, distance_squared(a[i], q));
+        }
+    }
+    return best;
+}
+
+}  // namespace
+
+// Two convex sets in the plane intersect unless an edge normal of one of them separates
+// them (the separating axis theorem; for a segment its normal is its only face). When
+// they are apart, the closest pair always involves a vertex of one and an edge (or
+// vertex) of the other, so checking all such pairs gives the exact distance.
+float convex_distance(const Vec2* a, int32_t count_a, const Vec2* b, int32_t count_b) {
+    if (count_a <= 2 && count_b <= 2) {
+        // Points and segments have no faces along their own direction: measure directly.
+        const SegmentDistance sd = segment_distance(a[0], a[count_a - 1], b[0], b[count_b - 1]);
+        return std::sqrt(sd.distance_squared);
+    }
+    if (!has_separating_edge(a, count_a, b, count_b) && !has_separating_edge(b, count_b, a, count_a)) {
+        return 0.0f;
+    }
+    const float d = std::fmin(vertex_edge_distance_sq(a, count_a, b, count_b),
+                              vertex_edge_distance_sq(b, count_b, a, count_a));
+    return std::sqrt(d);
+}
+
+}  // namespace i2d
