@@ -10,42 +10,43 @@
 
 namespace i2d {
 
-// Ericson 5.1.9: minimise |p1 + s d1 - (p2 + t d2)|^2 over the unit square. The
-// unconstrained s is clamped first; t follows from s and, when it must be clamped too,
-// s is recomputed for the clamped t. Degenerate segments (points) are handled up front.
+// Closest points of two segments. Ericson 5.1.9 minimises |p1 + s d1 - (p2 + t d2)|^2
+// over the unit square by solving for s and clamping; for nearly parallel segments its
+// denominator cancels and s loses most of its digits. Here the minimum is found by
+// cases instead: a convex quadratic on the square has its minimum either inside (the
+// segments cross: Ericson's unclamped solution, used only when it lies inside) or on an
+// edge of the square, i.e. at an endpoint of one segment against the other segment.
+// Endpoint fractions are exactly 0 or 1, which the polygon code relies on.
 SegmentDistance segment_distance(Vec2 p1, Vec2 q1, Vec2 p2, Vec2 q2) {
     const Vec2 d1 = q1 - p1, d2 = q2 - p2, r = p1 - p2;
     const float dd1 = dot(d1, d1), dd2 = dot(d2, d2);
-    const float rd1 = dot(r, d1), rd2 = dot(r, d2);
-    const float eps = FLT_EPSILON * FLT_EPSILON;
-    float s = 0.0f, t = 0.0f;
-    if (dd1 <= eps && dd2 <= eps) {
-        // two points
-    } else if (dd1 <= eps) {
-        t = clamp(rd2 / dd2, 0.0f, 1.0f);
-    } else if (dd2 <= eps) {
-        s = clamp(-rd1 / dd1, 0.0f, 1.0f);
-    } else {
-        const float d12 = dot(d1, d2);
-        const float denom = dd1 * dd2 - d12 * d12;
-        // Parallel segments (denom 0): any s works; 0 is as good as another.
-        s = denom > 0.0f ? clamp((d12 * rd2 - rd1 * dd2) / denom, 0.0f, 1.0f) : 0.0f;
-        t = (d12 * s + rd2) / dd2;
-        if (t < 0.0f) {
-            t = 0.0f;
-            s = clamp(-rd1 / dd1, 0.0f, 1.0f);
-        } else if (t > 1.0f) {
-            t = 1.0f;
-            s = clamp((d12 - rd1) / dd1, 0.0f, 1.0f);
+    auto fraction = [](Vec2 point, Vec2 start, Vec2 dir, float dd) {
+        return dd > 0.0f ? clamp(dot(point - start, dir) / dd, 0.0f, 1.0f) : 0.0f;
+    };
+    SegmentDistance best;
+    best.distance_squared = FLT_MAX;
+    auto consider = [&](float s, float t) {
+        const Vec2 c1 = p1 + s * d1, c2 = p2 + t * d2;
+        const float dist_sq = distance_squared(c1, c2);
+        if (dist_sq < best.distance_squared) {
+            best = {c1, c2, s, t, dist_sq};
+        }
+    };
+    consider(0.0f, fraction(p1, p2, d2, dd2));
+    consider(1.0f, fraction(q1, p2, d2, dd2));
+    consider(fraction(p2, p1, d1, dd1), 0.0f);
+    consider(fraction(q2, p1, d1, dd1), 1.0f);
+    const float d12 = dot(d1, d2);
+    const float denom = dd1 * dd2 - d12 * d12;
+    if (denom > FLT_EPSILON * dd1 * dd2) {
+        const float rd1 = dot(r, d1), rd2 = dot(r, d2);
+        const float s = (d12 * rd2 - rd1 * dd2) / denom;
+        const float t = (dd1 * rd2 - d12 * rd1) / denom;
+        if (s > 0.0f && s < 1.0f && t > 0.0f && t < 1.0f) {
+            consider(s, t);
         }
     }
-    SegmentDistance out;
-    out.fraction1 = s;
-    out.fraction2 = t;
-    out.closest1 = p1 + s * d1;
-    out.closest2 = p2 + t * d2;
-    out.distance_squared = distance_squared(out.closest1, out.closest2);
-    return out;
+    return best;
 }
 
 Vec2 closest_point_on_segment(Vec2 a, Vec2 b, Vec2 p) {

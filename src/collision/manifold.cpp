@@ -207,8 +207,12 @@ Manifold clip_capsules(const CoreSegment& a, float ra, const CoreSegment& b, flo
     Vec2 cp, cq;
     clip_to_slab(ref, inc, cp, cq);
     const float sp = dot(cp - ref.p, ref_normal), sq = dot(cq - ref.p, ref_normal);
-    if (sp > distance + linear_slop && sq > distance + linear_slop) {
-        return m;  // the clipped edge leans away: a corner contact, one point is right
+    // The deepest clipped end must be as close as the closest points: otherwise the
+    // closest point of the reference core is an end cap and one point is right. Box2D
+    // allows a whole linear_slop here; the tight tolerance keeps the reported depth exact
+    // at the cost of switching to one point a little earlier.
+    if (std::fmin(sp, sq) > distance + 0.01f * linear_slop) {
+        return m;
     }
     m.normal = flip ? -ref_normal : ref_normal;
     const Vec2 ends[2] = {cp, cq};
