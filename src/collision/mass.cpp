@@ -78,8 +78,9 @@ MassData polygon_mass(const Polygon& poly, float density) {
         for (int32_t i = 0; i < poly.count; ++i) {
             const int32_t j = i + 1 == poly.count ? 0 : i + 1;
             const Vec2 offset = r * poly.normals[i];
-            total.add(triangle_moments(v[i], v[j], v[j] + offset));
-            total.add(triangle_moments(v[i], v[j] + offset, v[i] + offset));
+            // The slab v[i], v[i] + offset, v[j] + offset, v[j] is counter-clockwise.
+            total.add(triangle_moments(v[i], v[i] + offset, v[j] + offset));
+            total.add(triangle_moments(v[i], v[j] + offset, v[j]));
             const Vec2 n_prev = poly.normals[i == 0 ? poly.count - 1 : i - 1];
             const float theta = std::atan2(cross(n_prev, poly.normals[i]), dot(n_prev, poly.normals[i]));
             total.add(sector_moments(v[i], normalize(n_prev + poly.normals[i]), theta, r));
