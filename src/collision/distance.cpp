@@ -23,14 +23,11 @@ SegmentDistance segment_distance(Vec2 p1, Vec2 q1, Vec2 p2, Vec2 q2) {
     auto fraction = [](Vec2 point, Vec2 start, Vec2 dir, float dd) {
         return dd > 0.0f ? clamp(dot(point - start, dir) / dd, 0.0f, 1.0f) : 0.0f;
     };
-    SegmentDistance best;
-    best.distance_squared = FLT_MAX;
+    SegmentDistance candidates[5];
+    int32_t count = 0;
     auto consider = [&](float s, float t) {
         const Vec2 c1 = p1 + s * d1, c2 = p2 + t * d2;
-        const float dist_sq = distance_squared(c1, c2);
-        if (dist_sq < best.distance_squared) {
-            best = {c1, c2, s, t, dist_sq};
-        }
+        candidates[count++] = {c1, c2, s, t, distance_squared(c1, c2)};
     };
     consider(0.0f, fraction(p1, p2, d2, dd2));
     consider(1.0f, fraction(q1, p2, d2, dd2));
@@ -46,7 +43,26 @@ SegmentDistance segment_distance(Vec2 p1, Vec2 q1, Vec2 p2, Vec2 q2) {
             consider(s, t);
         }
     }
-    return best;
+    int32_t best = 0;
+    for (int32_t i = 1; i < count; ++i) {
+        if (candidates[i].distance_squared < candidates[best].distance_squared) {
+            best = i;
+        }
+    }
+    // Parallel overlapping segments tie between vertex-vertex and vertex-edge pairs; the
+    // vertex-edge one describes the contact (an edge lies along the other), so prefer it.
+    auto at_vertex = [](float f) { return f == 0.0f || f == 1.0f; };
+    const float tie = candidates[best].distance_squared * (1.0f + 1e-5f) + FLT_MIN;
+    if (at_vertex(candidates[best].fraction1) && at_vertex(candidates[best].fraction2)) {
+        for (int32_t i = 0; i < count; ++i) {
+            if (candidates[i].distance_squared <= tie &&
+                !(at_vertex(candidates[i].fraction1) && at_vertex(candidates[i].fraction2))) {
+                best = i;
+                break;
+            }
+        }
+    }
+    return candidates[best];
 }
 
 Vec2 closest_point_on_segment(Vec2 a, Vec2 b, Vec2 p) {

@@ -116,30 +116,44 @@ Manifold clip_edges(const LocalPolygon& ref, int32_t i11, const LocalPolygon& in
     return m;
 }
 
-// Cores apart (by more than a tenth of the slop): if the closest points of the
-// reference and incident edges are two vertices, the face normal misdescribes the
-// contact (rounded corners meeting), so one point along the vertex-vertex direction is
-// right. Returns false when the edges' closest points are not both vertices.
-bool vertex_contact(const LocalPolygon& ref, int32_t i11, const LocalPolygon& inc, int32_t i21, bool flip,
-                    Manifold& out) {
+float deepest_penetration(const Manifold& m) {
+    float deepest = -FLT_MAX;
+    for (int32_t i = 0; i < m.point_count; ++i) {
+        deepest = std::fmax(deepest, m.points[i].penetration);
+    }
+    return deepest;
+}
+
+// Cores apart (by more than a tenth of the slop): when the closest points of the
+// reference and incident edges are two vertices, the face normal may misdescribe the
+// contact (rounded corners meeting, an incident corner just past the reference face's
+// end), and one point along the vertex-vertex direction is right. The clipped points
+// win when one of them is as close as those vertices (edges lying along each other):
+// they then carry the true depth and a second point.
+Manifold apart_contact(const LocalPolygon& ref, int32_t i11, const LocalPolygon& inc, int32_t i21, bool flip) {
     const int32_t i12 = ref.next(i11), i22 = inc.next(i21);
     const SegmentDistance sd = segment_distance(ref.v[i11], ref.v[i12], inc.v[i21], inc.v[i22]);
     const bool ref_vertex = sd.fraction1 == 0.0f || sd.fraction1 == 1.0f;
     const bool inc_vertex = sd.fraction2 == 0.0f || sd.fraction2 == 1.0f;
+    const Manifold clipped = clip_edges(ref, i11, inc, i21, flip);
     if (!ref_vertex || !inc_vertex) {
-        return false;
+        return clipped;
     }
+    const float radius = ref.radius + inc.radius;
     const float distance = std::sqrt(sd.distance_squared);
-    out = Manifold{};
-    if (distance - ref.radius - inc.radius > speculative_distance || distance <= 0.0f) {
-        return distance > 0.0f;
+    // Clipped points inside the slab are never closer than the edges' distance; one that
+    // is closer lies outside it (the edges do not overlap along the face) and is wrong.
+    if (clipped.point_count > 0 && std::fabs(radius - deepest_penetration(clipped) - distance) <= 0.01f * linear_slop) {
+        return clipped;
+    }
+    if (distance - radius > speculative_distance) {
+        return {};
     }
     const Vec2 normal = (1.0f / distance) * (sd.closest2 - sd.closest1);
     const int32_t ref_index = sd.fraction1 == 0.0f ? i11 : i12;
     const int32_t inc_index = sd.fraction2 == 0.0f ? i21 : i22;
-    out = single_contact(sd.closest1, sd.closest2, normal, distance, ref.radius, inc.radius,
-                         make_feature_id(ref_index, inc_index, flip));
-    return true;
+    return single_contact(sd.closest1, sd.closest2, normal, distance, ref.radius, inc.radius,
+                          make_feature_id(ref_index, inc_index, flip));
 }
 
 }  // namespace
@@ -169,10 +183,10 @@ Manifold collide_polygons(const Polygon& a, const Transform& xf_a, const Polygon
     const int32_t inc_edge = incident_edge(inc, ref.n[ref_edge]);
     const float separation = flip ? qb.separation : qa.separation;
 
-    Manifold m;
-    if (separation <= 0.1f * linear_slop || !vertex_contact(ref, ref_edge, inc, inc_edge, flip, m)) {
-        m = clip_edges(ref, ref_edge, inc, inc_edge, flip);
-    }
+    // Overlapping or nearly touching cores: the face normal is right. The tenth of the
+    // slop also keeps the vertex-vertex direction long enough to normalise.
+    Manifold m = separation <= 0.1f * linear_slop ? clip_edges(ref, ref_edge, inc, inc_edge, flip)
+                                                  : apart_contact(ref, ref_edge, inc, inc_edge, flip);
     if (m.point_count == 0) {
         return {};
     }
