@@ -84,7 +84,8 @@ void add_point(Manifold& m, Vec2 point, float penetration, uint32_t id) {
 // the reference edge v11-v12, and each surviving end becomes a point whose separation
 // is its height above the reference face. Because the winding is counter-clockwise the
 // incident edge runs against the reference edge's tangent. Normal: reference to incident.
-Manifold clip_edges(const LocalPolygon& ref, int32_t i11, const LocalPolygon& inc, int32_t i21, bool flip) {
+Manifold clip_edges(const LocalPolygon& ref, int32_t i11, const LocalPolygon& inc, int32_t i21, bool flip,
+                    bool overlapping) {
     const int32_t i12 = ref.next(i11), i22 = inc.next(i21);
     const Vec2 normal = ref.n[i11];
     const Vec2 v11 = ref.v[i11], v12 = ref.v[i12];
@@ -105,14 +106,24 @@ Manifold clip_edges(const LocalPolygon& ref, int32_t i11, const LocalPolygon& in
     const float sep_upper = dot(v_upper - v11, normal);
     const float r1 = ref.radius, r2 = inc.radius;
 
+    // Overlapping cores: a clipped-away incident vertex may be deeper than its clipped
+    // point (past the reference face's side plane but still inside the other polygon).
+    // Its depth is kept on the clipped point so that the deepest penetration is the
+    // separating-axis depth and pushing by it along the normal separates the polygons.
+    // Box2D keeps the clipped depth, which can fall short by a fraction of a millimetre.
+    // Apart cores keep the clipped depth: there the face separation of a vertex outside
+    // the slab understates its true distance.
+    const float vertex_lower = overlapping ? dot(v22 - v11, normal) : sep_lower;
+    const float vertex_upper = overlapping ? dot(v21 - v11, normal) : sep_upper;
+    const float pen_lower = r1 + r2 - std::fmin(sep_lower, vertex_lower);
+    const float pen_upper = r1 + r2 - std::fmin(sep_upper, vertex_upper);
+
     Manifold m;
     m.normal = normal;
     // Midway between the surfaces: the incident core point is r2 beyond its surface and
     // the reference surface lies r1 above the reference core.
-    add_point(m, v_lower + (0.5f * (r1 - r2 - sep_lower)) * normal, r1 + r2 - sep_lower,
-              make_feature_id(i11, i22, flip));
-    add_point(m, v_upper + (0.5f * (r1 - r2 - sep_upper)) * normal, r1 + r2 - sep_upper,
-              make_feature_id(i12, i21, flip));
+    add_point(m, v_lower + (0.5f * (r1 - r2 - sep_lower)) * normal, pen_lower, make_feature_id(i11, i22, flip));
+    add_point(m, v_upper + (0.5f * (r1 - r2 - sep_upper)) * normal, pen_upper, make_feature_id(i12, i21, flip));
     return m;
 }
 
@@ -135,7 +146,7 @@ Manifold apart_contact(const LocalPolygon& ref, int32_t i11, const LocalPolygon&
     const SegmentDistance sd = segment_distance(ref.v[i11], ref.v[i12], inc.v[i21], inc.v[i22]);
     const bool ref_vertex = sd.fraction1 == 0.0f || sd.fraction1 == 1.0f;
     const bool inc_vertex = sd.fraction2 == 0.0f || sd.fraction2 == 1.0f;
-    const Manifold clipped = clip_edges(ref, i11, inc, i21, flip);
+    const Manifold clipped = clip_edges(ref, i11, inc, i21, flip, false);
     if (!ref_vertex || !inc_vertex) {
         return clipped;
     }
@@ -185,7 +196,7 @@ Manifold collide_polygons(const Polygon& a, const Transform& xf_a, const Polygon
 
     // Overlapping or nearly touching cores: the face normal is right. The tenth of the
     // slop also keeps the vertex-vertex direction long enough to normalise.
-    Manifold m = separation <= 0.1f * linear_slop ? clip_edges(ref, ref_edge, inc, inc_edge, flip)
+    Manifold m = separation <= 0.1f * linear_slop ? clip_edges(ref, ref_edge, inc, inc_edge, flip, true)
                                                   : apart_contact(ref, ref_edge, inc, inc_edge, flip);
     if (m.point_count == 0) {
         return {};
