@@ -1,9 +1,10 @@
 // SPDX-License-Identifier: MIT
-// i2d_shape_*: create circles and boxes, destroy, and read or change materials and filters.
+// i2d_shape_*: create circles and boxes (polygons), destroy, and read or change materials and filters.
 #include <cfloat>
 
 #include "boundary.hpp"
 #include "collision/geometry.hpp"
+#include "collision/hull.hpp"
 #include "convert.hpp"
 #include "dynamics/constants.hpp"
 
@@ -69,8 +70,8 @@ I2D_API i2d_shape_id i2d_shape_create_box(i2d_body_id body, const i2d_shape_def*
             return I2D_NULL_SHAPE_ID;
         }
         Geometry g;
-        g.type = ShapeType::box;
-        g.box = {{half_width, half_height}};
+        g.type = ShapeType::polygon;
+        g.polygon = make_box(half_width, half_height);
         return create_shape(call, b, def, g);
     });
 }
@@ -126,18 +127,27 @@ I2D_API i2d_circle i2d_shape_get_circle(i2d_shape_id id) {
     });
 }
 
-I2D_API i2d_vec2 i2d_shape_get_box_half_extents(i2d_shape_id id) {
-    return guarded("i2d_shape_get_box_half_extents", i2d_vec2{0, 0}, [&](Call& call) {
+I2D_API i2d_polygon i2d_shape_get_polygon(i2d_shape_id id) {
+    return guarded("i2d_shape_get_polygon", i2d_polygon{}, [&](Call& call) {
         ShapeRef s;
         if (!call.shape(id, s)) {
-            return i2d_vec2{0, 0};
+            return i2d_polygon{};
         }
         const Geometry& g = s.shape().geometry;
-        if (g.type != ShapeType::box) {
-            call.fail(I2D_ERR_INVALID_ARGUMENT, "the shape is not a box");
-            return i2d_vec2{0, 0};
+        if (g.type != ShapeType::polygon) {
+            call.fail(I2D_ERR_INVALID_ARGUMENT, "the shape is not a polygon");
+            return i2d_polygon{};
         }
-        return to_public(g.box.half_extents);
+        const Polygon& p = g.polygon;
+        i2d_polygon out{};
+        out.count = p.count;
+        out.radius = p.radius;
+        out.centroid = to_public(p.centroid);
+        for (int32_t i = 0; i < p.count; ++i) {
+            out.vertices[i] = to_public(p.vertices[i]);
+            out.normals[i] = to_public(p.normals[i]);
+        }
+        return out;
     });
 }
 

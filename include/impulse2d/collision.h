@@ -14,7 +14,7 @@ typedef struct i2d_circle {
 
 typedef struct i2d_manifold_point {
     i2d_vec2 point;    /**< world point midway between the two surfaces */
-    float penetration; /**< > 0 overlapping, 0 touching */
+    float penetration; /**< > 0 overlapping, 0 touching; down to -0.02 m for speculative points */
     uint32_t id;       /**< feature key, stable from step to step for the same features */
 } i2d_manifold_point;
 
@@ -37,5 +37,103 @@ I2D_API i2d_manifold i2d_collide_circles(i2d_circle a, i2d_circle b);
 I2D_API i2d_manifold i2d_collide_aabbs(i2d_aabb a, i2d_aabb b);
 /** Box against circle. A centre inside the box leaves through the nearest face. */
 I2D_API i2d_manifold i2d_collide_aabb_circle(i2d_aabb a, i2d_circle b);
+
+/* ---- Rotation and more shapes: local geometry placed by a transform ----------------- */
+
+/** The most vertices a polygon may have. */
+#define I2D_MAX_POLYGON_VERTICES 8
+
+/** A convex polygon, counter-clockwise, with outward unit edge normals (normals[i] belongs
+ *  to the edge from vertices[i] to vertices[i + 1]) and its area centroid. radius > 0
+ *  rounds it: the shape is every point within radius of the polygon. Build it with
+ *  i2d_make_polygon or i2d_make_box rather than by hand. */
+typedef struct i2d_polygon {
+    i2d_vec2 vertices[I2D_MAX_POLYGON_VERTICES];
+    i2d_vec2 normals[I2D_MAX_POLYGON_VERTICES];
+    i2d_vec2 centroid;
+    float radius;
+    int32_t count; /**< 3 to 8 */
+} i2d_polygon;
+
+/** Every point within radius of the segment center1-center2. */
+typedef struct i2d_capsule {
+    i2d_vec2 center1, center2;
+    float radius;
+} i2d_capsule;
+
+/** A two-sided line segment: no area, no mass; meant for static geometry. */
+typedef struct i2d_segment {
+    i2d_vec2 point1, point2;
+} i2d_segment;
+
+/** Mass properties of a shape at a uniform density (kg/m^2). */
+typedef struct i2d_mass_data {
+    float mass;               /**< kg */
+    i2d_vec2 center;          /**< centroid, in the shape's frame */
+    float rotational_inertia; /**< kg m^2, about the centroid */
+} i2d_mass_data;
+
+/** Result of a ray cast against one shape. */
+typedef struct i2d_cast_output {
+    i2d_vec2 point;  /**< world point where the ray enters the shape */
+    i2d_vec2 normal; /**< unit surface normal there, facing the ray */
+    float fraction;  /**< of the translation, in [0, 1] */
+    bool hit;
+} i2d_cast_output;
+
+/** Convex hull of 3..8 points, counter-clockwise, rounded by radius (m, >= 0). Points
+ *  closer than 0.005 m are welded and points within 0.005 m of a hull edge's line are
+ *  dropped. Returns I2D_ERR_INVALID_ARGUMENT (out untouched) for NULL pointers, a count
+ *  outside 3..8, NaN or infinite values, a negative radius, and collinear, duplicate or
+ *  tiny (area below 0.005^2 m^2) input; the message says which. */
+I2D_API i2d_status i2d_make_polygon(const i2d_vec2* points, int32_t count, float radius, i2d_polygon* out);
+/** A box centred on the origin. Half sizes must be finite and > 0; otherwise a zero
+ *  polygon (count 0) and I2D_ERR_INVALID_ARGUMENT. */
+I2D_API i2d_polygon i2d_make_box(float half_width, float half_height);
+/** A box centred on center and turned by rotation (normalised within 1e-3). */
+I2D_API i2d_polygon i2d_make_offset_box(float half_width, float half_height, i2d_vec2 center, i2d_rot rotation);
+
+/** Mass properties at density (kg/m^2, >= 0). Invalid input gives zeros and
+ *  I2D_ERR_INVALID_ARGUMENT. */
+I2D_API i2d_mass_data i2d_compute_circle_mass(const i2d_circle* shape, float density);
+I2D_API i2d_mass_data i2d_compute_capsule_mass(const i2d_capsule* shape, float density);
+I2D_API i2d_mass_data i2d_compute_polygon_mass(const i2d_polygon* shape, float density);
+
+/** Ray origin + t * translation, t in [0, 1], against one shape placed by xf. A ray that
+ *  starts inside a shape does not hit it; segments are hit from either side. */
+I2D_API i2d_cast_output i2d_ray_cast_circle(const i2d_circle* shape, i2d_transform xf, i2d_vec2 origin,
+                                            i2d_vec2 translation);
+I2D_API i2d_cast_output i2d_ray_cast_capsule(const i2d_capsule* shape, i2d_transform xf, i2d_vec2 origin,
+                                             i2d_vec2 translation);
+I2D_API i2d_cast_output i2d_ray_cast_segment(const i2d_segment* shape, i2d_transform xf, i2d_vec2 origin,
+                                             i2d_vec2 translation);
+I2D_API i2d_cast_output i2d_ray_cast_polygon(const i2d_polygon* shape, i2d_transform xf, i2d_vec2 origin,
+                                             i2d_vec2 translation);
+
+/* Manifolds of shapes given in their own frame and placed by transforms (rotations
+ * normalised within 1e-3). Points whose separation is within the speculative distance
+ * (0.02 m) are included with a negative penetration, so point_count > 0 does not by
+ * itself mean touching. Invalid input (NULL, NaN, inf, negative radius, a polygon count
+ * outside 3..8, a capsule shorter than 0.005 m) reports point_count 0 and sets
+ * I2D_ERR_INVALID_ARGUMENT. Two segments never collide (there is no function for them).
+ * Moving B along the normal by the largest point penetration separates the shapes. */
+I2D_API i2d_manifold i2d_collide_capsule_circle(const i2d_capsule* a, i2d_transform xfa, const i2d_circle* b,
+                                                i2d_transform xfb);
+I2D_API i2d_manifold i2d_collide_segment_circle(const i2d_segment* a, i2d_transform xfa, const i2d_circle* b,
+                                                i2d_transform xfb);
+I2D_API i2d_manifold i2d_collide_polygon_circle(const i2d_polygon* a, i2d_transform xfa, const i2d_circle* b,
+                                                i2d_transform xfb);
+/** Up to 2 points when the capsules lie along each other. */
+I2D_API i2d_manifold i2d_collide_capsules(const i2d_capsule* a, i2d_transform xfa, const i2d_capsule* b,
+                                          i2d_transform xfb);
+I2D_API i2d_manifold i2d_collide_segment_capsule(const i2d_segment* a, i2d_transform xfa, const i2d_capsule* b,
+                                                 i2d_transform xfb);
+I2D_API i2d_manifold i2d_collide_polygon_capsule(const i2d_polygon* a, i2d_transform xfa, const i2d_capsule* b,
+                                                 i2d_transform xfb);
+I2D_API i2d_manifold i2d_collide_segment_polygon(const i2d_segment* a, i2d_transform xfa, const i2d_polygon* b,
+                                                 i2d_transform xfb);
+/** Separating axis test and clipping: up to 2 points on the reference face. */
+I2D_API i2d_manifold i2d_collide_polygons(const i2d_polygon* a, i2d_transform xfa, const i2d_polygon* b,
+                                          i2d_transform xfb);
 
 #endif

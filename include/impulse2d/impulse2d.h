@@ -116,8 +116,9 @@ I2D_API i2d_body_id i2d_shape_get_body(i2d_shape_id shape);
 I2D_API i2d_shape_type i2d_shape_get_type(i2d_shape_id shape);
 /** The circle in the body frame; zero for another kind (I2D_ERR_INVALID_ARGUMENT). */
 I2D_API i2d_circle i2d_shape_get_circle(i2d_shape_id shape);
-/** Half width and height of a box; zero for another kind (I2D_ERR_INVALID_ARGUMENT). */
-I2D_API i2d_vec2 i2d_shape_get_box_half_extents(i2d_shape_id shape);
+/** The polygon in the body frame (boxes are polygons); zero for another kind
+ *  (I2D_ERR_INVALID_ARGUMENT). */
+I2D_API i2d_polygon i2d_shape_get_polygon(i2d_shape_id shape);
 /** Tight world-space bounds. */
 I2D_API i2d_aabb i2d_shape_get_aabb(i2d_shape_id shape);
 I2D_API float i2d_shape_get_density(i2d_shape_id shape);

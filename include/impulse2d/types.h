@@ -21,7 +21,9 @@ typedef enum i2d_body_type {
 
 typedef enum i2d_shape_type {
     I2D_SHAPE_CIRCLE = 0,
-    I2D_SHAPE_BOX /**< axis-aligned in the body frame, centred on the body origin */
+    I2D_SHAPE_CAPSULE, /**< two half discs joined by a rectangle */
+    I2D_SHAPE_SEGMENT, /**< a two-sided line segment, no mass */
+    I2D_SHAPE_POLYGON  /**< convex, up to 8 vertices, optionally rounded; boxes are polygons */
 } i2d_shape_type;
 
 /** Which shapes collide. Two shapes collide when each one's category_bits meet the

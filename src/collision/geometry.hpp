@@ -6,23 +6,26 @@
 
 namespace i2d {
 
+/// Mass, centroid and rotational inertia about the centroid for a uniform density
+/// (kg/m^2). Segments have no area and no mass.
 MassData compute_mass(const Geometry& g, float density);
 float area(const Geometry& g);
+/// Tight world-space bounds of the shape placed by xf.
 AABB compute_aabb(const Geometry& g, const Transform& xf);
 
-/// Exact tests, boundary included.
+/// Exact tests, boundary included. Segments contain no point.
 bool contains_point(const Geometry& g, const Transform& xf, Vec2 p);
 bool overlaps_aabb(const Geometry& g, const Transform& xf, const AABB& box);
 
 struct RayHit {
     Vec2 point;
-    Vec2 normal;
+    Vec2 normal;  // unit, facing the incoming ray
     float fraction = 0.0f;
     bool hit = false;
 };
 
 /// First entry of origin + t * translation, t in [0, max_fraction]. A shape that
-/// strictly contains the origin is not hit.
+/// strictly contains the origin is not hit. Segments are hit from either side.
 RayHit ray_cast(const Geometry& g, const Transform& xf, Vec2 origin, Vec2 translation, float max_fraction);
 
 }  // namespace i2d

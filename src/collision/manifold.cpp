@@ -1,8 +1,13 @@
 // SPDX-License-Identifier: MIT
-// Contact manifolds for circles and axis-aligned boxes (the seed's part 1, per ERRATA.md).
+// Contact manifolds: the seed's world-space circle and AABB tests (per ERRATA.md), the
+// round shapes (circles, capsules, segments) and the pair table.
 #include "collision/manifold.hpp"
 
+#include <cfloat>
 #include <cmath>
+
+#include "collision/distance.hpp"
+#include "collision/hull.hpp"
 
 namespace i2d {
 
@@ -106,27 +111,211 @@ Manifold collide_aabb_circle(const AABB& a, Vec2 center_b, float radius_b) {
     return single_point(normal, closest, center_b - radius_b * normal, radius_b - dist);
 }
 
+// ---- Round shapes: circles, capsules and segments ------------------------------------
+
+Manifold collide_circles(const Circle& a, const Transform& xf_a, const Circle& b, const Transform& xf_b) {
+    const Transform xf = inv_mul_transforms(xf_a, xf_b);
+    const Vec2 center_b = transform_point(xf, b.center);
+    const Vec2 d = center_b - a.center;
+    const float distance = length(d);
+    if (distance - a.radius - b.radius > speculative_distance) {
+        return {};
+    }
+    // Coincident centres: any fixed axis, the same every time.
+    const Vec2 normal = distance > 0.0f ? (1.0f / distance) * d : Vec2{1.0f, 0.0f};
+    return to_world(single_contact(a.center, center_b, normal, distance, a.radius, b.radius, 0), xf_a);
+}
+
+Manifold collide_capsule_circle(const Capsule& a, const Transform& xf_a, const Circle& b, const Transform& xf_b) {
+    const Transform xf = inv_mul_transforms(xf_a, xf_b);
+    const Vec2 center_b = transform_point(xf, b.center);
+    const Vec2 closest = closest_point_on_segment(a.center1, a.center2, center_b);
+    const Vec2 d = center_b - closest;
+    const float distance = length(d);
+    if (distance - a.radius - b.radius > speculative_distance) {
+        return {};
+    }
+    // A centre on the core: leave sideways, through the capsule's left face.
+    Vec2 normal = distance > 0.0f ? (1.0f / distance) * d : left_perp(normalize(a.center2 - a.center1));
+    if (length_squared(normal) == 0.0f) {
+        normal = {1.0f, 0.0f};
+    }
+    return to_world(single_contact(closest, center_b, normal, distance, a.radius, b.radius, 0), xf_a);
+}
+
+Manifold collide_segment_circle(const Segment& a, const Transform& xf_a, const Circle& b, const Transform& xf_b) {
+    return collide_capsule_circle(Capsule{a.point1, a.point2, 0.0f}, xf_a, b, xf_b);
+}
+
 namespace {
 
-AABB box_bounds(const Geometry& g, const Transform& xf) {
-    // Bodies do not rotate yet: the box stays axis-aligned in world space.
-    return {xf.p - g.box.half_extents, xf.p + g.box.half_extents};
+// Two points for capsules lying along each other (after Box2D v3's b2CollideCapsules):
+// pick the reference core by the separating-axis test on the two core normals, clip the
+// other core to the reference core's extent, and keep both clipped points when one of
+// them is about as close as the closest points (else the cores only meet at a corner and
+// one point is right). Works in A's local frame with p1 at the origin.
+struct CoreSegment {
+    Vec2 p, q, u;  // ends and unit direction
+    float length = 0.0f;
+};
+
+// Largest separation of `other` from the line of `ref`, and the side's normal.
+float side_separation(const CoreSegment& ref, const CoreSegment& other, Vec2& out_normal) {
+    const Vec2 n = left_perp(ref.u);
+    const float sp = dot(other.p - ref.p, n), sq = dot(other.q - ref.p, n);
+    const float positive = std::fmin(sp, sq), negative = std::fmin(-sp, -sq);
+    out_normal = positive > negative ? n : -n;
+    return std::fmax(positive, negative);
 }
 
-Manifold circle_vs_circle(const Geometry& a, const Transform& xf_a, const Geometry& b, const Transform& xf_b) {
-    return collide_circles(transform_point(xf_a, a.circle.center), a.circle.radius,
-                           transform_point(xf_b, b.circle.center), b.circle.radius);
+// Clips `other` to the slab of `ref` (0..length along ref.u). Only ends beyond the slab
+// move; the fraction is taken along other's own direction.
+void clip_to_slab(const CoreSegment& ref, const CoreSegment& other, Vec2& out_p, Vec2& out_q) {
+    const float fp = dot(other.p - ref.p, ref.u), fq = dot(other.q - ref.p, ref.u);
+    out_p = other.p, out_q = other.q;
+    if (fp < 0.0f && fq > 0.0f) {
+        out_p = lerp(other.p, other.q, -fp / (fq - fp));
+    } else if (fq < 0.0f && fp > 0.0f) {
+        out_q = lerp(other.q, other.p, -fq / (fp - fq));
+    }
+    if (fp > ref.length && fq < ref.length) {
+        out_p = lerp(other.p, other.q, (fp - ref.length) / (fp - fq));
+    } else if (fq > ref.length && fp < ref.length) {
+        out_q = lerp(other.q, other.p, (fq - ref.length) / (fq - fp));
+    }
 }
 
-Manifold box_vs_circle(const Geometry& a, const Transform& xf_a, const Geometry& b, const Transform& xf_b) {
-    return collide_aabb_circle(box_bounds(a, xf_a), transform_point(xf_b, b.circle.center), b.circle.radius);
+bool outside_slab(const CoreSegment& ref, const CoreSegment& other) {
+    const float fp = dot(other.p - ref.p, ref.u), fq = dot(other.q - ref.p, ref.u);
+    return (fp <= 0.0f && fq <= 0.0f) || (fp >= ref.length && fq >= ref.length);
 }
 
-Manifold box_vs_box(const Geometry& a, const Transform& xf_a, const Geometry& b, const Transform& xf_b) {
-    return collide_aabbs(box_bounds(a, xf_a), box_bounds(b, xf_b));
+Manifold clip_capsules(const CoreSegment& a, float ra, const CoreSegment& b, float rb, float distance) {
+    Manifold m;
+    if (outside_slab(a, b) || outside_slab(b, a)) {
+        return m;
+    }
+    Vec2 normal_a, normal_b;
+    const float sep_a = side_separation(a, b, normal_a);
+    const float sep_b = side_separation(b, a, normal_b);
+    // Prefer A unless B is clearly better, so the reference does not flicker on ties.
+    const bool flip = sep_b > sep_a + 0.1f * linear_slop;
+    const CoreSegment& ref = flip ? b : a;
+    const CoreSegment& inc = flip ? a : b;
+    const Vec2 ref_normal = flip ? normal_b : normal_a;  // from the reference toward the other
+    const float r_ref = flip ? rb : ra, r_inc = flip ? ra : rb;
+    Vec2 cp, cq;
+    clip_to_slab(ref, inc, cp, cq);
+    const float sp = dot(cp - ref.p, ref_normal), sq = dot(cq - ref.p, ref_normal);
+    // The deepest clipped end must be as close as the closest points: otherwise the
+    // closest point of the reference core is an end cap and one point is right. Box2D
+    // allows a whole linear_slop here; the tight tolerance keeps the reported depth exact
+    // at the cost of switching to one point a little earlier.
+    if (std::fmin(sp, sq) > distance + 0.01f * linear_slop) {
+        return m;
+    }
+    m.normal = flip ? -ref_normal : ref_normal;
+    const Vec2 ends[2] = {cp, cq};
+    const float seps[2] = {sp, sq};
+    for (int32_t i = 0; i < 2; ++i) {
+        const float penetration = r_ref + r_inc - seps[i];
+        if (penetration < -speculative_distance) {
+            continue;
+        }
+        ManifoldPoint& mp = m.points[m.point_count++];
+        mp.point = ends[i] + (0.5f * (r_ref - r_inc - seps[i])) * ref_normal;
+        mp.penetration = penetration;
+        mp.id = make_feature_id(0, i, flip);
+    }
+    if (m.point_count == 0) {
+        return Manifold{};
+    }
+    return m;
 }
+
+CoreSegment core_segment(Vec2 p, Vec2 q) {
+    CoreSegment s{p, q, {}, length(q - p)};
+    s.u = s.length > 0.0f ? (1.0f / s.length) * (q - p) : Vec2{1.0f, 0.0f};
+    return s;
+}
+
+}  // namespace
+
+// Closest points of the two cores (Ericson 5.1.9, in distance.cpp), then the two-point
+// clip when the cores lie along each other, else one point between the closest points.
+Manifold collide_capsules(const Capsule& a, const Transform& xf_a, const Capsule& b, const Transform& xf_b) {
+    // A's frame shifted to its first centre keeps precision for capsules far from their body.
+    const Vec2 origin = a.center1;
+    const Transform frame{transform_point(xf_a, origin), xf_a.q};
+    const Transform xf = inv_mul_transforms(frame, xf_b);
+    const CoreSegment core_a = core_segment(Vec2{}, a.center2 - origin);
+    const CoreSegment core_b = core_segment(transform_point(xf, b.center1), transform_point(xf, b.center2));
+    const SegmentDistance sd = segment_distance(core_a.p, core_a.q, core_b.p, core_b.q);
+    const float max_distance = a.radius + b.radius + speculative_distance;
+    if (sd.distance_squared > max_distance * max_distance) {
+        return {};
+    }
+    const float distance = std::sqrt(sd.distance_squared);
+    Manifold m;
+    if (core_a.length > linear_slop && core_b.length > linear_slop) {
+        m = clip_capsules(core_a, a.radius, core_b, b.radius, distance);
+    }
+    if (m.point_count == 0) {
+        Vec2 normal = distance > 0.0f ? (1.0f / distance) * (sd.closest2 - sd.closest1) : left_perp(core_a.u);
+        const uint32_t id = make_feature_id(sd.fraction1 == 0.0f ? 0 : 1, sd.fraction2 == 0.0f ? 0 : 1);
+        m = single_contact(sd.closest1, sd.closest2, normal, distance, a.radius, b.radius, id);
+    }
+    return to_world(m, frame);
+}
+
+Manifold collide_segment_capsule(const Segment& a, const Transform& xf_a, const Capsule& b, const Transform& xf_b) {
+    return collide_capsules(Capsule{a.point1, a.point2, 0.0f}, xf_a, b, xf_b);
+}
+
+Manifold collide_polygon_capsule(const Polygon& a, const Transform& xf_a, const Capsule& b, const Transform& xf_b) {
+    return collide_polygons(a, xf_a, make_capsule_polygon(b.center1, b.center2, b.radius), xf_b);
+}
+
+Manifold collide_segment_polygon(const Segment& a, const Transform& xf_a, const Polygon& b, const Transform& xf_b) {
+    return collide_polygons(make_capsule_polygon(a.point1, a.point2, 0.0f), xf_a, b, xf_b);
+}
+
+// ---- The pair table (Box2D contact.c's s_registers, Jolt's CollisionDispatch) --------
+
+namespace {
 
 using CollideFn = Manifold (*)(const Geometry&, const Transform&, const Geometry&, const Transform&);
+
+// Adapters from the tagged Geometry to the typed functions, one per primary pair.
+Manifold circle_circle(const Geometry& a, const Transform& xa, const Geometry& b, const Transform& xb) {
+    return collide_circles(a.circle, xa, b.circle, xb);
+}
+Manifold capsule_circle(const Geometry& a, const Transform& xa, const Geometry& b, const Transform& xb) {
+    return collide_capsule_circle(a.capsule, xa, b.circle, xb);
+}
+Manifold segment_circle(const Geometry& a, const Transform& xa, const Geometry& b, const Transform& xb) {
+    return collide_segment_circle(a.segment, xa, b.circle, xb);
+}
+Manifold polygon_circle(const Geometry& a, const Transform& xa, const Geometry& b, const Transform& xb) {
+    return collide_polygon_circle(a.polygon, xa, b.circle, xb);
+}
+Manifold capsule_capsule(const Geometry& a, const Transform& xa, const Geometry& b, const Transform& xb) {
+    return collide_capsules(a.capsule, xa, b.capsule, xb);
+}
+Manifold segment_capsule(const Geometry& a, const Transform& xa, const Geometry& b, const Transform& xb) {
+    return collide_segment_capsule(a.segment, xa, b.capsule, xb);
+}
+Manifold polygon_capsule(const Geometry& a, const Transform& xa, const Geometry& b, const Transform& xb) {
+    return collide_polygon_capsule(a.polygon, xa, b.capsule, xb);
+}
+Manifold segment_polygon(const Geometry& a, const Transform& xa, const Geometry& b, const Transform& xb) {
+    return collide_segment_polygon(a.segment, xa, b.polygon, xb);
+}
+Manifold polygon_polygon(const Geometry& a, const Transform& xa, const Geometry& b, const Transform& xb) {
+    return collide_polygons(a.polygon, xa, b.polygon, xb);
+}
+// Segments are static geometry: two of them never need a contact.
+Manifold segment_segment(const Geometry&, const Transform&, const Geometry&, const Transform&) { return {}; }
 
 struct PairEntry {
     CollideFn fn;
@@ -135,10 +324,13 @@ struct PairEntry {
 
 constexpr int32_t kind_count = static_cast<int32_t>(ShapeType::count);
 
-// One plain function per pair of kinds, each registered once in its primary order.
+// Row: A's kind, column: B's kind, in the order circle, capsule, segment, polygon. Each
+// pair has one function, registered once as primary and once swapped.
 constexpr PairEntry pair_table[kind_count][kind_count] = {
-    /* circle */ {{circle_vs_circle, false}, {box_vs_circle, true}},
-    /* box    */ {{box_vs_circle, false}, {box_vs_box, false}},
+    /* circle  */ {{circle_circle, false}, {capsule_circle, true}, {segment_circle, true}, {polygon_circle, true}},
+    /* capsule */ {{capsule_circle, false}, {capsule_capsule, false}, {segment_capsule, true}, {polygon_capsule, true}},
+    /* segment */ {{segment_circle, false}, {segment_capsule, false}, {segment_segment, false}, {segment_polygon, false}},
+    /* polygon */ {{polygon_circle, false}, {polygon_capsule, false}, {segment_polygon, true}, {polygon_polygon, false}},
 };
 
 }  // namespace

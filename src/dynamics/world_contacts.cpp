@@ -13,6 +13,20 @@ namespace {
 int32_t contact_of(int32_t key) { return key >> 1; }
 int32_t edge_of(int32_t key) { return key & 1; }
 
+// Speculative points (penetration < 0: a gap within the speculative distance) are dropped
+// until the soft-step solver lands: it handles them, while the seed's solver would treat
+// a gap as contact and hold the shapes apart.
+Manifold without_speculative_points(Manifold m) {
+    int32_t kept = 0;
+    for (int32_t i = 0; i < m.point_count; ++i) {
+        if (m.points[i].penetration >= 0.0f) {
+            m.points[kept++] = m.points[i];
+        }
+    }
+    m.point_count = kept;
+    return m;
+}
+
 }  // namespace
 
 void World::create_contact(int32_t shape_a, int32_t shape_b) {
@@ -163,7 +177,8 @@ void World::update_contacts() {
             c.manifold.point_count = 0;
             continue;
         }
-        update_manifold(c, collide_shapes(a.geometry, bodies[a.body].transform, b.geometry, bodies[b.body].transform));
+        update_manifold(c, without_speculative_points(
+                               collide_shapes(a.geometry, bodies[a.body].transform, b.geometry, bodies[b.body].transform)));
         if (c.manifold.point_count > 0) {
             c.flags |= contact_touching | contact_touched_in_step;
         } else {

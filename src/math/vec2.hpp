@@ -23,12 +23,19 @@ inline float dot(Vec2 a, Vec2 b) { return a.x * b.x + a.y * b.y; }
 inline float cross(Vec2 a, Vec2 b) { return a.x * b.y - a.y * b.x; }
 /// The vector turned a quarter turn counter-clockwise.
 inline Vec2 left_perp(Vec2 a) { return {-a.y, a.x}; }
+/// The vector turned a quarter turn clockwise (the outward normal of a CCW edge).
+inline Vec2 right_perp(Vec2 a) { return {a.y, -a.x}; }
 inline float length_squared(Vec2 a) { return dot(a, a); }
 inline float length(Vec2 a) { return std::sqrt(dot(a, a)); }
 inline float distance_squared(Vec2 a, Vec2 b) { return length_squared(b - a); }
 inline Vec2 min(Vec2 a, Vec2 b) { return {a.x < b.x ? a.x : b.x, a.y < b.y ? a.y : b.y}; }
 inline Vec2 max(Vec2 a, Vec2 b) { return {a.x > b.x ? a.x : b.x, a.y > b.y ? a.y : b.y}; }
 inline Vec2 lerp(Vec2 a, Vec2 b, float t) { return {a.x + t * (b.x - a.x), a.y + t * (b.y - a.y)}; }
+/// Unit vector along a, or zero for a (near-)zero vector.
+inline Vec2 normalize(Vec2 a) {
+    const float len = length(a);
+    return len > 1e-30f ? (1.0f / len) * a : Vec2{};
+}
 
 /// Rotation as cosine and sine; kept normalised.
 struct Rot {
@@ -44,6 +51,13 @@ struct Transform {
 };
 
 inline Vec2 transform_point(const Transform& xf, Vec2 v) { return rotate(xf.q, v) + xf.p; }
+inline Vec2 inv_transform_point(const Transform& xf, Vec2 v) { return inv_rotate(xf.q, v - xf.p); }
+/// q^T * r: the rotation r seen from the frame q.
+inline Rot inv_mul_rot(Rot q, Rot r) { return {q.c * r.c + q.s * r.s, q.c * r.s - q.s * r.c}; }
+/// A^-1 * B: frame B expressed in frame A.
+inline Transform inv_mul_transforms(const Transform& a, const Transform& b) {
+    return {inv_rotate(a.q, b.p - a.p), inv_mul_rot(a.q, b.q)};
+}
 
 /// Axis-aligned box; lower is the lower-left corner (y up).
 struct AABB {

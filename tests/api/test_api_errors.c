@@ -254,7 +254,9 @@ static void snap_shape(snapshot* s, const fixture* f, int j) {
         snap_vec2(s, object, "shape.circle.center.x", "shape.circle.center.y", c.center);
         snap_float(s, object, "shape.circle.radius", c.radius);
     } else {
-        snap_vec2(s, object, "shape.half.x", "shape.half.y", i2d_shape_get_box_half_extents(sh));
+        i2d_polygon p = i2d_shape_get_polygon(sh);
+        snap_put(s, object, "shape.polygon.count", (uint64_t)p.count);
+        snap_vec2(s, object, "shape.half.x", "shape.half.y", p.vertices[2]);
     }
     i2d_aabb bounds = i2d_shape_get_aabb(sh);
     snap_vec2(s, object, "shape.aabb.min.x", "shape.aabb.min.y", bounds.min);
@@ -1459,16 +1461,16 @@ static void run_kind_mismatch(const fixture* f) {
     i2d_circle c = i2d_shape_get_circle(f->shape[FIX_BALL_BOX]);
     CHECK_REFUSED("i2d_shape_get_circle on a box", i2d_last_status(), I2D_ERR_INVALID_ARGUMENT);
     I2D_CHECK(c.center.x == 0.0f && c.center.y == 0.0f && c.radius == 0.0f);
-    i2d_vec2 h = i2d_shape_get_box_half_extents(f->shape[FIX_BALL_CIRCLE]);
-    CHECK_REFUSED("i2d_shape_get_box_half_extents on a circle", i2d_last_status(), I2D_ERR_INVALID_ARGUMENT);
-    I2D_CHECK(h.x == 0.0f && h.y == 0.0f);
+    i2d_polygon p = i2d_shape_get_polygon(f->shape[FIX_BALL_CIRCLE]);
+    CHECK_REFUSED("i2d_shape_get_polygon on a circle", i2d_last_status(), I2D_ERR_INVALID_ARGUMENT);
+    I2D_CHECK(p.count == 0 && p.vertices[2].x == 0.0f && p.vertices[2].y == 0.0f);
     /* The right kind still works. */
     c = i2d_shape_get_circle(f->shape[FIX_BALL_CIRCLE]);
     CHECK_ACCEPTED("i2d_shape_get_circle on a circle", i2d_last_status());
     I2D_CHECK(c.radius == 0.5f && c.center.x == 0.3f);
-    h = i2d_shape_get_box_half_extents(f->shape[FIX_BALL_BOX]);
-    CHECK_ACCEPTED("i2d_shape_get_box_half_extents on a box", i2d_last_status());
-    I2D_CHECK(h.x == 0.4f && h.y == 0.4f);
+    p = i2d_shape_get_polygon(f->shape[FIX_BALL_BOX]);
+    CHECK_ACCEPTED("i2d_shape_get_polygon on a box", i2d_last_status());
+    I2D_CHECK(p.count == 4 && p.vertices[2].x == 0.4f && p.vertices[2].y == 0.4f);
 }
 
 I2D_TEST(api_errors_shape_kind_mismatch) {

@@ -192,9 +192,9 @@ static void check_shape_id_refused(i2d_shape_id s, const char* ctx) {
     i2d_circle circle = i2d_shape_get_circle(s);
     CHECK_LAST_HANDLE_REFUSED(ctx, "i2d_shape_get_circle");
     CHECK_IN(ctx, is_zero_vec(circle.center) && circle.radius == 0.0f);
-    i2d_vec2 half = i2d_shape_get_box_half_extents(s);
-    CHECK_LAST_HANDLE_REFUSED(ctx, "i2d_shape_get_box_half_extents");
-    CHECK_IN(ctx, is_zero_vec(half));
+    i2d_polygon polygon = i2d_shape_get_polygon(s);
+    CHECK_LAST_HANDLE_REFUSED(ctx, "i2d_shape_get_polygon");
+    CHECK_IN(ctx, polygon.count == 0 && is_zero_vec(polygon.vertices[0]) && polygon.radius == 0.0f);
     i2d_aabb bounds = i2d_shape_get_aabb(s);
     CHECK_LAST_HANDLE_REFUSED(ctx, "i2d_shape_get_aabb");
     CHECK_IN(ctx, is_zero_aabb(bounds));

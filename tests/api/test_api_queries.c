@@ -163,7 +163,7 @@ static void add_random_shape(scene* s, rng* r, int body) {
         i2d_circle circle = {ref->local_center, ref->radius};
         ref->id = i2d_shape_create_circle(s->bodies[body], &def, &circle);
     } else {
-        ref->type = I2D_SHAPE_BOX;
+        ref->type = I2D_SHAPE_POLYGON;
         ref->half = v2(rng_float(r, 0.1f, 5.0f), rng_float(r, 0.1f, 5.0f));
         ref->id = i2d_shape_create_box(s->bodies[body], &def, ref->half.x, ref->half.y);
     }

@@ -298,11 +298,16 @@ static void cover_shape_getters(const tour* t) {
     I2D_CHECK(I2D_ID_EQUALS(i2d_shape_get_body(t->circle), t->compound));
     I2D_CHECK(I2D_ID_EQUALS(i2d_shape_get_body(t->box), t->compound));
     I2D_CHECK(i2d_shape_get_type(t->circle) == I2D_SHAPE_CIRCLE);
-    I2D_CHECK(i2d_shape_get_type(t->box) == I2D_SHAPE_BOX);
+    I2D_CHECK(i2d_shape_get_type(t->box) == I2D_SHAPE_POLYGON);
     i2d_circle c = i2d_shape_get_circle(t->circle);
     I2D_CHECK(c.center.x == 1.0f && c.center.y == 0.0f && c.radius == k_circle_radius);
-    i2d_vec2 h = i2d_shape_get_box_half_extents(t->box);
-    I2D_CHECK(h.x == k_box_hw && h.y == k_box_hh);
+    /* A box is a polygon: corners counter-clockwise from the lower left. */
+    i2d_polygon p = i2d_shape_get_polygon(t->box);
+    I2D_CHECK(p.count == 4 && p.radius == 0.0f);
+    I2D_CHECK(p.vertices[0].x == -k_box_hw && p.vertices[0].y == -k_box_hh);
+    I2D_CHECK(p.vertices[2].x == k_box_hw && p.vertices[2].y == k_box_hh);
+    I2D_CHECK(p.normals[1].x == 1.0f && p.normals[1].y == 0.0f);
+    I2D_CHECK(p.centroid.x == 0.0f && p.centroid.y == 0.0f);
 
     /* Tight world bounds: body (2, 3). */
     check_aabb_near(i2d_shape_get_aabb(t->circle), box(2.5f, 2.5f, 3.5f, 3.5f), 1e-6);

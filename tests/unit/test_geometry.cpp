@@ -5,6 +5,7 @@
 
 #include "check.h"
 #include "collision/geometry.hpp"
+#include "collision/hull.hpp"
 #include "math/math.hpp"
 #include "test_rng.hpp"
 
@@ -19,10 +20,10 @@ Geometry make_circle(Vec2 center, float radius) {
     return g;
 }
 
-Geometry make_box(float hx, float hy) {
+Geometry box_geometry(float hx, float hy) {
     Geometry g;
-    g.type = ShapeType::box;
-    g.box = {{hx, hy}};
+    g.type = ShapeType::polygon;
+    g.polygon = i2d::make_box(hx, hy);
     return g;
 }
 
@@ -45,7 +46,7 @@ I2D_TEST(unit_geometry_mass_closed_form) {
     const MassData disc = compute_mass(make_circle({0.5f, -2.0f}, 0.75f), 3.0f);
     I2D_CHECK_NEAR(disc.mass, 3.0 * 3.14159265358979 * 0.75 * 0.75, 1e-5);
     I2D_CHECK(disc.center == (Vec2{0.5f, -2.0f}));
-    const MassData box = compute_mass(make_box(0.5f, 2.0f), 2.0f);
+    const MassData box = compute_mass(box_geometry(0.5f, 2.0f), 2.0f);
     I2D_CHECK_NEAR(box.mass, 2.0 * 1.0 * 4.0, 1e-6);
     I2D_CHECK(box.center == (Vec2{0.0f, 0.0f}));
 }
@@ -53,7 +54,7 @@ I2D_TEST(unit_geometry_mass_closed_form) {
 I2D_TEST(unit_geometry_aabb_is_tight) {
     const AABB c = compute_aabb(make_circle({1.0f, 0.0f}, 0.5f), at(2.0f, 3.0f));
     I2D_CHECK(c.lower == (Vec2{2.5f, 2.5f}) && c.upper == (Vec2{3.5f, 3.5f}));
-    const AABB b = compute_aabb(make_box(1.0f, 0.25f), at(-1.0f, 1.0f));
+    const AABB b = compute_aabb(box_geometry(1.0f, 0.25f), at(-1.0f, 1.0f));
     I2D_CHECK(b.lower == (Vec2{-2.0f, 0.75f}) && b.upper == (Vec2{0.0f, 1.25f}));
 }
 
@@ -62,7 +63,7 @@ I2D_TEST(unit_geometry_contains_point_includes_boundary) {
     I2D_CHECK(contains_point(circle, at(0, 0), {1.0f, 0.0f}));
     I2D_CHECK(!contains_point(circle, at(0, 0), {1.0001f, 0.0f}));
     I2D_CHECK(!contains_point(circle, at(0, 0), {0.71f, 0.71f}));
-    const Geometry box = make_box(1.0f, 2.0f);
+    const Geometry box = box_geometry(1.0f, 2.0f);
     I2D_CHECK(contains_point(box, at(1, 1), {2.0f, 3.0f}));
     I2D_CHECK(!contains_point(box, at(1, 1), {2.0f, 3.001f}));
 }
@@ -83,7 +84,7 @@ I2D_TEST(unit_geometry_ray_cast_matches_sampling) {
         const bool circle = trial % 2 == 0;
         const Geometry g = circle ? make_circle({rng.uniform(-0.5f, 0.5f), rng.uniform(-0.5f, 0.5f)},
                                                 rng.uniform(0.2f, 2.0f))
-                                  : make_box(rng.uniform(0.2f, 2.0f), rng.uniform(0.2f, 2.0f));
+                                  : box_geometry(rng.uniform(0.2f, 2.0f), rng.uniform(0.2f, 2.0f));
         const Transform xf = at(rng.uniform(-2.0f, 2.0f), rng.uniform(-2.0f, 2.0f));
         const Vec2 origin{rng.uniform(-8.0f, 8.0f), rng.uniform(-8.0f, 8.0f)};
         // Aim near the shape, and stop short of or past it, so that hits, misses and
@@ -114,7 +115,7 @@ I2D_TEST(unit_geometry_ray_cast_matches_sampling) {
 }
 
 I2D_TEST(unit_geometry_ray_cast_box_face_normals) {
-    const Geometry box = make_box(1.0f, 1.0f);
+    const Geometry box = box_geometry(1.0f, 1.0f);
     const RayHit from_left = ray_cast(box, at(0, 0), {-3.0f, 0.5f}, {4.0f, 0.0f}, 1.0f);
     I2D_REQUIRE(from_left.hit);
     I2D_CHECK_NEAR(from_left.fraction, 0.5, 1e-6);

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "check.h"
+#include "collision/hull.hpp"
 #include "dynamics/world.hpp"
 
 using namespace i2d;
@@ -19,8 +20,8 @@ int32_t add_body(World& world, BodyType type, Vec2 position) {
 
 int32_t add_box(World& world, int32_t body, float hx, float hy, float density = 1.0f) {
     Geometry g;
-    g.type = ShapeType::box;
-    g.box = {{hx, hy}};
+    g.type = ShapeType::polygon;
+    g.polygon = i2d::make_box(hx, hy);
     ShapeDef def;
     def.density = density;
     return world.create_shape(body, def, g);
