@@ -15,17 +15,19 @@ using namespace i2d::capi;
 
 namespace {
 
-// Bodies do not rotate until the rotation issue lands: refuse, rather than silently
-// drop, a rotation the caller asked for.
-bool identity_rotation(Call& call, i2d_rot q, const char* what) {
+// A caller's rotation must be nearly unit length; it is stored exactly normalised so
+// that rounding in the caller's cos/sin never scales a body.
+bool normalized_rotation(Call& call, i2d_rot q, const char* what, Rot& out) {
     if (!call.finite(q.c, what) || !call.finite(q.s, what)) {
         return false;
     }
-    if (std::fabs(q.c - 1.0f) > identity_rotation_tolerance || std::fabs(q.s) > identity_rotation_tolerance) {
+    const float length_sq = q.c * q.c + q.s * q.s;
+    if (!(std::fabs(length_sq - 1.0f) <= rotation_normalization_tolerance)) {
         return call.fail(I2D_ERR_INVALID_ARGUMENT,
-                         "%s (c=%g, s=%g) is not identity: bodies do not rotate yet in this version",
-                         what, static_cast<double>(q.c), static_cast<double>(q.s));
+                         "%s (c=%g, s=%g) is not a unit rotation (c^2 + s^2 = %g); build it with i2d_make_rot", what,
+                         static_cast<double>(q.c), static_cast<double>(q.s), static_cast<double>(length_sq));
     }
+    out = normalize(capi::to_core(q));
     return true;
 }
 
@@ -41,16 +43,12 @@ bool validate_body_def(Call& call, const i2d_body_def* def) {
         return call.fail(I2D_ERR_INVALID_ARGUMENT, "body def: type %lld is not an i2d_body_type",
                          static_cast<long long>(type));
     }
+    Rot rotation;
     if (!call.coordinate(def->position, "body def: position") ||
-        !identity_rotation(call, def->rotation, "body def: rotation") ||
+        !normalized_rotation(call, def->rotation, "body def: rotation", rotation) ||
         !call.finite(def->linear_velocity, "body def: linear_velocity") ||
         !call.finite(def->angular_velocity, "body def: angular_velocity")) {
         return false;
-    }
-    if (def->angular_velocity != 0.0f) {
-        return call.fail(I2D_ERR_INVALID_ARGUMENT,
-                         "body def: angular_velocity is %g: bodies do not rotate yet in this version",
-                         static_cast<double>(def->angular_velocity));
     }
     return call.in_range(def->linear_damping, 0.0f, FLT_MAX, "body def: linear_damping") &&
            call.in_range(def->angular_damping, 0.0f, FLT_MAX, "body def: angular_damping") &&
@@ -61,9 +59,9 @@ BodyDef to_core(const i2d_body_def& def) {
     BodyDef core;
     core.type = static_cast<BodyType>(def.type);
     core.position = capi::to_core(def.position);
-    core.rotation = Rot{};  // checked to be identity
+    core.rotation = normalize(capi::to_core(def.rotation));  // checked to be near unit length
     core.linear_velocity = capi::to_core(def.linear_velocity);
-    core.angular_velocity = 0.0f;
+    core.angular_velocity = def.angular_velocity;
     core.linear_damping = def.linear_damping;
     core.angular_damping = def.angular_damping;
     core.gravity_scale = def.gravity_scale;
@@ -150,11 +148,12 @@ I2D_API i2d_transform i2d_body_get_transform(i2d_body_id id) {
 I2D_API i2d_status i2d_body_set_transform(i2d_body_id id, i2d_vec2 position, i2d_rot rotation) {
     return guarded("i2d_body_set_transform", I2D_ERR_OUT_OF_MEMORY, [&](Call& call) {
         BodyRef b;
+        Rot q;
         if (!mutable_body(call, id, b) || !call.coordinate(position, "position") ||
-            !identity_rotation(call, rotation, "rotation")) {
+            !normalized_rotation(call, rotation, "rotation", q)) {
             return last_status();
         }
-        b.world->set_transform(b.index, Transform{capi::to_core(position), Rot{}});
+        b.world->set_transform(b.index, Transform{capi::to_core(position), q});
         return I2D_OK;
     });
 }
@@ -192,10 +191,10 @@ I2D_API i2d_status i2d_body_set_angular_velocity(i2d_body_id id, float w) {
         if (!mutable_body(call, id, b) || !call.finite(w, "angular velocity")) {
             return last_status();
         }
-        if (w != 0.0f) {
-            call.fail(I2D_ERR_INVALID_ARGUMENT, "angular velocity is %g: bodies do not rotate yet in this version",
-                      static_cast<double>(w));
-            return last_status();
+        Body& body = b.body();
+        // Static bodies never move; a fixed-rotation body never turns.
+        if (body.type == BodyType::kinematic || (body.type == BodyType::dynamic && body.inv_inertia != 0.0f)) {
+            body.angular_velocity = w;
         }
         return I2D_OK;
     });
@@ -215,6 +214,88 @@ I2D_API i2d_vec2 i2d_body_get_world_center_of_mass(i2d_body_id id) {
     });
 }
 
+I2D_API float i2d_body_get_rotational_inertia(i2d_body_id id) {
+    return guarded("i2d_body_get_rotational_inertia", 0.0f, [&](Call& call) {
+        BodyRef b;
+        return call.body(id, b) ? b.body().inertia : 0.0f;
+    });
+}
+
+I2D_API i2d_vec2 i2d_body_get_local_center_of_mass(i2d_body_id id) {
+    return guarded("i2d_body_get_local_center_of_mass", i2d_vec2{0, 0}, [&](Call& call) {
+        BodyRef b;
+        return call.body(id, b) ? to_public(b.body().local_center) : i2d_vec2{0, 0};
+    });
+}
+
+I2D_API i2d_vec2 i2d_body_get_world_point(i2d_body_id id, i2d_vec2 local_point) {
+    return guarded("i2d_body_get_world_point", i2d_vec2{0, 0}, [&](Call& call) {
+        BodyRef b;
+        if (!call.body(id, b) || !call.coordinate(local_point, "local_point")) {
+            return i2d_vec2{0, 0};
+        }
+        return to_public(transform_point(b.body().transform, capi::to_core(local_point)));
+    });
+}
+
+I2D_API i2d_vec2 i2d_body_get_local_point(i2d_body_id id, i2d_vec2 world_point) {
+    return guarded("i2d_body_get_local_point", i2d_vec2{0, 0}, [&](Call& call) {
+        BodyRef b;
+        if (!call.body(id, b) || !call.coordinate(world_point, "world_point")) {
+            return i2d_vec2{0, 0};
+        }
+        return to_public(inv_transform_point(b.body().transform, capi::to_core(world_point)));
+    });
+}
+
+I2D_API i2d_vec2 i2d_body_get_world_point_velocity(i2d_body_id id, i2d_vec2 world_point) {
+    return guarded("i2d_body_get_world_point_velocity", i2d_vec2{0, 0}, [&](Call& call) {
+        BodyRef b;
+        if (!call.body(id, b) || !call.coordinate(world_point, "world_point")) {
+            return i2d_vec2{0, 0};
+        }
+        const Body& body = b.body();
+        return to_public(body.linear_velocity + cross(body.angular_velocity, capi::to_core(world_point) - body.center));
+    });
+}
+
+namespace {
+
+// Forces and torques accumulate until the step; a sum that would overflow is refused so
+// that the body stays as it was.
+i2d_status accumulate(Call& call, Body& body, Vec2 force, float torque) {
+    if (body.type != BodyType::dynamic) {
+        return I2D_OK;
+    }
+    const Vec2 total_force = body.force + force;
+    const float total_torque = body.torque + torque;
+    if (!is_finite(total_force) || !std::isfinite(total_torque)) {
+        call.fail(I2D_ERR_INVALID_ARGUMENT, "the body's accumulated force or torque would overflow");
+        return last_status();
+    }
+    body.force = total_force;
+    body.torque = total_torque;
+    return I2D_OK;
+}
+
+// An impulse changes both velocities at once; refused whole if either would overflow.
+i2d_status change_velocity(Call& call, Body& body, Vec2 dv, float dw) {
+    if (body.type != BodyType::dynamic) {
+        return I2D_OK;
+    }
+    const Vec2 v = body.linear_velocity + dv;
+    const float w = body.angular_velocity + dw;
+    if (!is_finite(v) || !std::isfinite(w)) {
+        call.fail(I2D_ERR_INVALID_ARGUMENT, "the impulse would make the body's velocity overflow");
+        return last_status();
+    }
+    body.linear_velocity = v;
+    body.angular_velocity = w;
+    return I2D_OK;
+}
+
+}  // namespace
+
 I2D_API i2d_status i2d_body_apply_force(i2d_body_id id, i2d_vec2 force, i2d_vec2 point, bool wake) {
     (void)wake;  // every body is awake until sleeping lands
     return guarded("i2d_body_apply_force", I2D_ERR_OUT_OF_MEMORY, [&](Call& call) {
@@ -223,16 +304,30 @@ I2D_API i2d_status i2d_body_apply_force(i2d_body_id id, i2d_vec2 force, i2d_vec2
             return last_status();
         }
         Body& body = b.body();
-        if (body.type != BodyType::dynamic) {
-            return I2D_OK;
-        }
-        const Vec2 total = body.force + capi::to_core(force);
-        if (!is_finite(total)) {
-            call.fail(I2D_ERR_INVALID_ARGUMENT, "the body's accumulated force would overflow");
+        const Vec2 f = capi::to_core(force);
+        return accumulate(call, body, f, cross(capi::to_core(point) - body.center, f));
+    });
+}
+
+I2D_API i2d_status i2d_body_apply_force_to_center(i2d_body_id id, i2d_vec2 force, bool wake) {
+    (void)wake;
+    return guarded("i2d_body_apply_force_to_center", I2D_ERR_OUT_OF_MEMORY, [&](Call& call) {
+        BodyRef b;
+        if (!mutable_body(call, id, b) || !call.finite(force, "force")) {
             return last_status();
         }
-        body.force = total;
-        return I2D_OK;
+        return accumulate(call, b.body(), capi::to_core(force), 0.0f);
+    });
+}
+
+I2D_API i2d_status i2d_body_apply_torque(i2d_body_id id, float torque, bool wake) {
+    (void)wake;
+    return guarded("i2d_body_apply_torque", I2D_ERR_OUT_OF_MEMORY, [&](Call& call) {
+        BodyRef b;
+        if (!mutable_body(call, id, b) || !call.finite(torque, "torque")) {
+            return last_status();
+        }
+        return accumulate(call, b.body(), Vec2{}, torque);
     });
 }
 
@@ -244,16 +339,21 @@ I2D_API i2d_status i2d_body_apply_linear_impulse(i2d_body_id id, i2d_vec2 impuls
             return last_status();
         }
         Body& body = b.body();
-        if (body.type != BodyType::dynamic) {
-            return I2D_OK;
-        }
-        const Vec2 v = body.linear_velocity + body.inv_mass * capi::to_core(impulse);
-        if (!is_finite(v)) {
-            call.fail(I2D_ERR_INVALID_ARGUMENT, "the impulse would make the body's velocity overflow");
+        const Vec2 j = capi::to_core(impulse);
+        return change_velocity(call, body, body.inv_mass * j,
+                               body.inv_inertia * cross(capi::to_core(point) - body.center, j));
+    });
+}
+
+I2D_API i2d_status i2d_body_apply_angular_impulse(i2d_body_id id, float impulse, bool wake) {
+    (void)wake;
+    return guarded("i2d_body_apply_angular_impulse", I2D_ERR_OUT_OF_MEMORY, [&](Call& call) {
+        BodyRef b;
+        if (!mutable_body(call, id, b) || !call.finite(impulse, "impulse")) {
             return last_status();
         }
-        body.linear_velocity = v;
-        return I2D_OK;
+        Body& body = b.body();
+        return change_velocity(call, body, Vec2{}, body.inv_inertia * impulse);
     });
 }
 

@@ -1,24 +1,13 @@
 // SPDX-License-Identifier: MIT
 // i2d_world_overlap_*, i2d_world_cast_ray_closest: queries with exact geometry.
 #include "boundary.hpp"
+#include "geometry_checks.hpp"
 #include "convert.hpp"
 
 using namespace i2d;
 using namespace i2d::capi;
 
 namespace {
-
-bool valid_box(Call& call, i2d_aabb box) {
-    if (!call.finite(box.min, "aabb.min") || !call.finite(box.max, "aabb.max")) {
-        return false;
-    }
-    if (box.min.x > box.max.x || box.min.y > box.max.y) {
-        return call.fail(I2D_ERR_INVALID_ARGUMENT, "aabb.min (%g, %g) is above or right of aabb.max (%g, %g)",
-                         static_cast<double>(box.min.x), static_cast<double>(box.min.y),
-                         static_cast<double>(box.max.x), static_cast<double>(box.max.y));
-    }
-    return true;
-}
 
 // Turns the core's shape indices into public ids for a user callback.
 struct CallbackAdapter {
@@ -57,7 +46,7 @@ I2D_API i2d_status i2d_world_overlap_aabb(i2d_world_id world, i2d_aabb aabb, i2d
                                           i2d_overlap_fn* fn, void* context) {
     return guarded("i2d_world_overlap_aabb", I2D_ERR_OUT_OF_MEMORY, [&](Call& call) {
         WorldRef w;
-        if (!call.world(world, w) || !valid_box(call, aabb) || !call.not_null(reinterpret_cast<void*>(fn), "fn")) {
+        if (!call.world(world, w) || !valid_aabb(call, aabb, "aabb") || !call.not_null(reinterpret_cast<void*>(fn), "fn")) {
             return last_status();
         }
         CallbackAdapter adapter{w.world, w.id, fn, context};
@@ -86,7 +75,7 @@ I2D_API int32_t i2d_world_overlap_aabb_ids(i2d_world_id world, i2d_aabb aabb, i2
                                            i2d_shape_id* out, int32_t capacity) {
     return guarded("i2d_world_overlap_aabb_ids", int32_t(-1), [&](Call& call) -> int32_t {
         WorldRef w;
-        if (!call.world(world, w) || !valid_box(call, aabb)) {
+        if (!call.world(world, w) || !valid_aabb(call, aabb, "aabb")) {
             return -1;
         }
         if (capacity < 0 || (capacity > 0 && out == nullptr)) {

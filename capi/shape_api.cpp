@@ -3,6 +3,8 @@
 #include <cfloat>
 
 #include "boundary.hpp"
+#include "collision/hull.hpp"
+#include "geometry_checks.hpp"
 #include "collision/geometry.hpp"
 #include "collision/hull.hpp"
 #include "convert.hpp"
@@ -76,6 +78,128 @@ I2D_API i2d_shape_id i2d_shape_create_box(i2d_body_id body, const i2d_shape_def*
     });
 }
 
+namespace {
+
+// A body's shape is built from a hull so that its normals and centroid are consistent by
+// construction, whatever the caller's polygon said.
+bool hull_of(Call& call, const Vec2* points, int32_t count, Hull& hull) {
+    const HullStatus status = compute_hull(points, count, hull);
+    if (status != HullStatus::ok) {
+        return call.fail(I2D_ERR_INVALID_ARGUMENT, "polygon: %s", hull_status_message(status));
+    }
+    return true;
+}
+
+bool valid_points(Call& call, const i2d_vec2* points, int32_t count) {
+    if (!call.not_null(points, "points")) {
+        return false;
+    }
+    if (count < 3 || count > max_polygon_vertices) {
+        return call.fail(I2D_ERR_INVALID_ARGUMENT, "count is %d; a polygon takes 3 to %d points", count,
+                         max_polygon_vertices);
+    }
+    for (int32_t i = 0; i < count; ++i) {
+        if (!call.coordinate(points[i], "points[i]")) {
+            return false;
+        }
+    }
+    return true;
+}
+
+Geometry polygon_geometry(const Polygon& polygon) {
+    Geometry g;
+    g.type = ShapeType::polygon;
+    g.polygon = polygon;
+    return g;
+}
+
+}  // namespace
+
+I2D_API i2d_shape_id i2d_shape_create_offset_box(i2d_body_id body, const i2d_shape_def* def, float half_width,
+                                                 float half_height, i2d_vec2 center, i2d_rot rotation) {
+    return guarded("i2d_shape_create_offset_box", I2D_NULL_SHAPE_ID, [&](Call& call) -> i2d_shape_id {
+        BodyRef b;
+        if (!call.body(body, b) || !call.unlocked(*b.world) || !validate_shape_def(call, def) ||
+            !call.extent(half_width, "half_width") || !call.extent(half_height, "half_height") ||
+            !call.coordinate(center, "center") || !valid_transform(call, i2d_transform{center, rotation}, "offset")) {
+            return I2D_NULL_SHAPE_ID;
+        }
+        const Rot q = normalize(capi::to_core(rotation));
+        return create_shape(call, b, def,
+                            polygon_geometry(make_offset_box(half_width, half_height, capi::to_core(center), q)));
+    });
+}
+
+I2D_API i2d_shape_id i2d_shape_create_polygon(i2d_body_id body, const i2d_shape_def* def, const i2d_vec2* points,
+                                              int32_t count) {
+    return guarded("i2d_shape_create_polygon", I2D_NULL_SHAPE_ID, [&](Call& call) -> i2d_shape_id {
+        BodyRef b;
+        Hull hull;
+        if (!call.body(body, b) || !call.unlocked(*b.world) || !validate_shape_def(call, def) ||
+            !valid_points(call, points, count)) {
+            return I2D_NULL_SHAPE_ID;
+        }
+        Vec2 core_points[max_polygon_vertices];
+        for (int32_t i = 0; i < count; ++i) {
+            core_points[i] = capi::to_core(points[i]);
+        }
+        if (!hull_of(call, core_points, count, hull)) {
+            return I2D_NULL_SHAPE_ID;
+        }
+        return create_shape(call, b, def, polygon_geometry(make_polygon(hull, 0.0f)));
+    });
+}
+
+I2D_API i2d_shape_id i2d_shape_create_polygon_from(i2d_body_id body, const i2d_shape_def* def,
+                                                   const i2d_polygon* polygon) {
+    return guarded("i2d_shape_create_polygon_from", I2D_NULL_SHAPE_ID, [&](Call& call) -> i2d_shape_id {
+        BodyRef b;
+        Hull hull;
+        if (!call.body(body, b) || !call.unlocked(*b.world) || !validate_shape_def(call, def) ||
+            !valid_polygon(call, polygon, "polygon") || !call.in_range(polygon->radius, 0.0f, max_shape_extent,
+                                                                        "polygon radius")) {
+            return I2D_NULL_SHAPE_ID;
+        }
+        const Polygon given = to_core(*polygon);
+        if (!hull_of(call, given.vertices, given.count, hull)) {
+            return I2D_NULL_SHAPE_ID;
+        }
+        return create_shape(call, b, def, polygon_geometry(make_polygon(hull, given.radius)));
+    });
+}
+
+I2D_API i2d_shape_id i2d_shape_create_capsule(i2d_body_id body, const i2d_shape_def* def, i2d_vec2 center1,
+                                              i2d_vec2 center2, float radius) {
+    return guarded("i2d_shape_create_capsule", I2D_NULL_SHAPE_ID, [&](Call& call) -> i2d_shape_id {
+        BodyRef b;
+        if (!call.body(body, b) || !call.unlocked(*b.world) || !validate_shape_def(call, def) ||
+            !call.coordinate(center1, "center1") || !call.coordinate(center2, "center2") ||
+            !call.extent(radius, "radius") || !valid_core_length(call, center1, center2, "center1-center2")) {
+            return I2D_NULL_SHAPE_ID;
+        }
+        Geometry g;
+        g.type = ShapeType::capsule;
+        g.capsule = {capi::to_core(center1), capi::to_core(center2), radius};
+        return create_shape(call, b, def, g);
+    });
+}
+
+I2D_API i2d_shape_id i2d_shape_create_segment(i2d_body_id body, const i2d_shape_def* def, i2d_vec2 point1,
+                                              i2d_vec2 point2) {
+    return guarded("i2d_shape_create_segment", I2D_NULL_SHAPE_ID, [&](Call& call) -> i2d_shape_id {
+        BodyRef b;
+        if (!call.body(body, b) || !call.unlocked(*b.world) || !validate_shape_def(call, def) ||
+            !call.coordinate(point1, "point1") || !call.coordinate(point2, "point2") ||
+            !valid_core_length(call, point1, point2, "segment")) {
+            return I2D_NULL_SHAPE_ID;
+        }
+        Geometry g;
+        g.type = ShapeType::segment;
+        g.segment = {capi::to_core(point1), capi::to_core(point2)};
+        return create_shape(call, b, def, g);
+    });
+}
+
 I2D_API i2d_status i2d_shape_destroy(i2d_shape_id id) {
     return guarded("i2d_shape_destroy", I2D_ERR_OUT_OF_MEMORY, [&](Call& call) {
         ShapeRef s;
@@ -138,16 +262,37 @@ I2D_API i2d_polygon i2d_shape_get_polygon(i2d_shape_id id) {
             call.fail(I2D_ERR_INVALID_ARGUMENT, "the shape is not a polygon");
             return i2d_polygon{};
         }
-        const Polygon& p = g.polygon;
-        i2d_polygon out{};
-        out.count = p.count;
-        out.radius = p.radius;
-        out.centroid = to_public(p.centroid);
-        for (int32_t i = 0; i < p.count; ++i) {
-            out.vertices[i] = to_public(p.vertices[i]);
-            out.normals[i] = to_public(p.normals[i]);
+        return to_public(g.polygon);
+    });
+}
+
+I2D_API i2d_capsule i2d_shape_get_capsule(i2d_shape_id id) {
+    return guarded("i2d_shape_get_capsule", i2d_capsule{}, [&](Call& call) {
+        ShapeRef s;
+        if (!call.shape(id, s)) {
+            return i2d_capsule{};
         }
-        return out;
+        const Geometry& g = s.shape().geometry;
+        if (g.type != ShapeType::capsule) {
+            call.fail(I2D_ERR_INVALID_ARGUMENT, "the shape is not a capsule");
+            return i2d_capsule{};
+        }
+        return i2d_capsule{to_public(g.capsule.center1), to_public(g.capsule.center2), g.capsule.radius};
+    });
+}
+
+I2D_API i2d_segment i2d_shape_get_segment(i2d_shape_id id) {
+    return guarded("i2d_shape_get_segment", i2d_segment{}, [&](Call& call) {
+        ShapeRef s;
+        if (!call.shape(id, s)) {
+            return i2d_segment{};
+        }
+        const Geometry& g = s.shape().geometry;
+        if (g.type != ShapeType::segment) {
+            call.fail(I2D_ERR_INVALID_ARGUMENT, "the shape is not a segment");
+            return i2d_segment{};
+        }
+        return i2d_segment{to_public(g.segment.point1), to_public(g.segment.point2)};
     });
 }
 

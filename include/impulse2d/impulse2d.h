@@ -39,6 +39,13 @@ I2D_API i2d_query_filter i2d_default_query_filter(void);
 /** Category 1, mask every bit, group 0. */
 I2D_API i2d_filter i2d_default_filter(void);
 
+/* ---- Rotations ------------------------------------------------------------------ */
+
+/** The rotation by angle radians, counter-clockwise (angle finite). */
+I2D_API i2d_rot i2d_make_rot(float angle);
+/** The angle of a rotation in (-pi, pi]. */
+I2D_API float i2d_rot_get_angle(i2d_rot rotation);
+
 /* ---- World ---------------------------------------------------------------------- */
 
 /** Creates a world. Null id with I2D_ERR_INVALID_ARGUMENT for a bad def, or
@@ -68,30 +75,50 @@ I2D_API i2d_body_type i2d_body_get_type(i2d_body_id body);
 I2D_API i2d_vec2 i2d_body_get_position(i2d_body_id body);
 I2D_API i2d_rot i2d_body_get_rotation(i2d_body_id body);
 I2D_API i2d_transform i2d_body_get_transform(i2d_body_id body);
-/** Teleports the body. Rotation must be identity until rotation lands. */
+/** Teleports the body origin to position, turned by rotation (normalised within 1e-3). */
 I2D_API i2d_status i2d_body_set_transform(i2d_body_id body, i2d_vec2 position, i2d_rot rotation);
 /** Velocity of the centre of mass, m/s. */
 I2D_API i2d_vec2 i2d_body_get_linear_velocity(i2d_body_id body);
 /** Finite values only; ignored for static bodies (which never move) but still checked.
  *  Speeds above the world's maximum_linear_speed are clamped at the next step. */
 I2D_API i2d_status i2d_body_set_linear_velocity(i2d_body_id body, i2d_vec2 v);
+/** rad/s, counter-clockwise positive. */
 I2D_API float i2d_body_get_angular_velocity(i2d_body_id body);
-/** Must be 0 until rotation lands. */
+/** Finite values only; ignored for static and fixed-rotation bodies but still checked.
+ *  Spins faster than a quarter turn per substep are clamped at the next step. */
 I2D_API i2d_status i2d_body_set_angular_velocity(i2d_body_id body, float w);
 /** kg; 0 for static and kinematic bodies. */
 I2D_API float i2d_body_get_mass(i2d_body_id body);
+/** Rotational inertia about the centre of mass, kg m^2; 0 for static, kinematic and
+ *  fixed-rotation bodies. */
+I2D_API float i2d_body_get_rotational_inertia(i2d_body_id body);
 /** Centre of mass in world coordinates, m. */
 I2D_API i2d_vec2 i2d_body_get_world_center_of_mass(i2d_body_id body);
+/** Centre of mass in the body frame, m. */
+I2D_API i2d_vec2 i2d_body_get_local_center_of_mass(i2d_body_id body);
+/** A point given in the body frame, in world coordinates. */
+I2D_API i2d_vec2 i2d_body_get_world_point(i2d_body_id body, i2d_vec2 local_point);
+/** A world point, in the body frame. */
+I2D_API i2d_vec2 i2d_body_get_local_point(i2d_body_id body, i2d_vec2 world_point);
+/** Velocity of the body's material at a world point: v + w x (point - centre). */
+I2D_API i2d_vec2 i2d_body_get_world_point_velocity(i2d_body_id body, i2d_vec2 world_point);
 /** Adds a force (N) at a world point (within 1e9 m of the origin) for the next step;
- *  cleared after each step. Only dynamic bodies respond. The point produces no torque
- *  until rotation lands. A force that would make the accumulated total overflow is
+ *  away from the centre of mass it also adds torque. Cleared after each step. Only
+ *  dynamic bodies respond. A force that would make the accumulated total overflow is
  *  refused. */
 I2D_API i2d_status i2d_body_apply_force(i2d_body_id body, i2d_vec2 force, i2d_vec2 point, bool wake);
-/** Changes velocity at once by impulse / mass (N s) at a world point (within 1e9 m of
- *  the origin). Only dynamic bodies respond; an impulse that would make the velocity
- *  overflow is refused. */
+/** Adds a force (N) at the centre of mass for the next step: no torque. */
+I2D_API i2d_status i2d_body_apply_force_to_center(i2d_body_id body, i2d_vec2 force, bool wake);
+/** Adds a torque (N m, counter-clockwise positive) for the next step. */
+I2D_API i2d_status i2d_body_apply_torque(i2d_body_id body, float torque, bool wake);
+/** Changes velocity at once by impulse / mass (N s), applied at a world point (within
+ *  1e9 m of the origin): away from the centre of mass it also changes the spin by
+ *  (r x impulse) / inertia. Only dynamic bodies respond; an impulse that would make a
+ *  velocity overflow is refused. */
 I2D_API i2d_status i2d_body_apply_linear_impulse(i2d_body_id body, i2d_vec2 impulse, i2d_vec2 point,
                                                  bool wake);
+/** Changes the spin at once by impulse / inertia (N m s). */
+I2D_API i2d_status i2d_body_apply_angular_impulse(i2d_body_id body, float impulse, bool wake);
 /** False for static bodies; other bodies are awake until sleeping lands. */
 I2D_API bool i2d_body_is_awake(i2d_body_id body);
 I2D_API void* i2d_body_get_user_data(i2d_body_id body);
@@ -105,10 +132,29 @@ I2D_API int32_t i2d_body_get_shapes(i2d_body_id body, i2d_shape_id* out, int32_t
 /** A circle in the body frame. Radius in [0.0001, 100000] m. */
 I2D_API i2d_shape_id i2d_shape_create_circle(i2d_body_id body, const i2d_shape_def* def,
                                              const i2d_circle* circle);
-/** A box axis-aligned in the body's frame, centred on the body origin. On a
- *  fixed-rotation body it is the seed's AABB. Half sizes in [0.0001, 100000] m. */
+/** A box axis-aligned in the body's frame, centred on the body origin (it turns with the
+ *  body). On a fixed-rotation body it is the seed's AABB. Half sizes in [0.0001, 100000] m. */
 I2D_API i2d_shape_id i2d_shape_create_box(i2d_body_id body, const i2d_shape_def* def, float half_width,
                                           float half_height);
+/** A box centred at `center` in the body frame, turned by `rotation` there. */
+I2D_API i2d_shape_id i2d_shape_create_offset_box(i2d_body_id body, const i2d_shape_def* def, float half_width,
+                                                 float half_height, i2d_vec2 center, i2d_rot rotation);
+/** The convex hull of 3 to 8 points in the body frame. Collinear, duplicate (closer
+ *  than 0.005 m) or tiny input is refused with a message that says which. */
+I2D_API i2d_shape_id i2d_shape_create_polygon(i2d_body_id body, const i2d_shape_def* def,
+                                              const i2d_vec2* points, int32_t count);
+/** A polygon made by i2d_make_polygon, i2d_make_box or i2d_make_offset_box, which may be
+ *  rounded; it is checked to be convex, counter-clockwise and consistent. */
+I2D_API i2d_shape_id i2d_shape_create_polygon_from(i2d_body_id body, const i2d_shape_def* def,
+                                                   const i2d_polygon* polygon);
+/** Every point within radius of the segment center1-center2 (body frame). The centres
+ *  must be at least 0.005 m apart (else use a circle); radius in [0.0001, 100000] m. */
+I2D_API i2d_shape_id i2d_shape_create_capsule(i2d_body_id body, const i2d_shape_def* def, i2d_vec2 center1,
+                                              i2d_vec2 center2, float radius);
+/** A two-sided line segment (body frame), at least 0.005 m long. It has no mass: meant
+ *  for static geometry; dynamic bodies need other shapes for mass. */
+I2D_API i2d_shape_id i2d_shape_create_segment(i2d_body_id body, const i2d_shape_def* def, i2d_vec2 point1,
+                                              i2d_vec2 point2);
 /** Destroys the shape; its body's mass is updated. */
 I2D_API i2d_status i2d_shape_destroy(i2d_shape_id shape);
 I2D_API bool i2d_shape_is_valid(i2d_shape_id shape);
@@ -119,6 +165,10 @@ I2D_API i2d_circle i2d_shape_get_circle(i2d_shape_id shape);
 /** The polygon in the body frame (boxes are polygons); zero for another kind
  *  (I2D_ERR_INVALID_ARGUMENT). */
 I2D_API i2d_polygon i2d_shape_get_polygon(i2d_shape_id shape);
+/** The capsule in the body frame; zero for another kind (I2D_ERR_INVALID_ARGUMENT). */
+I2D_API i2d_capsule i2d_shape_get_capsule(i2d_shape_id shape);
+/** The segment in the body frame; zero for another kind (I2D_ERR_INVALID_ARGUMENT). */
+I2D_API i2d_segment i2d_shape_get_segment(i2d_shape_id shape);
 /** Tight world-space bounds. */
 I2D_API i2d_aabb i2d_shape_get_aabb(i2d_shape_id shape);
 I2D_API float i2d_shape_get_density(i2d_shape_id shape);

@@ -72,17 +72,19 @@ typedef struct i2d_body_def {
     i2d_body_type type;        /**< default I2D_BODY_STATIC */
     /** Body origin in world, m; default (0, 0). Within 1e9 m of the origin. */
     i2d_vec2 position;
-    /** Default identity. Bodies do not rotate yet: anything but identity (within 1e-6)
-     *  is refused with I2D_ERR_INVALID_ARGUMENT until rotation lands. */
+    /** Default identity. Must be normalised: c^2 + s^2 within 1e-3 of 1 (it is then
+     *  normalised exactly); build it with i2d_make_rot(angle). */
     i2d_rot rotation;
     i2d_vec2 linear_velocity;  /**< m/s; default (0, 0). Finite. */
-    /** rad/s; default 0. Must be 0 until rotation lands. */
+    /** rad/s, counter-clockwise positive; default 0. Finite. */
     float angular_velocity;
     /** 1/s; default 0. Range [0, inf). Each substep h scales velocity by 1/(1 + h c). */
     float linear_damping;
-    float angular_damping;     /**< 1/s; default 0. Range [0, inf). */
+    /** 1/s; default 0. Range [0, inf). Each substep h scales angular velocity by 1/(1 + h c). */
+    float angular_damping;
     float gravity_scale;       /**< default 1. Finite; may be negative. */
-    /** Default false. Every body behaves as fixed-rotation until rotation lands. */
+    /** Default false. A fixed-rotation body never turns (infinite rotational inertia):
+     *  the seed's axis-aligned behaviour. */
     bool fixed_rotation;
     /** Default true. See i2d_world_def.enable_sleep. */
     bool enable_sleep;

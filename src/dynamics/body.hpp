@@ -2,8 +2,9 @@
 // Body: a rigid body's state and settings, kept in the world's body pool.
 //
 // Design note: one struct for now; the solver issue splits the hot velocity state into a
-// dense awake-only array (Box2D's BodyState) once sleeping and islands exist. Angular
-// state is carried already so that rotation fills it in without a layout change.
+// dense awake-only array (Box2D's BodyState) once sleeping and islands exist. The origin
+// (transform.p) and the centre of mass (center) are both kept: the solver moves the
+// centre, users place the origin, and transform.p = center - rotate(q, local_center).
 #pragma once
 
 #include <cstdint>
@@ -40,6 +41,7 @@ struct Body {
     Vec2 force;           // accumulated until the end of the next step
     float torque = 0.0f;
     float mass = 0.0f, inv_mass = 0.0f;
+    float inertia = 0.0f, inv_inertia = 0.0f;  // about the centre of mass
     float linear_damping = 0.0f, angular_damping = 0.0f;
     float gravity_scale = 1.0f;
     bool fixed_rotation = false;

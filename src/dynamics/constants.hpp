@@ -22,8 +22,13 @@ constexpr float aabb_margin = 0.1f;
 /// resolution out there: beyond it geometry is meaningless.
 constexpr float max_coordinate = 1.0e9f;
 
-/// Rotations within this of identity count as identity while bodies do not rotate.
-constexpr float identity_rotation_tolerance = 1.0e-6f;
+/// A rotation given by a caller must have c^2 + s^2 within this of 1; it is then
+/// normalised exactly. Looser input is more likely a bug than rounding.
+constexpr float rotation_normalization_tolerance = 1.0e-3f;
+
+/// Largest turn of a body in one substep, rad. Faster spins are clamped: beyond a
+/// quarter turn per substep contacts alias and thin shapes tunnel.
+constexpr float max_rotation_per_substep = 0.25f * 3.14159265f;
 
 /// Largest shape density, kg/m^2: keeps mass x offset finite for the largest shapes.
 constexpr float max_density = 1.0e10f;

@@ -157,30 +157,39 @@ void World::destroy_shape(int32_t shape) {
     update_mass(body);
 }
 
-// Mass and centre of mass from the shapes. Static and kinematic bodies have infinite
-// mass (inverse 0); a dynamic body with no mass gets 1 kg at its origin so that it
-// still responds, rather than an infinite mass that would make it static in disguise.
+// Mass, centre of mass and rotational inertia from the shapes. Static and kinematic
+// bodies have infinite mass and inertia (inverses 0); a dynamic body with no mass gets
+// 1 kg at its origin so that it still responds, rather than an infinite mass that would
+// make it static in disguise. Inertia is summed about the body origin, then moved to the
+// centre of mass by the parallel axis theorem.
 void World::update_mass(int32_t body) {
     Body& b = bodies[body];
-    b.mass = 0.0f;
-    b.inv_mass = 0.0f;
+    b.mass = b.inv_mass = b.inertia = b.inv_inertia = 0.0f;
     b.local_center = {};
     if (b.type == BodyType::dynamic) {
-        float mass = 0.0f;
+        float mass = 0.0f, inertia_about_origin = 0.0f;
         Vec2 moment;
         for (int32_t s = b.head_shape; s != null_index; s = shapes[s].next_in_body) {
             const MassData md = compute_mass(shapes[s].geometry, shapes[s].density);
             mass += md.mass;
             moment += md.mass * md.center;
+            inertia_about_origin += md.rotational_inertia + md.mass * length_squared(md.center);
         }
         // Below FLT_MIN the inverse would overflow; such a body counts as massless.
         if (mass >= FLT_MIN) {
             b.mass = mass;
             b.local_center = (1.0f / mass) * moment;
+            b.inertia = inertia_about_origin - mass * length_squared(b.local_center);
         } else {
             b.mass = 1.0f;
         }
         b.inv_mass = 1.0f / b.mass;
+        if (!b.fixed_rotation && b.inertia >= FLT_MIN) {
+            b.inv_inertia = 1.0f / b.inertia;
+        } else {
+            b.inertia = 0.0f;  // fixed rotation (or a point mass): it never turns
+            b.angular_velocity = 0.0f;
+        }
     }
     b.center = transform_point(b.transform, b.local_center);
 }
@@ -250,7 +259,7 @@ void World::substep(float h) {
     integrate_velocities(h);
     const SolverSettings solver{settings.restitution_threshold, settings.contact_slop,
                                 settings.contact_correction_percent, settings.velocity_iterations};
-    gather_constraints(contacts, constraints_);
+    gather_constraints(contacts, bodies, constraints_);
     prepare_contacts(constraints_, bodies, solver);
     warm_start_contacts(constraints_, bodies);
     solve_contact_velocities(constraints_, bodies, solver);
@@ -274,14 +283,20 @@ void World::integrate_velocities(float h) {
         }
         Body& b = bodies[i];
         Vec2 v = b.linear_velocity;
+        float w = b.angular_velocity;
         if (b.type == BodyType::dynamic) {
             v += h * (b.gravity_scale * settings.gravity + b.inv_mass * b.force);
+            w += h * b.inv_inertia * b.torque;
             // Implicit damping: stable for any damping and step, v -> v / (1 + h c).
             v = (1.0f / (1.0f + h * b.linear_damping)) * v;
+            w = (1.0f / (1.0f + h * b.angular_damping)) * w;
         }
         // NaN-safe: an overflow anywhere above fails this test too.
         b.linear_velocity = length_squared(v) <= max_speed * max_speed ? v
                                                                      : limited_velocity(b, settings.gravity, h, max_speed);
+        // At most a quarter turn per substep: faster spins alias and tunnel.
+        const float max_spin = max_rotation_per_substep / h;
+        b.angular_velocity = w >= -max_spin && w <= max_spin ? w : (w > 0.0f ? max_spin : -max_spin);
     }
 }
 
@@ -291,9 +306,11 @@ void World::integrate_positions(float h) {
             continue;
         }
         Body& b = bodies[i];
-        const Vec2 delta = h * b.linear_velocity;
-        b.center += delta;
-        b.transform.p += delta;
+        b.center += h * b.linear_velocity;
+        if (b.angular_velocity != 0.0f) {
+            b.transform.q = integrate_rotation(b.transform.q, h * b.angular_velocity);
+        }
+        b.transform.p = b.center - rotate(b.transform.q, b.local_center);
     }
 }
 

@@ -42,6 +42,21 @@ struct Rot {
     float c = 1.0f, s = 0.0f;
 };
 
+/// Cross product of a spin (scalar, about z) with a vector: w x r.
+inline Vec2 cross(float w, Vec2 r) { return {-w * r.y, w * r.x}; }
+
+inline Rot make_rot(float angle) { return {std::cos(angle), std::sin(angle)}; }
+inline float get_angle(Rot q) { return std::atan2(q.s, q.c); }
+inline Rot normalize(Rot q) {
+    const float len = std::sqrt(q.c * q.c + q.s * q.s);
+    return len > 0.0f ? Rot{q.c / len, q.s / len} : Rot{};
+}
+/// Turns q by a small angle (rad) and renormalises: the first-order update of the
+/// rotation's cosine and sine, exact to second order for the small angles of a substep.
+inline Rot integrate_rotation(Rot q, float angle) {
+    return normalize(Rot{q.c - angle * q.s, q.s + angle * q.c});
+}
+
 inline Vec2 rotate(Rot q, Vec2 v) { return {q.c * v.x - q.s * v.y, q.s * v.x + q.c * v.y}; }
 inline Vec2 inv_rotate(Rot q, Vec2 v) { return {q.c * v.x + q.s * v.y, -q.s * v.x + q.c * v.y}; }
 

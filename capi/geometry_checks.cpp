@@ -1,0 +1,96 @@
+// SPDX-License-Identifier: MIT
+// Checks of shape geometry passed through the C API.
+#include "geometry_checks.hpp"
+
+#include <cmath>
+
+#include "collision/collision_constants.hpp"
+
+namespace i2d::capi {
+
+bool valid_circle(Call& call, const i2d_circle& c, const char* what) {
+    if (!call.finite(c.center, what) || !call.finite(c.radius, what)) {
+        return false;
+    }
+    if (c.radius < 0.0f) {
+        return call.fail(I2D_ERR_INVALID_ARGUMENT, "%s radius is %g; it must be >= 0", what,
+                         static_cast<double>(c.radius));
+    }
+    return true;
+}
+
+bool valid_aabb(Call& call, const i2d_aabb& a, const char* what) {
+    if (!call.finite(a.min, what) || !call.finite(a.max, what)) {
+        return false;
+    }
+    if (a.min.x > a.max.x || a.min.y > a.max.y) {
+        return call.fail(I2D_ERR_INVALID_ARGUMENT, "%s has min above or right of max", what);
+    }
+    return true;
+}
+
+bool valid_radius(Call& call, float radius, const char* what) {
+    if (!call.finite(radius, what)) {
+        return false;
+    }
+    if (radius < 0.0f) {
+        return call.fail(I2D_ERR_INVALID_ARGUMENT, "%s radius is %g; it must be >= 0", what, static_cast<double>(radius));
+    }
+    return true;
+}
+
+bool valid_transform(Call& call, const i2d_transform& xf, const char* what) {
+    if (!call.finite(xf.p, what) || !call.finite(xf.q.c, what) || !call.finite(xf.q.s, what)) {
+        return false;
+    }
+    const float norm_sq = xf.q.c * xf.q.c + xf.q.s * xf.q.s;
+    if (std::fabs(norm_sq - 1.0f) > 1e-3f) {
+        return call.fail(I2D_ERR_INVALID_ARGUMENT, "%s rotation (c, s) = (%g, %g) is not normalised", what,
+                         static_cast<double>(xf.q.c), static_cast<double>(xf.q.s));
+    }
+    return true;
+}
+
+bool valid_circle_ptr(Call& call, const i2d_circle* c, const char* what) {
+    return call.not_null(c, what) && valid_circle(call, *c, what);
+}
+
+// A core shorter than the slop has no reliable direction for its side normals.
+bool valid_core_length(Call& call, i2d_vec2 p1, i2d_vec2 p2, const char* what) {
+    const float dx = p2.x - p1.x, dy = p2.y - p1.y;
+    if (!(dx * dx + dy * dy >= linear_slop * linear_slop)) {
+        return call.fail(I2D_ERR_INVALID_ARGUMENT, "%s is shorter than 0.005 m", what);
+    }
+    return true;
+}
+
+bool valid_capsule(Call& call, const i2d_capsule* c, const char* what) {
+    return call.not_null(c, what) && call.finite(c->center1, what) && call.finite(c->center2, what) &&
+           valid_radius(call, c->radius, what) && valid_core_length(call, c->center1, c->center2, what);
+}
+
+bool valid_segment(Call& call, const i2d_segment* s, const char* what) {
+    return call.not_null(s, what) && call.finite(s->point1, what) && call.finite(s->point2, what) &&
+           valid_core_length(call, s->point1, s->point2, what);
+}
+
+bool valid_polygon(Call& call, const i2d_polygon* p, const char* what) {
+    if (!call.not_null(p, what)) {
+        return false;
+    }
+    if (p->count < 3 || p->count > max_polygon_vertices) {
+        return call.fail(I2D_ERR_INVALID_ARGUMENT, "%s count is %d; it must be 3 to 8", what, static_cast<int>(p->count));
+    }
+    for (int32_t i = 0; i < p->count; ++i) {
+        if (!call.finite(p->vertices[i], what) || !call.finite(p->normals[i], what)) {
+            return false;
+        }
+        const float len_sq = p->normals[i].x * p->normals[i].x + p->normals[i].y * p->normals[i].y;
+        if (std::fabs(len_sq - 1.0f) > 1e-3f) {
+            return call.fail(I2D_ERR_INVALID_ARGUMENT, "%s normals[%d] is not unit length", what, static_cast<int>(i));
+        }
+    }
+    return call.finite(p->centroid, what) && valid_radius(call, p->radius, what);
+}
+
+}  // namespace i2d::capi

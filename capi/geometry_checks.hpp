@@ -1,0 +1,21 @@
+// SPDX-License-Identifier: MIT
+// Checks of shape geometry passed through the C API, with messages that name the field.
+#pragma once
+
+#include <impulse2d/impulse2d.h>
+
+#include "boundary.hpp"
+
+namespace i2d::capi {
+
+bool valid_circle(Call& call, const i2d_circle& c, const char* what);
+bool valid_aabb(Call& call, const i2d_aabb& a, const char* what);
+bool valid_radius(Call& call, float radius, const char* what);
+bool valid_transform(Call& call, const i2d_transform& xf, const char* what);
+bool valid_circle_ptr(Call& call, const i2d_circle* c, const char* what);
+bool valid_core_length(Call& call, i2d_vec2 p1, i2d_vec2 p2, const char* what);
+bool valid_capsule(Call& call, const i2d_capsule* c, const char* what);
+bool valid_segment(Call& call, const i2d_segment* s, const char* what);
+bool valid_polygon(Call& call, const i2d_polygon* p, const char* what);
+
+}  // namespace i2d::capi
