@@ -2,11 +2,11 @@
 // Segment-segment closest points (Ericson, Real-Time Collision Detection, 5.1.9) and a
 // brute-force convex distance for the exact overlap tests.
 #include "collision/distance.hpp"
+#include "math/math.hpp"
 
 #include <cfloat>
 #include <cmath>
 
-#include "math/math.hpp"
 
 namespace i2d {
 
@@ -84,7 +84,7 @@ bool has_separating_edge(const Vec2* a, int32_t na, const Vec2* b, int32_t nb) {
         const Vec2 normal = right_perp(a[i + 1 == na ? 0 : i + 1] - v);
         float lowest = FLT_MAX;
         for (int32_t j = 0; j < nb; ++j) {
-            lowest = std::fmin(lowest, dot(normal, b[j] - v));
+            lowest = min_of(lowest, dot(normal, b[j] - v));
         }
         // A 2-point set has both sides as faces; its reversed edge covers the other side.
         if (lowest > 0.0f) {
@@ -98,12 +98,12 @@ float vertex_edge_distance_sq(const Vec2* a, int32_t na, const Vec2* b, int32_t 
     float best = FLT_MAX;
     for (int32_t i = 0; i < na; ++i) {
         if (nb == 1) {
-            best = std::fmin(best, distance_squared(a[i], b[0]));
+            best = min_of(best, distance_squared(a[i], b[0]));
             continue;
         }
         for (int32_t j = 0; j < nb; ++j) {
             const Vec2 q = closest_point_on_segment(b[j], b[j + 1 == nb ? 0 : j + 1], a[i]);
-            best = std::fmin(best, distance_squared(a[i], q));
+            best = min_of(best, distance_squared(a[i], q));
         }
     }
     return best;
@@ -124,7 +124,7 @@ float convex_distance(const Vec2* a, int32_t count_a, const Vec2* b, int32_t cou
     if (!has_separating_edge(a, count_a, b, count_b) && !has_separating_edge(b, count_b, a, count_a)) {
         return 0.0f;
     }
-    const float d = std::fmin(vertex_edge_distance_sq(a, count_a, b, count_b),
+    const float d = min_of(vertex_edge_distance_sq(a, count_a, b, count_b),
                               vertex_edge_distance_sq(b, count_b, a, count_a));
     return std::sqrt(d);
 }

@@ -57,7 +57,7 @@ Core world_core(const Geometry& g, const Transform& xf) {
 float polygon_core_distance(const Polygon& poly, Vec2 p) {
     float separation = -FLT_MAX;
     for (int32_t i = 0; i < poly.count; ++i) {
-        separation = std::fmax(separation, dot(poly.normals[i], p - poly.vertices[i]));
+        separation = max_of(separation, dot(poly.normals[i], p - poly.vertices[i]));
     }
     if (separation <= 0.0f) {
         return separation;
@@ -65,7 +65,7 @@ float polygon_core_distance(const Polygon& poly, Vec2 p) {
     float best = FLT_MAX;
     for (int32_t i = 0; i < poly.count; ++i) {
         const Vec2 q = closest_point_on_segment(poly.vertices[i], poly.vertices[i + 1 == poly.count ? 0 : i + 1], p);
-        best = std::fmin(best, distance_squared(p, q));
+        best = min_of(best, distance_squared(p, q));
     }
     return std::sqrt(best);
 }

@@ -8,6 +8,7 @@
 
 #include "collision/distance.hpp"
 #include "collision/hull.hpp"
+#include "math/math.hpp"
 
 namespace i2d {
 
@@ -66,11 +67,11 @@ Manifold collide_aabbs(const AABB& a, const AABB& b) {
     }
     if (pen_x <= pen_y) {
         const float mid = b_right ? 0.5f * (a.upper.x + b.lower.x) : 0.5f * (a.lower.x + b.upper.x);
-        const float lo = std::fmax(a.lower.y, b.lower.y), hi = std::fmin(a.upper.y, b.upper.y);
+        const float lo = max_of(a.lower.y, b.lower.y), hi = min_of(a.upper.y, b.upper.y);
         return edge_points({b_right ? 1.0f : -1.0f, 0.0f}, mid, lo, hi, pen_x, true);
     }
     const float mid = b_above ? 0.5f * (a.upper.y + b.lower.y) : 0.5f * (a.lower.y + b.upper.y);
-    const float lo = std::fmax(a.lower.x, b.lower.x), hi = std::fmin(a.upper.x, b.upper.x);
+    const float lo = max_of(a.lower.x, b.lower.x), hi = min_of(a.upper.x, b.upper.x);
     return edge_points({0.0f, b_above ? 1.0f : -1.0f}, mid, lo, hi, pen_y, false);
 }
 
@@ -163,9 +164,9 @@ struct CoreSegment {
 float side_separation(const CoreSegment& ref, const CoreSegment& other, Vec2& out_normal) {
     const Vec2 n = left_perp(ref.u);
     const float sp = dot(other.p - ref.p, n), sq = dot(other.q - ref.p, n);
-    const float positive = std::fmin(sp, sq), negative = std::fmin(-sp, -sq);
+    const float positive = min_of(sp, sq), negative = min_of(-sp, -sq);
     out_normal = positive > negative ? n : -n;
-    return std::fmax(positive, negative);
+    return max_of(positive, negative);
 }
 
 // Clips `other` to the slab of `ref` (0..length along ref.u). Only ends beyond the slab
@@ -211,7 +212,7 @@ Manifold clip_capsules(const CoreSegment& a, float ra, const CoreSegment& b, flo
     // closest point of the reference core is an end cap and one point is right. Box2D
     // allows a whole linear_slop here; the tight tolerance keeps the reported depth exact
     // at the cost of switching to one point a little earlier.
-    if (std::fmin(sp, sq) > distance + 0.01f * linear_slop) {
+    if (min_of(sp, sq) > distance + 0.01f * linear_slop) {
         return m;
     }
     m.normal = flip ? -ref_normal : ref_normal;

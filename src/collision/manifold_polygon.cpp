@@ -6,6 +6,7 @@
 
 #include "collision/distance.hpp"
 #include "collision/manifold.hpp"
+#include "math/math.hpp"
 
 namespace i2d {
 
@@ -45,7 +46,7 @@ FaceQuery max_separation(const LocalPolygon& p1, const LocalPolygon& p2) {
     for (int32_t i = 0; i < p1.count; ++i) {
         float deepest = FLT_MAX;
         for (int32_t j = 0; j < p2.count; ++j) {
-            deepest = std::fmin(deepest, dot(p1.n[i], p2.v[j] - p1.v[i]));
+            deepest = min_of(deepest, dot(p1.n[i], p2.v[j] - p1.v[i]));
         }
         if (deepest > best.separation) {
             best.separation = deepest;
@@ -97,10 +98,10 @@ Manifold clip_edges(const LocalPolygon& ref, int32_t i11, const LocalPolygon& in
     const float span = upper2 - lower2;
     Vec2 v_lower = v22, v_upper = v21;
     if (lower2 < lower1 && span > FLT_EPSILON) {
-        v_lower = lerp(v22, v21, std::fmin((lower1 - lower2) / span, 1.0f));
+        v_lower = lerp(v22, v21, min_of((lower1 - lower2) / span, 1.0f));
     }
     if (upper2 > upper1 && span > FLT_EPSILON) {
-        v_upper = lerp(v22, v21, std::fmax((upper1 - lower2) / span, 0.0f));
+        v_upper = lerp(v22, v21, max_of((upper1 - lower2) / span, 0.0f));
     }
     const float sep_lower = dot(v_lower - v11, normal);
     const float sep_upper = dot(v_upper - v11, normal);
@@ -115,8 +116,8 @@ Manifold clip_edges(const LocalPolygon& ref, int32_t i11, const LocalPolygon& in
     // the slab understates its true distance.
     const float vertex_lower = overlapping ? dot(v22 - v11, normal) : sep_lower;
     const float vertex_upper = overlapping ? dot(v21 - v11, normal) : sep_upper;
-    const float pen_lower = r1 + r2 - std::fmin(sep_lower, vertex_lower);
-    const float pen_upper = r1 + r2 - std::fmin(sep_upper, vertex_upper);
+    const float pen_lower = r1 + r2 - min_of(sep_lower, vertex_lower);
+    const float pen_upper = r1 + r2 - min_of(sep_upper, vertex_upper);
 
     Manifold m;
     m.normal = normal;
@@ -130,7 +131,7 @@ Manifold clip_edges(const LocalPolygon& ref, int32_t i11, const LocalPolygon& in
 float deepest_penetration(const Manifold& m) {
     float deepest = -FLT_MAX;
     for (int32_t i = 0; i < m.point_count; ++i) {
-        deepest = std::fmax(deepest, m.points[i].penetration);
+        deepest = max_of(deepest, m.points[i].penetration);
     }
     return deepest;
 }

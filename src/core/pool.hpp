@@ -9,6 +9,7 @@
 // invalidate indices held by other objects.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -36,12 +37,17 @@ public:
         if (static_cast<int32_t>(items_.size()) >= max_slots) {
             return null_index;
         }
-        // Grow all arrays before changing any so a bad_alloc leaves the pool as it was.
-        // The free list gets room for every slot now so that free() never allocates.
-        items_.reserve(items_.size() + 1);
-        generations_.reserve(items_.size() + 1);
-        alive_.reserve(items_.size() + 1);
-        free_.reserve(items_.size() + 1);
+        // Grow all arrays geometrically, and before changing any, so that a bad_alloc
+        // leaves the pool as it was; the free list gets room for every slot now so that
+        // free() never allocates.
+        if (items_.size() == items_.capacity()) {
+            const std::size_t grown = items_.capacity() < 16 ? 16 : 2 * items_.capacity();
+            const std::size_t capacity = grown < std::size_t(max_slots) ? grown : std::size_t(max_slots);
+            items_.reserve(capacity);
+            generations_.reserve(capacity);
+            alive_.reserve(capacity);
+            free_.reserve(capacity);
+        }
         items_.emplace_back();
         generations_.push_back(1);
         alive_.push_back(1);

@@ -2,10 +2,10 @@
 // Sequential impulses with angular terms, restitution, Coulomb friction, warm starting;
 // the seed's positional correction per contact point.
 #include "dynamics/contact_solver.hpp"
+#include "math/math.hpp"
 
 #include <cmath>
 
-#include "math/math.hpp"
 
 namespace i2d {
 
@@ -127,7 +127,7 @@ void solve_friction(ContactConstraint& c, Body& a, Body& b) {
 void solve_normal_point(ContactConstraint& c, ContactPointConstraint& p, Body& a, Body& b) {
     const float vn = dot(relative_velocity(a, b, p.anchor_a, p.anchor_b), c.normal);
     const float old_normal = p.normal_impulse;
-    p.normal_impulse = std::fmax(old_normal - p.normal_mass * (vn - p.target_normal_speed), 0.0f);
+    p.normal_impulse = max_of(old_normal - p.normal_mass * (vn - p.target_normal_speed), 0.0f);
     apply_impulse(c, p, (p.normal_impulse - old_normal) * c.normal, a, b);
 }
 
@@ -234,7 +234,7 @@ void correct_contact_positions(const std::vector<ContactConstraint>& constraints
             // Both anchors met at the contact point when it was found; how far they moved
             // apart along the normal since then has undone that much penetration.
             const float penetration = p.penetration - dot((b.center + r_b) - (a.center + r_a), c.normal);
-            const float excess = std::fmax(penetration - settings.contact_slop, 0.0f);
+            const float excess = max_of(penetration - settings.contact_slop, 0.0f);
             const float mass = effective_mass(c, r_a, r_b, c.normal);
             if (excess == 0.0f || mass == 0.0f) {
                 continue;

@@ -5,6 +5,7 @@
 
 #include "collision/manifold.hpp"
 #include "dynamics/world.hpp"
+#include "math/math.hpp"
 
 namespace i2d {
 
@@ -46,7 +47,7 @@ void World::create_contact(int32_t shape_a, int32_t shape_b) {
     // Geometric-mean friction, written so that the product of two huge values cannot
     // overflow; the seed's minimum for restitution.
     c.friction = std::sqrt(a.friction) * std::sqrt(b.friction);
-    c.restitution = std::fmin(a.restitution, b.restitution);
+    c.restitution = min_of(a.restitution, b.restitution);
     if (a.is_sensor || b.is_sensor) {
         const Shape& visitor = a.is_sensor ? b : a;
         c.flags = contact_sensor | (visitor.enable_sensor_events ? contact_report_events : 0u);

@@ -16,4 +16,9 @@ inline bool is_finite(Rot q) { return std::isfinite(q.c) && std::isfinite(q.s); 
 
 inline float clamp(float a, float lo, float hi) { return a < lo ? lo : (a > hi ? hi : a); }
 
+/// min and max for values known not to be NaN: one instruction each, where std::fmin
+/// and std::fmax are library calls (they must handle NaN).
+inline float min_of(float a, float b) { return a < b ? a : b; }
+inline float max_of(float a, float b) { return a > b ? a : b; }
+
 }  // namespace i2d
