@@ -93,4 +93,34 @@ bool valid_polygon(Call& call, const i2d_polygon* p, const char* what) {
     return call.finite(p->centroid, what) && valid_radius(call, p->radius, what);
 }
 
+// What a polygon made by i2d_make_polygon or i2d_make_box looks like: counter-clockwise,
+// convex (every turn to the left), edges longer than the slop, and each normal the
+// outward unit normal of its edge. A caller's hand-edited polygon must still be one.
+bool valid_convex_polygon(Call& call, const i2d_polygon* p, const char* what) {
+    if (!valid_polygon(call, p, what)) {
+        return false;
+    }
+    const int32_t n = p->count;
+    for (int32_t i = 0; i < n; ++i) {
+        const i2d_vec2 a = p->vertices[i], b = p->vertices[(i + 1) % n], c = p->vertices[(i + 2) % n];
+        const float ex = b.x - a.x, ey = b.y - a.y;
+        const float length = std::sqrt(ex * ex + ey * ey);
+        if (!(length >= linear_slop)) {
+            return call.fail(I2D_ERR_INVALID_ARGUMENT, "%s edge %d is shorter than 0.005 m", what, static_cast<int>(i));
+        }
+        const float outward = (ey * p->normals[i].x - ex * p->normals[i].y) / length;
+        if (!(outward >= 1.0f - 1.0e-3f)) {
+            return call.fail(I2D_ERR_INVALID_ARGUMENT,
+                             "%s normals[%d] is not the outward normal of its edge (is the polygon clockwise?)", what,
+                             static_cast<int>(i));
+        }
+        const float turn = ex * (c.y - b.y) - ey * (c.x - b.x);
+        if (!(turn > 0.0f)) {
+            return call.fail(I2D_ERR_INVALID_ARGUMENT, "%s is not convex and counter-clockwise at vertex %d", what,
+                             static_cast<int>((i + 1) % n));
+        }
+    }
+    return true;
+}
+
 }  // namespace i2d::capi

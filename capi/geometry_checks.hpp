@@ -17,5 +17,6 @@ bool valid_core_length(Call& call, i2d_vec2 p1, i2d_vec2 p2, const char* what);
 bool valid_capsule(Call& call, const i2d_capsule* c, const char* what);
 bool valid_segment(Call& call, const i2d_segment* s, const char* what);
 bool valid_polygon(Call& call, const i2d_polygon* p, const char* what);
+bool valid_convex_polygon(Call& call, const i2d_polygon* p, const char* what);
 
 }  // namespace i2d::capi

@@ -80,8 +80,8 @@ I2D_API i2d_shape_id i2d_shape_create_box(i2d_body_id body, const i2d_shape_def*
 
 namespace {
 
-// A body's shape is built from a hull so that its normals and centroid are consistent by
-// construction, whatever the caller's polygon said.
+// A body's polygon is built from a hull so that its normals and centroid are consistent
+// by construction.
 bool hull_of(Call& call, const Vec2* points, int32_t count, Hull& hull) {
     const HullStatus status = compute_hull(points, count, hull);
     if (status != HullStatus::ok) {
@@ -156,8 +156,8 @@ I2D_API i2d_shape_id i2d_shape_create_polygon_from(i2d_body_id body, const i2d_s
         BodyRef b;
         Hull hull;
         if (!call.body(body, b) || !call.unlocked(*b.world) || !validate_shape_def(call, def) ||
-            !valid_polygon(call, polygon, "polygon") || !call.in_range(polygon->radius, 0.0f, max_shape_extent,
-                                                                        "polygon radius")) {
+            !valid_convex_polygon(call, polygon, "polygon") ||
+            !call.in_range(polygon->radius, 0.0f, max_shape_extent, "polygon radius")) {
             return I2D_NULL_SHAPE_ID;
         }
         const Polygon given = to_core(*polygon);

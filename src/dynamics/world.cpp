@@ -184,11 +184,13 @@ void World::update_mass(int32_t body) {
             b.mass = 1.0f;
         }
         b.inv_mass = 1.0f / b.mass;
-        if (!b.fixed_rotation && b.inertia >= FLT_MIN) {
+        if (b.fixed_rotation) {
+            b.inertia = 0.0f;  // it never turns
+            b.angular_velocity = 0.0f;
+        } else if (b.inertia >= FLT_MIN) {
             b.inv_inertia = 1.0f / b.inertia;
         } else {
-            b.inertia = 0.0f;  // fixed rotation (or a point mass): it never turns
-            b.angular_velocity = 0.0f;
+            b.inertia = 0.0f;  // no shapes yet, or a point mass: torque cannot turn it
         }
     }
     b.center = transform_point(b.transform, b.local_center);
