@@ -17,16 +17,23 @@ endif()
 
 file(SIZE ${SVG} size)
 file(READ ${SVG} text)
-# The scene holds 4 balls and 14 boxes; each ball has a path polyline.
-string(REGEX MATCHALL "<circle " circles "${text}")
-string(REGEX MATCHALL "<rect " rects "${text}")
-string(REGEX MATCHALL "<polyline " paths "${text}")
-list(LENGTH circles circle_count)
-list(LENGTH rects rect_count)
-list(LENGTH paths path_count)
-if(size LESS 2000 OR NOT text MATCHES "<svg " OR NOT text MATCHES "</svg>[ \n]*$"
-   OR circle_count LESS 4 OR rect_count LESS 14 OR path_count LESS 4)
-  message(FATAL_ERROR "${SVG} looks wrong: ${size} bytes, ${circle_count} circles, "
-                      "${rect_count} rects, ${path_count} polylines")
+# The scene draws 5 circles (4 balls, a disc), about 35 polygons (boxes, walls, ledge, ramp,
+# triangle, pentagon, and dashed start outlines), 2 rounded shapes as <path> (a capsule and a
+# rounded polygon) and 8 polylines (4 ball paths, 3 centres, the disc's rim point).
+set(counts "")
+set(too_few FALSE)
+foreach(kind_min IN ITEMS "circle:5" "polygon:30" "path:2" "polyline:8")
+  string(REPLACE ":" ";" kind_min "${kind_min}")
+  list(GET kind_min 0 kind)
+  list(GET kind_min 1 minimum)
+  string(REGEX MATCHALL "<${kind} " found "${text}")
+  list(LENGTH found count)
+  string(APPEND counts " ${count} <${kind}>")
+  if(count LESS minimum)
+    set(too_few TRUE)
+  endif()
+endforeach()
+if(size LESS 10000 OR NOT text MATCHES "<svg " OR NOT text MATCHES "</svg>[ \n]*$" OR too_few)
+  message(FATAL_ERROR "${SVG} looks wrong: ${size} bytes,${counts}")
 endif()
-message(STATUS "${SVG}: ${size} bytes, ${circle_count} circles, ${rect_count} rects, ${path_count} polylines")
+message(STATUS "${SVG}: ${size} bytes,${counts}")

@@ -1,15 +1,22 @@
 /* SPDX-License-Identifier: MIT */
-/* The demo: a small scene that shows what impulse2d does today, reported as text and drawn as SVG.
+/* The demo: a small scene that shows what impulse2d does, reported as text and drawn as SVG.
  *
  * Usage: impulse2d_demo [output.svg]   (default: impulse2d_demo.svg in the working directory)
  *
- * The scene, left to right, on a static ground between two static walls:
+ * Two floors in one world, each a static ground between two static walls.
+ * Top, bodies that only need to move (nothing turns them):
  * - four balls dropped from the same height, restitution 0, 0.3, 0.6 and 0.9, onto a ground of
  *   restitution 1 (a contact takes the minimum, so each ball's own value decides); they drift
  *   sideways slowly and without friction, so that their paths draw each bounce as an arc;
  * - a stack of five 1 m boxes;
  * - a 4 kg box sliding without friction into a 1 kg box at rest, both of restitution 1;
  * - a kinematic platform moving right at constant speed, with a box riding on it.
+ * Bottom, bodies that turn:
+ * - a box on a ledge with its centre of mass past the edge, which tips over and falls;
+ * - a disc launched along the ground without spin, which friction brings to rolling;
+ * - a capsule rolling down a slope (a static segment) into a catch ramp (a turned static box);
+ * - a pyramid of ten boxes;
+ * - a triangle, a pentagon, a rounded rectangle and a box dropped tilted, which land flat.
  * Each part prints what happened beside what closed-form physics predicts. */
 
 /* clock_gettime and CLOCK_MONOTONIC are POSIX, not C99. */
@@ -18,8 +25,10 @@
 #include <impulse2d/impulse2d.h>
 
 #include <math.h>
+#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 #include <time.h>
 
 /* ---- Scene constants ------------------------------------------------------------- */
@@ -28,10 +37,13 @@
 #define SUBSTEPS 4
 #define STEP_COUNT 240 /* 4 s */
 #define GRAVITY 10.0f  /* the default world's |g|, m/s^2 */
+#define PI 3.14159265f
+#define DEG (180.0f / PI)
+#define FRICTION 0.6f  /* i2d_default_shape_def().friction; most shapes keep it */
 
 #define GROUND_HALF_WIDTH 16.0f
-#define WALL_X 15.5f /* wall centres; inner faces at +-15 m */
-#define WALL_HALF_HEIGHT 3.0f
+#define WALL_X 15.5f   /* wall centres; inner faces at +-15 m */
+#define ROW2_Y (-6.5f) /* the bottom floor's ground top; the top floor's is at 0 */
 
 #define BALL_COUNT 4
 #define BALL_RADIUS 0.3f
@@ -41,52 +53,82 @@ static const float ball_restitution[BALL_COUNT] = {0.0f, 0.3f, 0.6f, 0.9f};
 
 #define STACK_COUNT 5
 #define STACK_X (-4.0f)
-
-#define SLIDER_HEAVY_DENSITY 4.0f /* a 1 m box: 4 kg */
 #define SLIDER_SPEED 2.0f
-
 #define PLATFORM_SPEED 1.5f
 #define PLATFORM_Y 2.5f
 #define PLATFORM_HALF_WIDTH 2.0f
 #define PLATFORM_HALF_HEIGHT 0.2f
-#define DEFAULT_FRICTION 0.6f /* i2d_default_shape_def().friction; the rider and platform keep it */
 
-#define MAX_BODIES 32
+/* Bottom floor: x as on the top floor, heights above its own ground (see row2()). */
+#define LEDGE_EDGE_X (-12.5f) /* the ledge reaches from the wall to here */
+#define LEDGE_HEIGHT 2.0f
+#define TIP_OVERHANG 0.2f     /* the tipping 1 m box's centre lies this far past the edge */
+#define DISC_X (-9.5f)
+#define DISC_RADIUS 0.4f
+#define DISC_SPEED 1.2f
+#define PYRAMID_ROWS 4
+#define PYRAMID_X (-3.0f)
+#define PYRAMID_GAP 0.05f     /* between neighbours in a row */
+#define SLOPE_TOP_X 7.0f
+#define SLOPE_TOP_Y 2.0f
+#define SLOPE_FOOT_X 12.0f
+#define CATCH_START_X 12.5f   /* the catch ramp rises from here to the wall */
+#define CATCH_TOP_Y 1.5f
+#define CAPSULE_HALF_LENGTH 0.1f
+#define CAPSULE_RADIUS 0.35f
+
+#define MAX_BODIES 48
 #define MAX_SHAPES_PER_BODY 4
+
+static const i2d_vec2 still = {0.0f, 0.0f};
 
 /* ---- What the demo keeps ---------------------------------------------------------- */
 
-/* A dropped ball and what it did: its path, and the top of its first bounce. */
-typedef struct ball {
+/* A body followed through the run: where it started, its path and how far it turned. */
+typedef struct tracked {
     i2d_body_id body;
-    float restitution;
+    i2d_transform start;
+    i2d_rot last;
+    float turned; /* rad, counter-clockwise, summed step by step (not wrapped) */
     i2d_vec2 path[STEP_COUNT + 1];
     int path_count;
-    int bounced;       /* 1 once the ball has moved up after falling */
-    int apex_found;    /* 1 once it turned down again after that */
-    float apex;        /* highest bottom height above the ground after the first bounce, m */
+} tracked;
+
+/* A dropped ball and the top of its first bounce. */
+typedef struct ball {
+    tracked t;
+    float restitution;
+    int bounced;    /* 1 once the ball has moved up after falling */
+    int apex_found; /* 1 once it turned down again after that */
+    float apex;     /* highest bottom height above the ground after the first bounce, m */
 } ball;
+
+/* The bodies followed by name; each gets a start outline in the picture. */
+enum {
+    T_HEAVY, T_LIGHT, T_PLATFORM, T_RIDER, /* top floor */
+    T_TIPPER, T_DISC, T_CAPSULE,           /* bottom floor; then the dropped shapes: */
+    T_TRIANGLE, T_PENTAGON, T_ROUNDED, T_TILTED,
+    T_COUNT
+};
 
 typedef struct demo {
     i2d_world_id world;
     i2d_body_id bodies[MAX_BODIES]; /* every body, for drawing */
     int body_count;
-
+    tracked t[T_COUNT];
     ball balls[BALL_COUNT];
-    i2d_body_id stack[STACK_COUNT];
-
-    i2d_body_id heavy, light;
-    i2d_vec2 heavy_start, light_start;
-    float momentum_before;               /* kg m/s, along x */
-    float heavy_v_before;
-    int collided, separated;             /* the light box has started to move / the gap opened */
+    i2d_body_id stack_top, pyramid_top;
+    i2d_vec2 pyramid_top_start;
+    float momentum_before, heavy_v_before; /* kg m/s and m/s, along x */
+    int collided, separated;               /* the light box has started to move / the gap opened */
     float momentum_after, heavy_v_after, light_v_after;
-
-    i2d_body_id platform, rider;
-    i2d_vec2 platform_start, rider_start;
-
-    float contact_slop;                  /* the world's allowed resting penetration, m */
-    double step_seconds;                 /* wall time spent in i2d_world_step */
+    float tip_spin_up;            /* the tipping box's angular acceleration in the first step */
+    i2d_vec2 rim[STEP_COUNT + 1]; /* the path of a point on the disc's rim */
+    int rim_count;
+    float capsule_time;           /* when it passed the foot of the slope (0: not yet), s */
+    float capsule_distance, capsule_turned;
+    float contact_slop;           /* the world's allowed resting penetration, m */
+    double step_seconds;          /* wall time spent in i2d_world_step */
 } demo;
 
 /* ---- Checked calls ------------------------------------------------------------------ */
@@ -108,29 +150,61 @@ static void check(i2d_status status, const char* what) {
 }
 
 /* Getters return a zero value on failure, so look at the recorded status after each. */
-static void check_last(const char* what) {
-    if (i2d_last_status() != I2D_OK) {
+static void check_last(const char* what) { check(i2d_last_status(), what); }
+
+/* Creators return a null id on failure. */
+static void check_shape(i2d_shape_id shape, const char* what) {
+    if (I2D_IS_NULL(shape)) {
         fail(what);
     }
 }
 
 static i2d_vec2 vec2(float x, float y) {
-    i2d_vec2 v;
-    v.x = x;
-    v.y = y;
+    i2d_vec2 v = {x, y};
     return v;
 }
 
-static i2d_vec2 position(i2d_body_id body) {
-    i2d_vec2 p = i2d_body_get_position(body);
-    check_last("i2d_body_get_position");
-    return p;
+/* A point of the bottom floor, given relative to its ground. */
+static i2d_vec2 row2(float x, float y) { return vec2(x, ROW2_Y + y); }
+
+static i2d_vec2 rotate(i2d_rot q, i2d_vec2 v) { return vec2(q.c * v.x - q.s * v.y, q.s * v.x + q.c * v.y); }
+
+/* A point given in a body's frame, in the world, the body placed by xf. */
+static i2d_vec2 place(i2d_transform xf, i2d_vec2 v) {
+    i2d_vec2 r = rotate(xf.q, v);
+    return vec2(xf.p.x + r.x, xf.p.y + r.y);
+}
+
+static i2d_transform transform(i2d_body_id body) {
+    i2d_transform xf = i2d_body_get_transform(body);
+    check_last("i2d_body_get_transform");
+    return xf;
+}
+
+static i2d_vec2 position(i2d_body_id body) { return transform(body).p; }
+
+static i2d_rot rot(float angle) {
+    i2d_rot q = i2d_make_rot(angle);
+    check_last("i2d_make_rot");
+    return q;
+}
+
+static float degrees(i2d_rot q) {
+    float angle = i2d_rot_get_angle(q);
+    check_last("i2d_rot_get_angle");
+    return DEG * angle;
 }
 
 static i2d_vec2 velocity(i2d_body_id body) {
     i2d_vec2 v = i2d_body_get_linear_velocity(body);
     check_last("i2d_body_get_linear_velocity");
     return v;
+}
+
+static float spin(i2d_body_id body) {
+    float w = i2d_body_get_angular_velocity(body);
+    check_last("i2d_body_get_angular_velocity");
+    return w;
 }
 
 static float mass(i2d_body_id body) {
@@ -147,11 +221,12 @@ static double seconds_now(void) {
 
 /* ---- Building the scene ------------------------------------------------------------- */
 
-static i2d_body_id add_body(demo* d, i2d_body_type type, i2d_vec2 p, i2d_vec2 v) {
+static i2d_body_id add_body(demo* d, i2d_body_type type, i2d_vec2 p, float angle, i2d_vec2 v) {
     i2d_body_def def = i2d_default_body_def();
     i2d_body_id body;
     def.type = type;
     def.position = p;
+    def.rotation = rot(angle);
     def.linear_velocity = v;
     body = i2d_body_create(d->world, &def);
     if (I2D_IS_NULL(body)) {
@@ -165,6 +240,16 @@ static i2d_body_id add_body(demo* d, i2d_body_type type, i2d_vec2 p, i2d_vec2 v)
     return body;
 }
 
+/* A body followed by name (see the enum), dynamic unless it is the platform. */
+static i2d_body_id add_tracked(demo* d, int which, i2d_vec2 p, float angle, i2d_vec2 v) {
+    tracked* t = &d->t[which];
+    t->body = add_body(d, which == T_PLATFORM ? I2D_BODY_KINEMATIC : I2D_BODY_DYNAMIC, p, angle, v);
+    t->start = transform(t->body);
+    t->last = t->start.q;
+    t->path[t->path_count++] = p;
+    return t->body;
+}
+
 static i2d_shape_def shape_def(float density, float friction, float restitution) {
     i2d_shape_def def = i2d_default_shape_def();
     def.density = density;
@@ -174,30 +259,25 @@ static i2d_shape_def shape_def(float density, float friction, float restitution)
 }
 
 static void add_box(i2d_body_id body, const i2d_shape_def* def, float half_width, float half_height) {
-    if (I2D_IS_NULL(i2d_shape_create_box(body, def, half_width, half_height))) {
-        fail("i2d_shape_create_box");
-    }
+    check_shape(i2d_shape_create_box(body, def, half_width, half_height), "i2d_shape_create_box");
 }
 
 static void add_circle(i2d_body_id body, const i2d_shape_def* def, float radius) {
     i2d_circle circle;
-    circle.center = vec2(0.0f, 0.0f);
+    circle.center = still;
     circle.radius = radius;
-    if (I2D_IS_NULL(i2d_shape_create_circle(body, def, &circle))) {
-        fail("i2d_shape_create_circle");
-    }
+    check_shape(i2d_shape_create_circle(body, def, &circle), "i2d_shape_create_circle");
 }
 
-/* Ground top at y = 0, walls standing on it. Restitution 1 so that the other shape of each
+/* Ground top at `y`, walls standing on it. Restitution 1 so that the other shape of each
  * contact decides how bouncy it is. */
-static void build_ground(demo* d) {
-    i2d_shape_def def = shape_def(1.0f, DEFAULT_FRICTION, 1.0f);
-    i2d_body_id ground = add_body(d, I2D_BODY_STATIC, vec2(0.0f, -0.5f), vec2(0.0f, 0.0f));
-    i2d_body_id left = add_body(d, I2D_BODY_STATIC, vec2(-WALL_X, WALL_HALF_HEIGHT), vec2(0.0f, 0.0f));
-    i2d_body_id right = add_body(d, I2D_BODY_STATIC, vec2(WALL_X, WALL_HALF_HEIGHT), vec2(0.0f, 0.0f));
-    add_box(ground, &def, GROUND_HALF_WIDTH, 0.5f);
-    add_box(left, &def, 0.5f, WALL_HALF_HEIGHT);
-    add_box(right, &def, 0.5f, WALL_HALF_HEIGHT);
+static void build_floor(demo* d, float y, float wall_half_height) {
+    i2d_shape_def def = shape_def(1.0f, FRICTION, 1.0f);
+    add_box(add_body(d, I2D_BODY_STATIC, vec2(0.0f, y - 0.5f), 0.0f, still), &def, GROUND_HALF_WIDTH, 0.5f);
+    add_box(add_body(d, I2D_BODY_STATIC, vec2(-WALL_X, y + wall_half_height), 0.0f, still), &def, 0.5f,
+            wall_half_height);
+    add_box(add_body(d, I2D_BODY_STATIC, vec2(WALL_X, y + wall_half_height), 0.0f, still), &def, 0.5f,
+            wall_half_height);
 }
 
 static void build_balls(demo* d) {
@@ -208,45 +288,104 @@ static void build_balls(demo* d) {
         i2d_shape_def def = shape_def(1.0f, 0.0f, ball_restitution[i]);
         i2d_vec2 start = vec2(-13.5f + 2.0f * (float)i, BALL_DROP_HEIGHT + BALL_RADIUS);
         b->restitution = ball_restitution[i];
-        b->body = add_body(d, I2D_BODY_DYNAMIC, start, vec2(BALL_DRIFT, 0.0f));
-        add_circle(b->body, &def, BALL_RADIUS);
-        b->path[b->path_count++] = start;
+        b->t.body = add_body(d, I2D_BODY_DYNAMIC, start, 0.0f, vec2(BALL_DRIFT, 0.0f));
+        add_circle(b->t.body, &def, BALL_RADIUS);
+        b->t.path[b->t.path_count++] = start;
     }
 }
 
-/* Boxes start exactly touching, so the top box's centre rests at 4.5 m if nothing sinks. */
-static void build_stack(demo* d) {
-    i2d_shape_def def = shape_def(1.0f, DEFAULT_FRICTION, 0.0f);
-    int i;
-    for (i = 0; i < STACK_COUNT; ++i) {
-        d->stack[i] = add_body(d, I2D_BODY_DYNAMIC, vec2(STACK_X, 0.5f + (float)i), vec2(0.0f, 0.0f));
-        add_box(d->stack[i], &def, 0.5f, 0.5f);
+/* Rows of 1 m boxes centred on x, standing on the ground at floor_y: a stack, or a pyramid
+ * whose rows shrink by one box, each box resting on two below. Boxes start exactly touching
+ * the boxes below them, so nothing should sink but the contact slop. Returns the top box. */
+static i2d_body_id build_pile(demo* d, float x, float floor_y, int rows, int pyramid) {
+    i2d_shape_def def = i2d_default_shape_def();
+    i2d_body_id top = I2D_NULL_BODY_ID;
+    int row, i;
+    for (row = 0; row < rows; ++row) {
+        int count = pyramid ? rows - row : 1;
+        for (i = 0; i < count; ++i) {
+            float offset = ((float)i - 0.5f * (float)(count - 1)) * (1.0f + PYRAMID_GAP);
+            top = add_body(d, I2D_BODY_DYNAMIC, vec2(x + offset, floor_y + 0.5f + (float)row), 0.0f, still);
+            add_box(top, &def, 0.5f, 0.5f);
+        }
     }
+    return top;
 }
 
-/* Friction 0 (the geometric mean with the ground's is then 0) so that momentum along x is
- * conserved exactly; restitution 1 on both so the collision is elastic. */
-static void build_sliders(demo* d) {
-    i2d_shape_def heavy_def = shape_def(SLIDER_HEAVY_DENSITY, 0.0f, 1.0f);
-    i2d_shape_def light_def = shape_def(1.0f, 0.0f, 1.0f);
-    d->heavy_start = vec2(-1.0f, 0.5f);
-    d->light_start = vec2(2.0f, 0.5f);
-    d->heavy = add_body(d, I2D_BODY_DYNAMIC, d->heavy_start, vec2(SLIDER_SPEED, 0.0f));
-    d->light = add_body(d, I2D_BODY_DYNAMIC, d->light_start, vec2(0.0f, 0.0f));
-    add_box(d->heavy, &heavy_def, 0.5f, 0.5f);
-    add_box(d->light, &light_def, 0.5f, 0.5f);
+/* Sliders: friction 0 (the geometric mean with the ground's is then 0) so that momentum along
+ * x is conserved exactly, restitution 1 on both so the collision is elastic; they meet face to
+ * face, so nothing turns them. The platform flies above their lane; its rider starts at rest,
+ * so friction must first bring it up to the platform's speed (too gently to tip it over). */
+static void build_movers(demo* d) {
+    i2d_shape_def heavy = shape_def(4.0f, 0.0f, 1.0f), light = shape_def(1.0f, 0.0f, 1.0f);
+    i2d_shape_def def = i2d_default_shape_def();
+    add_box(add_tracked(d, T_HEAVY, vec2(-1.0f, 0.5f), 0.0f, vec2(SLIDER_SPEED, 0.0f)), &heavy, 0.5f, 0.5f);
+    add_box(add_tracked(d, T_LIGHT, vec2(2.0f, 0.5f), 0.0f, still), &light, 0.5f, 0.5f);
+    add_box(add_tracked(d, T_PLATFORM, vec2(5.0f, PLATFORM_Y), 0.0f, vec2(PLATFORM_SPEED, 0.0f)), &def,
+            PLATFORM_HALF_WIDTH, PLATFORM_HALF_HEIGHT);
+    add_box(add_tracked(d, T_RIDER, vec2(5.0f, PLATFORM_Y + PLATFORM_HALF_HEIGHT + 0.5f), 0.0f, still), &def,
+            0.5f, 0.5f);
 }
 
-/* The platform flies above the sliders' lane; the rider starts at rest on it, so friction
- * must first bring it up to the platform's speed. */
-static void build_platform(demo* d) {
-    i2d_shape_def def = shape_def(1.0f, DEFAULT_FRICTION, 0.0f);
-    d->platform_start = vec2(5.0f, PLATFORM_Y);
-    d->rider_start = vec2(5.0f, PLATFORM_Y + PLATFORM_HALF_HEIGHT + 0.5f);
-    d->platform = add_body(d, I2D_BODY_KINEMATIC, d->platform_start, vec2(PLATFORM_SPEED, 0.0f));
-    d->rider = add_body(d, I2D_BODY_DYNAMIC, d->rider_start, vec2(0.0f, 0.0f));
-    add_box(d->platform, &def, PLATFORM_HALF_WIDTH, PLATFORM_HALF_HEIGHT);
-    add_box(d->rider, &def, 0.5f, 0.5f);
+/* A static ledge against the left wall with a 1 m box on it, overhanging the edge; and a disc
+ * resting on the ground, sliding without turning: friction slows its centre and spins it up
+ * until its contact point stops slipping. */
+static void build_ledge_and_disc(demo* d) {
+    i2d_shape_def def = i2d_default_shape_def();
+    float half_width = 0.5f * (LEDGE_EDGE_X + 15.0f);
+    add_box(add_body(d, I2D_BODY_STATIC, row2(LEDGE_EDGE_X - half_width, 0.5f * LEDGE_HEIGHT), 0.0f, still), &def,
+            half_width, 0.5f * LEDGE_HEIGHT);
+    add_box(add_tracked(d, T_TIPPER, row2(LEDGE_EDGE_X + TIP_OVERHANG, LEDGE_HEIGHT + 0.5f), 0.0f, still), &def,
+            0.5f, 0.5f);
+    add_circle(add_tracked(d, T_DISC, row2(DISC_X, DISC_RADIUS), 0.0f, vec2(DISC_SPEED, 0.0f)), &def,
+               DISC_RADIUS);
+}
+
+/* A static segment sloping down to the right, a catch ramp (a turned box 0.2 m thick) rising
+ * from the ground to the right wall, and a short, fat capsule lying near the slope's top. */
+static void build_slope(demo* d) {
+    i2d_shape_def def = i2d_default_shape_def();
+    i2d_body_id slope = add_body(d, I2D_BODY_STATIC, row2(0.0f, 0.0f), 0.0f, still);
+    float down = atan2f(SLOPE_TOP_Y, SLOPE_FOOT_X - SLOPE_TOP_X), up = atan2f(CATCH_TOP_Y, 15.0f - CATCH_START_X);
+    float ramp_half_length = 0.5f * hypotf(CATCH_TOP_Y, 15.0f - CATCH_START_X);
+    i2d_vec2 ramp_center = vec2(0.5f * (CATCH_START_X + 15.0f) + 0.1f * sinf(up), 0.5f * CATCH_TOP_Y - 0.1f * cosf(up));
+    /* 0.6 m down the slope, one radius above it. */
+    i2d_vec2 start = row2(SLOPE_TOP_X + 0.6f * cosf(down) + CAPSULE_RADIUS * sinf(down),
+                          SLOPE_TOP_Y - 0.6f * sinf(down) + CAPSULE_RADIUS * cosf(down));
+    i2d_body_id capsule = add_tracked(d, T_CAPSULE, start, -down, still);
+    check_shape(i2d_shape_create_segment(slope, &def, vec2(SLOPE_TOP_X, SLOPE_TOP_Y), vec2(SLOPE_FOOT_X, 0.0f)),
+                "i2d_shape_create_segment");
+    check_shape(i2d_shape_create_offset_box(slope, &def, ramp_half_length, 0.1f, ramp_center, rot(up)),
+                "i2d_shape_create_offset_box");
+    check_shape(i2d_shape_create_capsule(capsule, &def, vec2(-CAPSULE_HALF_LENGTH, 0.0f),
+                                         vec2(CAPSULE_HALF_LENGTH, 0.0f), CAPSULE_RADIUS),
+                "i2d_shape_create_capsule");
+}
+
+/* A regular polygon around the body origin, given as points; a face is down when level. */
+static void add_regular_polygon(i2d_body_id body, const i2d_shape_def* def, int count, float radius) {
+    i2d_vec2 points[I2D_MAX_POLYGON_VERTICES];
+    int k;
+    for (k = 0; k < count; ++k) {
+        float a = PI * (2.0f * (float)k + 1.0f) / (float)count - 0.5f * PI;
+        points[k] = vec2(radius * cosf(a), radius * sinf(a));
+    }
+    check_shape(i2d_shape_create_polygon(body, def, points, count), "i2d_shape_create_polygon");
+}
+
+/* Dropped from 1 m, each tilted so that it lands on a corner: a triangle, a pentagon, a
+ * rectangle rounded by 0.15 m and a box. */
+static void build_dropped(demo* d) {
+    static const i2d_vec2 corners[4] = {{-0.4f, -0.22f}, {0.4f, -0.22f}, {0.4f, 0.22f}, {-0.4f, 0.22f}};
+    i2d_shape_def def = i2d_default_shape_def();
+    i2d_polygon rounded;
+    i2d_body_id body;
+    check(i2d_make_polygon(corners, 4, 0.15f, &rounded), "i2d_make_polygon");
+    add_regular_polygon(add_tracked(d, T_TRIANGLE, row2(0.5f, 1.6f), 20.0f / DEG, still), &def, 3, 0.6f);
+    add_regular_polygon(add_tracked(d, T_PENTAGON, row2(2.05f, 1.6f), 15.0f / DEG, still), &def, 5, 0.55f);
+    body = add_tracked(d, T_ROUNDED, row2(3.6f, 1.6f), 25.0f / DEG, still);
+    check_shape(i2d_shape_create_polygon_from(body, &def, &rounded), "i2d_shape_create_polygon_from");
+    add_box(add_tracked(d, T_TILTED, row2(5.15f, 1.6f), 30.0f / DEG, still), &def, 0.5f, 0.5f);
 }
 
 static void build_scene(demo* d) {
@@ -256,23 +395,37 @@ static void build_scene(demo* d) {
     if (I2D_IS_NULL(d->world)) {
         fail("i2d_world_create");
     }
-    build_ground(d);
+    build_floor(d, 0.0f, 3.0f);
     build_balls(d);
-    build_stack(d);
-    build_sliders(d);
-    build_platform(d);
-    d->momentum_before = mass(d->heavy) * velocity(d->heavy).x + mass(d->light) * velocity(d->light).x;
-    d->heavy_v_before = velocity(d->heavy).x;
+    d->stack_top = build_pile(d, STACK_X, 0.0f, STACK_COUNT, 0);
+    build_movers(d);
+    build_slope(d); /* before the floor, which is drawn over the catch ramp's buried corner */
+    build_floor(d, ROW2_Y, 2.25f);
+    build_ledge_and_disc(d);
+    d->pyramid_top = build_pile(d, PYRAMID_X, ROW2_Y, PYRAMID_ROWS, 1);
+    d->pyramid_top_start = position(d->pyramid_top);
+    build_dropped(d);
+    d->momentum_before = mass(d->t[T_HEAVY].body) * velocity(d->t[T_HEAVY].body).x +
+                         mass(d->t[T_LIGHT].body) * velocity(d->t[T_LIGHT].body).x;
+    d->heavy_v_before = velocity(d->t[T_HEAVY].body).x;
 }
 
 /* ---- Watching it run ------------------------------------------------------------------ */
 
+/* Adds a point to the path and the turn since the last step to the angle turned through. */
+static void follow(tracked* t) {
+    i2d_transform xf = transform(t->body);
+    t->path[t->path_count++] = xf.p;
+    t->turned += atan2f(xf.q.s * t->last.c - xf.q.c * t->last.s, xf.q.c * t->last.c + xf.q.s * t->last.s);
+    t->last = xf.q;
+}
+
 /* Follows a ball through its first bounce: falling, then rising, then the turn at the top. */
 static void watch_ball(ball* b) {
-    i2d_vec2 p = position(b->body);
-    i2d_vec2 v = velocity(b->body);
-    float bottom = p.y - BALL_RADIUS;
-    b->path[b->path_count++] = p;
+    i2d_vec2 v = velocity(b->t.body);
+    float bottom;
+    follow(&b->t);
+    bottom = b->t.path[b->t.path_count - 1].y - BALL_RADIUS;
     if (b->apex_found) {
         return;
     }
@@ -294,36 +447,61 @@ static void watch_ball(ball* b) {
 
 /* Records momentum once the boxes have collided and the gap between them has opened. */
 static void watch_sliders(demo* d) {
-    i2d_vec2 ph, pl, vh, vl;
+    i2d_body_id heavy = d->t[T_HEAVY].body, light = d->t[T_LIGHT].body;
+    i2d_vec2 vh, vl;
     if (d->separated) {
         return;
     }
-    vl = velocity(d->light);
+    vl = velocity(light);
     if (!d->collided) {
         d->collided = vl.x > 0.01f;
         return;
     }
-    ph = position(d->heavy);
-    pl = position(d->light);
-    vh = velocity(d->heavy);
-    if (pl.x - ph.x > 1.0f + 0.01f) {
+    vh = velocity(heavy);
+    if (position(light).x - position(heavy).x > 1.0f + 0.01f) {
         d->separated = 1;
         d->heavy_v_after = vh.x;
         d->light_v_after = vl.x;
-        d->momentum_after = mass(d->heavy) * vh.x + mass(d->light) * vl.x;
+        d->momentum_after = mass(heavy) * vh.x + mass(light) * vl.x;
+    }
+}
+
+/* The point of the disc's rim that started level with its centre, in front. */
+static void follow_rim(demo* d) {
+    d->rim[d->rim_count++] = i2d_body_get_world_point(d->t[T_DISC].body, vec2(DISC_RADIUS, 0.0f));
+    check_last("i2d_body_get_world_point");
+}
+
+/* The tipping box's first spin (while still level) and the capsule's arrival at the foot. */
+static void watch_turning(demo* d, int step) {
+    const tracked* c = &d->t[T_CAPSULE];
+    i2d_vec2 at = c->path[c->path_count - 1];
+    if (step == 1) {
+        d->tip_spin_up = spin(d->t[T_TIPPER].body) / TIME_STEP;
+    }
+    if (d->capsule_time == 0.0f && at.x > SLOPE_FOOT_X) {
+        d->capsule_time = (float)step * TIME_STEP;
+        d->capsule_distance = hypotf(at.x - c->path[0].x, at.y - c->path[0].y);
+        d->capsule_turned = c->turned;
     }
 }
 
 static void run(demo* d) {
     int step, i;
-    for (step = 0; step < STEP_COUNT; ++step) {
+    follow_rim(d);
+    for (step = 1; step <= STEP_COUNT; ++step) {
         double t0 = seconds_now();
         check(i2d_world_step(d->world, TIME_STEP, SUBSTEPS), "i2d_world_step");
         d->step_seconds += seconds_now() - t0;
         for (i = 0; i < BALL_COUNT; ++i) {
             watch_ball(&d->balls[i]);
         }
+        for (i = 0; i < T_COUNT; ++i) {
+            follow(&d->t[i]);
+        }
+        follow_rim(d);
         watch_sliders(d);
+        watch_turning(d, step);
     }
 }
 
@@ -344,17 +522,13 @@ static void report_balls(const demo* d) {
     }
 }
 
-static void report_stack(const demo* d) {
-    float rest = 0.5f + (float)(STACK_COUNT - 1);
-    float top = position(d->stack[STACK_COUNT - 1]).y;
+static void report_stack_and_sliders(const demo* d) {
+    float rest = 0.5f + (float)(STACK_COUNT - 1), top = position(d->stack_top).y;
+    float m1 = mass(d->t[T_HEAVY].body), m2 = mass(d->t[T_LIGHT].body), v1 = d->heavy_v_before;
     /* Each of the stack's contacts may rest up to the slop deep. */
     printf("stack of %d boxes: top box centre at %.4f m, rest height %.4f m: sank %.1f mm"
            " (slop allows %d x %.1f mm)\n",
            STACK_COUNT, top, rest, 1000.0f * (rest - top), STACK_COUNT, 1000.0f * d->contact_slop);
-}
-
-static void report_sliders(const demo* d) {
-    float m1 = mass(d->heavy), m2 = mass(d->light), v1 = d->heavy_v_before;
     if (!d->separated) {
         printf("sliding boxes: %s\n", d->collided ? "collided but never separated" : "never collided");
         return;
@@ -367,13 +541,59 @@ static void report_sliders(const demo* d) {
 }
 
 static void report_platform(const demo* d) {
-    float moved = position(d->platform).x - d->platform_start.x;
-    float carried = position(d->rider).x - d->rider_start.x;
+    const tracked *platform = &d->t[T_PLATFORM], *rider = &d->t[T_RIDER];
+    float moved = position(platform->body).x - platform->start.p.x;
+    float carried = position(rider->body).x - rider->start.p.x;
     /* The rider slides until friction (deceleration mu g) brings it up to the platform's speed. */
-    float slip = PLATFORM_SPEED * PLATFORM_SPEED / (2.0f * DEFAULT_FRICTION * GRAVITY);
+    float slip = PLATFORM_SPEED * PLATFORM_SPEED / (2.0f * FRICTION * GRAVITY);
     printf("kinematic platform moved %.3f m (%.3f expected); box on it moved %.3f m at %.3f m/s,\n", moved,
-           PLATFORM_SPEED * (float)STEP_COUNT * TIME_STEP, carried, velocity(d->rider).x);
+           PLATFORM_SPEED * (float)STEP_COUNT * TIME_STEP, carried, velocity(rider->body).x);
     printf("  slipping %.3f m before friction caught it up (v^2 / (2 mu g) = %.3f m)\n", moved - carried, slip);
+}
+
+/* How far a body that lies flat at angles 0, period, 2 period, ... (degrees) is from the
+ * nearest of them. */
+static float tilt(i2d_body_id body, float period) {
+    float angle = degrees(transform(body).q);
+    return angle - period * roundf(angle / period);
+}
+
+static void report_tipper_and_disc(const demo* d) {
+    i2d_body_id disc = d->t[T_DISC].body;
+    /* Pivoting on the ledge's corner: m g d = (I_centre + m r^2) alpha, with I_centre = m (1 + 1) / 12
+     * for the 1 m box and r^2 = d^2 + 0.5^2. A uniform disc rolls at v0 / (1 + I / (m r^2)) = 2/3 v0. */
+    float predicted = GRAVITY * TIP_OVERHANG / (1.0f / 6.0f + TIP_OVERHANG * TIP_OVERHANG + 0.25f);
+    printf("box with its centre %.2f m past a ledge: spin-up %.2f rad/s^2 (g d / (1/6 + d^2 + 1/4) = %.2f),\n",
+           TIP_OVERHANG, -d->tip_spin_up, predicted);
+    printf("  turned through %.1f deg clockwise as it fell; it lies %.1f deg from flat\n",
+           -DEG * d->t[T_TIPPER].turned, tilt(d->t[T_TIPPER].body, 90.0f));
+    printf("disc launched at %.2f m/s without spin: rolls at %.3f m/s (2/3 v0 = %.3f), -w r = %.3f m/s\n",
+           DISC_SPEED, velocity(disc).x, 2.0f / 3.0f * DISC_SPEED, -spin(disc) * DISC_RADIUS);
+}
+
+static void report_capsule(const demo* d) {
+    /* Rolling without slipping, a convex shape advances one perimeter per turn. */
+    float perimeter = 2.0f * PI * CAPSULE_RADIUS + 4.0f * CAPSULE_HALF_LENGTH;
+    float turns = -d->capsule_turned / (2.0f * PI);
+    if (d->capsule_time == 0.0f) {
+        printf("capsule on the slope: never reached its foot\n");
+        return;
+    }
+    printf("capsule rolled %.3f m down a %.1f deg slope in %.2f s, %.2f turns: %.3f m a turn"
+           " (its perimeter: %.3f m)\n",
+           d->capsule_distance, DEG * atan2f(SLOPE_TOP_Y, SLOPE_FOOT_X - SLOPE_TOP_X), d->capsule_time, turns,
+           d->capsule_distance / turns, perimeter);
+}
+
+static void report_resting(const demo* d) {
+    i2d_vec2 top = position(d->pyramid_top);
+    printf("pyramid of %d rows: top box moved %.1f mm sideways, %.1f mm down, turned %.2f deg\n", PYRAMID_ROWS,
+           1000.0f * (top.x - d->pyramid_top_start.x), 1000.0f * (d->pyramid_top_start.y - top.y),
+           degrees(transform(d->pyramid_top).q));
+    printf("dropped tilted, angle from lying flat: triangle %.1f deg, pentagon %.1f deg, rounded box %.1f deg;\n",
+           tilt(d->t[T_TRIANGLE].body, 120.0f), tilt(d->t[T_PENTAGON].body, 72.0f), tilt(d->t[T_ROUNDED].body, 90.0f));
+    printf("  box dropped at %.0f deg now at %.1f deg\n", degrees(d->t[T_TILTED].start.q),
+           degrees(transform(d->t[T_TILTED].body).q));
 }
 
 static void report(const demo* d) {
@@ -386,9 +606,11 @@ static void report(const demo* d) {
            (int)counters.shape_count, STEP_COUNT, SUBSTEPS, (double)STEP_COUNT * TIME_STEP,
            1000.0 * d->step_seconds);
     report_balls(d);
-    report_stack(d);
-    report_sliders(d);
+    report_stack_and_sliders(d);
     report_platform(d);
+    report_tipper_and_disc(d);
+    report_capsule(d);
+    report_resting(d);
     printf("contacts touching at the end: %d (candidate pairs %d)\n", (int)counters.contact_count,
            (int)counters.pair_count);
 }
@@ -402,164 +624,247 @@ typedef struct view {
 
 #define VIEW_MIN_X (-16.5f)
 #define VIEW_MAX_X 16.5f
-#define VIEW_MIN_Y (-1.2f)
+#define VIEW_MIN_Y (ROW2_Y - 1.2f)
 #define VIEW_MAX_Y 6.6f
-#define VIEW_SCALE 36.0f   /* pixels per metre */
+#define VIEW_SCALE 36.0f /* pixels per metre */
 #define CAPTION_HEIGHT 56.0f
 
 static float px(const view* v, float x) { return (x - v->min_x) * v->scale; }
 static float py(const view* v, float y) { return (v->max_y - y) * v->scale; }
 
-typedef struct palette {
+/* How a shape is painted: fill "none" and a dash pattern for start outlines. */
+typedef struct style {
     const char* fill;
     const char* stroke;
-} palette;
+    const char* dash; /* NULL for a solid line */
+} style;
 
-static palette body_palette(i2d_body_type type) {
-    palette p;
-    switch (type) {
-    case I2D_BODY_STATIC: p.fill = "#b4b4b4"; p.stroke = "#6c6c6c"; break;
-    case I2D_BODY_KINEMATIC: p.fill = "#5b9bd5"; p.stroke = "#2e5f8f"; break;
-    default: p.fill = "#f5a045"; p.stroke = "#a85a12"; break;
+/* By body type: static, kinematic, dynamic. */
+static const style body_styles[3] = {
+    {"#b4b4b4", "#6c6c6c", NULL}, {"#5b9bd5", "#2e5f8f", NULL}, {"#f5a045", "#a85a12", NULL}};
+
+/* Ends an element with the style's paint. */
+static void paint(FILE* f, style s) {
+    fprintf(f, " fill=\"%s\" stroke=\"%s\" stroke-width=\"1.5\"", s.fill, s.stroke);
+    if (s.dash) {
+        fprintf(f, " stroke-dasharray=\"%s\"", s.dash);
     }
-    return p;
+    fprintf(f, "/>\n");
 }
 
-static void draw_shape(FILE* f, const view* v, i2d_body_id body, i2d_shape_id shape, palette pal) {
-    i2d_shape_type type = i2d_shape_get_type(shape);
-    check_last("i2d_shape_get_type");
-    if (type == I2D_SHAPE_CIRCLE) {
-        i2d_circle c = i2d_shape_get_circle(shape);
-        i2d_vec2 p;
-        check_last("i2d_shape_get_circle");
-        p = position(body);
-        fprintf(f, "<circle cx=\"%.2f\" cy=\"%.2f\" r=\"%.2f\" fill=\"%s\" stroke=\"%s\" stroke-width=\"1.5\"/>\n",
-                px(v, p.x + c.center.x), py(v, p.y + c.center.y), c.radius * v->scale, pal.fill, pal.stroke);
-    } else {
-        i2d_aabb b = i2d_shape_get_aabb(shape);
-        check_last("i2d_shape_get_aabb");
-        fprintf(f,
-                "<rect x=\"%.2f\" y=\"%.2f\" width=\"%.2f\" height=\"%.2f\" fill=\"%s\" stroke=\"%s\""
-                " stroke-width=\"1.5\"/>\n",
-                px(v, b.min.x), py(v, b.max.y), (b.max.x - b.min.x) * v->scale, (b.max.y - b.min.y) * v->scale,
-                pal.fill, pal.stroke);
-    }
+static void svg_point(FILE* f, const view* v, const char* before, i2d_vec2 p) {
+    fprintf(f, "%s%.2f,%.2f", before, px(v, p.x), py(v, p.y));
 }
 
-static void draw_bodies(FILE* f, const view* v, const demo* d) {
-    int i, j;
-    for (i = 0; i < d->body_count; ++i) {
-        i2d_shape_id shapes[MAX_SHAPES_PER_BODY];
-        i2d_body_type type = i2d_body_get_type(d->bodies[i]);
-        int count;
-        check_last("i2d_body_get_type");
-        count = (int)i2d_body_get_shapes(d->bodies[i], shapes, MAX_SHAPES_PER_BODY);
-        check_last("i2d_body_get_shapes");
-        for (j = 0; j < count && j < MAX_SHAPES_PER_BODY; ++j) {
-            draw_shape(f, v, d->bodies[i], shapes[j], body_palette(type));
+static void svg_line(FILE* f, const view* v, i2d_vec2 a, i2d_vec2 b, const char* stroke, float width) {
+    fprintf(f, "<line x1=\"%.2f\" y1=\"%.2f\" x2=\"%.2f\" y2=\"%.2f\" stroke=\"%s\" stroke-width=\"%.1f\""
+               " stroke-linecap=\"round\"/>\n",
+            px(v, a.x), py(v, a.y), px(v, b.x), py(v, b.y), stroke, width);
+}
+
+/* Every point within radius of a convex polygon (a capsule is the 2-gon of its two centres):
+ * each edge pushed out along its normal, the gaps closed by arcs around the corners. */
+static void draw_rounded(FILE* f, const view* v, i2d_transform xf, const i2d_vec2* points,
+                         const i2d_vec2* normals, int count, float radius, style s) {
+    int i;
+    fprintf(f, "<path d=\"");
+    for (i = 0; i < count; ++i) {
+        i2d_vec2 p = points[i], q = points[(i + 1) % count], n = normals[i];
+        i2d_vec2 m = normals[(i + count - 1) % count];
+        if (i == 0) {
+            svg_point(f, v, "M", place(xf, vec2(p.x + radius * m.x, p.y + radius * m.y)));
+        }
+        /* Counter-clockwise in the world stays counter-clockwise on the screen, which with y
+         * down is the negative-angle direction: sweep flag 0. */
+        fprintf(f, " A%.2f,%.2f 0 0 0", radius * v->scale, radius * v->scale);
+        svg_point(f, v, " ", place(xf, vec2(p.x + radius * n.x, p.y + radius * n.y)));
+        svg_point(f, v, " L", place(xf, vec2(q.x + radius * n.x, q.y + radius * n.y)));
+    }
+    fprintf(f, " Z\"");
+    paint(f, s);
+}
+
+static void draw_polygon(FILE* f, const view* v, i2d_transform xf, i2d_shape_id shape, style s) {
+    i2d_polygon polygon = i2d_shape_get_polygon(shape);
+    int i;
+    check_last("i2d_shape_get_polygon");
+    if (polygon.radius > 0.0f) {
+        draw_rounded(f, v, xf, polygon.vertices, polygon.normals, polygon.count, polygon.radius, s);
+        return;
+    }
+    fprintf(f, "<polygon points=\"");
+    for (i = 0; i < polygon.count; ++i) {
+        svg_point(f, v, i ? " " : "", place(xf, polygon.vertices[i]));
+    }
+    fprintf(f, "\"");
+    paint(f, s);
+}
+
+static void draw_capsule(FILE* f, const view* v, i2d_transform xf, i2d_shape_id shape, style s) {
+    i2d_capsule c = i2d_shape_get_capsule(shape);
+    i2d_vec2 points[2], normals[2];
+    float dx = c.center2.x - c.center1.x, dy = c.center2.y - c.center1.y, length = hypotf(dx, dy);
+    check_last("i2d_shape_get_capsule");
+    points[0] = c.center1;
+    points[1] = c.center2;
+    normals[0] = vec2(dy / length, -dx / length);
+    normals[1] = vec2(-normals[0].x, -normals[0].y);
+    draw_rounded(f, v, xf, points, normals, 2, c.radius, s);
+}
+
+/* A circle with a radius line along the body's x axis, so that its turning shows. */
+static void draw_circle(FILE* f, const view* v, i2d_transform xf, i2d_shape_id shape, style s) {
+    i2d_circle c = i2d_shape_get_circle(shape);
+    i2d_vec2 center = place(xf, c.center);
+    check_last("i2d_shape_get_circle");
+    fprintf(f, "<circle cx=\"%.2f\" cy=\"%.2f\" r=\"%.2f\"", px(v, center.x), py(v, center.y), c.radius * v->scale);
+    paint(f, s);
+    svg_line(f, v, center, place(xf, vec2(c.center.x + c.radius, c.center.y)), s.stroke, 1.5f);
+}
+
+/* Draws every shape of the body as placed by xf. */
+static void draw_body(FILE* f, const view* v, i2d_body_id body, i2d_transform xf, style s) {
+    i2d_shape_id shapes[MAX_SHAPES_PER_BODY];
+    int count = (int)i2d_body_get_shapes(body, shapes, MAX_SHAPES_PER_BODY), i;
+    check_last("i2d_body_get_shapes");
+    for (i = 0; i < count && i < MAX_SHAPES_PER_BODY; ++i) {
+        i2d_shape_type type = i2d_shape_get_type(shapes[i]);
+        check_last("i2d_shape_get_type");
+        if (type == I2D_SHAPE_POLYGON) {
+            draw_polygon(f, v, xf, shapes[i], s);
+        } else if (type == I2D_SHAPE_CAPSULE) {
+            draw_capsule(f, v, xf, shapes[i], s);
+        } else if (type == I2D_SHAPE_CIRCLE) {
+            draw_circle(f, v, xf, shapes[i], s);
+        } else {
+            i2d_segment seg = i2d_shape_get_segment(shapes[i]);
+            check_last("i2d_shape_get_segment");
+            svg_line(f, v, place(xf, seg.point1), place(xf, seg.point2), s.stroke, 3.0f);
         }
     }
 }
 
-/* Each ball's path, a dashed tick at its predicted apex, and its restitution above it. */
-static void draw_ball_paths(FILE* f, const view* v, const demo* d) {
-    int i, k;
+/* Every body where it is now, then a dashed outline of each followed body where it started. */
+static void draw_bodies(FILE* f, const view* v, const demo* d) {
+    int i;
+    for (i = 0; i < d->body_count; ++i) {
+        i2d_body_type type = i2d_body_get_type(d->bodies[i]);
+        check_last("i2d_body_get_type");
+        draw_body(f, v, d->bodies[i], transform(d->bodies[i]), body_styles[type]);
+    }
+    for (i = 0; i < T_COUNT; ++i) {
+        style s = body_styles[i == T_PLATFORM ? I2D_BODY_KINEMATIC : I2D_BODY_DYNAMIC];
+        s.fill = "none";
+        s.dash = "4,3";
+        draw_body(f, v, d->t[i].body, d->t[i].start, s);
+    }
+}
+
+static void draw_path(FILE* f, const view* v, const i2d_vec2* path, int count, const char* stroke) {
+    int k;
+    fprintf(f, "<polyline fill=\"none\" stroke=\"%s\" stroke-width=\"1.2\" stroke-opacity=\"0.8\" points=\"", stroke);
+    for (k = 0; k < count; ++k) {
+        svg_point(f, v, k ? " " : "", path[k]);
+    }
+    fprintf(f, "\"/>\n");
+}
+
+/* Centred text at a world point, printf style. */
+static void draw_text(FILE* f, const view* v, i2d_vec2 at, const char* format, ...) {
+    va_list args;
+    fprintf(f, "<text x=\"%.2f\" y=\"%.2f\" text-anchor=\"middle\">", px(v, at.x), py(v, at.y));
+    va_start(args, format);
+    vfprintf(f, format, args);
+    va_end(args);
+    fprintf(f, "</text>\n");
+}
+
+/* Each ball's path, a dashed tick at its predicted apex, and its restitution above it; the
+ * centres of the bodies that turn on their way, and the disc's rim point (a cycloid). */
+static void draw_paths(FILE* f, const view* v, const demo* d) {
+    int i;
     for (i = 0; i < BALL_COUNT; ++i) {
         const ball* b = &d->balls[i];
-        float x = b->path[0].x;
+        float x = b->t.path[0].x;
         /* Predicted apex: e^2 h high, reached after the fall time plus e times it again. */
         float fall_time = sqrtf(2.0f * BALL_DROP_HEIGHT / GRAVITY);
         float apex_x = x + BALL_DRIFT * fall_time * (1.0f + b->restitution);
         float apex_y = b->restitution * b->restitution * BALL_DROP_HEIGHT + BALL_RADIUS;
-        fprintf(f, "<polyline fill=\"none\" stroke=\"#c0392b\" stroke-width=\"1.2\" stroke-opacity=\"0.8\" points=\"");
-        for (k = 0; k < b->path_count; ++k) {
-            fprintf(f, "%s%.2f,%.2f", k ? " " : "", px(v, b->path[k].x), py(v, b->path[k].y));
-        }
-        fprintf(f, "\"/>\n");
+        draw_path(f, v, b->t.path, b->t.path_count, "#c0392b");
         fprintf(f, "<line x1=\"%.2f\" y1=\"%.2f\" x2=\"%.2f\" y2=\"%.2f\" stroke=\"#333\" stroke-dasharray=\"3,2\"/>\n",
                 px(v, apex_x - 0.6f), py(v, apex_y), px(v, apex_x + 0.6f), py(v, apex_y));
-        fprintf(f, "<text x=\"%.2f\" y=\"%.2f\" text-anchor=\"middle\">e = %.1f</text>\n", px(v, x),
-                py(v, BALL_DROP_HEIGHT + 2.0f * BALL_RADIUS + 0.3f), b->restitution);
+        draw_text(f, v, vec2(x, BALL_DROP_HEIGHT + 2.0f * BALL_RADIUS + 0.3f), "e = %.1f", b->restitution);
     }
-}
-
-/* A dashed outline where a box started, so that the picture shows how far it went. */
-static void draw_start(FILE* f, const view* v, i2d_vec2 center, float half_width, float half_height,
-                       const char* stroke) {
-    fprintf(f,
-            "<rect x=\"%.2f\" y=\"%.2f\" width=\"%.2f\" height=\"%.2f\" fill=\"none\" stroke=\"%s\""
-            " stroke-dasharray=\"4,3\"/>\n",
-            px(v, center.x - half_width), py(v, center.y + half_height), 2.0f * half_width * v->scale,
-            2.0f * half_height * v->scale, stroke);
+    for (i = T_TIPPER; i <= T_CAPSULE; ++i) {
+        draw_path(f, v, d->t[i].path, d->t[i].path_count, "#7d3c98");
+    }
+    draw_path(f, v, d->rim, d->rim_count, "#1e8449");
 }
 
 static void draw_labels(FILE* f, const view* v, const demo* d) {
-    i2d_vec2 heavy = position(d->heavy), light = position(d->light), rider = position(d->rider);
-    fprintf(f, "<text x=\"%.2f\" y=\"%.2f\" text-anchor=\"middle\">stack of %d</text>\n", px(v, STACK_X),
-            py(v, (float)STACK_COUNT + 0.35f), STACK_COUNT);
-    fprintf(f, "<text x=\"%.2f\" y=\"%.2f\" text-anchor=\"middle\">%.0f kg, %.2f m/s</text>\n", px(v, heavy.x),
-            py(v, heavy.y + 0.75f), mass(d->heavy), velocity(d->heavy).x);
-    fprintf(f, "<text x=\"%.2f\" y=\"%.2f\" text-anchor=\"middle\">%.0f kg, %.2f m/s</text>\n", px(v, light.x),
-            py(v, light.y + 0.75f), mass(d->light), velocity(d->light).x);
-    fprintf(f, "<text x=\"%.2f\" y=\"%.2f\" text-anchor=\"middle\">box riding a kinematic platform, %.1f m/s</text>\n",
-            px(v, rider.x), py(v, rider.y + 0.85f), PLATFORM_SPEED);
-    draw_start(f, v, d->heavy_start, 0.5f, 0.5f, "#a85a12");
-    draw_start(f, v, d->light_start, 0.5f, 0.5f, "#a85a12");
-    draw_start(f, v, d->platform_start, PLATFORM_HALF_WIDTH, PLATFORM_HALF_HEIGHT, "#2e5f8f");
-    draw_start(f, v, d->rider_start, 0.5f, 0.5f, "#a85a12");
+    i2d_vec2 heavy = position(d->t[T_HEAVY].body), light = position(d->t[T_LIGHT].body);
+    i2d_vec2 rider = position(d->t[T_RIDER].body);
+    draw_text(f, v, vec2(STACK_X, (float)STACK_COUNT + 0.35f), "stack of %d", STACK_COUNT);
+    draw_text(f, v, vec2(heavy.x, heavy.y + 0.75f), "%.0f kg, %.2f m/s", mass(d->t[T_HEAVY].body),
+              velocity(d->t[T_HEAVY].body).x);
+    draw_text(f, v, vec2(light.x, light.y + 0.75f), "%.0f kg, %.2f m/s", mass(d->t[T_LIGHT].body),
+              velocity(d->t[T_LIGHT].body).x);
+    draw_text(f, v, vec2(rider.x, rider.y + 0.85f), "box riding a kinematic platform, %.1f m/s", PLATFORM_SPEED);
+    draw_text(f, v, row2(LEDGE_EDGE_X - 0.6f, LEDGE_HEIGHT + 1.4f), "box tips off a ledge");
+    draw_text(f, v, row2(DISC_X + 1.6f, 1.5f), "disc launched at %.1f m/s, no spin", DISC_SPEED);
+    draw_text(f, v, row2(PYRAMID_X, (float)PYRAMID_ROWS + 0.35f), "pyramid of %d rows", PYRAMID_ROWS);
+    draw_text(f, v, row2(2.8f, 2.65f), "dropped tilted, land flat");
+    draw_text(f, v, row2(10.0f, SLOPE_TOP_Y + 1.0f), "capsule rolls down a slope");
 }
 
-/* One legend entry: a swatch (a filled square, or a line when fill is NULL) and its text. */
-static void legend_entry(FILE* f, float x, float y, const char* fill, const char* stroke, const char* dash,
-                         const char* text) {
-    char dash_attribute[48] = "";
-    if (dash) {
-        snprintf(dash_attribute, sizeof dash_attribute, " stroke-dasharray=\"%s\"", dash);
-    }
-    if (fill) {
-        fprintf(f, "<rect x=\"%.1f\" y=\"%.1f\" width=\"14\" height=\"14\" fill=\"%s\" stroke=\"%s\"%s/>", x,
-                y - 11.0f, fill, stroke, dash_attribute);
+/* One legend entry: a swatch (a square, or a line when the style has no fill) and its text.
+ * Returns where the next entry starts. */
+static float legend_entry(FILE* f, float x, float y, style s, const char* text) {
+    if (s.fill) {
+        fprintf(f, "<rect x=\"%.1f\" y=\"%.1f\" width=\"14\" height=\"14\"", x, y - 11.0f);
     } else {
-        fprintf(f, "<line x1=\"%.1f\" y1=\"%.1f\" x2=\"%.1f\" y2=\"%.1f\" stroke=\"%s\" stroke-width=\"1.5\"%s/>",
-                x, y - 4.0f, x + 22.0f, y - 4.0f, stroke, dash_attribute);
+        fprintf(f, "<line x1=\"%.1f\" y1=\"%.1f\" x2=\"%.1f\" y2=\"%.1f\"", x, y - 4.0f, x + 22.0f, y - 4.0f);
+        s.fill = "none";
     }
+    paint(f, s);
     fprintf(f, "<text x=\"%.1f\" y=\"%.1f\">%s</text>\n", x + 28.0f, y, text);
+    return x + 50.0f + 7.0f * (float)strlen(text); /* about 7 px a character */
 }
 
 static void draw_legend(FILE* f, float top) {
-    float y = top + 20.0f;
-    legend_entry(f, 10.0f, y, "#b4b4b4", "#6c6c6c", NULL, "static");
-    legend_entry(f, 95.0f, y, "#5b9bd5", "#2e5f8f", NULL, "kinematic");
-    legend_entry(f, 205.0f, y, "#f5a045", "#a85a12", NULL, "dynamic");
-    legend_entry(f, 305.0f, y, "none", "#555", "4,3", "start position");
-    legend_entry(f, 445.0f, y, NULL, "#c0392b", NULL, "ball path");
-    legend_entry(f, 560.0f, y, NULL, "#333", "3,2", "predicted first-bounce apex, e&#178; h");
+    static const style start = {"none", "#555", "4,3"}, ball_path = {NULL, "#c0392b", NULL};
+    static const style apex = {NULL, "#333", "3,2"}, centre = {NULL, "#7d3c98", NULL}, rim = {NULL, "#1e8449", NULL};
+    float y = top + 20.0f, x = 10.0f;
+    x = legend_entry(f, x, y, body_styles[I2D_BODY_STATIC], "static");
+    x = legend_entry(f, x, y, body_styles[I2D_BODY_KINEMATIC], "kinematic");
+    x = legend_entry(f, x, y, body_styles[I2D_BODY_DYNAMIC], "dynamic");
+    x = legend_entry(f, x, y, start, "start position");
+    x = legend_entry(f, x, y, ball_path, "ball path");
+    x = legend_entry(f, x, y, apex, "predicted apex, e\xc2\xb2 h");
+    x = legend_entry(f, x, y, centre, "path of a centre");
+    legend_entry(f, x, y, rim, "path of a rim point");
     fprintf(f, "<text x=\"10\" y=\"%.1f\">impulse2d demo: the state after %.1f s (%d steps of 1/60 s, %d substeps"
-               " each); y up, 1 m = %.0f px.</text>\n",
+               " each); y up, 1 m = %.0f px. Top: bodies that only move; bottom: bodies that turn"
+               " (a circle's line is a radius).</text>\n",
             y + 22.0f, (double)STEP_COUNT * TIME_STEP, STEP_COUNT, SUBSTEPS, VIEW_SCALE);
 }
 
 static void write_svg(const demo* d, const char* path) {
-    view v;
-    float width, height;
+    view v = {VIEW_MIN_X, VIEW_MAX_Y, VIEW_SCALE};
+    float width = (VIEW_MAX_X - VIEW_MIN_X) * VIEW_SCALE, height = (VIEW_MAX_Y - VIEW_MIN_Y) * VIEW_SCALE;
     int failed;
     FILE* f = fopen(path, "w");
     if (!f) {
         fprintf(stderr, "impulse2d_demo: cannot open %s for writing\n", path);
         exit(EXIT_FAILURE);
     }
-    v.min_x = VIEW_MIN_X;
-    v.max_y = VIEW_MAX_Y;
-    v.scale = VIEW_SCALE;
-    width = (VIEW_MAX_X - VIEW_MIN_X) * VIEW_SCALE;
-    height = (VIEW_MAX_Y - VIEW_MIN_Y) * VIEW_SCALE;
     fprintf(f, "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n");
     fprintf(f,
             "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%.0f\" height=\"%.0f\" viewBox=\"0 0 %.0f %.0f\""
             " font-family=\"sans-serif\" font-size=\"13\">\n",
             width, height + CAPTION_HEIGHT, width, height + CAPTION_HEIGHT);
     fprintf(f, "<rect width=\"100%%\" height=\"100%%\" fill=\"white\"/>\n");
-    draw_ball_paths(f, &v, d);
+    draw_paths(f, &v, d);
     draw_bodies(f, &v, d);
     draw_labels(f, &v, d);
     draw_legend(f, height);
