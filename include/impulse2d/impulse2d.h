@@ -119,7 +119,7 @@ I2D_API i2d_status i2d_body_apply_linear_impulse(i2d_body_id body, i2d_vec2 impu
                                                  bool wake);
 /** Changes the spin at once by impulse / inertia (N m s). */
 I2D_API i2d_status i2d_body_apply_angular_impulse(i2d_body_id body, float impulse, bool wake);
-/** False for static bodies; other bodies are awake until sleeping lands. */
+/** False for static bodies; other bodies are always awake (sleeping is not implemented yet). */
 I2D_API bool i2d_body_is_awake(i2d_body_id body);
 I2D_API void* i2d_body_get_user_data(i2d_body_id body);
 I2D_API i2d_status i2d_body_set_user_data(i2d_body_id body, void* user_data);

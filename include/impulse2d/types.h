@@ -60,8 +60,8 @@ typedef struct i2d_world_def {
     /** Sequential-impulse iterations per substep; default 10. Range [1, 1000]. More
      *  iterations let tall stacks sink less. */
     int32_t velocity_iterations;
-    /** Lets resting bodies sleep. Default true. Sleeping arrives with the solver issue;
-     *  until then every non-static body stays awake whatever this says. */
+    /** Lets resting bodies sleep. Default true. Sleeping is not implemented yet
+     *  in this version: every non-static body stays awake whatever this says. */
     bool enable_sleep;
     /** Set by i2d_default_world_def(); do not set. */
     uint32_t internal_cookie;
@@ -88,8 +88,8 @@ typedef struct i2d_body_def {
     bool fixed_rotation;
     /** Default true. See i2d_world_def.enable_sleep. */
     bool enable_sleep;
-    /** Default false. Continuous collision for fast bodies; arrives with the solver
-     *  issue and has no effect until then. */
+    /** Default false. Continuous collision for fast bodies; not implemented yet in this
+     *  version: it has no effect. */
     bool is_bullet;
     void* user_data;           /**< default NULL; returned by i2d_body_get_user_data */
     /** Set by i2d_default_body_def(); do not set. */
@@ -161,7 +161,7 @@ typedef struct i2d_body_move_event {
     i2d_transform transform;
     i2d_body_id body;
     void* user_data;
-    bool fell_asleep; /**< always false until sleeping lands */
+    bool fell_asleep; /**< always false: sleeping is not implemented yet */
 } i2d_body_move_event;
 typedef struct i2d_body_events {
     const i2d_body_move_event* move_events;
