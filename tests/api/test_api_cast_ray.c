@@ -97,7 +97,11 @@ typedef struct ref_shape {
     i2d_vec2 half;
     i2d_filter filter;
     bool alive;
-    double cx, cy; /* world centre, refreshed from the body position */
+    /* Refreshed from the body transform: the world centre, and the world direction of the
+     * box's local x axis (the body's rotation; local y is (-uy, ux)). Bodies turn, so a
+     * box is axis-aligned only in its own frame. */
+    double cx, cy;
+    double ux, uy;
 } ref_shape;
 
 typedef struct scene {
@@ -139,13 +143,18 @@ static bool scene_init(scene* s) {
     return !I2D_IS_NULL(s->world);
 }
 
-static int scene_add_body(scene* s, i2d_body_type type, i2d_vec2 position, i2d_vec2 velocity) {
+/* Uniform angle in [-pi, pi): bodies start turned so that rotated boxes are queried from
+ * the start, not only after collisions have turned them. */
+static i2d_rot random_rot(rng* r) { return i2d_make_rot(rng_float(r, -3.14159265f, 3.14159265f)); }
+
+static int scene_add_body(scene* s, i2d_body_type type, i2d_vec2 position, i2d_rot rotation, i2d_vec2 velocity) {
     if (s->body_count >= MAX_BODIES) {
         return -1;
     }
     i2d_body_def def = i2d_default_body_def();
     def.type = type;
     def.position = position;
+    def.rotation = rotation;
     def.linear_velocity = type == I2D_BODY_STATIC ? v2(0.0f, 0.0f) : velocity;
     i2d_body_id id = i2d_body_create(s->world, &def);
     if (I2D_IS_NULL(id)) {
@@ -185,6 +194,11 @@ static bool scene_add_shape(scene* s, rng* r, int body, float size) {
     return ref->alive;
 }
 
+/* Spins a body once its shapes give it inertia (static bodies ignore the spin). */
+static bool scene_spin(scene* s, int body, float w) {
+    return body >= 0 && i2d_body_set_angular_velocity(s->bodies[body], w) == I2D_OK;
+}
+
 static void scene_destroy_body(scene* s, int b) {
     if (b < 0 || !s->body_alive[b] || i2d_body_destroy(s->bodies[b]) != I2D_OK) {
         return;
@@ -211,8 +225,9 @@ static int alive_shape_count(const scene* s) {
     return n;
 }
 
-/* Reads the bodies' positions into the model and checks the library's tight bounds agree
- * with it, so that the brute force below describes the same shapes the library has. */
+/* Reads the bodies' transforms into the model and checks the library's local polygons
+ * and tight bounds agree with it, so that the brute force below describes the same
+ * shapes the library has. */
 static int scene_refresh(scene* s) {
     int bad = 0;
     for (int k = 0; k < s->shape_count; ++k) {
@@ -220,11 +235,33 @@ static int scene_refresh(scene* s) {
         if (!ref->alive) {
             continue;
         }
-        i2d_vec2 p = i2d_body_get_position(s->bodies[ref->body]);
-        ref->cx = (double)p.x + ref->local_center.x;
-        ref->cy = (double)p.y + ref->local_center.y;
-        double hx = ref->type == I2D_SHAPE_CIRCLE ? ref->radius : ref->half.x;
-        double hy = ref->type == I2D_SHAPE_CIRCLE ? ref->radius : ref->half.y;
+        i2d_transform xf = i2d_body_get_transform(s->bodies[ref->body]);
+        const double c = xf.q.c, sn = xf.q.s;
+        if (fabs(c * c + sn * sn - 1.0) > 1e-5) {
+            ++bad;
+            report("shape %d: body rotation (%g, %g) is not normalised", k, c, sn);
+        }
+        ref->ux = c;
+        ref->uy = sn;
+        ref->cx = (double)xf.p.x + c * ref->local_center.x - sn * ref->local_center.y;
+        ref->cy = (double)xf.p.y + sn * ref->local_center.x + c * ref->local_center.y;
+        double hx, hy; /* half extents of the world bounds */
+        if (ref->type == I2D_SHAPE_CIRCLE) {
+            hx = hy = ref->radius;
+        } else {
+            /* The box in its body frame: the corners (+-half.x, +-half.y). */
+            i2d_polygon poly = i2d_shape_get_polygon(ref->id);
+            bool corners = poly.count == 4 && poly.radius == 0.0f;
+            for (int i = 0; i < poly.count && i < 4; ++i) {
+                corners = corners && fabs(poly.vertices[i].x) == ref->half.x && fabs(poly.vertices[i].y) == ref->half.y;
+            }
+            if (!corners) {
+                ++bad;
+                report("shape %d: i2d_shape_get_polygon is not the box (+-%g, +-%g)", k, ref->half.x, ref->half.y);
+            }
+            hx = fabs(c) * ref->half.x + fabs(sn) * ref->half.y;
+            hy = fabs(sn) * ref->half.x + fabs(c) * ref->half.y;
+        }
         i2d_aabb b = i2d_shape_get_aabb(ref->id);
         double tol = 1e-4 + 1e-6 * (fabs(ref->cx) + fabs(ref->cy));
         if (fabs(b.min.x - (ref->cx - hx)) > tol || fabs(b.min.y - (ref->cy - hy)) > tol ||
@@ -277,9 +314,15 @@ typedef struct ray_case {
 typedef struct ray_hit {
     bool hit;
     double t;    /* fraction where the ray enters */
-    int axis;    /* boxes: the slab entered last, 0 = x, 1 = y */
+    int axis;    /* boxes: the slab entered last, in the box's frame: 0 = local x, 1 = local y */
     bool corner; /* boxes: both slabs entered at nearly the same fraction */
 } ray_hit;
+
+/* A world offset (dx, dy) from the shape's centre, in the box's frame. */
+static void to_box_frame(const ref_shape* s, double dx, double dy, double* lx, double* ly) {
+    *lx = s->ux * dx + s->uy * dy;
+    *ly = -s->uy * dx + s->ux * dy;
+}
 
 static const ray_hit k_no_hit = {false, 0.0, -1, false};
 
@@ -307,13 +350,15 @@ static ray_hit ray_circle(double cx, double cy, double r, const ray_case* ray) {
     return h;
 }
 
-/* Box: slab test; no hit from inside (closed box). */
-static ray_hit ray_box(double cx, double cy, double hx, double hy, const ray_case* ray) {
+/* Box: slab test in the box's frame (a rigid motion keeps the fraction); no hit from
+ * inside (closed box). */
+static ray_hit ray_box(const ref_shape* s, double hx, double hy, const ray_case* ray) {
     if (hx <= 0.0 || hy <= 0.0) {
         return k_no_hit;
     }
-    double o[2] = {ray->ox - cx, ray->oy - cy};
-    double d[2] = {ray->dx, ray->dy};
+    double o[2], d[2];
+    to_box_frame(s, ray->ox - s->cx, ray->oy - s->cy, &o[0], &o[1]);
+    to_box_frame(s, ray->dx, ray->dy, &d[0], &d[1]);
     double h[2] = {hx, hy};
     if (fabs(o[0]) <= h[0] && fabs(o[1]) <= h[1]) {
         return k_no_hit;
@@ -345,7 +390,7 @@ static ray_hit ray_shape(const ref_shape* s, double delta, const ray_case* ray) 
     if (s->type == I2D_SHAPE_CIRCLE) {
         return ray_circle(s->cx, s->cy, s->radius + delta, ray);
     }
-    return ray_box(s->cx, s->cy, s->half.x + delta, s->half.y + delta, ray);
+    return ray_box(s, s->half.x + delta, s->half.y + delta, ray);
 }
 
 /* Float rounding in the library can move a boundary by about 1e-5 m: shapes grown and
@@ -401,8 +446,10 @@ static int check_ray_surface(const ref_shape* ref, const ray_case* ray, i2d_vec2
     if (ref->type == I2D_SHAPE_CIRCLE) {
         on_surface = fabs(sqrt(dx * dx + dy * dy) - ref->radius) <= tol;
     } else {
-        bool inside = fabs(dx) <= ref->half.x + tol && fabs(dy) <= ref->half.y + tol;
-        on_surface = inside && (fabs(fabs(dx) - ref->half.x) <= tol || fabs(fabs(dy) - ref->half.y) <= tol);
+        double lx, ly;
+        to_box_frame(ref, dx, dy, &lx, &ly);
+        bool inside = fabs(lx) <= ref->half.x + tol && fabs(ly) <= ref->half.y + tol;
+        on_surface = inside && (fabs(fabs(lx) - ref->half.x) <= tol || fabs(fabs(ly) - ref->half.y) <= tol);
     }
     if (!on_surface) {
         ++bad;
@@ -420,11 +467,14 @@ static int check_ray_surface(const ref_shape* ref, const ray_case* ray, i2d_vec2
         double ey = (ray->oy + exact.t * ray->dy - ref->cy) / ref->radius;
         normal_ok = fabs(normal.x - ex) <= 1e-3 && fabs(normal.y - ey) <= 1e-3;
     } else {
-        /* The face of the slab entered last, facing the ray; either face at a corner. */
-        double nx = ray->dx > 0.0 ? -1.0 : 1.0, ny = ray->dy > 0.0 ? -1.0 : 1.0;
-        bool is_x = fabs(normal.x - nx) <= 1e-4 && fabs(normal.y) <= 1e-4;
-        bool is_y = fabs(normal.y - ny) <= 1e-4 && fabs(normal.x) <= 1e-4;
-        normal_ok = exact.corner ? (is_x || is_y) : (exact.axis == 0 ? is_x : is_y);
+        /* The face of the slab entered last, facing the ray; either face at a corner. The
+         * faces' normals are the box's local axes u = (ux, uy) and v = (-uy, ux). */
+        double du, dv;
+        to_box_frame(ref, ray->dx, ray->dy, &du, &dv);
+        double su = du > 0.0 ? -1.0 : 1.0, sv = dv > 0.0 ? -1.0 : 1.0;
+        bool is_u = fabs(normal.x - su * ref->ux) <= 1e-4 && fabs(normal.y - su * ref->uy) <= 1e-4;
+        bool is_v = fabs(normal.x + sv * ref->uy) <= 1e-4 && fabs(normal.y - sv * ref->ux) <= 1e-4;
+        normal_ok = exact.corner ? (is_u || is_v) : (exact.axis == 0 ? is_u : is_v);
     }
     if (!normal_ok) {
         ++bad;
@@ -562,8 +612,8 @@ static i2d_status cast(const scene* s, const ray_case* ray, i2d_query_filter qf,
 
 /* ---- Callback semantics on random scenes ------------------------------------------------ */
 
-/* Static, kinematic and dynamic bodies with one to three shapes in [-40, 40]^2, some
- * destroyed, a few steps without gravity. */
+/* Static, kinematic and dynamic bodies with one to three shapes in [-40, 40]^2, turned at
+ * random (moving ones also spin), some destroyed, a few steps without gravity. */
 static bool build_random_scene(scene* s, uint64_t seed, int bodies) {
     if (!scene_init(s)) {
         return false;
@@ -573,12 +623,16 @@ static bool build_random_scene(scene* s, uint64_t seed, int bodies) {
     for (int i = 0; i < bodies; ++i) {
         i2d_vec2 p = v2(rng_float(&r, -40.0f, 40.0f), rng_float(&r, -40.0f, 40.0f));
         i2d_vec2 v = v2(rng_float(&r, -3.0f, 3.0f), rng_float(&r, -3.0f, 3.0f));
-        int b = scene_add_body(s, types[rng_int(&r, 3)], p, v);
+        i2d_rot q = random_rot(&r);
+        int b = scene_add_body(s, types[rng_int(&r, 3)], p, q, v);
         int shapes = 1 + rng_int(&r, 3);
         for (int k = 0; k < shapes; ++k) {
             if (!scene_add_shape(s, &r, b, 4.0f)) {
                 return false;
             }
+        }
+        if (!scene_spin(s, b, rng_float(&r, -2.0f, 2.0f))) {
+            return false;
         }
     }
     for (int n = 0; n < 15; ++n) {
@@ -1110,14 +1164,30 @@ static bool circle_overlaps_aabb(double cx, double cy, double r, const i2d_aabb*
     return r >= 0.0 && dx * dx + dy * dy <= r * r;
 }
 
+/* A turned box (centre c, local axes u = (ux, uy) and v = (-uy, ux), half extents hx, hy)
+ * against an AABB: the separating axis test on the four edge normals, the AABB's x and y
+ * and the box's u and v. Exact for two rectangles. */
+static bool box_overlaps_aabb(const ref_shape* s, double hx, double hy, const i2d_aabb* q) {
+    const double ux = s->ux, uy = s->uy;
+    const double qx = 0.5 * ((double)q->min.x + q->max.x), qy = 0.5 * ((double)q->min.y + q->max.y);
+    const double qhx = 0.5 * ((double)q->max.x - q->min.x), qhy = 0.5 * ((double)q->max.y - q->min.y);
+    const double dx = qx - s->cx, dy = qy - s->cy;
+    /* The box projected on x and y. */
+    if (fabs(dx) > fabs(ux) * hx + fabs(uy) * hy + qhx || fabs(dy) > fabs(uy) * hx + fabs(ux) * hy + qhy) {
+        return false;
+    }
+    /* The AABB projected on u and v. */
+    const double du = ux * dx + uy * dy, dv = -uy * dx + ux * dy;
+    return fabs(du) <= hx + fabs(ux) * qhx + fabs(uy) * qhy && fabs(dv) <= hy + fabs(uy) * qhx + fabs(ux) * qhy;
+}
+
 static bool shape_overlaps_aabb(const ref_shape* s, double delta, const void* query) {
     const i2d_aabb* q = (const i2d_aabb*)query;
     if (s->type == I2D_SHAPE_CIRCLE) {
         return circle_overlaps_aabb(s->cx, s->cy, s->radius + delta, q);
     }
     double hx = s->half.x + delta, hy = s->half.y + delta;
-    return hx >= 0.0 && hy >= 0.0 && s->cx - hx <= q->max.x && s->cx + hx >= q->min.x && s->cy - hy <= q->max.y &&
-           s->cy + hy >= q->min.y;
+    return hx >= 0.0 && hy >= 0.0 && box_overlaps_aabb(s, hx, hy, q);
 }
 
 static bool shape_contains_point(const ref_shape* s, double delta, const void* query) {
@@ -1127,8 +1197,9 @@ static bool shape_contains_point(const ref_shape* s, double delta, const void* q
         double r = s->radius + delta;
         return r >= 0.0 && dx * dx + dy * dy <= r * r;
     }
-    double hx = s->half.x + delta, hy = s->half.y + delta;
-    return hx >= 0.0 && hy >= 0.0 && fabs(dx) <= hx && fabs(dy) <= hy;
+    double hx = s->half.x + delta, hy = s->half.y + delta, lx, ly;
+    to_box_frame(s, dx, dy, &lx, &ly);
+    return hx >= 0.0 && hy >= 0.0 && fabs(lx) <= hx && fabs(ly) <= hy;
 }
 
 enum { CLEARLY_OUT, CLEARLY_IN, ON_EDGE };
@@ -1290,8 +1361,8 @@ static int run_exact_queries(scene* s, rng* r, int queries, query_stats* stats) 
     return bad;
 }
 
-/* Bodies move far (up to 15 m/s for 6 s), are teleported farther, destroyed and
- * created; after each second the queries still agree with brute force. */
+/* Bodies move far (up to 15 m/s for 6 s) and spin, are teleported farther to new angles,
+ * destroyed and created; after each second the queries still agree with brute force. */
 static void run_moving_queries(scene* s, uint64_t seed) {
     rng r = {seed};
     g_reports_left = 25;
@@ -1300,12 +1371,14 @@ static void run_moving_queries(scene* s, uint64_t seed) {
     for (int i = 0; i < 300; ++i) {
         i2d_body_type type = types[rng_int(&r, 5)];
         float speed = type == I2D_BODY_KINEMATIC ? 15.0f : 8.0f;
-        int b = scene_add_body(s, type, v2(rng_float(&r, -50.0f, 50.0f), rng_float(&r, -50.0f, 50.0f)),
-                               v2(rng_float(&r, -speed, speed), rng_float(&r, -speed, speed)));
+        i2d_vec2 p = v2(rng_float(&r, -50.0f, 50.0f), rng_float(&r, -50.0f, 50.0f));
+        i2d_rot q = random_rot(&r);
+        int b = scene_add_body(s, type, p, q, v2(rng_float(&r, -speed, speed), rng_float(&r, -speed, speed)));
         int shapes = 1 + rng_int(&r, 2);
         for (int k = 0; k < shapes; ++k) {
             I2D_REQUIRE(scene_add_shape(s, &r, b, 2.0f));
         }
+        I2D_REQUIRE(scene_spin(s, b, rng_float(&r, -3.0f, 3.0f)));
     }
     query_stats stats;
     memset(&stats, 0, sizeof stats);
@@ -1326,13 +1399,14 @@ static void run_moving_queries(scene* s, uint64_t seed) {
             int b = rng_int(&r, s->body_count);
             if (s->body_alive[b]) {
                 i2d_vec2 to = v2(rng_float(&r, -200.0f, 200.0f), rng_float(&r, -200.0f, 200.0f));
-                I2D_CHECK_STATUS(i2d_body_set_transform(s->bodies[b], to, identity_rot()), I2D_OK);
+                I2D_CHECK_STATUS(i2d_body_set_transform(s->bodies[b], to, random_rot(&r)), I2D_OK);
             }
         }
         for (int n = 0; n < 12; ++n) {
             i2d_body_type type = types[rng_int(&r, 5)];
-            int b = scene_add_body(s, type, v2(rng_float(&r, -100.0f, 100.0f), rng_float(&r, -100.0f, 100.0f)),
-                                   v2(rng_float(&r, -8.0f, 8.0f), rng_float(&r, -8.0f, 8.0f)));
+            i2d_vec2 p = v2(rng_float(&r, -100.0f, 100.0f), rng_float(&r, -100.0f, 100.0f));
+            i2d_rot q = random_rot(&r);
+            int b = scene_add_body(s, type, p, q, v2(rng_float(&r, -8.0f, 8.0f), rng_float(&r, -8.0f, 8.0f)));
             I2D_REQUIRE(scene_add_shape(s, &r, b, 2.0f));
         }
         /* Queries right after the changes, before any step: the trees must already know. */
@@ -1443,15 +1517,15 @@ static int compare_answers(const query_answers* x, const query_answers* y, const
 static void run_rebuild(scene* s, uint64_t seed) {
     rng r = {seed};
     g_reports_left = 25;
-    /* A large static level, some dynamic bodies at rest among it. */
+    /* A large static level, turned pieces, some dynamic bodies at rest among it. */
     for (int i = 0; i < 900; ++i) {
-        int b = scene_add_body(s, I2D_BODY_STATIC, v2(rng_float(&r, -60.0f, 60.0f), rng_float(&r, -60.0f, 60.0f)),
-                               v2(0.0f, 0.0f));
+        i2d_vec2 p = v2(rng_float(&r, -60.0f, 60.0f), rng_float(&r, -60.0f, 60.0f));
+        int b = scene_add_body(s, I2D_BODY_STATIC, p, random_rot(&r), v2(0.0f, 0.0f));
         I2D_REQUIRE(scene_add_shape(s, &r, b, 2.5f));
     }
     for (int i = 0; i < 100; ++i) {
-        int b = scene_add_body(s, I2D_BODY_DYNAMIC, v2(rng_float(&r, -60.0f, 60.0f), rng_float(&r, -60.0f, 60.0f)),
-                               v2(0.0f, 0.0f));
+        i2d_vec2 p = v2(rng_float(&r, -60.0f, 60.0f), rng_float(&r, -60.0f, 60.0f));
+        int b = scene_add_body(s, I2D_BODY_DYNAMIC, p, random_rot(&r), v2(0.0f, 0.0f));
         I2D_REQUIRE(scene_add_shape(s, &r, b, 1.0f));
     }
     static query_answers before, after;
@@ -1467,8 +1541,8 @@ static void run_rebuild(scene* s, uint64_t seed) {
 
     /* The rebuilt tree keeps working as the level changes: add and remove statics. */
     for (int i = 0; i < 100; ++i) {
-        int b = scene_add_body(s, I2D_BODY_STATIC, v2(rng_float(&r, -60.0f, 60.0f), rng_float(&r, -60.0f, 60.0f)),
-                               v2(0.0f, 0.0f));
+        i2d_vec2 p = v2(rng_float(&r, -60.0f, 60.0f), rng_float(&r, -60.0f, 60.0f));
+        int b = scene_add_body(s, I2D_BODY_STATIC, p, random_rot(&r), v2(0.0f, 0.0f));
         I2D_REQUIRE(scene_add_shape(s, &r, b, 2.5f));
     }
     for (int i = 0; i < 80; ++i) {

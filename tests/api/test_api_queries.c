@@ -109,7 +109,11 @@ typedef struct ref_shape {
     i2d_vec2 half;
     i2d_filter filter;
     bool alive;
-    double cx, cy; /* world centre, refreshed from the body position */
+    /* Refreshed from the body transform: the world centre, and the world direction of the
+     * box's local x axis (the body's rotation; local y is (-uy, ux)). Bodies turn, so a
+     * box is axis-aligned only in its own frame. */
+    double cx, cy;
+    double ux, uy;
 } ref_shape;
 
 typedef struct scene {
@@ -171,9 +175,13 @@ static void add_random_shape(scene* s, rng* r, int body) {
     ++s->shape_count;
 }
 
-/* A few hundred shapes on static, kinematic and dynamic bodies in [-40, 40]^2, then the
- * kinds of change the broadphase must follow: destroyed shapes and bodies, new filters,
- * teleports. */
+/* Uniform angle in [-pi, pi): bodies start turned so that rotated boxes are queried from
+ * the start, not only after collisions have turned them. */
+static i2d_rot random_rot(rng* r) { return i2d_make_rot(rng_float(r, -3.14159265f, 3.14159265f)); }
+
+/* A few hundred shapes on static, kinematic and dynamic bodies in [-40, 40]^2, turned at
+ * random (moving ones also spin), then the kinds of change the broadphase must follow:
+ * destroyed shapes and bodies, new filters, teleports to new positions and angles. */
 static bool scene_build(scene* s, uint64_t seed) {
     memset(s, 0, sizeof *s);
     rng r = {seed};
@@ -189,6 +197,7 @@ static bool scene_build(scene* s, uint64_t seed) {
         i2d_body_def def = i2d_default_body_def();
         def.type = types[rng_int(&r, 3)];
         def.position = v2(rng_float(&r, -40.0f, 40.0f), rng_float(&r, -40.0f, 40.0f));
+        def.rotation = random_rot(&r);
         if (def.type != I2D_BODY_STATIC) {
             def.linear_velocity = v2(rng_float(&r, -3.0f, 3.0f), rng_float(&r, -3.0f, 3.0f));
         }
@@ -200,6 +209,10 @@ static bool scene_build(scene* s, uint64_t seed) {
         int shapes = 1 + rng_int(&r, 3);
         for (int k = 0; k < shapes; ++k) {
             add_random_shape(s, &r, b);
+        }
+        /* A spin set once the shapes give the body its inertia (static bodies ignore it). */
+        if (i2d_body_set_angular_velocity(s->bodies[b], rng_float(&r, -2.0f, 2.0f)) != I2D_OK) {
+            return false;
         }
     }
     for (int k = 0; k < s->shape_count; ++k) {
@@ -232,12 +245,12 @@ static bool scene_build(scene* s, uint64_t seed) {
             ref->filter = f;
         }
     }
-    i2d_rot identity = {1.0f, 0.0f};
     for (int n = 0; n < 15; ++n) { /* teleports */
         int b = rng_int(&r, s->body_count);
         i2d_vec2 p = v2(rng_float(&r, -40.0f, 40.0f), rng_float(&r, -40.0f, 40.0f));
-        if (s->body_alive[b]) {
-            i2d_body_set_transform(s->bodies[b], p, identity);
+        i2d_rot q = random_rot(&r);
+        if (s->body_alive[b] && i2d_body_set_transform(s->bodies[b], p, q) != I2D_OK) {
+            return false;
         }
     }
     return true;
@@ -251,8 +264,9 @@ static int alive_shape_count(const scene* s) {
     return n;
 }
 
-/* Reads the bodies' positions into the model and checks the library's tight bounds agree
- * with it, so that the brute force below describes the same shapes the library has. */
+/* Reads the bodies' transforms into the model and checks the library's local polygons
+ * and tight bounds agree with it, so that the brute force below describes the same
+ * shapes the library has. */
 static int scene_refresh(scene* s) {
     int bad = 0;
     for (int k = 0; k < s->shape_count; ++k) {
@@ -260,11 +274,33 @@ static int scene_refresh(scene* s) {
         if (!ref->alive) {
             continue;
         }
-        i2d_vec2 p = i2d_body_get_position(s->bodies[ref->body]);
-        ref->cx = (double)p.x + ref->local_center.x;
-        ref->cy = (double)p.y + ref->local_center.y;
-        double hx = ref->type == I2D_SHAPE_CIRCLE ? ref->radius : ref->half.x;
-        double hy = ref->type == I2D_SHAPE_CIRCLE ? ref->radius : ref->half.y;
+        i2d_transform xf = i2d_body_get_transform(s->bodies[ref->body]);
+        const double c = xf.q.c, sn = xf.q.s;
+        if (fabs(c * c + sn * sn - 1.0) > 1e-5) {
+            ++bad;
+            report("shape %d: body rotation (%g, %g) is not normalised", k, c, sn);
+        }
+        ref->ux = c;
+        ref->uy = sn;
+        ref->cx = (double)xf.p.x + c * ref->local_center.x - sn * ref->local_center.y;
+        ref->cy = (double)xf.p.y + sn * ref->local_center.x + c * ref->local_center.y;
+        double hx, hy; /* half extents of the world bounds */
+        if (ref->type == I2D_SHAPE_CIRCLE) {
+            hx = hy = ref->radius;
+        } else {
+            /* The box in its body frame: the corners (+-half.x, +-half.y). */
+            i2d_polygon poly = i2d_shape_get_polygon(ref->id);
+            bool corners = poly.count == 4 && poly.radius == 0.0f;
+            for (int i = 0; i < poly.count && i < 4; ++i) {
+                corners = corners && fabs(poly.vertices[i].x) == ref->half.x && fabs(poly.vertices[i].y) == ref->half.y;
+            }
+            if (!corners) {
+                ++bad;
+                report("shape %d: i2d_shape_get_polygon is not the box (+-%g, +-%g)", k, ref->half.x, ref->half.y);
+            }
+            hx = fabs(c) * ref->half.x + fabs(sn) * ref->half.y;
+            hy = fabs(sn) * ref->half.x + fabs(c) * ref->half.y;
+        }
         i2d_aabb b = i2d_shape_get_aabb(ref->id);
         if (fabs(b.min.x - (ref->cx - hx)) > 1e-4 || fabs(b.min.y - (ref->cy - hy)) > 1e-4 ||
             fabs(b.max.x - (ref->cx + hx)) > 1e-4 || fabs(b.max.y - (ref->cy + hy)) > 1e-4) {
@@ -300,14 +336,36 @@ static bool circle_overlaps_aabb(double cx, double cy, double r, const i2d_aabb*
     return r >= 0.0 && dx * dx + dy * dy <= r * r;
 }
 
+/* A turned box (centre c, local axes u = (ux, uy) and v = (-uy, ux), half extents hx, hy)
+ * against an AABB: the separating axis test on the four edge normals, the AABB's x and y
+ * and the box's u and v. Exact for two rectangles. */
+static bool box_overlaps_aabb(const ref_shape* s, double hx, double hy, const i2d_aabb* q) {
+    const double ux = s->ux, uy = s->uy;
+    const double qx = 0.5 * ((double)q->min.x + q->max.x), qy = 0.5 * ((double)q->min.y + q->max.y);
+    const double qhx = 0.5 * ((double)q->max.x - q->min.x), qhy = 0.5 * ((double)q->max.y - q->min.y);
+    const double dx = qx - s->cx, dy = qy - s->cy;
+    /* The box projected on x and y. */
+    if (fabs(dx) > fabs(ux) * hx + fabs(uy) * hy + qhx || fabs(dy) > fabs(uy) * hx + fabs(ux) * hy + qhy) {
+        return false;
+    }
+    /* The AABB projected on u and v. */
+    const double du = ux * dx + uy * dy, dv = -uy * dx + ux * dy;
+    return fabs(du) <= hx + fabs(ux) * qhx + fabs(uy) * qhy && fabs(dv) <= hy + fabs(uy) * qhx + fabs(ux) * qhy;
+}
+
 static bool shape_overlaps_aabb(const ref_shape* s, double delta, const void* query) {
     const i2d_aabb* q = (const i2d_aabb*)query;
     if (s->type == I2D_SHAPE_CIRCLE) {
         return circle_overlaps_aabb(s->cx, s->cy, s->radius + delta, q);
     }
     double hx = s->half.x + delta, hy = s->half.y + delta;
-    return hx >= 0.0 && hy >= 0.0 && s->cx - hx <= q->max.x && s->cx + hx >= q->min.x && s->cy - hy <= q->max.y &&
-           s->cy + hy >= q->min.y;
+    return hx >= 0.0 && hy >= 0.0 && box_overlaps_aabb(s, hx, hy, q);
+}
+
+/* A world offset (dx, dy) from the shape's centre, in the box's frame. */
+static void to_box_frame(const ref_shape* s, double dx, double dy, double* lx, double* ly) {
+    *lx = s->ux * dx + s->uy * dy;
+    *ly = -s->uy * dx + s->ux * dy;
 }
 
 static bool shape_contains_point(const ref_shape* s, double delta, const void* query) {
@@ -317,8 +375,9 @@ static bool shape_contains_point(const ref_shape* s, double delta, const void* q
         double r = s->radius + delta;
         return r >= 0.0 && dx * dx + dy * dy <= r * r;
     }
-    double hx = s->half.x + delta, hy = s->half.y + delta;
-    return hx >= 0.0 && hy >= 0.0 && fabs(dx) <= hx && fabs(dy) <= hy;
+    double hx = s->half.x + delta, hy = s->half.y + delta, lx, ly;
+    to_box_frame(s, dx, dy, &lx, &ly);
+    return hx >= 0.0 && hy >= 0.0 && fabs(lx) <= hx && fabs(ly) <= hy;
 }
 
 enum { CLEARLY_OUT, CLEARLY_IN, ON_EDGE };
@@ -467,7 +526,7 @@ typedef struct ray_case {
 typedef struct ray_hit {
     bool hit;
     double t;    /* fraction where the ray enters */
-    int axis;    /* boxes: the slab entered last, 0 = x, 1 = y */
+    int axis;    /* boxes: the slab entered last, in the box's frame: 0 = local x, 1 = local y */
     bool corner; /* boxes: both slabs entered at nearly the same fraction */
 } ray_hit;
 
@@ -497,13 +556,15 @@ static ray_hit ray_circle(double cx, double cy, double r, const ray_case* ray) {
     return h;
 }
 
-/* Box: slab test; no hit from inside (closed box). */
-static ray_hit ray_box(double cx, double cy, double hx, double hy, const ray_case* ray) {
+/* Box: slab test in the box's frame (a rigid motion keeps the fraction); no hit from
+ * inside (closed box). */
+static ray_hit ray_box(const ref_shape* s, double hx, double hy, const ray_case* ray) {
     if (hx <= 0.0 || hy <= 0.0) {
         return k_no_hit;
     }
-    double o[2] = {ray->ox - cx, ray->oy - cy};
-    double d[2] = {ray->dx, ray->dy};
+    double o[2], d[2];
+    to_box_frame(s, ray->ox - s->cx, ray->oy - s->cy, &o[0], &o[1]);
+    to_box_frame(s, ray->dx, ray->dy, &d[0], &d[1]);
     double h[2] = {hx, hy};
     if (fabs(o[0]) <= h[0] && fabs(o[1]) <= h[1]) {
         return k_no_hit;
@@ -535,7 +596,7 @@ static ray_hit ray_shape(const ref_shape* s, double delta, const ray_case* ray) 
     if (s->type == I2D_SHAPE_CIRCLE) {
         return ray_circle(s->cx, s->cy, s->radius + delta, ray);
     }
-    return ray_box(s->cx, s->cy, s->half.x + delta, s->half.y + delta, ray);
+    return ray_box(s, s->half.x + delta, s->half.y + delta, ray);
 }
 
 /* The fraction a library working in float may be off by, and the spread between the
@@ -559,8 +620,10 @@ static int check_ray_surface(const ref_shape* ref, const ray_case* ray, const i2
     if (ref->type == I2D_SHAPE_CIRCLE) {
         on_surface = fabs(sqrt(dx * dx + dy * dy) - ref->radius) <= tol;
     } else {
-        bool inside = fabs(dx) <= ref->half.x + tol && fabs(dy) <= ref->half.y + tol;
-        on_surface = inside && (fabs(fabs(dx) - ref->half.x) <= tol || fabs(fabs(dy) - ref->half.y) <= tol);
+        double lx, ly;
+        to_box_frame(ref, dx, dy, &lx, &ly);
+        bool inside = fabs(lx) <= ref->half.x + tol && fabs(ly) <= ref->half.y + tol;
+        on_surface = inside && (fabs(fabs(lx) - ref->half.x) <= tol || fabs(fabs(ly) - ref->half.y) <= tol);
     }
     if (!on_surface) {
         ++bad;
@@ -579,11 +642,14 @@ static int check_ray_surface(const ref_shape* ref, const ray_case* ray, const i2
         double ey = (ray->oy + exact.t * ray->dy - ref->cy) / ref->radius;
         normal_ok = fabs(r->normal.x - ex) <= 1e-3 && fabs(r->normal.y - ey) <= 1e-3;
     } else {
-        /* The face of the slab entered last, facing the ray; either face at a corner. */
-        double nx = ray->dx > 0.0 ? -1.0 : 1.0, ny = ray->dy > 0.0 ? -1.0 : 1.0;
-        bool is_x = fabs(r->normal.x - nx) <= 1e-4 && fabs(r->normal.y) <= 1e-4;
-        bool is_y = fabs(r->normal.y - ny) <= 1e-4 && fabs(r->normal.x) <= 1e-4;
-        normal_ok = exact.corner ? (is_x || is_y) : (exact.axis == 0 ? is_x : is_y);
+        /* The face of the slab entered last, facing the ray; either face at a corner. The
+         * faces' normals are the box's local axes u = (ux, uy) and v = (-uy, ux). */
+        double du, dv;
+        to_box_frame(ref, ray->dx, ray->dy, &du, &dv);
+        double su = du > 0.0 ? -1.0 : 1.0, sv = dv > 0.0 ? -1.0 : 1.0;
+        bool is_u = fabs(r->normal.x - su * ref->ux) <= 1e-4 && fabs(r->normal.y - su * ref->uy) <= 1e-4;
+        bool is_v = fabs(r->normal.x + sv * ref->uy) <= 1e-4 && fabs(r->normal.y - sv * ref->ux) <= 1e-4;
+        normal_ok = exact.corner ? (is_u || is_v) : (exact.axis == 0 ? is_u : is_v);
     }
     if (!normal_ok) {
         ++bad;
@@ -893,6 +959,67 @@ I2D_TEST(api_queries_ray_cases) {
     if (!I2D_IS_NULL(w.world)) {
         i2d_world_destroy(w.world);
     }
+}
+
+/* A static square of half extents (1, 1) turned by 45 degrees at the origin: the diamond
+ * |x| + |y| <= sqrt(2). Points, boxes and rays that would give the opposite answer for
+ * the unturned square or for the diamond's bounding box. */
+static void run_turned_square(i2d_world_id world) {
+    const double root2 = 1.41421356237309505;
+    i2d_body_def def = i2d_default_body_def();
+    def.rotation = i2d_make_rot(0.785398163f);
+    i2d_body_id body = i2d_body_create(world, &def);
+    i2d_shape_def shape_def = i2d_default_shape_def();
+    i2d_shape_id square = i2d_shape_create_box(body, &shape_def, 1.0f, 1.0f);
+    I2D_REQUIRE(!I2D_IS_NULL(square));
+    const i2d_query_filter all = i2d_default_query_filter();
+
+    i2d_aabb bounds = i2d_shape_get_aabb(square);
+    I2D_CHECK_NEAR(bounds.min.x, -root2, 1e-5);
+    I2D_CHECK_NEAR(bounds.min.y, -root2, 1e-5);
+    I2D_CHECK_NEAR(bounds.max.x, root2, 1e-5);
+    I2D_CHECK_NEAR(bounds.max.y, root2, 1e-5);
+
+    static id_list list;
+    I2D_CHECK(query_point(world, v2(0.0f, 1.40f), all, &list) == 1); /* near the top corner, inside */
+    I2D_CHECK(query_point(world, v2(1.40f, 0.0f), all, &list) == 1);
+    I2D_CHECK(query_point(world, v2(0.0f, 1.43f), all, &list) == 0); /* just above the corner */
+    I2D_CHECK(query_point(world, v2(0.9f, 0.9f), all, &list) == 0);  /* inside the unturned square */
+    I2D_CHECK(query_point(world, v2(0.7f, 0.7f), all, &list) == 1);  /* 1.4 < sqrt(2) */
+
+    i2d_shape_id ids[8];
+    /* Inside the diamond's bounds, beyond its edge x + y = sqrt(2). */
+    I2D_CHECK(query_ids(world, box(0.8f, 0.8f, 1.0f, 1.0f), all, ids) == 0);
+    I2D_CHECK(query_ids(world, box(0.6f, 0.6f, 1.0f, 1.0f), all, ids) == 1);
+    /* A thin box across the top corner, and one just above it. */
+    I2D_CHECK(query_ids(world, box(-0.5f, 1.40f, 0.5f, 1.41f), all, ids) == 1);
+    I2D_CHECK(query_ids(world, box(-0.5f, 1.42f, 0.5f, 1.50f), all, ids) == 0);
+
+    /* From (-5, 0.5) to the right: enters the upper left edge x - y = -sqrt(2) at
+     * x = 0.5 - sqrt(2), whose outward normal is (-1, 1) / sqrt(2). */
+    i2d_ray_result r = i2d_world_cast_ray_closest(world, v2(-5.0f, 0.5f), v2(10.0f, 0.0f), all);
+    I2D_CHECK(r.hit && I2D_ID_EQUALS(r.shape, square));
+    I2D_CHECK_NEAR(r.fraction, (5.0 + 0.5 - root2) / 10.0, 1e-6);
+    I2D_CHECK_NEAR(r.point.x, 0.5 - root2, 1e-5);
+    I2D_CHECK_NEAR(r.point.y, 0.5, 1e-5);
+    I2D_CHECK_NEAR(r.normal.x, -1.0 / root2, 1e-5);
+    I2D_CHECK_NEAR(r.normal.y, 1.0 / root2, 1e-5);
+    /* Above the diamond, where the unturned square would be hit: y = 1.2 enters at
+     * x = 1.2 - sqrt(2) instead of -1. */
+    r = i2d_world_cast_ray_closest(world, v2(-5.0f, 1.2f), v2(10.0f, 0.0f), all);
+    I2D_CHECK(r.hit);
+    I2D_CHECK_NEAR(r.point.x, 1.2 - root2, 1e-5);
+    /* Past the top corner: nothing. */
+    r = i2d_world_cast_ray_closest(world, v2(-5.0f, 1.45f), v2(10.0f, 0.0f), all);
+    I2D_CHECK(!r.hit);
+}
+
+I2D_TEST(api_queries_turned_square) {
+    i2d_world_def def = i2d_default_world_def();
+    i2d_world_id world = i2d_world_create(&def);
+    I2D_REQUIRE(!I2D_IS_NULL(world));
+    run_turned_square(world);
+    i2d_world_destroy(world);
 }
 
 /* The filter rule on three concentric circles with radii 1, 2, 3:

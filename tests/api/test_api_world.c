@@ -86,6 +86,25 @@ typedef struct id_list {
     i2d_shape_id ids[16];
 } id_list;
 
+typedef struct ray_hits {
+    int count;
+    float fractions[4];
+    i2d_shape_id shapes[4];
+} ray_hits;
+
+/* Records each hit and lets the ray go on unclipped. */
+static float collect_hit(i2d_shape_id shape, i2d_vec2 point, i2d_vec2 normal, float fraction, void* context) {
+    ray_hits* hits = (ray_hits*)context;
+    (void)point;
+    (void)normal;
+    if (hits->count < 4) {
+        hits->shapes[hits->count] = shape;
+        hits->fractions[hits->count] = fraction;
+    }
+    ++hits->count;
+    return 1.0f;
+}
+
 static bool collect_id(i2d_shape_id shape, void* context) {
     id_list* list = (id_list*)context;
     if (list->count < 16) {
@@ -284,6 +303,21 @@ static void cover_mass(const tour* t) {
     I2D_CHECK_NEAR(com.x, 2.0 + circle_mass * 1.0 / mass, 1e-5);
     I2D_CHECK_NEAR(com.y, 3.0, 1e-5);
 
+    /* Rotational inertia about the centre of mass: each shape's own (m r^2 / 2 for the
+     * circle, m (w^2 + h^2) / 12 for the box) moved by the parallel axis theorem. */
+    const double com_x = circle_mass * 1.0 / mass;
+    const double inertia = circle_mass * k_circle_radius * k_circle_radius / 2.0 +
+                           circle_mass * (1.0 - com_x) * (1.0 - com_x) +
+                           box_mass * (4.0 * k_box_hw * k_box_hw + 4.0 * k_box_hh * k_box_hh) / 12.0 +
+                           box_mass * com_x * com_x;
+    I2D_CHECK_NEAR(i2d_body_get_rotational_inertia(t->compound), inertia, 1e-5 * inertia);
+    i2d_vec2 local_com = i2d_body_get_local_center_of_mass(t->compound);
+    I2D_CHECK_NEAR(local_com.x, com_x, 1e-6);
+    I2D_CHECK_NEAR(local_com.y, 0.0, 1e-6);
+    /* Static and kinematic bodies never turn. */
+    I2D_CHECK(i2d_body_get_rotational_inertia(t->ground) == 0.0f);
+    I2D_CHECK(i2d_body_get_rotational_inertia(t->mover) == 0.0f);
+
     /* No shapes: 1 kg at the body origin. Static and kinematic: 0. */
     I2D_CHECK(i2d_body_get_mass(t->empty) == 1.0f);
     i2d_vec2 empty_com = i2d_body_get_world_center_of_mass(t->empty);
@@ -379,27 +413,66 @@ static void cover_queries(const tour* t) {
     I2D_CHECK_NEAR(r.point.y, 3.0, 1e-5);
     I2D_CHECK_NEAR(r.normal.x, 1.0, 1e-6);
     I2D_CHECK_NEAR(r.normal.y, 0.0, 1e-6);
+
+    /* The same ray through a callback that lets it go on: the circle at 0.45, then the
+     * box at x = 4.5, fraction 0.55. */
+    ray_hits hits = {0, {0.0f, 0.0f, 0.0f, 0.0f}, {{0}, {0}, {0}, {0}}};
+    I2D_CHECK_STATUS(i2d_world_cast_ray(t->world, v2(10.0f, 3.0f), v2(-10.0f, 0.0f), all, collect_hit, &hits), I2D_OK);
+    I2D_CHECK(hits.count == 2);
+    for (int i = 0; i < hits.count && i < 4; ++i) {
+        bool is_circle = I2D_ID_EQUALS(hits.shapes[i], t->circle);
+        I2D_CHECK(is_circle || I2D_ID_EQUALS(hits.shapes[i], t->box));
+        I2D_CHECK_NEAR(hits.fractions[i], is_circle ? 0.45 : 0.55, 1e-6);
+    }
+
+    /* Rebuilding the static tree changes no answer. */
+    I2D_CHECK_STATUS(i2d_world_rebuild_static_tree(t->world), I2D_OK);
+    found.count = 0;
+    I2D_CHECK_STATUS(i2d_world_overlap_point(t->world, v2(3.0f, -1.0f), all, collect_id, &found), I2D_OK);
+    I2D_CHECK(found.count == 1 && I2D_ID_EQUALS(found.ids[0], t->ground_box));
 }
 
-/* Velocities, impulses, forces and gravity, checked after one step against closed form. */
+/* Velocities, impulses, forces and gravity, checked after one step against closed form.
+ * Impulses and forces act at the centre of mass here, so the compound does not turn
+ * (off-centre ones are covered by cover_turning). */
 static void cover_motion(const tour* t) {
     const float dt = 1.0f / 60.0f;
     I2D_CHECK_STATUS(i2d_world_set_gravity(t->world, v2(0.0f, 0.0f)), I2D_OK);
     const float mass = i2d_body_get_mass(t->compound);
+    const i2d_vec2 com = i2d_body_get_world_center_of_mass(t->compound);
 
     I2D_CHECK_STATUS(i2d_body_set_linear_velocity(t->compound, v2(1.0f, 2.0f)), I2D_OK);
     /* An impulse changes the velocity at once by impulse / mass. */
-    I2D_CHECK_STATUS(i2d_body_apply_linear_impulse(t->compound, v2(mass, 0.0f), v2(4.0f, 3.0f), true), I2D_OK);
+    I2D_CHECK_STATUS(i2d_body_apply_linear_impulse(t->compound, v2(mass, 0.0f), com, true), I2D_OK);
     i2d_vec2 v = i2d_body_get_linear_velocity(t->compound);
     I2D_CHECK_NEAR(v.x, 2.0, 1e-5);
     I2D_CHECK_NEAR(v.y, 2.0, 1e-5);
+    I2D_CHECK(i2d_body_get_angular_velocity(t->compound) == 0.0f);
     /* A force acts during the next step: dv = F / m * dt. */
-    I2D_CHECK_STATUS(i2d_body_apply_force(t->compound, v2(0.0f, 6.0f * mass), v2(4.0f, 3.0f), true), I2D_OK);
+    I2D_CHECK_STATUS(i2d_body_apply_force(t->compound, v2(0.0f, 6.0f * mass), com, true), I2D_OK);
     /* Static bodies accept forces and velocities but never move. */
     I2D_CHECK_STATUS(i2d_body_apply_force(t->ground, v2(1000.0f, 1000.0f), v2(0.0f, 0.0f), true), I2D_OK);
     I2D_CHECK_STATUS(i2d_body_set_linear_velocity(t->ground, v2(3.0f, 0.0f)), I2D_OK);
 
     I2D_CHECK_STATUS(i2d_world_step(t->world, dt, 4), I2D_OK);
+
+    /* Events of the step: the compound and the mover moved (the empty body floats still
+     * without gravity); nothing touched. */
+    i2d_body_events moves = i2d_world_get_body_events(t->world);
+    I2D_CHECK(i2d_last_status() == I2D_OK);
+    I2D_CHECK(moves.move_count == 2);
+    for (int i = 0; i < moves.move_count && i < 2; ++i) {
+        const i2d_body_move_event* e = &moves.move_events[i];
+        I2D_CHECK(I2D_ID_EQUALS(e->body, t->compound) || I2D_ID_EQUALS(e->body, t->mover));
+        i2d_transform now = i2d_body_get_transform(e->body);
+        I2D_CHECK(e->transform.p.x == now.p.x && e->transform.p.y == now.p.y && e->transform.q.c == now.q.c &&
+                  e->transform.q.s == now.q.s);
+        I2D_CHECK(e->user_data == i2d_body_get_user_data(e->body) && !e->fell_asleep);
+    }
+    i2d_contact_events contacts = i2d_world_get_contact_events(t->world);
+    I2D_CHECK(i2d_last_status() == I2D_OK && contacts.begin_count == 0 && contacts.end_count == 0);
+    i2d_sensor_events sensors = i2d_world_get_sensor_events(t->world);
+    I2D_CHECK(i2d_last_status() == I2D_OK && sensors.begin_count == 0 && sensors.end_count == 0);
 
     v = i2d_body_get_linear_velocity(t->compound);
     I2D_CHECK_NEAR(v.x, 2.0, 1e-5);
@@ -407,6 +480,10 @@ static void cover_motion(const tour* t) {
     i2d_vec2 p = i2d_body_get_position(t->compound);
     I2D_CHECK_NEAR(p.x, 4.0 + 2.0 * dt, 1e-5);
     I2D_CHECK(p.y >= 3.0f + 2.0f * dt - 1e-5f && p.y <= 3.0f + (2.0f + 6.0f * dt) * dt + 1e-5f);
+    /* No torque about the centre of mass: no spin, no turn. */
+    I2D_CHECK(i2d_body_get_angular_velocity(t->compound) == 0.0f);
+    i2d_rot q = i2d_body_get_rotation(t->compound);
+    I2D_CHECK(q.c == 1.0f && q.s == 0.0f);
     /* The kinematic body moves by its velocity; the empty body floats without gravity. */
     i2d_vec2 mover = i2d_body_get_position(t->mover);
     I2D_CHECK_NEAR(mover.x, dt, 1e-6);
@@ -508,10 +585,515 @@ static void cover_collision(void) {
     I2D_CHECK(i2d_collide_aabb_circle(box(0.0f, 0.0f, 2.0f, 2.0f), c).point_count == 0);
 }
 
+/* ---- Rotation: rotations, turning bodies, torques and angular impulses ------------- */
+
+static double angle_of(i2d_rot q) { return atan2((double)q.s, (double)q.c); }
+
+/* i2d_make_rot and i2d_rot_get_angle against cos, sin and atan2. */
+static void cover_rotations(void) {
+    i2d_rot q = i2d_make_rot(0.3f);
+    I2D_CHECK_NEAR(q.c, cos(0.3), 1e-6);
+    I2D_CHECK_NEAR(q.s, sin(0.3), 1e-6);
+    I2D_CHECK_NEAR(i2d_rot_get_angle(q), 0.3, 1e-6);
+    q = i2d_make_rot(0.0f);
+    I2D_CHECK(q.c == 1.0f && q.s == 0.0f);
+    q = i2d_make_rot(-2.0f);
+    I2D_CHECK_NEAR(q.c, cos(-2.0), 1e-6);
+    I2D_CHECK_NEAR(q.s, sin(-2.0), 1e-6);
+    I2D_CHECK_NEAR(i2d_rot_get_angle(q), -2.0, 1e-6);
+    /* Angles outside (-pi, pi] come back wrapped into it. */
+    I2D_CHECK_NEAR(i2d_rot_get_angle(i2d_make_rot(4.0f)), 4.0 - 2.0 * k_pi, 1e-5);
+    /* A half turn is +pi, the top of the range. */
+    i2d_rot half = {-1.0f, 0.0f};
+    I2D_CHECK_NEAR(i2d_rot_get_angle(half), k_pi, 1e-6);
+    i2d_rot quarter = {0.0f, 1.0f};
+    I2D_CHECK_NEAR(i2d_rot_get_angle(quarter), 0.5 * k_pi, 1e-6);
+    I2D_CHECK(i2d_last_status() == I2D_OK);
+}
+
+/* The world point of local (x, y) on a body at p turned by angle a, in closed form. */
+static i2d_vec2 rotate_about(i2d_vec2 p, double a, double x, double y) {
+    return v2((float)(p.x + cos(a) * x - sin(a) * y), (float)(p.y + sin(a) * x + cos(a) * y));
+}
+
+/* A box body turned by 0.5 rad: frames, inertia, point velocities, and the effect of
+ * every way of making it spin, against closed form. Zero gravity. */
+static void run_turning_body(i2d_world_id world) {
+    const float dt = 1.0f / 60.0f;
+    const double angle = 0.5;
+    /* Box 2 x 1 m, density 1.5: m = 3 kg, I = m (w^2 + h^2) / 12 = 1.25 kg m^2, centred
+     * at (0.5, 0) in the body frame. */
+    const double m = 3.0, inertia = 3.0 * (4.0 + 1.0) / 12.0;
+    const i2d_vec2 origin = v2(2.0f, 3.0f);
+    i2d_body_def def = i2d_default_body_def();
+    def.type = I2D_BODY_DYNAMIC;
+    def.position = origin;
+    def.rotation = i2d_make_rot((float)angle);
+    i2d_body_id body = i2d_body_create(world, &def);
+    i2d_shape_def shape_def = i2d_default_shape_def();
+    shape_def.density = 1.5f;
+    i2d_rot identity = {1.0f, 0.0f};
+    i2d_shape_id box_shape = i2d_shape_create_offset_box(body, &shape_def, 1.0f, 0.5f, v2(0.5f, 0.0f), identity);
+    I2D_REQUIRE(!I2D_IS_NULL(box_shape));
+
+    i2d_rot q = i2d_body_get_rotation(body);
+    I2D_CHECK_NEAR(q.c, cos(angle), 1e-6);
+    I2D_CHECK_NEAR(q.s, sin(angle), 1e-6);
+    i2d_transform xf = i2d_body_get_transform(body);
+    I2D_CHECK(xf.p.x == origin.x && xf.p.y == origin.y && xf.q.c == q.c && xf.q.s == q.s);
+    I2D_CHECK_NEAR(i2d_body_get_mass(body), m, 1e-5 * m);
+    I2D_CHECK_NEAR(i2d_body_get_rotational_inertia(body), inertia, 1e-5 * inertia);
+    i2d_vec2 local_com = i2d_body_get_local_center_of_mass(body);
+    I2D_CHECK_NEAR(local_com.x, 0.5, 1e-6);
+    I2D_CHECK_NEAR(local_com.y, 0.0, 1e-6);
+    i2d_vec2 com = i2d_body_get_world_center_of_mass(body);
+    i2d_vec2 expected_com = rotate_about(origin, angle, 0.5, 0.0);
+    I2D_CHECK_NEAR(com.x, expected_com.x, 1e-6);
+    I2D_CHECK_NEAR(com.y, expected_com.y, 1e-6);
+    /* The box turns with the body: its bounds are those of the turned corners. */
+    i2d_aabb bounds = i2d_shape_get_aabb(box_shape);
+    double ex = cos(angle) * 1.0 + sin(angle) * 0.5, ey = sin(angle) * 1.0 + cos(angle) * 0.5;
+    check_aabb_near(bounds, box((float)(com.x - ex), (float)(com.y - ey), (float)(com.x + ex), (float)(com.y + ey)),
+                    1e-5);
+
+    /* Body frame and world frame. */
+    i2d_vec2 w = i2d_body_get_world_point(body, v2(1.0f, 2.0f));
+    i2d_vec2 expected = rotate_about(origin, angle, 1.0, 2.0);
+    I2D_CHECK_NEAR(w.x, expected.x, 1e-5);
+    I2D_CHECK_NEAR(w.y, expected.y, 1e-5);
+    i2d_vec2 back = i2d_body_get_local_point(body, w);
+    I2D_CHECK_NEAR(back.x, 1.0, 1e-5);
+    I2D_CHECK_NEAR(back.y, 2.0, 1e-5);
+    i2d_vec2 l = i2d_body_get_local_point(body, v2(0.0f, 0.0f));
+    w = i2d_body_get_world_point(body, l);
+    I2D_CHECK_NEAR(w.x, 0.0, 1e-5);
+    I2D_CHECK_NEAR(w.y, 0.0, 1e-5);
+    I2D_CHECK_NEAR(l.x * l.x + l.y * l.y, 13.0, 1e-4); /* |(0, 0) - (2, 3)|^2: a rigid motion */
+
+    /* Velocity of the material at a point: v + w x (point - centre of mass). */
+    I2D_CHECK_STATUS(i2d_body_set_linear_velocity(body, v2(1.0f, 0.0f)), I2D_OK);
+    I2D_CHECK_STATUS(i2d_body_set_angular_velocity(body, 2.0f), I2D_OK);
+    I2D_CHECK(i2d_body_get_angular_velocity(body) == 2.0f);
+    i2d_vec2 at = v2(com.x + 1.0f, com.y + 3.0f);
+    i2d_vec2 pv = i2d_body_get_world_point_velocity(body, at);
+    I2D_CHECK_NEAR(pv.x, 1.0 - 2.0 * 3.0, 1e-5);
+    I2D_CHECK_NEAR(pv.y, 0.0 + 2.0 * 1.0, 1e-5);
+    pv = i2d_body_get_world_point_velocity(body, com);
+    I2D_CHECK_NEAR(pv.x, 1.0, 1e-6);
+    I2D_CHECK_NEAR(pv.y, 0.0, 1e-6);
+
+    /* Impulses act at once: an angular impulse J changes w by J / I... */
+    I2D_CHECK_STATUS(i2d_body_apply_angular_impulse(body, 0.5f, true), I2D_OK);
+    I2D_CHECK_NEAR(i2d_body_get_angular_velocity(body), 2.0 + 0.5 / inertia, 1e-5);
+    /* ...and a linear impulse at r from the centre changes v by J / m and w by r x J / I. */
+    I2D_CHECK_STATUS(i2d_body_apply_linear_impulse(body, v2(0.0f, 3.0f), v2(com.x + 1.0f, com.y), true), I2D_OK);
+    i2d_vec2 v = i2d_body_get_linear_velocity(body);
+    I2D_CHECK_NEAR(v.x, 1.0, 1e-6);
+    I2D_CHECK_NEAR(v.y, 3.0 / m, 1e-6);
+    I2D_CHECK_NEAR(i2d_body_get_angular_velocity(body), 2.0 + 0.5 / inertia + 3.0 / inertia, 1e-5);
+
+    /* A torque T acts during the next step: w = T / I * dt; the body turns by
+     * h * (w_1 + ... + w_4) over the four substeps (w_k = k h T / I), nothing else moves. */
+    I2D_CHECK_STATUS(i2d_body_set_linear_velocity(body, v2(0.0f, 0.0f)), I2D_OK);
+    I2D_CHECK_STATUS(i2d_body_set_angular_velocity(body, 0.0f), I2D_OK);
+    const double torque = 2.5, alpha = torque / inertia, h = dt / 4.0;
+    I2D_CHECK_STATUS(i2d_body_apply_torque(body, (float)torque, true), I2D_OK);
+    I2D_CHECK(i2d_body_get_angular_velocity(body) == 0.0f); /* not before the step */
+    I2D_CHECK_STATUS(i2d_world_step(world, dt, 4), I2D_OK);
+    I2D_CHECK_NEAR(i2d_body_get_angular_velocity(body), alpha * dt, 1e-6);
+    I2D_CHECK_NEAR(angle_of(i2d_body_get_rotation(body)), angle + alpha * h * h * 10.0, 1e-6);
+    i2d_vec2 com_after = i2d_body_get_world_center_of_mass(body);
+    I2D_CHECK_NEAR(com_after.x, com.x, 1e-6);
+    I2D_CHECK_NEAR(com_after.y, com.y, 1e-6);
+    v = i2d_body_get_linear_velocity(body);
+    I2D_CHECK(v.x == 0.0f && v.y == 0.0f);
+
+    /* A force at the centre pushes without turning; a force F at r from the centre adds
+     * the torque r x F: here (-1, 0) x (0, 3) = -3 N m. */
+    I2D_CHECK_STATUS(i2d_body_set_angular_velocity(body, 0.0f), I2D_OK);
+    com = i2d_body_get_world_center_of_mass(body);
+    I2D_CHECK_STATUS(i2d_body_apply_force_to_center(body, v2(6.0f, 0.0f), true), I2D_OK);
+    I2D_CHECK_STATUS(i2d_body_apply_force(body, v2(0.0f, 3.0f), v2(com.x - 1.0f, com.y), true), I2D_OK);
+    I2D_CHECK_STATUS(i2d_world_step(world, dt, 4), I2D_OK);
+    v = i2d_body_get_linear_velocity(body);
+    I2D_CHECK_NEAR(v.x, 6.0 / m * dt, 1e-6);
+    I2D_CHECK_NEAR(v.y, 3.0 / m * dt, 1e-6);
+    I2D_CHECK_NEAR(i2d_body_get_angular_velocity(body), -3.0 / inertia * dt, 1e-6);
+    /* Forces and torques are cleared after the step: the next one coasts. */
+    const float w_coast = i2d_body_get_angular_velocity(body);
+    I2D_CHECK_STATUS(i2d_world_step(world, dt, 4), I2D_OK);
+    I2D_CHECK_NEAR(i2d_body_get_angular_velocity(body), w_coast, 1e-7);
+    I2D_CHECK_NEAR(i2d_body_get_linear_velocity(body).x, 6.0 / m * dt, 1e-6);
+}
+
+/* Bodies that do not turn: static (ignores spins), fixed rotation (ignores spins and
+ * torques), and kinematic (turns at the angular velocity it is given). */
+static void run_non_turning_bodies(i2d_world_id world) {
+    const float dt = 1.0f / 60.0f;
+    i2d_shape_def shape_def = i2d_default_shape_def();
+    i2d_body_def def = i2d_default_body_def();
+    def.rotation.c = -1.0f; /* a half turn, exactly */
+    def.rotation.s = 0.0f;
+    i2d_body_id ground = i2d_body_create(world, &def);
+    I2D_REQUIRE(!I2D_IS_NULL(i2d_shape_create_box(ground, &shape_def, 1.0f, 1.0f)));
+    i2d_rot q = i2d_body_get_rotation(ground);
+    I2D_CHECK(q.c == -1.0f && q.s == 0.0f);
+    I2D_CHECK_STATUS(i2d_body_set_angular_velocity(ground, 5.0f), I2D_OK);
+    I2D_CHECK(i2d_body_get_angular_velocity(ground) == 0.0f);
+    I2D_CHECK_STATUS(i2d_body_apply_torque(ground, 10.0f, true), I2D_OK);
+    I2D_CHECK_STATUS(i2d_body_apply_angular_impulse(ground, 10.0f, true), I2D_OK);
+    I2D_CHECK(i2d_body_get_rotational_inertia(ground) == 0.0f);
+
+    def = i2d_default_body_def();
+    def.type = I2D_BODY_DYNAMIC;
+    def.position = v2(10.0f, 0.0f);
+    def.fixed_rotation = true;
+    i2d_body_id fixed = i2d_body_create(world, &def);
+    I2D_REQUIRE(!I2D_IS_NULL(i2d_shape_create_box(fixed, &shape_def, 1.0f, 0.5f)));
+    I2D_CHECK_NEAR(i2d_body_get_mass(fixed), 2.0, 1e-6);
+    I2D_CHECK(i2d_body_get_rotational_inertia(fixed) == 0.0f);
+    I2D_CHECK_STATUS(i2d_body_set_angular_velocity(fixed, 3.0f), I2D_OK);
+    I2D_CHECK(i2d_body_get_angular_velocity(fixed) == 0.0f);
+    I2D_CHECK_STATUS(i2d_body_apply_torque(fixed, 10.0f, true), I2D_OK);
+    I2D_CHECK_STATUS(i2d_body_apply_angular_impulse(fixed, 10.0f, true), I2D_OK);
+    /* An off-centre impulse moves it by J / m but does not turn it. */
+    I2D_CHECK_STATUS(i2d_body_apply_linear_impulse(fixed, v2(0.0f, 2.0f), v2(11.0f, 0.0f), true), I2D_OK);
+    I2D_CHECK_NEAR(i2d_body_get_linear_velocity(fixed).y, 1.0, 1e-6);
+    I2D_CHECK(i2d_body_get_angular_velocity(fixed) == 0.0f);
+
+    def = i2d_default_body_def();
+    def.type = I2D_BODY_KINEMATIC;
+    def.position = v2(-10.0f, 0.0f);
+    def.angular_velocity = 1.5f;
+    i2d_body_id spinner = i2d_body_create(world, &def);
+    I2D_REQUIRE(!I2D_IS_NULL(i2d_shape_create_box(spinner, &shape_def, 1.0f, 0.5f)));
+    I2D_CHECK(i2d_body_get_angular_velocity(spinner) == 1.5f);
+    I2D_CHECK(i2d_body_get_rotational_inertia(spinner) == 0.0f);
+
+    I2D_CHECK_STATUS(i2d_world_step(world, dt, 4), I2D_OK);
+    q = i2d_body_get_rotation(ground);
+    I2D_CHECK(q.c == -1.0f && q.s == 0.0f);
+    q = i2d_body_get_rotation(fixed);
+    I2D_CHECK(q.c == 1.0f && q.s == 0.0f);
+    I2D_CHECK(i2d_body_get_angular_velocity(fixed) == 0.0f);
+    I2D_CHECK_NEAR(angle_of(i2d_body_get_rotation(spinner)), 1.5 * dt, 1e-6);
+    I2D_CHECK(i2d_body_get_angular_velocity(spinner) == 1.5f);
+    /* A kinematic body takes a new spin at once. */
+    I2D_CHECK_STATUS(i2d_body_set_angular_velocity(spinner, -0.5f), I2D_OK);
+    I2D_CHECK(i2d_body_get_angular_velocity(spinner) == -0.5f);
+}
+
+static void cover_turning(void) {
+    i2d_world_def world_def = i2d_default_world_def();
+    world_def.gravity = v2(0.0f, 0.0f);
+    i2d_world_id world = i2d_world_create(&world_def);
+    I2D_REQUIRE(!I2D_IS_NULL(world));
+    run_turning_body(world);
+    run_non_turning_bodies(world);
+    i2d_world_destroy(world);
+}
+
+/* ---- Shapes beyond circles and boxes ------------------------------------------------- */
+
+/* Capsule of half length hl (between the centres) and radius r, density 1: a rectangle
+ * plus two half discs; the half discs' centroids lie 4 r / (3 pi) beyond the centres. */
+static double capsule_mass(double hl, double r) { return 4.0 * hl * r + k_pi * r * r; }
+static double capsule_inertia(double hl, double r) {
+    const double rect = 4.0 * hl * r, disc = k_pi * r * r, lc = 4.0 * r / (3.0 * k_pi);
+    return rect * (4.0 * hl * hl + 4.0 * r * r) / 12.0 + disc * (0.5 * r * r + hl * hl + 2.0 * hl * lc);
+}
+
+static void cover_shape_kinds(i2d_world_id world) {
+    i2d_shape_def shape_def = i2d_default_shape_def();
+    i2d_body_def def = i2d_default_body_def();
+    def.type = I2D_BODY_DYNAMIC;
+
+    /* An offset box turned a quarter: 1 x 0.5 m at (1, 0), now 0.5 wide and 1 tall. */
+    i2d_body_id a = i2d_body_create(world, &def);
+    shape_def.density = 2.0f;
+    i2d_shape_id offset_box =
+        i2d_shape_create_offset_box(a, &shape_def, 0.5f, 0.25f, v2(1.0f, 0.0f), i2d_make_rot(1.5707963f));
+    I2D_REQUIRE(!I2D_IS_NULL(offset_box));
+    I2D_CHECK(i2d_shape_get_type(offset_box) == I2D_SHAPE_POLYGON);
+    i2d_polygon p = i2d_shape_get_polygon(offset_box);
+    I2D_CHECK(p.count == 4 && p.radius == 0.0f);
+    I2D_CHECK_NEAR(p.centroid.x, 1.0, 1e-6);
+    I2D_CHECK_NEAR(p.centroid.y, 0.0, 1e-6);
+    check_aabb_near(i2d_shape_get_aabb(offset_box), box(0.75f, -0.5f, 1.25f, 0.5f), 1e-6);
+    I2D_CHECK_NEAR(i2d_body_get_mass(a), 1.0, 1e-6);
+    I2D_CHECK_NEAR(i2d_body_get_local_center_of_mass(a).x, 1.0, 1e-6);
+    I2D_CHECK_NEAR(i2d_body_get_rotational_inertia(a), 1.0 * (1.0 + 0.25) / 12.0, 1e-6);
+
+    /* A polygon from points: the right triangle (0, 0), (1, 0), (0, 1) with an interior
+     * point that the hull drops. Area 1/2, centroid (1/3, 1/3), I = m (a^2 + b^2) / 18. */
+    def.position = v2(5.0f, 0.0f);
+    i2d_body_id b = i2d_body_create(world, &def);
+    const i2d_vec2 points[4] = {{0.0f, 1.0f}, {0.2f, 0.2f}, {1.0f, 0.0f}, {0.0f, 0.0f}};
+    i2d_shape_id triangle = i2d_shape_create_polygon(b, &shape_def, points, 4);
+    I2D_REQUIRE(!I2D_IS_NULL(triangle));
+    p = i2d_shape_get_polygon(triangle);
+    I2D_CHECK(p.count == 3);
+    double area2 = 0.0; /* twice the signed area: positive when counter-clockwise */
+    for (int i = 0; i < p.count && i < 3; ++i) {
+        i2d_vec2 u = p.vertices[i], w = p.vertices[(i + 1) % 3];
+        area2 += (double)u.x * w.y - (double)u.y * w.x;
+        double ex = w.x - u.x, ey = w.y - u.y, len = sqrt(ex * ex + ey * ey);
+        I2D_CHECK_NEAR(p.normals[i].x, ey / len, 1e-6); /* outward: the edge turned clockwise */
+        I2D_CHECK_NEAR(p.normals[i].y, -ex / len, 1e-6);
+    }
+    I2D_CHECK_NEAR(area2, 1.0, 1e-6);
+    I2D_CHECK_NEAR(p.centroid.x, 1.0 / 3.0, 1e-6);
+    I2D_CHECK_NEAR(p.centroid.y, 1.0 / 3.0, 1e-6);
+    I2D_CHECK_NEAR(i2d_body_get_mass(b), 1.0, 1e-6);
+    I2D_CHECK_NEAR(i2d_body_get_rotational_inertia(b), 2.0 / 18.0, 1e-6);
+    check_aabb_near(i2d_shape_get_aabb(triangle), box(5.0f, 0.0f, 6.0f, 1.0f), 1e-6);
+
+    /* A rounded square from i2d_make_polygon: 1 x 1 grown by 0.1, area 1 + 4 (0.1) + pi 0.01. */
+    def.position = v2(10.0f, 0.0f);
+    i2d_body_id c = i2d_body_create(world, &def);
+    const i2d_vec2 square[4] = {{-0.5f, -0.5f}, {0.5f, -0.5f}, {0.5f, 0.5f}, {-0.5f, 0.5f}};
+    i2d_polygon rounded;
+    I2D_CHECK_STATUS(i2d_make_polygon(square, 4, 0.1f, &rounded), I2D_OK);
+    shape_def.density = 1.0f;
+    i2d_shape_id rounded_shape = i2d_shape_create_polygon_from(c, &shape_def, &rounded);
+    I2D_REQUIRE(!I2D_IS_NULL(rounded_shape));
+    p = i2d_shape_get_polygon(rounded_shape);
+    I2D_CHECK(p.count == 4);
+    I2D_CHECK_NEAR(p.radius, 0.1, 1e-7);
+    I2D_CHECK_NEAR(i2d_body_get_mass(c), 1.0 + 0.4 + k_pi * 0.01, 1e-5);
+    check_aabb_near(i2d_shape_get_aabb(rounded_shape), box(9.4f, -0.6f, 10.6f, 0.6f), 1e-5);
+
+    /* A capsule: centres 2 m apart, radius 0.5. */
+    def.position = v2(15.0f, 0.0f);
+    i2d_body_id d = i2d_body_create(world, &def);
+    i2d_shape_id capsule = i2d_shape_create_capsule(d, &shape_def, v2(-1.0f, 0.0f), v2(1.0f, 0.0f), 0.5f);
+    I2D_REQUIRE(!I2D_IS_NULL(capsule));
+    I2D_CHECK(i2d_shape_get_type(capsule) == I2D_SHAPE_CAPSULE);
+    i2d_capsule cap = i2d_shape_get_capsule(capsule);
+    I2D_CHECK(cap.center1.x == -1.0f && cap.center1.y == 0.0f && cap.center2.x == 1.0f && cap.center2.y == 0.0f);
+    I2D_CHECK(cap.radius == 0.5f);
+    I2D_CHECK_NEAR(i2d_body_get_mass(d), capsule_mass(1.0, 0.5), 1e-5);
+    I2D_CHECK_NEAR(i2d_body_get_rotational_inertia(d), capsule_inertia(1.0, 0.5), 1e-5);
+    check_aabb_near(i2d_shape_get_aabb(capsule), box(13.5f, -0.5f, 16.5f, 0.5f), 1e-6);
+
+    /* A segment has no mass: the body keeps its circle's. */
+    def.position = v2(20.0f, 0.0f);
+    i2d_body_id e = i2d_body_create(world, &def);
+    i2d_circle disc = {{0.0f, 0.0f}, 0.5f};
+    I2D_REQUIRE(!I2D_IS_NULL(i2d_shape_create_circle(e, &shape_def, &disc)));
+    i2d_shape_id stick = i2d_shape_create_segment(e, &shape_def, v2(0.0f, 1.0f), v2(0.0f, 3.0f));
+    I2D_REQUIRE(!I2D_IS_NULL(stick));
+    I2D_CHECK_NEAR(i2d_body_get_mass(e), k_pi * 0.25, 1e-6);
+    I2D_CHECK_NEAR(i2d_body_get_rotational_inertia(e), k_pi * 0.25 * 0.25 / 2.0, 1e-6);
+
+    /* A segment on a static body turned a quarter: local (0, 0)-(2, 0) is world x = 30,
+     * y from 0 to 2. */
+    def = i2d_default_body_def();
+    def.position = v2(30.0f, 0.0f);
+    def.rotation.c = 0.0f;
+    def.rotation.s = 1.0f;
+    i2d_body_id wall = i2d_body_create(world, &def);
+    i2d_shape_id segment = i2d_shape_create_segment(wall, &shape_def, v2(0.0f, 0.0f), v2(2.0f, 0.0f));
+    I2D_REQUIRE(!I2D_IS_NULL(segment));
+    I2D_CHECK(i2d_shape_get_type(segment) == I2D_SHAPE_SEGMENT);
+    i2d_segment seg = i2d_shape_get_segment(segment);
+    I2D_CHECK(seg.point1.x == 0.0f && seg.point1.y == 0.0f && seg.point2.x == 2.0f && seg.point2.y == 0.0f);
+    check_aabb_near(i2d_shape_get_aabb(segment), box(30.0f, 0.0f, 30.0f, 2.0f), 1e-6);
+
+    /* Queries see the new kinds where they are. */
+    const i2d_query_filter all = i2d_default_query_filter();
+    id_list found = {0, {{0}}};
+    I2D_CHECK_STATUS(i2d_world_overlap_point(world, v2(16.2f, 0.3f), all, collect_id, &found), I2D_OK);
+    I2D_CHECK(found.count == 1 && I2D_ID_EQUALS(found.ids[0], capsule)); /* in the right half disc */
+    found.count = 0;
+    I2D_CHECK_STATUS(i2d_world_overlap_point(world, v2(16.45f, 0.45f), all, collect_id, &found), I2D_OK);
+    I2D_CHECK(found.count == 0); /* in the capsule's bounds, outside the half disc */
+    found.count = 0;
+    I2D_CHECK_STATUS(i2d_world_overlap_aabb(world, box(0.5f, 0.6f, 1.5f, 1.0f), all, collect_id, &found), I2D_OK);
+    I2D_CHECK(found.count == 0); /* the unturned offset box would reach y = 0.25 only... */
+    found.count = 0;
+    I2D_CHECK_STATUS(i2d_world_overlap_aabb(world, box(0.5f, 0.4f, 1.5f, 1.0f), all, collect_id, &found), I2D_OK);
+    I2D_CHECK(found.count == 1 && I2D_ID_EQUALS(found.ids[0], offset_box)); /* ...the turned one to 0.5 */
+    i2d_ray_result r = i2d_world_cast_ray_closest(world, v2(35.0f, 1.0f), v2(-10.0f, 0.0f), all);
+    I2D_CHECK(r.hit && I2D_ID_EQUALS(r.shape, segment));
+    I2D_CHECK_NEAR(r.fraction, 0.5, 1e-6);
+    I2D_CHECK_NEAR(r.normal.x, 1.0, 1e-6);
+    I2D_CHECK_NEAR(r.normal.y, 0.0, 1e-6);
+}
+
+static void cover_shapes(void) {
+    i2d_world_def world_def = i2d_default_world_def();
+    world_def.gravity = v2(0.0f, 0.0f);
+    i2d_world_id world = i2d_world_create(&world_def);
+    I2D_REQUIRE(!I2D_IS_NULL(world));
+    cover_shape_kinds(world);
+    i2d_world_destroy(world);
+}
+
+/* ---- The pure functions of collision.h for placed shapes ---------------------------- */
+
+static i2d_transform xform(float x, float y, i2d_rot q) {
+    i2d_transform t;
+    t.p = v2(x, y);
+    t.q = q;
+    return t;
+}
+
+/* One manifold against closed form: the normal n, and every point at depth `penetration`
+ * with its coordinate along n at `along` and its coordinate along (n.y, -n.x) (x when n
+ * is (0, 1)) in [lo, hi]. */
+static void check_manifold_at(int line, const char* what, i2d_manifold m, int min_points, double nx, double ny,
+                              double penetration, double along, double lo, double hi) {
+    int before = i2d_check_failures;
+    I2D_CHECK(i2d_last_status() == I2D_OK);
+    I2D_CHECK(m.point_count >= min_points && m.point_count <= 2);
+    I2D_CHECK_NEAR(m.normal.x, nx, 1e-5);
+    I2D_CHECK_NEAR(m.normal.y, ny, 1e-5);
+    for (int i = 0; i < m.point_count && i < 2; ++i) {
+        const i2d_manifold_point* mp = &m.points[i];
+        double a = mp->point.x * nx + mp->point.y * ny, t = mp->point.x * ny - mp->point.y * nx;
+        I2D_CHECK_NEAR(mp->penetration, penetration, 1e-5);
+        I2D_CHECK_NEAR(a, along, 1e-5);
+        I2D_CHECK(t >= lo - 1e-5 && t <= hi + 1e-5);
+    }
+    if (m.point_count == 2) {
+        I2D_CHECK(m.points[0].id != m.points[1].id);
+    }
+    if (i2d_check_failures != before) {
+        fprintf(stderr, "%s:%d: (the manifold of %s)\n", __FILE__, line, what);
+    }
+}
+#define CHECK_MANIFOLD(what, m, min_points, nx, ny, pen, along, lo, hi) \
+    check_manifold_at(__LINE__, (what), (m), (min_points), (nx), (ny), (pen), (along), (lo), (hi))
+
+static void check_cast_at(int line, const char* what, i2d_cast_output out, double fraction, double px, double py,
+                          double nx, double ny) {
+    int before = i2d_check_failures;
+    I2D_CHECK(i2d_last_status() == I2D_OK);
+    I2D_CHECK(out.hit);
+    I2D_CHECK_NEAR(out.fraction, fraction, 1e-6);
+    I2D_CHECK_NEAR(out.point.x, px, 1e-5);
+    I2D_CHECK_NEAR(out.point.y, py, 1e-5);
+    I2D_CHECK_NEAR(out.normal.x, nx, 1e-5);
+    I2D_CHECK_NEAR(out.normal.y, ny, 1e-5);
+    if (i2d_check_failures != before) {
+        fprintf(stderr, "%s:%d: (the ray cast of %s)\n", __FILE__, line, what);
+    }
+}
+#define CHECK_CAST(what, out, fraction, px, py, nx, ny) \
+    check_cast_at(__LINE__, (what), (out), (fraction), (px), (py), (nx), (ny))
+
+static void cover_pure_functions(void) {
+    const double root2 = 1.41421356237309505;
+    const i2d_rot identity = {1.0f, 0.0f};
+    const i2d_rot quarter = i2d_make_rot(1.5707963f);
+    const i2d_rot eighth = i2d_make_rot(0.785398163f);
+
+    /* Boxes as polygons: corners counter-clockwise from the lower left, outward normals. */
+    i2d_polygon b = i2d_make_box(1.0f, 0.5f);
+    I2D_CHECK(b.count == 4 && b.radius == 0.0f);
+    I2D_CHECK(b.vertices[0].x == -1.0f && b.vertices[0].y == -0.5f);
+    I2D_CHECK(b.vertices[2].x == 1.0f && b.vertices[2].y == 0.5f);
+    I2D_CHECK(b.normals[0].x == 0.0f && b.normals[0].y == -1.0f);
+    I2D_CHECK(b.centroid.x == 0.0f && b.centroid.y == 0.0f);
+    i2d_polygon ob = i2d_make_offset_box(1.0f, 0.5f, v2(2.0f, 3.0f), quarter);
+    I2D_CHECK(ob.count == 4);
+    I2D_CHECK_NEAR(ob.vertices[0].x, 2.5, 1e-6); /* (-1, -0.5) turned a quarter, moved to (2, 3) */
+    I2D_CHECK_NEAR(ob.vertices[0].y, 2.0, 1e-6);
+    I2D_CHECK_NEAR(ob.normals[0].x, 1.0, 1e-6);
+    I2D_CHECK_NEAR(ob.normals[0].y, 0.0, 1e-6);
+    I2D_CHECK_NEAR(ob.centroid.x, 2.0, 1e-6);
+    I2D_CHECK_NEAR(ob.centroid.y, 3.0, 1e-6);
+    /* A hull: the interior point is dropped, the 2 x 1 rectangle remains. */
+    const i2d_vec2 points[5] = {{1.0f, 0.5f}, {2.0f, 1.0f}, {0.0f, 0.0f}, {2.0f, 0.0f}, {0.0f, 1.0f}};
+    i2d_polygon hull;
+    I2D_CHECK_STATUS(i2d_make_polygon(points, 5, 0.0f, &hull), I2D_OK);
+    I2D_CHECK(hull.count == 4);
+
+    /* Mass: density 3 on the 2 x 1 rectangle: m = 6, I = m (w^2 + h^2) / 12 = 2.5. */
+    i2d_mass_data md = i2d_compute_polygon_mass(&hull, 3.0f);
+    I2D_CHECK_NEAR(md.mass, 6.0, 1e-5);
+    I2D_CHECK_NEAR(md.center.x, 1.0, 1e-6);
+    I2D_CHECK_NEAR(md.center.y, 0.5, 1e-6);
+    I2D_CHECK_NEAR(md.rotational_inertia, 2.5, 1e-5);
+    const i2d_circle circle = {{1.0f, 2.0f}, 0.5f};
+    md = i2d_compute_circle_mass(&circle, 2.0f);
+    I2D_CHECK_NEAR(md.mass, k_pi / 2.0, 1e-6);
+    I2D_CHECK_NEAR(md.center.x, 1.0, 1e-6);
+    I2D_CHECK_NEAR(md.center.y, 2.0, 1e-6);
+    I2D_CHECK_NEAR(md.rotational_inertia, k_pi / 16.0, 1e-6);
+    const i2d_capsule capsule = {{-1.0f, 0.0f}, {1.0f, 0.0f}, 0.5f};
+    md = i2d_compute_capsule_mass(&capsule, 1.0f);
+    I2D_CHECK_NEAR(md.mass, capsule_mass(1.0, 0.5), 1e-5);
+    I2D_CHECK_NEAR(md.center.x, 0.0, 1e-6);
+    I2D_CHECK_NEAR(md.rotational_inertia, capsule_inertia(1.0, 0.5), 1e-5);
+
+    /* Ray casts of placed shapes. */
+    const i2d_circle unit = {{0.0f, 0.0f}, 1.0f};
+    CHECK_CAST("circle at (5, 0)",
+               i2d_ray_cast_circle(&unit, xform(5.0f, 0.0f, identity), v2(0.0f, 0.0f), v2(10.0f, 0.0f)), 0.4, 4.0,
+               0.0, -1.0, 0.0);
+    /* The capsule turned a quarter at (0, 5): upright from (0, 4) to (0, 6), 0.5 thick. */
+    CHECK_CAST("upright capsule",
+               i2d_ray_cast_capsule(&capsule, xform(0.0f, 5.0f, quarter), v2(-5.0f, 5.0f), v2(10.0f, 0.0f)), 0.45,
+               -0.5, 5.0, -1.0, 0.0);
+    /* The segment turned a quarter at (3, 0): x = 3, y in [-1, 1], hit from both sides. */
+    const i2d_segment segment = {{-1.0f, 0.0f}, {1.0f, 0.0f}};
+    CHECK_CAST("upright segment from the left",
+               i2d_ray_cast_segment(&segment, xform(3.0f, 0.0f, quarter), v2(0.0f, 0.5f), v2(10.0f, 0.0f)), 0.3, 3.0,
+               0.5, -1.0, 0.0);
+    CHECK_CAST("upright segment from the right",
+               i2d_ray_cast_segment(&segment, xform(3.0f, 0.0f, quarter), v2(10.0f, 0.5f), v2(-10.0f, 0.0f)), 0.7, 3.0,
+               0.5, 1.0, 0.0);
+    /* The unit square turned by 45 degrees: the diamond |x| + |y| <= sqrt(2). */
+    const i2d_polygon square = i2d_make_box(1.0f, 1.0f);
+    CHECK_CAST("diamond", i2d_ray_cast_polygon(&square, xform(0.0f, 0.0f, eighth), v2(-5.0f, 0.5f), v2(10.0f, 0.0f)),
+               (5.5 - root2) / 10.0, 0.5 - root2, 0.5, -1.0 / root2, 1.0 / root2);
+    i2d_cast_output miss = i2d_ray_cast_polygon(&square, xform(0.0f, 0.0f, eighth), v2(-5.0f, 1.45f), v2(10.0f, 0.0f));
+    I2D_CHECK(i2d_last_status() == I2D_OK && !miss.hit);
+
+    /* Manifolds: normal from A to B; points midway between the surfaces. Shape A sits at
+     * the origin (o), unturned unless said. */
+    const i2d_transform o = xform(0.0f, 0.0f, identity);
+    const i2d_circle small = {{0.0f, 0.0f}, 0.5f};
+    i2d_manifold m = i2d_collide_capsule_circle(&capsule, o, &small, xform(0.0f, 0.8f, identity));
+    CHECK_MANIFOLD("capsule-circle", m, 1, 0.0, 1.0, 0.2, 0.4, 0.0, 0.0);
+    m = i2d_collide_segment_circle(&segment, o, &small, xform(0.5f, 0.4f, identity));
+    CHECK_MANIFOLD("segment-circle", m, 1, 0.0, 1.0, 0.1, -0.05, 0.5, 0.5);
+    /* A 4 x 1 box turned upright (|x| <= 0.5, |y| <= 2) and a circle at (0.8, 0). */
+    const i2d_polygon long_box = i2d_make_box(2.0f, 0.5f);
+    m = i2d_collide_polygon_circle(&long_box, xform(0.0f, 0.0f, quarter), &small, xform(0.8f, 0.0f, identity));
+    CHECK_MANIFOLD("polygon-circle", m, 1, 1.0, 0.0, 0.2, 0.4, 0.0, 0.0);
+    /* Two capsules along each other, 0.9 apart: both ends of the overlap. */
+    m = i2d_collide_capsules(&capsule, o, &capsule, xform(0.5f, 0.9f, identity));
+    CHECK_MANIFOLD("capsules", m, 2, 0.0, 1.0, 0.1, 0.45, -0.5, 1.0);
+    const i2d_segment long_segment = {{-2.0f, 0.0f}, {2.0f, 0.0f}};
+    m = i2d_collide_segment_capsule(&long_segment, o, &capsule, xform(0.0f, 0.3f, identity));
+    CHECK_MANIFOLD("segment-capsule", m, 1, 0.0, 1.0, 0.2, -0.1, -1.0, 1.0);
+    const i2d_capsule short_capsule = {{-0.5f, 0.0f}, {0.5f, 0.0f}, 0.25f};
+    m = i2d_collide_polygon_capsule(&square, o, &short_capsule, xform(0.0f, 1.15f, identity));
+    CHECK_MANIFOLD("polygon-capsule", m, 1, 0.0, 1.0, 0.1, 0.95, -0.5, 0.5);
+    /* A box turned a half turn still lies flat, its bottom 0.1 below the segment. */
+    const i2d_polygon flat = i2d_make_box(1.0f, 0.5f);
+    const i2d_rot half = {-1.0f, 0.0f};
+    m = i2d_collide_segment_polygon(&long_segment, o, &flat, xform(0.0f, 0.4f, half));
+    CHECK_MANIFOLD("segment-polygon", m, 1, 0.0, 1.0, 0.1, -0.05, -1.0, 1.0);
+    /* Two unit squares 1.8 apart, the second turned a quarter: 0.2 deep along x, the
+     * contact edge x = 0.9 from y = -1 to 1. */
+    m = i2d_collide_polygons(&square, o, &square, xform(1.8f, 0.0f, quarter));
+    CHECK_MANIFOLD("polygons", m, 2, 1.0, 0.0, 0.2, 0.9, -1.0, 1.0);
+    i2d_manifold apart = i2d_collide_polygons(&square, o, &square, xform(3.0f, 0.0f, eighth));
+    I2D_CHECK(i2d_last_status() == I2D_OK && apart.point_count == 0);
+}
+
 I2D_TEST(api_world_coverage) {
     cover_library_calls();
     cover_defaults();
     cover_collision();
+    cover_rotations();
+    cover_pure_functions();
+    cover_turning();
+    cover_shapes();
     tour t;
     if (tour_build(&t)) {
         cover_world_getters(&t);
@@ -632,6 +1214,33 @@ I2D_TEST(api_world_struct_layout) {
     CHECK_LAYOUT(offsetof(i2d_manifold, normal), 0);
     CHECK_LAYOUT(offsetof(i2d_manifold, point_count), 8);
     CHECK_LAYOUT(offsetof(i2d_manifold, points), 12);
+
+    CHECK_LAYOUT(sizeof(i2d_polygon), 144);
+    CHECK_LAYOUT(offsetof(i2d_polygon, vertices), 0);
+    CHECK_LAYOUT(offsetof(i2d_polygon, normals), 64);
+    CHECK_LAYOUT(offsetof(i2d_polygon, centroid), 128);
+    CHECK_LAYOUT(offsetof(i2d_polygon, radius), 136);
+    CHECK_LAYOUT(offsetof(i2d_polygon, count), 140);
+
+    CHECK_LAYOUT(sizeof(i2d_capsule), 20);
+    CHECK_LAYOUT(offsetof(i2d_capsule, center1), 0);
+    CHECK_LAYOUT(offsetof(i2d_capsule, center2), 8);
+    CHECK_LAYOUT(offsetof(i2d_capsule, radius), 16);
+
+    CHECK_LAYOUT(sizeof(i2d_segment), 16);
+    CHECK_LAYOUT(offsetof(i2d_segment, point1), 0);
+    CHECK_LAYOUT(offsetof(i2d_segment, point2), 8);
+
+    CHECK_LAYOUT(sizeof(i2d_mass_data), 16);
+    CHECK_LAYOUT(offsetof(i2d_mass_data, mass), 0);
+    CHECK_LAYOUT(offsetof(i2d_mass_data, center), 4);
+    CHECK_LAYOUT(offsetof(i2d_mass_data, rotational_inertia), 12);
+
+    CHECK_LAYOUT(sizeof(i2d_cast_output), 24);
+    CHECK_LAYOUT(offsetof(i2d_cast_output, point), 0);
+    CHECK_LAYOUT(offsetof(i2d_cast_output, normal), 8);
+    CHECK_LAYOUT(offsetof(i2d_cast_output, fraction), 16);
+    CHECK_LAYOUT(offsetof(i2d_cast_output, hit), 20);
 
     CHECK_LAYOUT(sizeof(i2d_ray_result), 32);
     CHECK_LAYOUT(offsetof(i2d_ray_result, shape), 0);
