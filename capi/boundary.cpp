@@ -125,6 +125,17 @@ bool Call::coordinate(i2d_vec2 v, const char* what) {
     return true;
 }
 
+bool Call::local_point(i2d_vec2 v, const char* what) {
+    if (!finite(v, what)) {
+        return false;
+    }
+    if (std::fabs(v.x) > max_shape_extent || std::fabs(v.y) > max_shape_extent) {
+        return fail(I2D_ERR_INVALID_ARGUMENT, "%s (%g, %g) is beyond %g m from the body origin", what,
+                    static_cast<double>(v.x), static_cast<double>(v.y), static_cast<double>(max_shape_extent));
+    }
+    return true;
+}
+
 bool Call::in_range(float v, float lo, float hi, const char* what) {
     char buffer[32];
     if (!(v >= lo && v <= hi)) {

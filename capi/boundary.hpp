@@ -61,6 +61,8 @@ public:
     bool finite(i2d_vec2 v, const char* what);
     /// Finite and within max_coordinate.
     bool coordinate(i2d_vec2 v, const char* what);
+    /// A point of a shape in its body's frame: finite and within max_shape_extent.
+    bool local_point(i2d_vec2 v, const char* what);
     /// Finite and lo <= v <= hi.
     bool in_range(float v, float lo, float hi, const char* what);
     /// A radius or half extent: finite, positive, at most max_shape_extent.

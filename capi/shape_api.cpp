@@ -52,7 +52,7 @@ I2D_API i2d_shape_id i2d_shape_create_circle(i2d_body_id body, const i2d_shape_d
     return guarded("i2d_shape_create_circle", I2D_NULL_SHAPE_ID, [&](Call& call) -> i2d_shape_id {
         BodyRef b;
         if (!call.body(body, b) || !call.unlocked(*b.world) || !validate_shape_def(call, def) ||
-            !call.not_null(circle, "circle") || !call.coordinate(circle->center, "circle: center") ||
+            !call.not_null(circle, "circle") || !call.local_point(circle->center, "circle: center") ||
             !call.extent(circle->radius, "circle: radius")) {
             return I2D_NULL_SHAPE_ID;
         }
@@ -99,7 +99,7 @@ bool valid_points(Call& call, const i2d_vec2* points, int32_t count) {
                          max_polygon_vertices);
     }
     for (int32_t i = 0; i < count; ++i) {
-        if (!call.coordinate(points[i], "points[i]")) {
+        if (!call.local_point(points[i], "points[i]")) {
             return false;
         }
     }
@@ -121,7 +121,7 @@ I2D_API i2d_shape_id i2d_shape_create_offset_box(i2d_body_id body, const i2d_sha
         BodyRef b;
         if (!call.body(body, b) || !call.unlocked(*b.world) || !validate_shape_def(call, def) ||
             !call.extent(half_width, "half_width") || !call.extent(half_height, "half_height") ||
-            !call.coordinate(center, "center") || !valid_transform(call, i2d_transform{center, rotation}, "offset")) {
+            !call.local_point(center, "center") || !valid_transform(call, i2d_transform{center, rotation}, "offset")) {
             return I2D_NULL_SHAPE_ID;
         }
         const Rot q = normalize(capi::to_core(rotation));
@@ -160,6 +160,11 @@ I2D_API i2d_shape_id i2d_shape_create_polygon_from(i2d_body_id body, const i2d_s
             !call.in_range(polygon->radius, 0.0f, max_shape_extent, "polygon radius")) {
             return I2D_NULL_SHAPE_ID;
         }
+        for (int32_t i = 0; i < polygon->count; ++i) {
+            if (!call.local_point(polygon->vertices[i], "polygon vertex")) {
+                return I2D_NULL_SHAPE_ID;
+            }
+        }
         const Polygon given = to_core(*polygon);
         if (!hull_of(call, given.vertices, given.count, hull)) {
             return I2D_NULL_SHAPE_ID;
@@ -173,7 +178,7 @@ I2D_API i2d_shape_id i2d_shape_create_capsule(i2d_body_id body, const i2d_shape_
     return guarded("i2d_shape_create_capsule", I2D_NULL_SHAPE_ID, [&](Call& call) -> i2d_shape_id {
         BodyRef b;
         if (!call.body(body, b) || !call.unlocked(*b.world) || !validate_shape_def(call, def) ||
-            !call.coordinate(center1, "center1") || !call.coordinate(center2, "center2") ||
+            !call.local_point(center1, "center1") || !call.local_point(center2, "center2") ||
             !call.extent(radius, "radius") || !valid_core_length(call, center1, center2, "center1-center2")) {
             return I2D_NULL_SHAPE_ID;
         }
@@ -189,7 +194,7 @@ I2D_API i2d_shape_id i2d_shape_create_segment(i2d_body_id body, const i2d_shape_
     return guarded("i2d_shape_create_segment", I2D_NULL_SHAPE_ID, [&](Call& call) -> i2d_shape_id {
         BodyRef b;
         if (!call.body(body, b) || !call.unlocked(*b.world) || !validate_shape_def(call, def) ||
-            !call.coordinate(point1, "point1") || !call.coordinate(point2, "point2") ||
+            !call.local_point(point1, "point1") || !call.local_point(point2, "point2") ||
             !valid_core_length(call, point1, point2, "segment")) {
             return I2D_NULL_SHAPE_ID;
         }

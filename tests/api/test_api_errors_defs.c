@@ -1230,9 +1230,9 @@ static void run_shape_edges_accepted(i2d_world_id world) {
     CHECK_ACCEPTED("circle radius 100000", i2d_last_status());
     created += I2D_IS_NULL(s) ? 0 : 1;
     circle.radius = 0.0001f;
-    circle.center = v2(1e9f, -1e9f);
+    circle.center = v2(1e5f, -1e5f);
     s = i2d_shape_create_circle(body, &def, &circle);
-    CHECK_ACCEPTED("circle radius 0.0001 at (1e9, -1e9)", i2d_last_status());
+    CHECK_ACCEPTED("circle radius 0.0001 at (1e5, -1e5)", i2d_last_status());
     created += I2D_IS_NULL(s) ? 0 : 1;
     s = i2d_shape_create_box(body, &def, 100000.0f, 100000.0f);
     CHECK_ACCEPTED("box half extents 100000", i2d_last_status());
@@ -1258,8 +1258,8 @@ static void run_shape_edges_accepted(i2d_world_id world) {
         double dx = (double)p.vertices[1].x - p.vertices[0].x, dy = (double)p.vertices[1].y - p.vertices[0].y;
         I2D_CHECK_NEAR(sqrt(dx * dx + dy * dy), 1.0, 1e-5);
     }
-    s = i2d_shape_create_offset_box(body, &def, 100000.0f, 0.0001f, v2(-1e9f, 1e9f), i2d_make_rot(-2.0f));
-    CHECK_ACCEPTED("offset box 100000 x 0.0001 at (-1e9, 1e9)", i2d_last_status());
+    s = i2d_shape_create_offset_box(body, &def, 100000.0f, 0.0001f, v2(-1e5f, 1e5f), i2d_make_rot(-2.0f));
+    CHECK_ACCEPTED("offset box 100000 x 0.0001 at (-1e5, 1e5)", i2d_last_status());
     created += I2D_IS_NULL(s) ? 0 : 1;
 
     const i2d_vec2 octagon[8] = {{1.0f, 0.0f},   {0.7f, 0.7f},   {0.0f, 1.0f},  {-0.7f, 0.7f},
@@ -1285,13 +1285,30 @@ static void run_shape_edges_accepted(i2d_world_id world) {
     s = i2d_shape_create_capsule(body, &def, v2(0.0f, 0.0f), v2(0.0051f, 0.0f), 100000.0f);
     CHECK_ACCEPTED("capsule centres 0.0051 apart, radius 100000", i2d_last_status());
     created += I2D_IS_NULL(s) ? 0 : 1;
-    s = i2d_shape_create_capsule(body, &def, v2(-1e9f, 0.0f), v2(-1e9f, 0.0051f), 0.0001f);
-    CHECK_ACCEPTED("capsule radius 0.0001 at x = -1e9", i2d_last_status());
+    s = i2d_shape_create_capsule(body, &def, v2(-1e5f, 0.0f), v2(-1e5f, 0.0051f), 0.0001f);
+    CHECK_ACCEPTED("capsule radius 0.0001 at x = -1e5", i2d_last_status());
     created += I2D_IS_NULL(s) ? 0 : 1;
     s = i2d_shape_create_segment(body, &def, v2(0.0f, 0.0f), v2(0.0f, 0.0051f));
     CHECK_ACCEPTED("segment 0.0051 long", i2d_last_status());
     created += I2D_IS_NULL(s) ? 0 : 1;
     I2D_CHECK(created == 4 + k_unit_rotation_count + 1 + 4 + 3);
+    I2D_CHECK(i2d_world_get_counters(world).shape_count == created);
+
+    /* Geometry beyond 100000 m from its body's origin is refused (its inertia would
+     * overflow): every creator that takes body-frame points. */
+    const float beyond = 100001.0f;
+    circle.center = v2(beyond, 0.0f);
+    I2D_CHECK(I2D_IS_NULL(i2d_shape_create_circle(body, &def, &circle)));
+    I2D_CHECK(i2d_last_status() == I2D_ERR_INVALID_ARGUMENT);
+    I2D_CHECK(I2D_IS_NULL(i2d_shape_create_offset_box(body, &def, 1.0f, 1.0f, v2(0.0f, -beyond), i2d_make_rot(0.0f))));
+    I2D_CHECK(i2d_last_status() == I2D_ERR_INVALID_ARGUMENT);
+    I2D_CHECK(I2D_IS_NULL(i2d_shape_create_capsule(body, &def, v2(beyond, 0.0f), v2(0.0f, 0.0f), 1.0f)));
+    I2D_CHECK(i2d_last_status() == I2D_ERR_INVALID_ARGUMENT);
+    I2D_CHECK(I2D_IS_NULL(i2d_shape_create_segment(body, &def, v2(0.0f, 0.0f), v2(0.0f, beyond))));
+    I2D_CHECK(i2d_last_status() == I2D_ERR_INVALID_ARGUMENT);
+    const i2d_vec2 far_triangle[3] = {{0.0f, 0.0f}, {beyond, 0.0f}, {0.0f, 1.0f}};
+    I2D_CHECK(I2D_IS_NULL(i2d_shape_create_polygon(body, &def, far_triangle, 3)));
+    I2D_CHECK(i2d_last_status() == I2D_ERR_INVALID_ARGUMENT);
     I2D_CHECK(i2d_world_get_counters(world).shape_count == created);
 }
 
