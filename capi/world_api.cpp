@@ -139,6 +139,17 @@ I2D_API i2d_world_counters i2d_world_get_counters(i2d_world_id id) {
     });
 }
 
+I2D_API i2d_profile i2d_world_get_profile(i2d_world_id id) {
+    return guarded("i2d_world_get_profile", i2d_profile{}, [&](Call& call) {
+        WorldRef w;
+        if (!call.world(id, w)) {
+            return i2d_profile{};
+        }
+        const StepProfile& p = w.world->profile();
+        return i2d_profile{p.step, p.pairs, p.collide, p.solve, p.update_bounds, p.events};
+    });
+}
+
 I2D_API i2d_status i2d_world_rebuild_static_tree(i2d_world_id id) {
     return guarded("i2d_world_rebuild_static_tree", I2D_ERR_OUT_OF_MEMORY, [&](Call& call) {
         WorldRef w;

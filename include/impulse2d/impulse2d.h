@@ -62,6 +62,8 @@ I2D_API i2d_status i2d_world_step(i2d_world_id world, float time_step, int32_t s
 I2D_API i2d_status i2d_world_set_gravity(i2d_world_id world, i2d_vec2 gravity);
 I2D_API i2d_vec2 i2d_world_get_gravity(i2d_world_id world);
 I2D_API i2d_world_counters i2d_world_get_counters(i2d_world_id world);
+/** Where the last step's time went (zeros before the first step). */
+I2D_API i2d_profile i2d_world_get_profile(i2d_world_id world);
 
 /* ---- Bodies --------------------------------------------------------------------- */
 

@@ -131,6 +131,17 @@ typedef struct i2d_world_counters {
     int32_t dynamic_tree_height;
 } i2d_world_counters;
 
+/** Where the last step's wall time went, ms, summed over its substeps. Timing only: it
+ *  never changes results. */
+typedef struct i2d_profile {
+    float step;           /**< the whole i2d_world_step call */
+    float pairs;          /**< broadphase: new pairs from shapes that moved */
+    float collide;        /**< narrowphase: every contact's manifold */
+    float solve;          /**< integration, contact impulses, positional correction */
+    float update_bounds;  /**< shape bounds and tree re-insertions */
+    float events;         /**< contact, sensor and body move events */
+} i2d_profile;
+
 /* ---- Events: arrays owned by the world, valid until the next step or world change ---- */
 
 /** Two shapes started touching during the last step (both enable contact events). */

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "collision/geometry.hpp"
+#include "core/timer.hpp"
 #include "dynamics/constants.hpp"
 
 namespace i2d {
@@ -227,6 +228,8 @@ void World::set_filter(int32_t shape, const Filter& filter) {
 }
 
 void World::step(float time_step, int32_t substep_count) {
+    Timer total, timer;
+    profile_ = StepProfile{};
     events_.clear();
     events_.contact_end.swap(pending_contact_ends_);
     events_.sensor_end.swap(pending_sensor_ends_);
@@ -237,27 +240,32 @@ void World::step(float time_step, int32_t substep_count) {
     }
     begin_contact_step();
     last_time_step_ = time_step;
+    profile_.events += timer.lap_ms();
     if (time_step > 0.0f) {
         const float h = time_step / static_cast<float>(substep_count);
         for (int32_t i = 0; i < substep_count; ++i) {
-            substep(h);
+            substep(h, timer);
         }
     }
-    end_contact_step();
     for (int32_t i = 0; i < bodies.capacity(); ++i) {
         if (bodies.is_live(i)) {
             bodies[i].force = {};
             bodies[i].torque = 0.0f;
         }
     }
+    end_contact_step();
     report_body_moves();
+    profile_.events += timer.lap_ms();
     validate();
+    profile_.step = total.lap_ms();
 }
 
 // One substep of the seed's pipeline: contacts, forces, impulses, positions, correction.
-void World::substep(float h) {
+void World::substep(float h, Timer& timer) {
     find_new_contacts();
+    profile_.pairs += timer.lap_ms();
     update_contacts();
+    profile_.collide += timer.lap_ms();
     integrate_velocities(h);
     const SolverSettings solver{settings.restitution_threshold, settings.contact_slop,
                                 settings.contact_correction_percent, settings.velocity_iterations};
@@ -268,11 +276,13 @@ void World::substep(float h) {
     integrate_positions(h);
     correct_contact_positions(constraints_, bodies, solver);
     scatter_impulses(constraints_, contacts);
+    profile_.solve += timer.lap_ms();
     for (int32_t i = 0; i < bodies.capacity(); ++i) {
         if (bodies.is_live(i) && bodies[i].type != BodyType::static_body) {
             sync_proxies(i);
         }
     }
+    profile_.update_bounds += timer.lap_ms();
 }
 
 // Gravity, forces and damping for dynamic bodies; the speed limit for every moving body

@@ -23,6 +23,8 @@
 
 namespace i2d {
 
+class Timer;
+
 struct WorldDef {
     Vec2 gravity{0.0f, -10.0f};
     float contact_slop = 0.005f;
@@ -39,6 +41,16 @@ struct WorldCounters {
     int32_t contact_count = 0;  // touching, sensors excluded
     int32_t pair_count = 0;     // contacts alive
     int32_t tree_heights[int32_t(ProxyKind::count)] = {};
+};
+
+/// Where the last step's time went, ms (summed over its substeps).
+struct StepProfile {
+    float step = 0.0f;
+    float pairs = 0.0f;        // broadphase: new pairs from the move buffer
+    float collide = 0.0f;      // narrowphase: every contact's manifold
+    float solve = 0.0f;        // integration, impulses, positional correction
+    float update_bounds = 0.0f;  // tight and fat boxes, tree re-insertions
+    float events = 0.0f;       // begin/end and body move events
 };
 
 struct RayResult {
@@ -78,6 +90,7 @@ public:
 
     WorldCounters counters() const;
     const WorldEvents& events() const { return events_; }
+    const StepProfile& profile() const { return profile_; }
     bool is_locked() const { return lock_depth_ > 0; }
     /// Aborts on a broken internal invariant; does nothing unless built with I2D_VALIDATE.
     void validate() const;
@@ -107,7 +120,7 @@ private:
     void find_new_contacts();
     void update_contacts();
     // The step.
-    void substep(float h);
+    void substep(float h, Timer& timer);
     void integrate_velocities(float h);
     void integrate_positions(float h);
     void report_body_moves();
@@ -122,6 +135,7 @@ private:
     // Step scratch, kept between steps so that a steady state allocates nothing.
     std::vector<ShapePairCandidate> new_pairs_;
     std::vector<ContactConstraint> constraints_;
+    StepProfile profile_;
     float last_time_step_ = 0.0f;  // predicts how far bodies move in a step
     mutable int32_t lock_depth_ = 0;
 };

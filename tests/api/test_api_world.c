@@ -1249,6 +1249,14 @@ I2D_TEST(api_world_struct_layout) {
     CHECK_LAYOUT(offsetof(i2d_ray_result, fraction), 24);
     CHECK_LAYOUT(offsetof(i2d_ray_result, hit), 28);
 
+    CHECK_LAYOUT(sizeof(i2d_profile), 24);
+    CHECK_LAYOUT(offsetof(i2d_profile, step), 0);
+    CHECK_LAYOUT(offsetof(i2d_profile, pairs), 4);
+    CHECK_LAYOUT(offsetof(i2d_profile, collide), 8);
+    CHECK_LAYOUT(offsetof(i2d_profile, solve), 12);
+    CHECK_LAYOUT(offsetof(i2d_profile, update_bounds), 16);
+    CHECK_LAYOUT(offsetof(i2d_profile, events), 20);
+
     CHECK_LAYOUT(sizeof(i2d_world_counters), 28);
     CHECK_LAYOUT(offsetof(i2d_world_counters, body_count), 0);
     CHECK_LAYOUT(offsetof(i2d_world_counters, shape_count), 4);
@@ -1342,4 +1350,37 @@ I2D_TEST(api_world_struct_layout) {
     /* Elsewhere only the ids' size is fixed by the contract. */
     CHECK_LAYOUT(sizeof(i2d_body_id), 8);
 #endif
+}
+
+/* The profile splits one step's wall time into stages measured by the same clock: every
+ * stage is non-negative and together they cannot exceed the whole step. */
+I2D_TEST(api_world_profile) {
+    i2d_world_def world_def = i2d_default_world_def();
+    i2d_world_id world = i2d_world_create(&world_def);
+    I2D_REQUIRE(!I2D_IS_NULL(world));
+    i2d_profile before = i2d_world_get_profile(world);
+    I2D_CHECK(before.step == 0.0f && before.solve == 0.0f);
+    i2d_body_def body_def = i2d_default_body_def();
+    i2d_shape_def shape_def = i2d_default_shape_def();
+    i2d_body_id ground = i2d_body_create(world, &body_def);
+    i2d_shape_create_box(ground, &shape_def, 20.0f, 0.5f);
+    body_def.type = I2D_BODY_DYNAMIC;
+    for (int i = 0; i < 50; ++i) {
+        body_def.position.x = -10.0f + 0.45f * (float)i;
+        body_def.position.y = 1.0f + 0.3f * (float)(i % 5);
+        i2d_body_id b = i2d_body_create(world, &body_def);
+        i2d_shape_create_box(b, &shape_def, 0.2f, 0.2f);
+    }
+    for (int s = 0; s < 30; ++s) {
+        I2D_CHECK_STATUS(i2d_world_step(world, 1.0f / 60.0f, 4), I2D_OK);
+    }
+    i2d_profile p = i2d_world_get_profile(world);
+    I2D_CHECK_STATUS(i2d_last_status(), I2D_OK);
+    I2D_CHECK(p.step > 0.0f);
+    I2D_CHECK(p.pairs >= 0.0f && p.collide >= 0.0f && p.solve > 0.0f && p.update_bounds >= 0.0f && p.events >= 0.0f);
+    I2D_CHECK(p.pairs + p.collide + p.solve + p.update_bounds + p.events <= p.step * 1.001f + 1e-4f);
+    i2d_world_destroy(world);
+    p = i2d_world_get_profile(world);
+    I2D_CHECK(i2d_last_status() == I2D_ERR_INVALID_HANDLE);
+    I2D_CHECK(p.step == 0.0f && p.solve == 0.0f);
 }
