@@ -169,6 +169,7 @@ static bool create_rain(bench_state* state, int32_t count) {
 
 static bool create_rain_1k(bench_state* state) { return create_rain(state, 1000); }
 static bool create_rain_4k(bench_state* state) { return create_rain(state, 4000); }
+static bool create_rain_16k(bench_state* state) { return create_rain(state, 16000); }
 
 /* Every circle must still be in the container: one outside has tunnelled or been thrown out. */
 static bool sanity_inside_all(const bench_state* state, int32_t steps_run, double* figure, bool* sane) {
@@ -309,6 +310,8 @@ const bench_scene bench_scenes[] = {
      create_rain_1k, NULL, sanity_inside_all},
     {"rain_4k", "4000 circles (r 0.25-0.5 m) rain from a grid into an open box", 500, "fraction inside",
      create_rain_4k, NULL, sanity_inside_all},
+    {"rain_16k", "16000 circles (r 0.25-0.5 m) rain from a grid into an open box", 500, "fraction inside",
+     create_rain_16k, NULL, sanity_inside_all},
     {"box_grid", "50 x 20 columns of 1 m boxes resting on the ground (sleep off)", 500, "top-row max drop m",
      create_box_grid, NULL, sanity_top_row_drop},
     {"small", "50 circles and boxes in a room with a scripted kinematic platform", 500, "fraction inside",
