@@ -2,6 +2,8 @@
 // BroadPhase: proxies in three trees and the move buffer.
 #include "broadphase/broad_phase.hpp"
 
+#include <algorithm>
+
 namespace i2d {
 
 int32_t BroadPhase::create_proxy(const AABB& fat_aabb, uint64_t category_bits, int32_t shape, ProxyKind kind,
@@ -24,17 +26,94 @@ void BroadPhase::destroy_proxy(int32_t key) {
             }
         }
     }
+    int32_t& slot = pending_slot(key);
+    if (slot != null_index) {
+        pending_moves_[slot].key = null_index;  // dropped at the commit
+        slot = null_index;
+    }
     tree(proxy_kind(key)).destroy_proxy(proxy_id(key));
 }
 
+int32_t& BroadPhase::pending_slot(int32_t key) {
+    if (key >= int32_t(pending_slot_.size())) {
+        pending_slot_.resize(size_t(key) + 1, null_index);
+    }
+    return pending_slot_[key];
+}
+
 void BroadPhase::move_proxy(int32_t key, const AABB& fat_aabb) {
-    tree(proxy_kind(key)).move_proxy(proxy_id(key), fat_aabb);
+    int32_t& slot = pending_slot(key);
+    if (slot == null_index) {
+        slot = int32_t(pending_moves_.size());
+        pending_moves_.push_back({0, key, fat_aabb});
+    } else {
+        pending_moves_[slot].box = fat_aabb;
+    }
     buffer_move(key);
 }
 
 void BroadPhase::enlarge_proxy(int32_t key, const AABB& fat_aabb) {
-    tree(proxy_kind(key)).enlarge_proxy(proxy_id(key), fat_aabb);
+    const int32_t slot = pending_slot(key);
+    if (slot == null_index) {
+        tree(proxy_kind(key)).enlarge_proxy(proxy_id(key), fat_aabb);
+    } else {
+        AABB& box = pending_moves_[slot].box;
+        box = {min(box.lower, fat_aabb.lower), max(box.upper, fat_aabb.upper)};
+    }
     buffer_move(key);
+}
+
+namespace {
+
+// Spreads the low 16 bits of v to the even bit positions.
+uint32_t spread_bits(uint32_t v) {
+    v &= 0xFFFF;
+    v = (v | (v << 8)) & 0x00FF00FF;
+    v = (v | (v << 4)) & 0x0F0F0F0F;
+    v = (v | (v << 2)) & 0x33333333;
+    v = (v | (v << 1)) & 0x55555555;
+    return v;
+}
+
+}  // namespace
+
+void BroadPhase::sort_spatially(std::vector<MoveEntry>& entries) {
+    if (entries.empty()) {
+        return;
+    }
+    AABB bounds = entries[0].box;
+    for (const MoveEntry& e : entries) {
+        bounds = {min(bounds.lower, e.box.lower), max(bounds.upper, e.box.upper)};
+    }
+    const Vec2 size = bounds.upper - bounds.lower;
+    const float sx = size.x > 0.0f ? 65535.0f / size.x : 0.0f;
+    const float sy = size.y > 0.0f ? 65535.0f / size.y : 0.0f;
+    for (MoveEntry& e : entries) {
+        const Vec2 c = center(e.box) - bounds.lower;
+        e.morton = spread_bits(uint32_t(c.x * sx)) | (spread_bits(uint32_t(c.y * sy)) << 1);
+    }
+    std::sort(entries.begin(), entries.end(), [](const MoveEntry& l, const MoveEntry& r) {
+        return l.morton != r.morton ? l.morton < r.morton : l.key < r.key;
+    });
+}
+
+void BroadPhase::commit_moves() {
+    pending_moves_.erase(std::remove_if(pending_moves_.begin(), pending_moves_.end(),
+                                        [](const MoveEntry& e) { return e.key == null_index; }),
+                         pending_moves_.end());
+    sort_spatially(pending_moves_);
+    for (const MoveEntry& e : pending_moves_) {
+        tree(proxy_kind(e.key)).move_proxy(proxy_id(e.key), e.box);
+        pending_slot_[e.key] = null_index;
+    }
+    pending_moves_.clear();
+    // Once a quarter of a tree has been re-inserted its nodes are scattered again; the
+    // O(n) compaction is then cheaper than the cache misses it saves.
+    for (DynamicTree& t : trees_) {
+        if (t.proxy_count() > 0 && 4 * t.moves_since_compact() > t.proxy_count()) {
+            t.compact();
+        }
+    }
 }
 
 void BroadPhase::buffer_move(int32_t key) {

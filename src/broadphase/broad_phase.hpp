@@ -36,9 +36,17 @@ public:
     int32_t create_proxy(const AABB& fat_aabb, uint64_t category_bits, int32_t shape, ProxyKind kind,
                          bool query_now);
     void destroy_proxy(int32_t key);
-    /// Re-inserts with a new fat box and queues the proxy for pair finding.
+    /// Queues a re-insertion with a new fat box (done by commit_moves; a second move
+    /// before then replaces the box) and queues the proxy for pair finding. Until the
+    /// commit the trees and fat_aabb() still show the old box.
     void move_proxy(int32_t key, const AABB& fat_aabb);
-    /// Grows the fat box in place and queues the proxy for pair finding.
+    /// Performs the queued re-insertions in Morton order of their new boxes: neighbours
+    /// in space are re-inserted one after the other and walk tree nodes that are still
+    /// in cache. In caller order (random in space) a large tree misses the cache on
+    /// nearly every node.
+    void commit_moves();
+    /// Grows the fat box in place (or the queued box of a pending move) and queues the
+    /// proxy for pair finding.
     void enlarge_proxy(int32_t key, const AABB& fat_aabb);
 
     /// Finds new candidate pairs of the queued proxies and clears the queue. Appends each
@@ -54,10 +62,21 @@ public:
 
 private:
     void buffer_move(int32_t key);
+    int32_t& pending_slot(int32_t key);
+    struct MoveEntry {
+        uint32_t morton;
+        int32_t key;
+        AABB box;
+    };
+    /// Sorts entries along a Morton (Z-order) curve of their boxes' centres, ties by key.
+    static void sort_spatially(std::vector<MoveEntry>& entries);
 
     DynamicTree trees_[int32_t(ProxyKind::count)];
     std::vector<int32_t> move_buffer_;  // proxy keys, in the order they moved
     HashSet move_set_;                  // the same keys, for "did the other one move too"
+    std::vector<MoveEntry> pending_moves_;  // re-insertions waiting for commit_moves
+    std::vector<int32_t> pending_slot_;     // key -> index in pending_moves_, or null_index
+    std::vector<MoveEntry> sorted_moves_;   // the move buffer in query order
 };
 
 }  // namespace i2d

@@ -6,10 +6,16 @@ namespace i2d {
 
 template <class Accept>
 void BroadPhase::update_pairs(Accept&& accept, std::vector<ShapePairCandidate>& out) {
+    commit_moves();
+    sorted_moves_.clear();
     for (const int32_t key : move_buffer_) {
-        if (key == null_index) {
-            continue;  // destroyed after it moved
+        if (key != null_index) {  // blank: destroyed after it moved
+            sorted_moves_.push_back({0, key, fat_aabb(key)});
         }
+    }
+    sort_spatially(sorted_moves_);
+    for (const MoveEntry& entry : sorted_moves_) {
+        const int32_t key = entry.key;
         const ProxyKind kind = proxy_kind(key);
         const DynamicTree& own = tree(kind);
         const AABB box = own.fat_aabb(proxy_id(key));

@@ -41,36 +41,56 @@ void DynamicTree::free_node(int32_t node) {
 }
 
 int32_t DynamicTree::create_proxy(const AABB& fat_aabb, uint64_t category_bits, int32_t user_value) {
+    // Room for the proxy table first, so that a bad_alloc changes nothing.
+    if (free_proxies_.empty()) {
+        proxy_nodes_.reserve(proxy_nodes_.size() + 1);
+        free_proxies_.reserve(proxy_nodes_.size() + 1);
+    }
     const int32_t leaf = allocate_node();
+    int32_t proxy;
+    if (free_proxies_.empty()) {
+        proxy = int32_t(proxy_nodes_.size());
+        proxy_nodes_.push_back(leaf);
+    } else {
+        proxy = free_proxies_.back();
+        free_proxies_.pop_back();
+        proxy_nodes_[proxy] = leaf;
+    }
     TreeNode& node = nodes_[leaf];
     node.aabb = fat_aabb;
     node.category_bits = category_bits;
-    node.user_value = user_value;
+    node.user_value() = user_value;
+    node.proxy() = proxy;
     node.height = 0;
     insert_leaf(leaf);
     ++proxy_count_;
-    return leaf;
+    return proxy;
 }
 
 void DynamicTree::destroy_proxy(int32_t proxy) {
-    I2D_ASSERT(nodes_[proxy].is_leaf() && nodes_[proxy].height == 0);
-    remove_leaf(proxy);
-    free_node(proxy);
+    const int32_t leaf = proxy_nodes_[proxy];
+    I2D_ASSERT(nodes_[leaf].is_leaf() && nodes_[leaf].height == 0);
+    remove_leaf(leaf);
+    free_node(leaf);
+    proxy_nodes_[proxy] = null_index;
+    free_proxies_.push_back(proxy);
     --proxy_count_;
 }
 
 void DynamicTree::move_proxy(int32_t proxy, const AABB& fat_aabb) {
-    remove_leaf(proxy);
-    nodes_[proxy].aabb = fat_aabb;
-    insert_leaf(proxy);
+    const int32_t leaf = proxy_nodes_[proxy];
+    remove_leaf(leaf);
+    nodes_[leaf].aabb = fat_aabb;
+    insert_leaf(leaf);
+    ++moves_since_compact_;
 }
 
 void DynamicTree::enlarge_proxy(int32_t proxy, const AABB& fat_aabb) {
-    I2D_ASSERT(contains(fat_aabb, nodes_[proxy].aabb));
-    nodes_[proxy].aabb = fat_aabb;
-    nodes_[proxy].enlarged = true;
+    const int32_t leaf = proxy_nodes_[proxy];
+    I2D_ASSERT(contains(fat_aabb, nodes_[leaf].aabb));
+    nodes_[leaf].aabb = fat_aabb;
     // Ancestors grow until one already holds the new box; above it nothing changes.
-    for (int32_t index = nodes_[proxy].parent; index != null_index; index = nodes_[index].parent) {
+    for (int32_t index = nodes_[leaf].parent; index != null_index; index = nodes_[index].parent) {
         if (contains(nodes_[index].aabb, fat_aabb)) {
             break;
         }
@@ -93,7 +113,7 @@ int32_t DynamicTree::find_best_sibling(const AABB& box) const {
         inherited += perimeter(union_of(node.aabb, box)) - perimeter(node.aabb);
 
         float descend_bound[2] = {FLT_MAX, FLT_MAX};
-        const int32_t children[2] = {node.child1, node.child2};
+        const int32_t children[2] = {node.child1(), node.child2()};
         for (int k = 0; k < 2; ++k) {
             const TreeNode& child = nodes_[children[k]];
             const float direct = perimeter(union_of(child.aabb, box));
@@ -130,14 +150,14 @@ void DynamicTree::insert_leaf(int32_t leaf) {
     parent.aabb = union_of(nodes_[leaf].aabb, nodes_[sibling].aabb);
     parent.category_bits = nodes_[leaf].category_bits | nodes_[sibling].category_bits;
     parent.height = int16_t(nodes_[sibling].height + 1);
-    parent.child1 = sibling;
-    parent.child2 = leaf;
+    parent.child1() = sibling;
+    parent.child2() = leaf;
     if (old_parent == null_index) {
         root_ = new_parent;
-    } else if (nodes_[old_parent].child1 == sibling) {
-        nodes_[old_parent].child1 = new_parent;
+    } else if (nodes_[old_parent].child1() == sibling) {
+        nodes_[old_parent].child1() = new_parent;
     } else {
-        nodes_[old_parent].child2 = new_parent;
+        nodes_[old_parent].child2() = new_parent;
     }
     nodes_[sibling].parent = new_parent;
     nodes_[leaf].parent = new_parent;
@@ -151,15 +171,15 @@ void DynamicTree::remove_leaf(int32_t leaf) {
     }
     const int32_t parent = nodes_[leaf].parent;
     const int32_t grand = nodes_[parent].parent;
-    const int32_t sibling = nodes_[parent].child1 == leaf ? nodes_[parent].child2 : nodes_[parent].child1;
+    const int32_t sibling = nodes_[parent].child1() == leaf ? nodes_[parent].child2() : nodes_[parent].child1();
     if (grand == null_index) {
         root_ = sibling;
         nodes_[sibling].parent = null_index;
     } else {
-        if (nodes_[grand].child1 == parent) {
-            nodes_[grand].child1 = sibling;
+        if (nodes_[grand].child1() == parent) {
+            nodes_[grand].child1() = sibling;
         } else {
-            nodes_[grand].child2 = sibling;
+            nodes_[grand].child2() = sibling;
         }
         nodes_[sibling].parent = grand;
         refit_upward(grand, false);
@@ -171,8 +191,8 @@ void DynamicTree::remove_leaf(int32_t leaf) {
 void DynamicTree::refit_upward(int32_t index, bool rotate_nodes) {
     while (index != null_index) {
         TreeNode& node = nodes_[index];
-        const TreeNode& c1 = nodes_[node.child1];
-        const TreeNode& c2 = nodes_[node.child2];
+        const TreeNode& c1 = nodes_[node.child1()];
+        const TreeNode& c2 = nodes_[node.child2()];
         node.aabb = union_of(c1.aabb, c2.aabb);
         node.category_bits = c1.category_bits | c2.category_bits;
         node.height = int16_t(1 + std::max(c1.height, c2.height));
@@ -187,7 +207,7 @@ void DynamicTree::refit_upward(int32_t index, bool rotate_nodes) {
 // child of C, or C with a child of B, and apply the swap that shrinks the perimeter of
 // the rebuilt child the most. A's own box is the same afterwards (same leaves).
 void DynamicTree::rotate(int32_t a) {
-    const int32_t b = nodes_[a].child1, c = nodes_[a].child2;
+    const int32_t b = nodes_[a].child1(), c = nodes_[a].child2();
     struct Swap {
         int32_t outer;  // the child of A that moves down
         int32_t inner;  // the grandchild that moves up
@@ -201,14 +221,14 @@ void DynamicTree::rotate(int32_t a) {
             return;
         }
         const float before = perimeter(h.aabb);
-        // Swap outer with host.child1: host then holds outer and host.child2, and vice versa.
-        const float after1 = perimeter(union_of(nodes_[outer].aabb, nodes_[h.child2].aabb));
-        const float after2 = perimeter(union_of(nodes_[outer].aabb, nodes_[h.child1].aabb));
+        // Swap outer with host.child1(): host then holds outer and host.child2(), and vice versa.
+        const float after1 = perimeter(union_of(nodes_[outer].aabb, nodes_[h.child2()].aabb));
+        const float after2 = perimeter(union_of(nodes_[outer].aabb, nodes_[h.child1()].aabb));
         if (before - after1 > best.gain) {
-            best = {outer, h.child1, host, before - after1};
+            best = {outer, h.child1(), host, before - after1};
         }
         if (before - after2 > best.gain) {
-            best = {outer, h.child2, host, before - after2};
+            best = {outer, h.child2(), host, before - after2};
         }
     };
     consider(b, c);
@@ -218,26 +238,26 @@ void DynamicTree::rotate(int32_t a) {
     }
 
     TreeNode& host = nodes_[best.host];
-    if (host.child1 == best.inner) {
-        host.child1 = best.outer;
+    if (host.child1() == best.inner) {
+        host.child1() = best.outer;
     } else {
-        host.child2 = best.outer;
+        host.child2() = best.outer;
     }
     nodes_[best.outer].parent = best.host;
     TreeNode& node = nodes_[a];
-    if (node.child1 == best.outer) {
-        node.child1 = best.inner;
+    if (node.child1() == best.outer) {
+        node.child1() = best.inner;
     } else {
-        node.child2 = best.inner;
+        node.child2() = best.inner;
     }
     nodes_[best.inner].parent = a;
 
-    const TreeNode& h1 = nodes_[host.child1];
-    const TreeNode& h2 = nodes_[host.child2];
+    const TreeNode& h1 = nodes_[host.child1()];
+    const TreeNode& h2 = nodes_[host.child2()];
     host.aabb = union_of(h1.aabb, h2.aabb);
     host.category_bits = h1.category_bits | h2.category_bits;
     host.height = int16_t(1 + std::max(h1.height, h2.height));
-    node.height = int16_t(1 + std::max(nodes_[node.child1].height, nodes_[node.child2].height));
+    node.height = int16_t(1 + std::max(nodes_[node.child1()].height, nodes_[node.child2()].height));
 }
 
 float DynamicTree::total_perimeter() const {
@@ -267,7 +287,6 @@ void DynamicTree::rebuild() {
         }
         if (nodes_[i].is_leaf()) {
             nodes_[i].parent = null_index;
-            nodes_[i].enlarged = false;
             rebuild_scratch_.push_back(i);
         } else {
             free_node(i);
@@ -278,6 +297,51 @@ void DynamicTree::rebuild() {
     if (root_ != null_index) {
         nodes_[root_].parent = null_index;
     }
+    compact();
+}
+
+// Preorder: a node, then its whole first subtree, then its second, so every subtree is
+// one contiguous run of the array and a traversal reads memory mostly forwards.
+void DynamicTree::compact() {
+    moves_since_compact_ = 0;
+    compact_scratch_.clear();
+    compact_scratch_.reserve(size_t(2 * proxy_count_));
+    if (root_ != null_index) {
+        compact_stack_.clear();
+        compact_stack_.push_back(root_);
+        while (!compact_stack_.empty()) {
+            const int32_t old_index = compact_stack_.back();
+            compact_stack_.pop_back();
+            const int32_t new_index = int32_t(compact_scratch_.size());
+            compact_scratch_.push_back(nodes_[old_index]);
+            // The old node keeps its new index in `parent` until the links are fixed.
+            nodes_[old_index].parent = new_index;
+            if (!nodes_[old_index].is_leaf()) {
+                compact_stack_.push_back(nodes_[old_index].child2());
+                compact_stack_.push_back(nodes_[old_index].child1());
+            }
+        }
+        for (TreeNode& node : compact_scratch_) {
+            if (node.is_leaf()) {
+                continue;
+            }
+            node.child1() = nodes_[node.child1()].parent;
+            node.child2() = nodes_[node.child2()].parent;
+        }
+        for (int32_t i = 0; i < int32_t(compact_scratch_.size()); ++i) {
+            TreeNode& node = compact_scratch_[i];
+            if (!node.is_leaf()) {
+                compact_scratch_[node.child1()].parent = i;
+                compact_scratch_[node.child2()].parent = i;
+            } else {
+                proxy_nodes_[node.proxy()] = i;
+            }
+        }
+        compact_scratch_[0].parent = null_index;
+        root_ = 0;
+    }
+    nodes_.swap(compact_scratch_);
+    free_list_ = null_index;
     validate();
 }
 
@@ -365,14 +429,14 @@ int32_t DynamicTree::build_top_down(int32_t* leaves, int32_t count) {
                 std::nth_element(task.leaves, task.leaves + split, task.leaves + task.count,
                                  [&](int32_t l, int32_t r) { return coord(l) < coord(r); });
             }
-            nodes_[node].child1 = null_index;  // filled in by the child tasks
+            nodes_[node].height = 1;  // internal; its children are filled in by the child tasks
             tasks.push_back({task.leaves, split, node, task.depth + 1, true});
             tasks.push_back({task.leaves + split, task.count - split, node, task.depth + 1, false});
         }
         if (task.parent == null_index) {
             root = node;
         } else {
-            (task.first_child ? nodes_[task.parent].child1 : nodes_[task.parent].child2) = node;
+            (task.first_child ? nodes_[task.parent].child1() : nodes_[task.parent].child2()) = node;
             nodes_[node].parent = task.parent;
         }
     }
@@ -382,11 +446,11 @@ int32_t DynamicTree::build_top_down(int32_t* leaves, int32_t count) {
     for (int32_t i = 0; i < count; ++i) {
         for (int32_t index = nodes_[leaves[i]].parent; index != null_index; index = nodes_[index].parent) {
             TreeNode& n = nodes_[index];
-            if (n.child1 == null_index || n.child2 == null_index) {
+            if (n.child1() == null_index || n.child2() == null_index) {
                 break;
             }
-            const TreeNode& c1 = nodes_[n.child1];
-            const TreeNode& c2 = nodes_[n.child2];
+            const TreeNode& c1 = nodes_[n.child1()];
+            const TreeNode& c2 = nodes_[n.child2()];
             n.aabb = union_of(c1.aabb, c2.aabb);
             n.category_bits = c1.category_bits | c2.category_bits;
             n.height = int16_t(1 + std::max(c1.height, c2.height));
@@ -404,14 +468,14 @@ void DynamicTree::validate() const {
             continue;
         }
         ++live;
-        I2D_ASSERT(n.parent == null_index ? i == root_ : nodes_[n.parent].child1 == i || nodes_[n.parent].child2 == i);
+        I2D_ASSERT(n.parent == null_index ? i == root_ : nodes_[n.parent].child1() == i || nodes_[n.parent].child2() == i);
         if (n.is_leaf()) {
-            I2D_ASSERT(n.height == 0 && n.child2 == null_index);
+            I2D_ASSERT(proxy_nodes_[n.proxy()] == i);
             ++leaves;
             continue;
         }
-        const TreeNode& c1 = nodes_[n.child1];
-        const TreeNode& c2 = nodes_[n.child2];
+        const TreeNode& c1 = nodes_[n.child1()];
+        const TreeNode& c2 = nodes_[n.child2()];
         I2D_ASSERT(c1.parent == i && c2.parent == i);
         I2D_ASSERT(n.height == 1 + std::max(c1.height, c2.height));
         I2D_ASSERT(contains(n.aabb, c1.aabb) && contains(n.aabb, c2.aabb));
@@ -424,6 +488,15 @@ void DynamicTree::validate() const {
         ++free_count;
     }
     I2D_ASSERT(live + free_count == int32_t(nodes_.size()));
+    int32_t mapped = 0;
+    for (int32_t proxy = 0; proxy < int32_t(proxy_nodes_.size()); ++proxy) {
+        const int32_t leaf = proxy_nodes_[proxy];
+        if (leaf != null_index) {
+            I2D_ASSERT(nodes_[leaf].height == 0 && nodes_[leaf].proxy() == proxy);
+            ++mapped;
+        }
+    }
+    I2D_ASSERT(mapped == proxy_count_);
 #endif
 }
 

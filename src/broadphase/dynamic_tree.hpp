@@ -9,6 +9,12 @@
 // for Animated Scenes", as Box2D v3 uses it); rotations on the way back up keep the
 // height near log2(n). A top-down binned SAH rebuild serves bulk creation. The
 // alternative, a loose grid, needs a cell size that suits every scene.
+//
+// Proxy ids are not node indices: a small table maps each proxy to its leaf, so that
+// compact() can move nodes. Once a tree outgrows the cache, nodes scattered through
+// memory by creation order and free-list reuse cost a cache miss at nearly every step of
+// a traversal; compact() lays the nodes out depth-first, which puts every subtree in one
+// contiguous run (64k moving shapes cost 8x 16k before, close to 4x after).
 #pragma once
 
 #include <cstdint>
@@ -23,13 +29,24 @@ struct TreeNode {
     AABB aabb;
     uint64_t category_bits = 0;  // leaves: the shape's; internal nodes: the union below
     int32_t parent = null_index; // also the free list link for free nodes
-    int32_t child1 = null_index;
-    int32_t child2 = null_index;
-    int32_t user_value = -1;     // leaves: the shape index
     int16_t height = 0;          // leaves 0; -1 when free
-    bool enlarged = false;       // the broadphase grew this leaf outside a re-insert
-    bool is_leaf() const { return child1 == null_index; }
+
+    // Two slots shared by both kinds of node, which keeps a node at 40 bytes: internal
+    // nodes hold their children, leaves their user value (a shape) and proxy id.
+    int32_t& child1() { return slot_[0]; }
+    int32_t& child2() { return slot_[1]; }
+    int32_t child1() const { return slot_[0]; }
+    int32_t child2() const { return slot_[1]; }
+    int32_t& user_value() { return slot_[0]; }
+    int32_t& proxy() { return slot_[1]; }
+    int32_t user_value() const { return slot_[0]; }
+    int32_t proxy() const { return slot_[1]; }
+    bool is_leaf() const { return height == 0; }
+
+private:
+    int32_t slot_[2] = {null_index, null_index};
 };
+static_assert(sizeof(TreeNode) == 40, "tree nodes are the hot data of every query: keep them small");
 
 struct TreeRayInput {
     Vec2 origin;
@@ -48,9 +65,9 @@ public:
     /// when the box only gets bigger. The box must contain the old one.
     void enlarge_proxy(int32_t proxy, const AABB& fat_aabb);
 
-    const AABB& fat_aabb(int32_t proxy) const { return nodes_[proxy].aabb; }
-    int32_t user_value(int32_t proxy) const { return nodes_[proxy].user_value; }
-    uint64_t category_bits(int32_t proxy) const { return nodes_[proxy].category_bits; }
+    const AABB& fat_aabb(int32_t proxy) const { return nodes_[proxy_nodes_[proxy]].aabb; }
+    int32_t user_value(int32_t proxy) const { return nodes_[proxy_nodes_[proxy]].user_value(); }
+    uint64_t category_bits(int32_t proxy) const { return nodes_[proxy_nodes_[proxy]].category_bits; }
 
     /// Calls visit(proxy, user_value) for every leaf whose box overlaps `box` (touching
     /// included) and whose category meets `mask_bits`; visit returns false to stop.
@@ -65,6 +82,10 @@ public:
 
     /// Rebuilds the whole tree top-down with a binned surface-area heuristic.
     void rebuild();
+    /// Lays the nodes out depth-first in one array (same tree, same proxy ids).
+    void compact();
+    /// Re-insertions since the last compact() or rebuild(): how scattered the nodes are.
+    int32_t moves_since_compact() const { return moves_since_compact_; }
 
     int32_t height() const { return root_ == null_index ? 0 : nodes_[root_].height; }
     int32_t proxy_count() const { return proxy_count_; }
@@ -85,9 +106,14 @@ private:
     int32_t build_top_down(int32_t* leaves, int32_t count);
 
     std::vector<TreeNode> nodes_;
+    std::vector<int32_t> proxy_nodes_;  // proxy id -> leaf node; null_index when free
+    std::vector<int32_t> free_proxies_;
+    std::vector<TreeNode> compact_scratch_;
+    std::vector<int32_t> compact_stack_;
     int32_t root_ = null_index;
     int32_t free_list_ = null_index;
     int32_t proxy_count_ = 0;
+    int32_t moves_since_compact_ = 0;
     std::vector<int32_t> rebuild_scratch_;
 };
 

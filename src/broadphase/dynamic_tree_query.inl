@@ -20,12 +20,12 @@ void DynamicTree::query(const AABB& box, uint64_t mask_bits, Visit&& visit) cons
             continue;
         }
         if (node.is_leaf()) {
-            if (!visit(index, node.user_value)) {
+            if (!visit(node.proxy(), node.user_value())) {
                 return;
             }
         } else {
-            stack.push(node.child1);
-            stack.push(node.child2);
+            stack.push(node.child1());
+            stack.push(node.child2());
         }
     }
 }
@@ -77,11 +77,11 @@ void DynamicTree::ray_cast(const TreeRayInput& input, uint64_t mask_bits, Visit&
             continue;
         }
         if (!node.is_leaf()) {
-            stack.push(node.child1);
-            stack.push(node.child2);
+            stack.push(node.child1());
+            stack.push(node.child2());
             continue;
         }
-        const float value = visit(static_cast<const TreeRayInput&>(current), index, node.user_value);
+        const float value = visit(static_cast<const TreeRayInput&>(current), node.proxy(), node.user_value());
         if (value == 0.0f) {
             return;
         }

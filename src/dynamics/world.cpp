@@ -216,6 +216,7 @@ void World::set_transform(int32_t body, const Transform& xf) {
     b.transform = xf;
     b.center = transform_point(xf, b.local_center);
     sync_proxies(body);
+    broad_phase_.commit_moves();
 }
 
 // The proxy is re-created because the trees keep category bits for query masks; its
@@ -282,6 +283,7 @@ void World::substep(float h, Timer& timer) {
             sync_proxies(i);
         }
     }
+    broad_phase_.commit_moves();
     profile_.update_bounds += timer.lap_ms();
 }
 
