@@ -41,10 +41,12 @@ void DynamicTree::free_node(int32_t node) {
 }
 
 int32_t DynamicTree::create_proxy(const AABB& fat_aabb, uint64_t category_bits, int32_t user_value) {
-    // Room for the proxy table first, so that a bad_alloc changes nothing.
-    if (free_proxies_.empty()) {
-        proxy_nodes_.reserve(proxy_nodes_.size() + 1);
-        free_proxies_.reserve(proxy_nodes_.size() + 1);
+    // Room for the proxy table first (growing geometrically), so that a bad_alloc
+    // changes nothing and destroy_proxy never allocates.
+    if (free_proxies_.empty() && proxy_nodes_.size() == proxy_nodes_.capacity()) {
+        const size_t capacity = proxy_nodes_.capacity() < 16 ? 16 : 2 * proxy_nodes_.capacity();
+        proxy_nodes_.reserve(capacity);
+        free_proxies_.reserve(capacity);
     }
     const int32_t leaf = allocate_node();
     int32_t proxy;
