@@ -87,7 +87,6 @@ int32_t World::create_body(const BodyDef& def) {
     b.is_bullet = def.is_bullet;
     b.user_data = def.user_data;
     update_mass(index);
-    validate();
     return index;
 }
 
@@ -97,7 +96,6 @@ void World::destroy_body(int32_t body) {
         destroy_shape(bodies[body].head_shape);
     }
     bodies.free(body);
-    validate();
 }
 
 void World::create_proxy(int32_t shape, bool query_now) {
@@ -135,7 +133,6 @@ int32_t World::create_shape(int32_t body, const ShapeDef& def, const Geometry& g
     // A new static shape may land on resting bodies: let it look for pairs too.
     create_proxy(index, true);
     update_mass(body);
-    validate();
     return index;
 }
 

@@ -93,6 +93,8 @@ public:
     const StepProfile& profile() const { return profile_; }
     bool is_locked() const { return lock_depth_ > 0; }
     /// Aborts on a broken internal invariant; does nothing unless built with I2D_VALIDATE.
+    /// Runs after every step (a whole-world check per creation would make building a
+    /// large scene quadratic in validating builds).
     void validate() const;
 
     WorldDef settings;
