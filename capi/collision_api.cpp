@@ -202,64 +202,40 @@ i2d_manifold collide_checked(const char* name, const A* a, i2d_transform xfa, co
 
 I2D_API i2d_manifold i2d_collide_capsule_circle(const i2d_capsule* a, i2d_transform xfa, const i2d_circle* b,
                                                 i2d_transform xfb) {
-    return collide_checked("i2d_collide_capsule_circle", a, xfa, b, xfb, valid_capsule, valid_circle_ptr,
-                           [](const Capsule& ca, const Transform& xa, const Circle& cb, const Transform& xb) {
-                               return collide_capsule_circle(ca, xa, cb, xb);
-                           });
+    return collide_checked("i2d_collide_capsule_circle", a, xfa, b, xfb, valid_capsule, valid_circle_ptr, collide_capsule_circle);
 }
 
 I2D_API i2d_manifold i2d_collide_segment_circle(const i2d_segment* a, i2d_transform xfa, const i2d_circle* b,
                                                 i2d_transform xfb) {
-    return collide_checked("i2d_collide_segment_circle", a, xfa, b, xfb, valid_segment, valid_circle_ptr,
-                           [](const Segment& sa, const Transform& xa, const Circle& cb, const Transform& xb) {
-                               return collide_segment_circle(sa, xa, cb, xb);
-                           });
+    return collide_checked("i2d_collide_segment_circle", a, xfa, b, xfb, valid_segment, valid_circle_ptr, collide_segment_circle);
 }
 
 I2D_API i2d_manifold i2d_collide_polygon_circle(const i2d_polygon* a, i2d_transform xfa, const i2d_circle* b,
                                                 i2d_transform xfb) {
-    return collide_checked("i2d_collide_polygon_circle", a, xfa, b, xfb, valid_polygon, valid_circle_ptr,
-                           [](const Polygon& pa, const Transform& xa, const Circle& cb, const Transform& xb) {
-                               return collide_polygon_circle(pa, xa, cb, xb);
-                           });
+    return collide_checked("i2d_collide_polygon_circle", a, xfa, b, xfb, valid_polygon, valid_circle_ptr, collide_polygon_circle);
 }
 
 I2D_API i2d_manifold i2d_collide_capsules(const i2d_capsule* a, i2d_transform xfa, const i2d_capsule* b,
                                           i2d_transform xfb) {
-    return collide_checked("i2d_collide_capsules", a, xfa, b, xfb, valid_capsule, valid_capsule,
-                           [](const Capsule& ca, const Transform& xa, const Capsule& cb, const Transform& xb) {
-                               return collide_capsules(ca, xa, cb, xb);
-                           });
+    return collide_checked("i2d_collide_capsules", a, xfa, b, xfb, valid_capsule, valid_capsule, collide_capsules);
 }
 
 I2D_API i2d_manifold i2d_collide_segment_capsule(const i2d_segment* a, i2d_transform xfa, const i2d_capsule* b,
                                                  i2d_transform xfb) {
-    return collide_checked("i2d_collide_segment_capsule", a, xfa, b, xfb, valid_segment, valid_capsule,
-                           [](const Segment& sa, const Transform& xa, const Capsule& cb, const Transform& xb) {
-                               return collide_segment_capsule(sa, xa, cb, xb);
-                           });
+    return collide_checked("i2d_collide_segment_capsule", a, xfa, b, xfb, valid_segment, valid_capsule, collide_segment_capsule);
 }
 
 I2D_API i2d_manifold i2d_collide_polygon_capsule(const i2d_polygon* a, i2d_transform xfa, const i2d_capsule* b,
                                                  i2d_transform xfb) {
-    return collide_checked("i2d_collide_polygon_capsule", a, xfa, b, xfb, valid_polygon, valid_capsule,
-                           [](const Polygon& pa, const Transform& xa, const Capsule& cb, const Transform& xb) {
-                               return collide_polygon_capsule(pa, xa, cb, xb);
-                           });
+    return collide_checked("i2d_collide_polygon_capsule", a, xfa, b, xfb, valid_polygon, valid_capsule, collide_polygon_capsule);
 }
 
 I2D_API i2d_manifold i2d_collide_segment_polygon(const i2d_segment* a, i2d_transform xfa, const i2d_polygon* b,
                                                  i2d_transform xfb) {
-    return collide_checked("i2d_collide_segment_polygon", a, xfa, b, xfb, valid_segment, valid_polygon,
-                           [](const Segment& sa, const Transform& xa, const Polygon& pb, const Transform& xb) {
-                               return collide_segment_polygon(sa, xa, pb, xb);
-                           });
+    return collide_checked("i2d_collide_segment_polygon", a, xfa, b, xfb, valid_segment, valid_polygon, collide_segment_polygon);
 }
 
 I2D_API i2d_manifold i2d_collide_polygons(const i2d_polygon* a, i2d_transform xfa, const i2d_polygon* b,
                                           i2d_transform xfb) {
-    return collide_checked("i2d_collide_polygons", a, xfa, b, xfb, valid_polygon, valid_polygon,
-                           [](const Polygon& pa, const Transform& xa, const Polygon& pb, const Transform& xb) {
-                               return collide_polygons(pa, xa, pb, xb);
-                           });
+    return collide_checked("i2d_collide_polygons", a, xfa, b, xfb, valid_polygon, valid_polygon, collide_polygons);
 }
