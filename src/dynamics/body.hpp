@@ -52,7 +52,7 @@ struct Body {
     int32_t shape_count = 0;
     int32_t head_contact_key = null_index;  // list of contacts, linked through ContactEdge
     int32_t contact_count = 0;
-    Vec2 step_start_position;  // to tell whether the body moved during the step
+    Transform step_start;  // to tell whether the body moved or turned during the step
 };
 
 }  // namespace i2d

@@ -233,7 +233,7 @@ void World::step(float time_step, int32_t substep_count) {
     events_.sensor_end.swap(pending_sensor_ends_);
     for (int32_t i = 0; i < bodies.capacity(); ++i) {
         if (bodies.is_live(i)) {
-            bodies[i].step_start_position = bodies[i].transform.p;
+            bodies[i].step_start = bodies[i].transform;
         }
     }
     begin_contact_step();
@@ -331,8 +331,9 @@ void World::report_body_moves() {
             continue;
         }
         const Body& b = bodies[i];
-        if (b.transform.p == b.step_start_position) {
-            continue;
+        const Transform& start = b.step_start;
+        if (b.transform.p == start.p && b.transform.q.c == start.q.c && b.transform.q.s == start.q.s) {
+            continue;  // neither moved nor turned
         }
         events_.body_moves.push_back({b.transform, body_id(i), b.user_data, false});
     }

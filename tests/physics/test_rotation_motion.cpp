@@ -456,3 +456,23 @@ I2D_TEST(phys_rotmotion_point_helpers) {
            worst_world, worst_round, worst_v);
     I2D_CHECK(worst_v < 1e-4);
 }
+
+I2D_TEST(phys_rotmotion_spin_in_place_is_a_move_event) {
+    // A kinematic wheel that only turns (no translation) moved as far as a binding's
+    // renderer is concerned: it must be in the body move events with its new rotation.
+    i2d_world_def def = i2d_default_world_def();
+    i2d_world_id world = i2d_world_create(&def);
+    i2d_body_def body_def = i2d_default_body_def();
+    body_def.type = I2D_BODY_KINEMATIC;
+    body_def.angular_velocity = 2.0f;
+    i2d_body_id wheel = i2d_body_create(world, &body_def);
+    i2d_shape_def shape_def = i2d_default_shape_def();
+    i2d_shape_create_box(wheel, &shape_def, 1.0f, 0.1f);
+    I2D_REQUIRE(i2d_world_step(world, 1.0f / 60.0f, 4) == I2D_OK);
+    i2d_body_events events = i2d_world_get_body_events(world);
+    I2D_REQUIRE(events.move_count == 1);
+    I2D_CHECK(events.move_events[0].body.bits == wheel.bits);
+    I2D_CHECK_NEAR(i2d_rot_get_angle(events.move_events[0].transform.q), 2.0 / 60.0, 1e-4);
+    I2D_CHECK(events.move_events[0].transform.p.x == 0.0f && events.move_events[0].transform.p.y == 0.0f);
+    i2d_world_destroy(world);
+}
