@@ -64,7 +64,7 @@ int32_t DynamicTree::create_proxy(const AABB& fat_aabb, uint64_t category_bits, 
     node.user_value() = user_value;
     node.proxy() = proxy;
     node.height = 0;
-    insert_leaf(leaf);
+    insert_leaf(leaf, root_);
     ++proxy_count_;
     return proxy;
 }
@@ -79,11 +79,16 @@ void DynamicTree::destroy_proxy(int32_t proxy) {
     --proxy_count_;
 }
 
+// Most moves are short: the leaf goes back in below the lowest former ancestor that
+// still contains its new box, not from the root, which keeps the walk local.
 void DynamicTree::move_proxy(int32_t proxy, const AABB& fat_aabb) {
     const int32_t leaf = proxy_nodes_[proxy];
-    remove_leaf(leaf);
+    int32_t start = remove_leaf(leaf);
+    while (start != null_index && !contains(nodes_[start].aabb, fat_aabb)) {
+        start = nodes_[start].parent;
+    }
     nodes_[leaf].aabb = fat_aabb;
-    insert_leaf(leaf);
+    insert_leaf(leaf, start == null_index ? root_ : start);
     ++moves_since_compact_;
 }
 
@@ -104,18 +109,22 @@ void DynamicTree::enlarge_proxy(int32_t proxy, const AABB& fat_aabb) {
 // the perimeter of X grown by the leaf plus how much every ancestor of X grows (the
 // "inherited" cost). Descending into a child can never cost less than the inherited
 // cost plus the child's own growth plus the leaf's perimeter, which prunes the search.
-int32_t DynamicTree::find_best_sibling(const AABB& box) const {
+// The search may start below the root at a node that already contains the box: nothing
+// above it grows, so the costs inside it compare the same as from the root.
+int32_t DynamicTree::find_best_sibling(const AABB& box, int32_t start) const {
     const float box_perimeter = perimeter(box);
-    int32_t best = root_;
-    float best_cost = perimeter(union_of(nodes_[root_].aabb, box));
+    int32_t best = start;
+    float best_cost = perimeter(union_of(nodes_[start].aabb, box));
     float inherited = 0.0f;
-    int32_t index = root_;
+    int32_t index = start;
     while (!nodes_[index].is_leaf()) {
         const TreeNode& node = nodes_[index];
         inherited += perimeter(union_of(node.aabb, box)) - perimeter(node.aabb);
 
         float descend_bound[2] = {FLT_MAX, FLT_MAX};
         const int32_t children[2] = {node.child1(), node.child2()};
+        prefetch_node(children[0]);
+        prefetch_node(children[1]);
         for (int k = 0; k < 2; ++k) {
             const TreeNode& child = nodes_[children[k]];
             const float direct = perimeter(union_of(child.aabb, box));
@@ -137,13 +146,13 @@ int32_t DynamicTree::find_best_sibling(const AABB& box) const {
     return best;
 }
 
-void DynamicTree::insert_leaf(int32_t leaf) {
+void DynamicTree::insert_leaf(int32_t leaf, int32_t start) {
     if (root_ == null_index) {
         root_ = leaf;
         nodes_[leaf].parent = null_index;
         return;
     }
-    const int32_t sibling = find_best_sibling(nodes_[leaf].aabb);
+    const int32_t sibling = find_best_sibling(nodes_[leaf].aabb, start);
     const int32_t old_parent = nodes_[sibling].parent;
     const int32_t new_parent = allocate_node();  // may move nodes_: index from here on
 
@@ -166,10 +175,10 @@ void DynamicTree::insert_leaf(int32_t leaf) {
     refit_upward(old_parent, true);
 }
 
-void DynamicTree::remove_leaf(int32_t leaf) {
+int32_t DynamicTree::remove_leaf(int32_t leaf) {
     if (leaf == root_) {
         root_ = null_index;
-        return;
+        return null_index;
     }
     const int32_t parent = nodes_[leaf].parent;
     const int32_t grand = nodes_[parent].parent;
@@ -188,18 +197,29 @@ void DynamicTree::remove_leaf(int32_t leaf) {
     }
     free_node(parent);
     nodes_[leaf].parent = null_index;
+    return grand == null_index ? sibling : grand;
 }
 
+// Stops at the first ancestor that comes out unchanged (same box, categories, height,
+// no rotation): everything above it depends only on it.
 void DynamicTree::refit_upward(int32_t index, bool rotate_nodes) {
     while (index != null_index) {
         TreeNode& node = nodes_[index];
         const TreeNode& c1 = nodes_[node.child1()];
         const TreeNode& c2 = nodes_[node.child2()];
-        node.aabb = union_of(c1.aabb, c2.aabb);
-        node.category_bits = c1.category_bits | c2.category_bits;
-        node.height = int16_t(1 + std::max(c1.height, c2.height));
-        if (rotate_nodes) {
-            rotate(index);
+        const AABB box = union_of(c1.aabb, c2.aabb);
+        const uint64_t category_bits = c1.category_bits | c2.category_bits;
+        const int16_t height = int16_t(1 + std::max(c1.height, c2.height));
+        bool changed = !(box.lower == node.aabb.lower && box.upper == node.aabb.upper) ||
+                       category_bits != node.category_bits || height != node.height;
+        node.aabb = box;
+        node.category_bits = category_bits;
+        node.height = height;
+        if (rotate_nodes && rotate(index)) {
+            changed = true;
+        }
+        if (!changed) {
+            return;
         }
         index = nodes_[index].parent;
     }
@@ -208,7 +228,7 @@ void DynamicTree::refit_upward(int32_t index, bool rotate_nodes) {
 // Tree rotation by perimeter: for node A with children B and C, try swapping B with a
 // child of C, or C with a child of B, and apply the swap that shrinks the perimeter of
 // the rebuilt child the most. A's own box is the same afterwards (same leaves).
-void DynamicTree::rotate(int32_t a) {
+bool DynamicTree::rotate(int32_t a) {
     const int32_t b = nodes_[a].child1(), c = nodes_[a].child2();
     struct Swap {
         int32_t outer;  // the child of A that moves down
@@ -236,7 +256,7 @@ void DynamicTree::rotate(int32_t a) {
     consider(b, c);
     consider(c, b);
     if (best.outer == null_index) {
-        return;
+        return false;
     }
 
     TreeNode& host = nodes_[best.host];
@@ -260,6 +280,7 @@ void DynamicTree::rotate(int32_t a) {
     host.category_bits = h1.category_bits | h2.category_bits;
     host.height = int16_t(1 + std::max(h1.height, h2.height));
     node.height = int16_t(1 + std::max(nodes_[node.child1()].height, nodes_[node.child2()].height));
+    return true;
 }
 
 float DynamicTree::total_perimeter() const {

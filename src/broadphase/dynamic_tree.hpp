@@ -96,12 +96,22 @@ public:
     void validate() const;
 
 private:
+    void prefetch_node(int32_t node) const {
+#if defined(__GNUC__)
+        __builtin_prefetch(&nodes_[node]);
+#else
+        (void)node;
+#endif
+    }
     int32_t allocate_node();
     void free_node(int32_t node);
-    void insert_leaf(int32_t leaf);
-    void remove_leaf(int32_t leaf);
-    int32_t find_best_sibling(const AABB& box) const;
-    void rotate(int32_t node);
+    /// Inserts below `start`, which must contain the leaf's box (or be the root).
+    void insert_leaf(int32_t leaf, int32_t start);
+    /// Returns the lowest node the leaf's removal left in its place (null if none).
+    int32_t remove_leaf(int32_t leaf);
+    int32_t find_best_sibling(const AABB& box, int32_t start) const;
+    /// True if it rotated.
+    bool rotate(int32_t node);
     void refit_upward(int32_t node, bool rotate_nodes);
     int32_t build_top_down(int32_t* leaves, int32_t count);
 

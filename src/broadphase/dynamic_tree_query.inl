@@ -24,6 +24,10 @@ void DynamicTree::query(const AABB& box, uint64_t mask_bits, Visit&& visit) cons
                 return;
             }
         } else {
+            // Ask for both children now: by the time the stack reaches them they are in
+            // cache, which hides most of a large tree's memory latency.
+            prefetch_node(node.child1());
+            prefetch_node(node.child2());
             stack.push(node.child1());
             stack.push(node.child2());
         }
