@@ -58,7 +58,8 @@ public:
     const DynamicTree& tree(ProxyKind kind) const { return trees_[int32_t(kind)]; }
     DynamicTree& tree(ProxyKind kind) { return trees_[int32_t(kind)]; }
     const AABB& fat_aabb(int32_t key) const { return tree(proxy_kind(key)).fat_aabb(proxy_id(key)); }
-    int32_t move_count() const { return int32_t(move_buffer_.size()); }
+    /// Proxies waiting for pair finding (destroyed ones no longer count).
+    int32_t move_count() const { return move_set_.count(); }
 
 private:
     void buffer_move(int32_t key);
