@@ -1,131 +1,83 @@
 /* SPDX-License-Identifier: MIT */
-/* The scene benchmark app: milliseconds per step of each scene, with its sanity figure beside it.
+/* The scene benchmark app: milliseconds per step of each scene, with its sanity figures beside it,
+ * where the step's time went (the engine's own profile), and how the cost grows with body count.
  *
- * Method (docs: shared/design/scenes.md, as Box2D v3's benchmark does): a new world per run; the
- * first step (hook + world step) untimed; steps 1..N-1 timed together with a monotonic clock,
- * hooks included; ms per step = total / (N - 1). Each scene runs R times; the median and the
- * minimum over the runs are reported. Times are never asserted on: the exit status says only
- * whether every scene ran and stayed sane (and gave the same final state in every run). */
+ * Method (shared/design/scenes.md, as Box2D v3's benchmark does): a new world per run; the first
+ * step (hook + world step) untimed; then steps 1..N-1, each hook + world step timed with a
+ * monotonic clock; ms per step = their total / (N - 1). Each scene runs R times; the median and
+ * the minimum over the runs are reported, and the 90th percentile of single steps. The engine's
+ * profile (i2d_world_get_profile) is read after every timed step, outside the clock. Times are
+ * never asserted on: the exit status says only whether every scene ran and stayed sane (and gave
+ * the same final state in every run). */
 
 /* clock_gettime and CLOCK_MONOTONIC are POSIX, not C99. */
 #define _POSIX_C_SOURCE 199309L
 
+#include "build_info.h"
 #include "scenes.h"
 
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
 
-#define TIME_STEP (1.0f / 60.0f)
-#define SUBSTEPS 4
-#define MAX_REPEATS 1000
+#define MAX_REPEATS 100
+/* Single-step times kept for the p90; past this many the p90 is not computed. */
+#define MAX_STEP_SAMPLES (16 * 1024 * 1024)
 
 enum { EXIT_SANE = 0, EXIT_INSANE = 1, EXIT_USAGE = 2, EXIT_API_ERROR = 3 };
 
-/* ---- Build description: what the numbers were measured on --------------------------------- */
+/* Where a step's time went: the engine's stages, its whole step, and the rest of the wall time
+ * (the C API boundary and the scene's hook). */
+typedef enum stage {
+    STAGE_PAIRS,
+    STAGE_COLLIDE,
+    STAGE_SOLVE,
+    STAGE_BOUNDS,
+    STAGE_EVENTS,
+    STAGE_STEP,    /* the profile's whole step */
+    STAGE_OUTSIDE, /* wall time of hook + i2d_world_step minus the profile's step */
+    STAGE_COUNT
+} stage;
 
-/* Defined by bench/CMakeLists.txt; the fallbacks let the file build by hand. */
-#ifndef I2D_BENCH_BUILD_TYPE
-#define I2D_BENCH_BUILD_TYPE "unknown"
-#endif
-#ifndef I2D_BENCH_C_FLAGS
-#define I2D_BENCH_C_FLAGS "unknown"
-#endif
-#ifndef I2D_BENCH_CXX_COMPILER
-#define I2D_BENCH_CXX_COMPILER "unknown"
-#endif
-#ifndef I2D_BENCH_CXX_FLAGS
-#define I2D_BENCH_CXX_FLAGS "unknown"
-#endif
-#ifndef I2D_BENCH_LIBRARY
-#define I2D_BENCH_LIBRARY "unknown"
-#endif
-#ifndef I2D_BENCH_COMMIT
-#define I2D_BENCH_COMMIT "unknown"
-#endif
-
-#define BENCH_STR2(x) #x
-#define BENCH_STR(x) BENCH_STR2(x)
-#if defined(__clang__)
-#define BENCH_COMPILER "clang " __clang_version__
-#elif defined(__GNUC__)
-#define BENCH_COMPILER "gcc " __VERSION__
-#elif defined(_MSC_VER)
-#define BENCH_COMPILER "msvc " BENCH_STR(_MSC_FULL_VER)
-#else
-#define BENCH_COMPILER "unknown"
-#endif
-
-/* Instruction sets this file was compiled for; the library is built with the same flags. */
-static const char* simd_macros(void) {
-    static const char list[] = ""
-#if defined(__AVX512F__)
-                               " AVX512F"
-#endif
-#if defined(__AVX2__)
-                               " AVX2"
-#endif
-#if defined(__FMA__)
-                               " FMA"
-#endif
-#if defined(__AVX__)
-                               " AVX"
-#endif
-#if defined(__SSE4_2__)
-                               " SSE4.2"
-#endif
-#if defined(__SSE4_1__)
-                               " SSE4.1"
-#endif
-#if defined(__SSE2__)
-                               " SSE2"
-#endif
-#if defined(__ARM_NEON)
-                               " NEON"
-#endif
-        ;
-    return list[0] ? list + 1 : "none";
-}
-
-typedef struct build_info {
-    char library_version[32];
-    char date[32];
-} build_info;
-
-static build_info describe_build(void) {
-    build_info info;
-    uint32_t v = i2d_version();
-    time_t now = time(NULL);
-    struct tm* utc = gmtime(&now);
-    snprintf(info.library_version, sizeof info.library_version, "%u.%u.%u", (unsigned)(v >> 16),
-             (unsigned)((v >> 8) & 0xffu), (unsigned)(v & 0xffu));
-    if (!utc || !strftime(info.date, sizeof info.date, "%Y-%m-%d %H:%M:%S UTC", utc)) {
-        snprintf(info.date, sizeof info.date, "unknown");
-    }
-    return info;
-}
+static const char* const stage_names[STAGE_COUNT] = {"pairs", "collide", "solve", "update_bounds",
+                                                     "events", "step", "outside"};
+#define ENGINE_STAGES 5 /* the first five add up to the profile's step (within timer reads) */
 
 /* ---- Options ------------------------------------------------------------------------------ */
 
 typedef enum output_format { FORMAT_TABLE, FORMAT_CSV, FORMAT_JSON } output_format;
 
+typedef enum selection { SELECT_DEFAULT, SELECT_SWEEP, SELECT_ALL } selection;
+
 typedef struct options {
     int32_t steps;       /* 0: each scene's own count */
     int32_t repeats;
-    const char* scene;   /* NULL: every scene */
+    int32_t workers;
+    bool chosen[64];     /* by --scene; none chosen: by selection */
+    bool any_chosen;
+    selection select;
     output_format format;
     bool list;
 } options;
 
 static void usage(FILE* f) {
-    fprintf(f, "usage: impulse2d_bench [--scene NAME] [--steps N] [--repeat R] [--csv | --json] [--list]\n"
-               "  --scene NAME  run one scene (see --list); default: all\n"
-               "  --steps N     steps per run, N >= 2 (the first is untimed); default: the scene's own\n"
-               "  --repeat R    runs per scene, each in a new world; default 3\n"
-               "  --csv, --json machine-readable output instead of the table\n"
-               "  --list        list the scenes and exit\n"
-               "exit status: 0 every scene sane, 1 a sanity check failed, 2 bad usage, 3 an i2d call failed\n");
+    fprintf(f,
+            "usage: impulse2d_bench [--scene NAME[,NAME...]] [--sweep | --all] [--steps N] [--repeat R]\n"
+            "                       [--workers 1] [--csv | --json] [--list]\n"
+            "  (default)      the scenes of scenes.md the engine can run, then the extras\n"
+            "  --scene NAMES  only these scenes (see --list); may be given more than once\n"
+            "  --sweep        the scaling sweep: rain_circles and pyramid_field at 1k, 4k, 16k, 64k bodies\n"
+            "  --all          every scene: scenes.md, extras and the sweep\n"
+            "  --steps N      steps per run, N >= 2 (the first is untimed); default: each scene's own\n"
+            "  --repeat R     runs per scene, each in a new world, 1..%d; default 3\n"
+            "  --workers W    worker threads; threads are not implemented yet, so only 1 is valid\n"
+            "  --csv, --json  machine-readable output instead of the table\n"
+            "  --list         list the scenes and exit\n"
+            "exit status: 0 every scene sane, 1 a sanity check failed or a run differed, 2 bad usage,\n"
+            "             3 an i2d call failed\n",
+            MAX_REPEATS);
 }
 
 /* Parses a whole decimal argument in [lo, hi]. */
@@ -143,20 +95,44 @@ static bool parse_int(const char* text, int32_t lo, int32_t hi, int32_t* out) {
     return true;
 }
 
-static const bench_scene* find_scene(const char* name) {
-    int32_t i;
-    for (i = 0; i < bench_scene_count; ++i) {
-        if (strcmp(bench_scenes[i].name, name) == 0) {
-            return &bench_scenes[i];
+/* Marks each scene of a comma-separated list. */
+static bool choose_scenes(const char* list, options* opt) {
+    char name[128];
+    const char* p = list;
+    while (*p) {
+        const char* comma = strchr(p, ',');
+        size_t n = comma ? (size_t)(comma - p) : strlen(p);
+        const bench_scene* scene;
+        if (n == 0 || n >= sizeof name) {
+            fprintf(stderr, "impulse2d_bench: bad scene list '%s'\n", list);
+            return false;
+        }
+        memcpy(name, p, n);
+        name[n] = '\0';
+        scene = bench_find_scene(name);
+        if (!scene) {
+            fprintf(stderr, "impulse2d_bench: no scene '%s' (--list shows them)\n", name);
+            return false;
+        }
+        opt->chosen[scene - bench_scenes] = true;
+        opt->any_chosen = true;
+        p += n;
+        if (*p == ',') {
+            ++p;
         }
     }
-    return NULL;
+    return true;
 }
 
 static bool parse_options(int argc, char** argv, options* opt) {
     int i;
     memset(opt, 0, sizeof *opt);
     opt->repeats = 3;
+    opt->workers = 1;
+    if (bench_scene_count > (int32_t)(sizeof opt->chosen / sizeof opt->chosen[0])) {
+        fprintf(stderr, "impulse2d_bench: too many scenes for the option table\n");
+        return false;
+    }
     for (i = 1; i < argc; ++i) {
         const char* arg = argv[i];
         const char* value = i + 1 < argc ? argv[i + 1] : NULL;
@@ -164,13 +140,23 @@ static bool parse_options(int argc, char** argv, options* opt) {
             ++i;
         } else if (strcmp(arg, "--repeat") == 0 && parse_int(value, 1, MAX_REPEATS, &opt->repeats)) {
             ++i;
-        } else if (strcmp(arg, "--scene") == 0 && value) {
-            if (!find_scene(value)) {
-                fprintf(stderr, "impulse2d_bench: no scene '%s' (--list shows them)\n", value);
+        } else if (strcmp(arg, "--workers") == 0 && parse_int(value, 1, 1024, &opt->workers)) {
+            if (opt->workers != 1) {
+                fprintf(stderr, "impulse2d_bench: --workers %d: threads are not implemented yet in impulse2d; "
+                                "only --workers 1 is valid\n",
+                        (int)opt->workers);
                 return false;
             }
-            opt->scene = value;
             ++i;
+        } else if (strcmp(arg, "--scene") == 0 && value) {
+            if (!choose_scenes(value, opt)) {
+                return false;
+            }
+            ++i;
+        } else if (strcmp(arg, "--sweep") == 0) {
+            opt->select = SELECT_SWEEP;
+        } else if (strcmp(arg, "--all") == 0) {
+            opt->select = SELECT_ALL;
         } else if (strcmp(arg, "--csv") == 0) {
             opt->format = FORMAT_CSV;
         } else if (strcmp(arg, "--json") == 0) {
@@ -189,15 +175,33 @@ static bool parse_options(int argc, char** argv, options* opt) {
     return true;
 }
 
+static bool is_selected(const options* opt, int32_t index) {
+    bench_group group = bench_scenes[index].group;
+    if (opt->any_chosen) {
+        return opt->chosen[index];
+    }
+    switch (opt->select) {
+    case SELECT_SWEEP:
+        return group == BENCH_GROUP_SWEEP;
+    case SELECT_ALL:
+        return true;
+    default:
+        return group != BENCH_GROUP_SWEEP;
+    }
+}
+
 /* ---- Running a scene ------------------------------------------------------------------------ */
 
 typedef struct scene_result {
     const bench_scene* scene;
     int32_t steps, repeats;
-    int32_t bodies, contacts;    /* counters after the last step of the last run */
+    int32_t dynamic_bodies;      /* the scene's dynamic bodies */
+    int32_t bodies, contacts, pairs; /* the world's counters after the last step of the last run */
     double ms[MAX_REPEATS];      /* ms per timed step, one per run */
-    double median_ms, min_ms;
-    double figure;               /* the sanity figure of the last run */
+    double stage_ms[MAX_REPEATS][STAGE_COUNT]; /* per run: mean ms per timed step of each stage */
+    double median_ms, min_ms, p90_ms;
+    double stage_median[STAGE_COUNT];
+    bench_sanity sanity;         /* the figures of the last run */
     bool sane;                   /* every run sane */
     uint64_t hash;               /* final state of the first run */
     bool deterministic;          /* every run ended in that state */
@@ -222,19 +226,22 @@ static bool step_once(const bench_scene* scene, bench_state* state, int32_t step
     if (scene->step_hook && !scene->step_hook(state, step)) {
         return false;
     }
-    return i2d_world_step(state->world, TIME_STEP, SUBSTEPS) == I2D_OK;
+    return i2d_world_step(state->world, BENCH_TIME_STEP, BENCH_SUBSTEPS) == I2D_OK;
 }
 
-/* One run in a new world. Fills the run's time, the counters, the sanity figure and the hash. */
-static bool run_once(const bench_scene* scene, int32_t steps, scene_result* r, int32_t run) {
+/* One run in a new world. Fills the run's time and stage times, the counters, the sanity figures
+ * and the hash; appends each timed step's ms to samples (when not NULL). */
+static bool run_once(const bench_scene* scene, int32_t steps, scene_result* r, int32_t run, double* samples) {
     bench_state state;
+    bench_sanity sanity;
     i2d_world_counters counters;
-    double start, figure = 0.0;
-    bool sane = false;
+    double total = 0.0, stages[STAGE_COUNT];
     uint64_t hash = 0;
-    int32_t step;
+    int32_t step, k;
 
     memset(&state, 0, sizeof state);
+    memset(&sanity, 0, sizeof sanity);
+    memset(stages, 0, sizeof stages);
     if (!scene->create(&state)) {
         report_failure(scene, &state, "create");
         bench_state_destroy(&state);
@@ -246,27 +253,45 @@ static bool run_once(const bench_scene* scene, int32_t steps, scene_result* r, i
         bench_state_destroy(&state);
         return false;
     }
-    start = seconds_now();
     for (step = 1; step < steps; ++step) {
+        double start = seconds_now(), ms;
+        i2d_profile p;
         if (!step_once(scene, &state, step)) {
             report_failure(scene, &state, "step");
             bench_state_destroy(&state);
             return false;
         }
+        ms = 1000.0 * (seconds_now() - start);
+        total += ms;
+        if (samples) {
+            samples[step - 1] = ms;
+        }
+        p = i2d_world_get_profile(state.world);
+        stages[STAGE_PAIRS] += p.pairs;
+        stages[STAGE_COLLIDE] += p.collide;
+        stages[STAGE_SOLVE] += p.solve;
+        stages[STAGE_BOUNDS] += p.update_bounds;
+        stages[STAGE_EVENTS] += p.events;
+        stages[STAGE_STEP] += p.step;
+        stages[STAGE_OUTSIDE] += ms - (double)p.step;
     }
-    r->ms[run] = 1000.0 * (seconds_now() - start) / (double)(steps - 1);
+    r->ms[run] = total / (double)(steps - 1);
+    for (k = 0; k < STAGE_COUNT; ++k) {
+        r->stage_ms[run][k] = stages[k] / (double)(steps - 1);
+    }
 
     counters = i2d_world_get_counters(state.world);
-    if (i2d_last_status() != I2D_OK || !scene->sanity(&state, steps, &figure, &sane) ||
-        !bench_state_hash(&state, &hash)) {
+    if (i2d_last_status() != I2D_OK || !scene->sanity(&state, steps, &sanity) || !bench_state_hash(&state, &hash)) {
         report_failure(scene, &state, "reading the final state");
         bench_state_destroy(&state);
         return false;
     }
+    r->dynamic_bodies = state.body_count;
     r->bodies = counters.body_count;
     r->contacts = counters.contact_count;
-    r->figure = figure;
-    r->sane = r->sane && sane;
+    r->pairs = counters.pair_count;
+    r->sanity = sanity;
+    r->sane = r->sane && sanity.sane;
     if (run == 0) {
         r->hash = hash;
     }
@@ -283,33 +308,80 @@ static int compare_doubles(const void* a, const void* b) {
     return (x > y) - (x < y);
 }
 
-static void summarise_times(scene_result* r) {
+static double median_of(double* values, int32_t n) {
+    qsort(values, (size_t)n, sizeof values[0], compare_doubles);
+    return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+}
+
+static void summarise(scene_result* r, double* samples, int32_t sample_count) {
     double sorted[MAX_REPEATS];
-    int32_t n = r->repeats;
+    int32_t n = r->repeats, k, i;
     memcpy(sorted, r->ms, (size_t)n * sizeof sorted[0]);
-    qsort(sorted, (size_t)n, sizeof sorted[0], compare_doubles);
+    r->median_ms = median_of(sorted, n);
     r->min_ms = sorted[0];
-    r->median_ms = n % 2 ? sorted[n / 2] : 0.5 * (sorted[n / 2 - 1] + sorted[n / 2]);
+    for (k = 0; k < STAGE_COUNT; ++k) {
+        for (i = 0; i < n; ++i) {
+            sorted[i] = r->stage_ms[i][k];
+        }
+        r->stage_median[k] = median_of(sorted, n);
+    }
+    if (samples && sample_count > 0) {
+        /* Nearest rank. */
+        int32_t rank = (int32_t)ceil(0.9 * (double)sample_count);
+        qsort(samples, (size_t)sample_count, sizeof samples[0], compare_doubles);
+        r->p90_ms = samples[(rank > 0 ? rank : 1) - 1];
+    } else {
+        r->p90_ms = NAN;
+    }
 }
 
 static bool run_scene(const bench_scene* scene, const options* opt, scene_result* r) {
-    int32_t run;
+    double* samples = NULL;
+    int32_t run, per_run;
+    bool ok = true;
     memset(r, 0, sizeof *r);
     r->scene = scene;
     r->steps = opt->steps > 0 ? opt->steps : scene->steps;
     r->repeats = opt->repeats;
     r->sane = true;
     r->deterministic = true;
-    for (run = 0; run < r->repeats; ++run) {
-        if (!run_once(scene, r->steps, r, run)) {
-            return false;
-        }
+    per_run = r->steps - 1;
+    if ((double)per_run * (double)r->repeats <= (double)MAX_STEP_SAMPLES) {
+        samples = (double*)malloc((size_t)per_run * (size_t)r->repeats * sizeof *samples);
     }
-    summarise_times(r);
-    return true;
+    for (run = 0; run < r->repeats && ok; ++run) {
+        ok = run_once(scene, r->steps, r, run, samples ? samples + (size_t)run * (size_t)per_run : NULL);
+    }
+    if (ok) {
+        summarise(r, samples, samples ? per_run * r->repeats : 0);
+    }
+    free(samples);
+    return ok;
 }
 
-/* ---- Output ----------------------------------------------------------------------------------- */
+/* ---- Derived figures -------------------------------------------------------------------------- */
+
+/* The engine stage that took the most time, and its share of the profile's step. */
+static int32_t dominant_stage(const scene_result* r, double* share) {
+    int32_t k, best = 0;
+    for (k = 1; k < ENGINE_STAGES; ++k) {
+        if (r->stage_median[k] > r->stage_median[best]) {
+            best = k;
+        }
+    }
+    *share = r->stage_median[STAGE_STEP] > 0.0 ? r->stage_median[best] / r->stage_median[STAGE_STEP] : 0.0;
+    return best;
+}
+
+/* ns of the solve stage per touching contact per substep (the last run's final contact count). */
+static double solve_ns_per_contact(const scene_result* r) {
+    return r->contacts > 0 ? 1e6 * r->stage_median[STAGE_SOLVE] / ((double)r->contacts * BENCH_SUBSTEPS) : NAN;
+}
+
+/* ns of the collide stage per pair (fat bounds overlapping) per substep. */
+static double collide_ns_per_pair(const scene_result* r) {
+    return r->pairs > 0 ? 1e6 * r->stage_median[STAGE_COLLIDE] / ((double)r->pairs * BENCH_SUBSTEPS) : NAN;
+}
 
 static const char* verdict(const scene_result* r) {
     if (!r->sane) {
@@ -318,96 +390,262 @@ static const char* verdict(const scene_result* r) {
     return r->deterministic ? "ok" : "NONDETERMINISTIC";
 }
 
-/* Writes s as a JSON string body (without quotes). */
-static void json_string(const char* s) {
-    for (; *s; ++s) {
-        unsigned char c = (unsigned char)*s;
-        if (c == '"' || c == '\\') {
-            printf("\\%c", c);
-        } else if (c < 0x20) {
-            printf("\\u%04x", c);
+static const char* group_name(bench_group group) {
+    switch (group) {
+    case BENCH_GROUP_SCENES_MD:
+        return "scenes.md";
+    case BENCH_GROUP_EXTRA:
+        return "extra";
+    default:
+        return "sweep";
+    }
+}
+
+/* ---- Output ----------------------------------------------------------------------------------- */
+
+static int32_t velocity_iterations(void) {
+    return i2d_default_world_def().velocity_iterations;
+}
+
+/* A JSON number, or null for NaN and infinities (which JSON cannot hold). */
+static void json_number(double value) {
+    if (isfinite(value)) {
+        printf("%.9g", value);
+    } else {
+        printf("null");
+    }
+}
+
+/* Counts as integers, measures with 4 significant digits. */
+static void print_sanity_text(const bench_sanity* s, const char* separator) {
+    int32_t i;
+    for (i = 0; i < s->figure_count; ++i) {
+        double v = s->figures[i].value;
+        if (v == floor(v) && fabs(v) < 1e9) {
+            printf("%s%s=%.0f", i ? separator : "", s->figures[i].name, v);
         } else {
-            putchar(c);
+            printf("%s%s=%.4g", i ? separator : "", s->figures[i].name, v);
         }
     }
 }
 
-static void print_build(output_format format, const build_info* b) {
-    if (format == FORMAT_JSON) {
-        printf("{\"build\": {\"library\": \"%s\", \"compiler\": \"", b->library_version);
-        json_string(BENCH_COMPILER);
-        printf("\", \"library_compiler\": \"");
-        json_string(I2D_BENCH_CXX_COMPILER);
-        printf("\", \"build_type\": \"");
-        json_string(I2D_BENCH_BUILD_TYPE);
-        printf("\", \"c_flags\": \"");
-        json_string(I2D_BENCH_C_FLAGS);
-        printf("\", \"cxx_flags\": \"");
-        json_string(I2D_BENCH_CXX_FLAGS);
-        printf("\", \"library_options\": \"");
-        json_string(I2D_BENCH_LIBRARY);
-        printf("\", \"simd\": \"%s\", \"commit\": \"", simd_macros());
-        json_string(I2D_BENCH_COMMIT);
-        printf("\", \"date\": \"%s\", \"time_step\": %.6f, \"substeps\": %d},\n \"scenes\": [", b->date,
-               (double)TIME_STEP, SUBSTEPS);
+/* Notes that belong beside the figures: substitutions in the scenes run, and scenes.md scenes
+ * that cannot run yet (when the run covers scenes.md). */
+static void print_notes(const options* opt) {
+    int32_t i;
+    bool scenes_md = false, first = true;
+    for (i = 0; i < bench_scene_count; ++i) {
+        const bench_scene* s = &bench_scenes[i];
+        if (!is_selected(opt, i)) {
+            continue;
+        }
+        scenes_md = scenes_md || s->group == BENCH_GROUP_SCENES_MD;
+        if (!s->substitution) {
+            continue;
+        }
+        if (opt->format == FORMAT_JSON) {
+            printf("%s{\"scene\": \"%s\", \"substitution\": \"", first ? "" : ", ", s->name);
+            bench_json_string(stdout, s->substitution);
+            printf("\"}");
+            first = false;
+        } else {
+            printf("# SUBSTITUTION in %s: %s\n", s->name, s->substitution);
+        }
+    }
+    if (opt->format == FORMAT_JSON) {
+        printf("],\n \"not_run\": [");
+    }
+    first = true;
+    for (i = 0; scenes_md && i < bench_missing_scene_count; ++i) {
+        const bench_missing_scene* m = &bench_missing_scenes[i];
+        if (opt->format == FORMAT_JSON) {
+            printf("%s{\"scene\": \"%s\", \"reason\": \"", first ? "" : ", ", m->name);
+            bench_json_string(stdout, m->reason);
+            printf("\"}");
+            first = false;
+        } else {
+            printf("# NOT RUN: %s (scenes.md): %s\n", m->name, m->reason);
+        }
+    }
+}
+
+static void print_header(const options* opt) {
+    if (opt->format == FORMAT_JSON) {
+        printf("{\"build\": {");
+        bench_print_build_json(stdout);
+        printf(", \"time_step\": %.9g, \"substeps\": %d, \"velocity_iterations\": %d, \"workers\": %d},\n"
+               " \"notes\": [",
+               (double)BENCH_TIME_STEP, BENCH_SUBSTEPS, (int)velocity_iterations(), (int)opt->workers);
+        print_notes(opt);
+        printf("],\n \"scenes\": [");
         return;
     }
-    printf("# impulse2d %s bench | %s | library: %s, %s | %s | C flags: %s | C++ flags: %s | SIMD: %s"
-           " | commit %s | %s\n",
-           b->library_version, BENCH_COMPILER, I2D_BENCH_CXX_COMPILER, I2D_BENCH_LIBRARY, I2D_BENCH_BUILD_TYPE,
-           I2D_BENCH_C_FLAGS, I2D_BENCH_CXX_FLAGS, simd_macros(), I2D_BENCH_COMMIT, b->date);
-    if (format == FORMAT_CSV) {
-        printf("scene,bodies,contacts,steps,repeats,median_ms,min_ms,sanity_name,sanity,verdict,hash\n");
+    bench_print_build_line(stdout, "bench");
+    printf("# dt 1/60 s, %d substeps, %d velocity iterations (world default), %d worker (threads are not "
+           "implemented yet)\n",
+           BENCH_SUBSTEPS, (int)velocity_iterations(), (int)opt->workers);
+    print_notes(opt);
+    if (opt->format == FORMAT_CSV) {
+        printf("scene,group,workers,dynamic_bodies,bodies,contacts,pairs,steps,repeats,median_ms,min_ms,p90_ms");
+        printf(",profile_step_ms,pairs_ms,collide_ms,solve_ms,update_bounds_ms,events_ms,outside_ms");
+        printf(",solve_ns_per_contact_substep,collide_ns_per_pair_substep,sanity,verdict,hash\n");
     } else {
-        printf("# dt 1/60 s, %d substeps; ms per step over steps 1..N-1, median and min of the runs\n", SUBSTEPS);
-        printf("%-10s %7s %9s %6s %4s %11s %11s  %-20s %10s  %-7s %s\n", "scene", "bodies", "contacts", "steps",
-               "runs", "median ms", "min ms", "sanity", "figure", "verdict", "final-state hash");
+        printf("# ms per step = time of steps 1..N-1 (hook + i2d_world_step) / (N - 1); median and min over the "
+               "runs, each in a new world; p90 of single steps; bodies = dynamic bodies; contacts = touching "
+               "pairs after the last step\n");
+        printf("%-17s %6s %8s %5s %4s %10s %10s %10s  %-7s %-16s  %s\n", "scene", "bodies", "contacts", "steps",
+               "runs", "median ms", "min ms", "p90 ms", "verdict", "final-state hash", "sanity");
     }
 }
 
-static void print_result(output_format format, const scene_result* r, bool first) {
+static void print_result(output_format format, int32_t workers, const scene_result* r, bool first) {
     const bench_scene* s = r->scene;
+    int32_t i;
     if (format == FORMAT_JSON) {
-        printf("%s\n  {\"scene\": \"%s\", \"bodies\": %d, \"contacts\": %d, \"steps\": %d, \"repeats\": %d, "
-               "\"median_ms\": %.6f, \"min_ms\": %.6f, \"ms\": [",
-               first ? "" : ",", s->name, (int)r->bodies, (int)r->contacts, (int)r->steps, (int)r->repeats,
-               r->median_ms, r->min_ms);
-        {
-            int32_t i;
-            for (i = 0; i < r->repeats; ++i) {
-                printf("%s%.6f", i ? ", " : "", r->ms[i]);
-            }
+        printf("%s\n  {\"scene\": \"%s\", \"group\": \"%s\", \"workers\": %d, \"dynamic_bodies\": %d, "
+               "\"bodies\": %d, \"contacts\": %d, \"pairs\": %d, \"steps\": %d, \"repeats\": %d, "
+               "\"median_ms\": %.6f, \"min_ms\": %.6f, \"p90_ms\": ",
+               first ? "" : ",", s->name, group_name(s->group), (int)workers, (int)r->dynamic_bodies,
+               (int)r->bodies, (int)r->contacts, (int)r->pairs, (int)r->steps, (int)r->repeats, r->median_ms,
+               r->min_ms);
+        json_number(r->p90_ms);
+        printf(", \"ms\": [");
+        for (i = 0; i < r->repeats; ++i) {
+            printf("%s%.6f", i ? ", " : "", r->ms[i]);
         }
-        printf("], \"sanity_name\": \"%s\", \"sanity\": %.6g, \"sane\": %s, \"deterministic\": %s, "
-               "\"hash\": \"%016llx\"}",
-               s->sanity_name, r->figure, r->sane ? "true" : "false", r->deterministic ? "true" : "false",
-               (unsigned long long)r->hash);
+        printf("],\n   \"profile_median_ms\": {");
+        for (i = 0; i < STAGE_COUNT; ++i) {
+            printf("%s\"%s\": %.6f", i ? ", " : "", stage_names[i], r->stage_median[i]);
+        }
+        printf("}, \"solve_ns_per_contact_substep\": ");
+        json_number(solve_ns_per_contact(r));
+        printf(", \"collide_ns_per_pair_substep\": ");
+        json_number(collide_ns_per_pair(r));
+        printf(",\n   \"sanity\": {");
+        for (i = 0; i < r->sanity.figure_count; ++i) {
+            printf("%s\"%s\": ", i ? ", " : "", r->sanity.figures[i].name);
+            json_number(r->sanity.figures[i].value);
+        }
+        printf("}, \"sane\": %s, \"deterministic\": %s, \"hash\": \"%016llx\"}", r->sane ? "true" : "false",
+               r->deterministic ? "true" : "false", (unsigned long long)r->hash);
     } else if (format == FORMAT_CSV) {
-        printf("%s,%d,%d,%d,%d,%.6f,%.6f,%s,%.6g,%s,%016llx\n", s->name, (int)r->bodies, (int)r->contacts,
-               (int)r->steps, (int)r->repeats, r->median_ms, r->min_ms, s->sanity_name, r->figure, verdict(r),
-               (unsigned long long)r->hash);
+        printf("%s,%s,%d,%d,%d,%d,%d,%d,%d,%.6f,%.6f,%.6f", s->name, group_name(s->group), (int)workers,
+               (int)r->dynamic_bodies, (int)r->bodies, (int)r->contacts, (int)r->pairs, (int)r->steps,
+               (int)r->repeats, r->median_ms, r->min_ms, r->p90_ms);
+        printf(",%.6f,%.6f,%.6f,%.6f,%.6f,%.6f,%.6f", r->stage_median[STAGE_STEP], r->stage_median[STAGE_PAIRS],
+               r->stage_median[STAGE_COLLIDE], r->stage_median[STAGE_SOLVE], r->stage_median[STAGE_BOUNDS],
+               r->stage_median[STAGE_EVENTS], r->stage_median[STAGE_OUTSIDE]);
+        printf(",%.3f,%.3f,\"", solve_ns_per_contact(r), collide_ns_per_pair(r));
+        print_sanity_text(&r->sanity, ";");
+        printf("\",%s,%016llx\n", verdict(r), (unsigned long long)r->hash);
     } else {
-        printf("%-10s %7d %9d %6d %4d %11.4f %11.4f  %-20s %10.4f  %-7s %016llx\n", s->name, (int)r->bodies,
-               (int)r->contacts, (int)r->steps, (int)r->repeats, r->median_ms, r->min_ms, s->sanity_name, r->figure,
-               verdict(r), (unsigned long long)r->hash);
+        printf("%-17s %6d %8d %5d %4d %10.3f %10.3f %10.3f  %-7s %016llx  ", s->name, (int)r->dynamic_bodies,
+               (int)r->contacts, (int)r->steps, (int)r->repeats, r->median_ms, r->min_ms, r->p90_ms, verdict(r),
+               (unsigned long long)r->hash);
+        print_sanity_text(&r->sanity, ", ");
+        printf("\n");
     }
     fflush(stdout);
+}
+
+/* Table format: where each scene's step went. */
+static void print_profile_table(const scene_result* results, int32_t count) {
+    int32_t i, k;
+    printf("\n# engine profile (i2d_world_get_profile after each timed step): ms per step, median over the runs;\n"
+           "# outside = wall time minus the profile's step (C API boundary, hook); per contact/pair figures use\n"
+           "# the final counts and the %d substeps\n",
+           BENCH_SUBSTEPS);
+    printf("%-17s %8s %8s %8s %8s %8s %8s %8s  %-13s %14s %14s\n", "scene", "step", "pairs", "collide", "solve",
+           "bounds", "events", "outside", "dominant", "solve ns/c/ss", "collide ns/p/ss");
+    for (i = 0; i < count; ++i) {
+        const scene_result* r = &results[i];
+        double share;
+        int32_t top = dominant_stage(r, &share);
+        char dominant[32];
+        printf("%-17s %8.3f", r->scene->name, r->stage_median[STAGE_STEP]);
+        for (k = 0; k < ENGINE_STAGES; ++k) {
+            printf(" %8.3f", r->stage_median[k]);
+        }
+        snprintf(dominant, sizeof dominant, "%s %.0f%%", stage_names[top], 100.0 * share);
+        printf(" %8.3f  %-13s %14.1f %14.1f\n", r->stage_median[STAGE_OUTSIDE], dominant, solve_ns_per_contact(r),
+               collide_ns_per_pair(r));
+    }
+}
+
+/* How the cost grows with body count, per sweep family, in the order the scenes ran. */
+static void print_scaling(output_format format, const scene_result* results, int32_t count) {
+    int32_t i, j;
+    bool any = false, first = true;
+    for (i = 0; i < count; ++i) {
+        any = any || results[i].scene->family != NULL;
+    }
+    if (format == FORMAT_JSON) {
+        printf("\n ],\n \"scaling\": [");
+    } else if (format == FORMAT_TABLE && any) {
+        printf("\n# scaling sweep: each size is ~4x the one before, so linear growth reads x4.0 per row\n");
+        printf("%-14s %7s %10s %8s %14s %14s\n", "family", "bodies", "median ms", "x prev", "us/body/step",
+               "contacts/body");
+    }
+    if (format == FORMAT_CSV) {
+        return;
+    }
+    for (i = 0; i < count; ++i) {
+        const scene_result* r = &results[i];
+        const scene_result* prev = NULL;
+        double growth, per_body;
+        if (!r->scene->family) {
+            continue;
+        }
+        for (j = i - 1; j >= 0; --j) {
+            if (results[j].scene->family && strcmp(results[j].scene->family, r->scene->family) == 0) {
+                prev = &results[j];
+                break;
+            }
+        }
+        growth = prev ? r->median_ms / prev->median_ms : NAN;
+        per_body = 1000.0 * r->median_ms / (double)r->dynamic_bodies;
+        if (format == FORMAT_JSON) {
+            printf("%s\n  {\"family\": \"%s\", \"scene\": \"%s\", \"dynamic_bodies\": %d, \"median_ms\": %.6f, "
+                   "\"growth\": ",
+                   first ? "" : ",", r->scene->family, r->scene->name, (int)r->dynamic_bodies, r->median_ms);
+            json_number(growth);
+            printf(", \"us_per_body_step\": %.5f}", per_body);
+            first = false;
+        } else {
+            char growth_text[16] = "-";
+            if (prev) {
+                snprintf(growth_text, sizeof growth_text, "x%.2f", growth);
+            }
+            printf("%-14s %7d %10.3f %8s %14.3f %14.2f\n", r->scene->family, (int)r->dynamic_bodies, r->median_ms,
+                   growth_text, per_body, (double)r->contacts / (double)r->dynamic_bodies);
+        }
+    }
+    if (format == FORMAT_JSON) {
+        printf("\n ]}\n");
+    }
 }
 
 static void list_scenes(void) {
     int32_t i;
     for (i = 0; i < bench_scene_count; ++i) {
-        printf("%-10s %5d steps  %s\n", bench_scenes[i].name, (int)bench_scenes[i].steps, bench_scenes[i].description);
+        const bench_scene* s = &bench_scenes[i];
+        printf("%-17s %-9s %5d steps  %s\n", s->name, group_name(s->group), (int)s->steps, s->description);
+        if (s->substitution) {
+            printf("%-17s %-9s %5s        substitution: %s\n", "", "", "", s->substitution);
+        }
+    }
+    for (i = 0; i < bench_missing_scene_count; ++i) {
+        printf("%-17s %-9s %5s        not run: %s\n", bench_missing_scenes[i].name, "scenes.md", "",
+               bench_missing_scenes[i].reason);
     }
 }
 
 int main(int argc, char** argv) {
-    static scene_result result; /* holds MAX_REPEATS times: static rather than on the stack */
+    /* Up to one result per scene; static rather than on the stack (each holds MAX_REPEATS rows). */
+    static scene_result results[64];
     options opt;
-    build_info build;
     int exit_code = EXIT_SANE;
-    bool first = true;
-    int32_t i;
+    int32_t i, done = 0;
 
     if (!parse_options(argc, argv, &opt)) {
         return EXIT_USAGE;
@@ -416,32 +654,37 @@ int main(int argc, char** argv) {
         list_scenes();
         return EXIT_SANE;
     }
-    if (i2d_version() != (uint32_t)I2D_VERSION) {
-        fprintf(stderr, "impulse2d_bench: built against impulse2d %d.%d.%d but loaded another version\n",
-                I2D_VERSION_MAJOR, I2D_VERSION_MINOR, I2D_VERSION_PATCH);
+    if (!bench_check_library_version("impulse2d_bench")) {
         return EXIT_API_ERROR;
     }
-    build = describe_build();
-    print_build(opt.format, &build);
+    print_header(&opt);
     for (i = 0; i < bench_scene_count; ++i) {
         const bench_scene* scene = &bench_scenes[i];
-        if (opt.scene && strcmp(opt.scene, scene->name) != 0) {
+        scene_result* r = &results[done];
+        if (!is_selected(&opt, i)) {
             continue;
         }
-        if (!run_scene(scene, &opt, &result)) {
+        if (!run_scene(scene, &opt, r)) {
             exit_code = EXIT_API_ERROR;
             break;
         }
-        print_result(opt.format, &result, first);
-        first = false;
-        if (!result.sane || !result.deterministic) {
-            fprintf(stderr, "impulse2d_bench: scene %s: %s (%s = %g)\n", scene->name, verdict(&result),
-                    scene->sanity_name, result.figure);
+        print_result(opt.format, opt.workers, r, done == 0);
+        ++done;
+        if (!r->sane || !r->deterministic) {
+            fprintf(stderr, "impulse2d_bench: scene %s: %s (", scene->name, verdict(r));
+            {
+                int32_t k;
+                for (k = 0; k < r->sanity.figure_count; ++k) {
+                    fprintf(stderr, "%s%s = %g", k ? ", " : "", r->sanity.figures[k].name, r->sanity.figures[k].value);
+                }
+            }
+            fprintf(stderr, ")\n");
             exit_code = EXIT_INSANE;
         }
     }
-    if (opt.format == FORMAT_JSON) {
-        printf("\n]}\n");
+    if (opt.format == FORMAT_TABLE && done > 0) {
+        print_profile_table(results, done);
     }
+    print_scaling(opt.format, results, done);
     return exit_code;
 }
