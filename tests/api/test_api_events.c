@@ -7,6 +7,7 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "api_test_support.h"
 #include "check.h"
 
 /* ---- Small helpers ---------------------------------------------------------------- */
@@ -23,43 +24,6 @@ static i2d_rot identity_rot(void) {
     q.c = 1.0f;
     q.s = 0.0f;
     return q;
-}
-
-/* splitmix64: a fixed-seed generator, the same on every platform (rand() is not). */
-typedef struct rng {
-    uint64_t state;
-} rng;
-
-static uint64_t rng_next(rng* r) {
-    uint64_t z = (r->state += UINT64_C(0x9E3779B97F4A7C15));
-    z = (z ^ (z >> 30)) * UINT64_C(0xBF58476D1CE4E5B9);
-    z = (z ^ (z >> 27)) * UINT64_C(0x94D049BB133111EB);
-    return z ^ (z >> 31);
-}
-
-/* Uniform in [lo, hi). */
-static float rng_float(rng* r, float lo, float hi) {
-    double unit = (double)(rng_next(r) >> 11) / 9007199254740992.0; /* 2^53 */
-    return (float)(lo + (hi - lo) * unit);
-}
-
-/* Uniform in [0, n). */
-static int rng_int(rng* r, int n) { return (int)(rng_next(r) % (uint64_t)n); }
-
-/* Mismatch reports are capped so that a broken feature does not flood the log. */
-static int g_reports_left;
-
-static void report(const char* format, ...) {
-    if (g_reports_left <= 0) {
-        return;
-    }
-    --g_reports_left;
-    va_list args;
-    va_start(args, format);
-    fprintf(stderr, "%s: ", __FILE__);
-    vfprintf(stderr, format, args);
-    fputc('\n', stderr);
-    va_end(args);
 }
 
 static const float k_dt = 1.0f / 60.0f;
