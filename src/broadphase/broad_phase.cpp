@@ -58,7 +58,7 @@ void BroadPhase::enlarge_proxy(int32_t key, const AABB& fat_aabb) {
         tree(proxy_kind(key)).enlarge_proxy(proxy_id(key), fat_aabb);
     } else {
         AABB& box = pending_moves_[slot].box;
-        box = {min(box.lower, fat_aabb.lower), max(box.upper, fat_aabb.upper)};
+        box = union_of(box, fat_aabb);
     }
     buffer_move(key);
 }
@@ -83,7 +83,7 @@ void BroadPhase::sort_spatially(std::vector<MoveEntry>& entries) {
     }
     AABB bounds = entries[0].box;
     for (const MoveEntry& e : entries) {
-        bounds = {min(bounds.lower, e.box.lower), max(bounds.upper, e.box.upper)};
+        bounds = union_of(bounds, e.box);
     }
     const Vec2 size = bounds.upper - bounds.lower;
     const float sx = size.x > 0.0f ? 65535.0f / size.x : 0.0f;

@@ -11,15 +11,8 @@ namespace i2d {
 
 namespace {
 
-AABB union_of(const AABB& a, const AABB& b) { return {min(a.lower, b.lower), max(a.upper, b.upper)}; }
-
 // 2D's surface area: what the cost of a node in a ray or box query grows with.
 float perimeter(const AABB& a) { return 2.0f * ((a.upper.x - a.lower.x) + (a.upper.y - a.lower.y)); }
-
-bool contains(const AABB& outer, const AABB& inner) {
-    return outer.lower.x <= inner.lower.x && outer.lower.y <= inner.lower.y && inner.upper.x <= outer.upper.x &&
-           inner.upper.y <= outer.upper.y;
-}
 
 }  // namespace
 

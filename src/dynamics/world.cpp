@@ -48,11 +48,6 @@ Vec2 limited_velocity(const Body& b, Vec2 gravity, float h, float max_speed) {
     return {float(vx * scale), float(vy * scale)};
 }
 
-bool contains(const AABB& outer, const AABB& inner) {
-    return outer.lower.x <= inner.lower.x && outer.lower.y <= inner.lower.y && inner.upper.x <= outer.upper.x &&
-           inner.upper.y <= outer.upper.y;
-}
-
 }  // namespace
 
 World::World(const WorldDef& def) : settings(def) {}

@@ -83,6 +83,13 @@ inline bool overlaps(const AABB& a, const AABB& b) {
     // Closed intervals: touching boxes overlap, as touching shapes are in contact.
     return !(a.upper.x < b.lower.x || b.upper.x < a.lower.x || a.upper.y < b.lower.y || b.upper.y < a.lower.y);
 }
+/// Whether inner lies within outer (boundary included).
+inline bool contains(const AABB& outer, const AABB& inner) {
+    return outer.lower.x <= inner.lower.x && outer.lower.y <= inner.lower.y && inner.upper.x <= outer.upper.x &&
+           inner.upper.y <= outer.upper.y;
+}
+/// The smallest box holding both.
+inline AABB union_of(const AABB& a, const AABB& b) { return {min(a.lower, b.lower), max(a.upper, b.upper)}; }
 inline bool contains_point(const AABB& a, Vec2 p) {
     return p.x >= a.lower.x && p.x <= a.upper.x && p.y >= a.lower.y && p.y <= a.upper.y;
 }

@@ -38,10 +38,6 @@ bool inside(const AABB& inner, const AABB& outer) {
 
 AABB fatten(const AABB& b) { return {{b.lower.x - margin, b.lower.y - margin}, {b.upper.x + margin, b.upper.y + margin}}; }
 
-AABB union_of(const AABB& a, const AABB& b) {
-    return {{std::min(a.lower.x, b.lower.x), std::min(a.lower.y, b.lower.y)},
-            {std::max(a.upper.x, b.upper.x), std::max(a.upper.y, b.upper.y)}};
-}
 
 bool same_box(const AABB& a, const AABB& b) {
     return a.lower.x == b.lower.x && a.lower.y == b.lower.y && a.upper.x == b.upper.x && a.upper.y == b.upper.y;
