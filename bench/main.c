@@ -403,10 +403,6 @@ static const char* group_name(bench_group group) {
 
 /* ---- Output ----------------------------------------------------------------------------------- */
 
-static int32_t velocity_iterations(void) {
-    return i2d_default_world_def().velocity_iterations;
-}
-
 /* A JSON number, or null for NaN and infinities (which JSON cannot hold). */
 static void json_number(double value) {
     if (isfinite(value)) {
@@ -473,17 +469,17 @@ static void print_header(const options* opt) {
     if (opt->format == FORMAT_JSON) {
         printf("{\"build\": {");
         bench_print_build_json(stdout);
-        printf(", \"time_step\": %.9g, \"substeps\": %d, \"velocity_iterations\": %d, \"workers\": %d},\n"
+        printf(", \"time_step\": %.9g, \"substeps\": %d, \"workers\": %d},\n"
                " \"notes\": [",
-               (double)BENCH_TIME_STEP, BENCH_SUBSTEPS, (int)velocity_iterations(), (int)opt->workers);
+               (double)BENCH_TIME_STEP, BENCH_SUBSTEPS, (int)opt->workers);
         print_notes(opt);
         printf("],\n \"scenes\": [");
         return;
     }
     bench_print_build_line(stdout, "bench");
-    printf("# dt 1/60 s, %d substeps, %d velocity iterations (world default), %d worker (threads are not "
+    printf("# dt 1/60 s, %d substeps (a solve and a relax pass each), %d worker (threads are not "
            "implemented yet)\n",
-           BENCH_SUBSTEPS, (int)velocity_iterations(), (int)opt->workers);
+           BENCH_SUBSTEPS, (int)opt->workers);
     print_notes(opt);
     if (opt->format == FORMAT_CSV) {
         printf("scene,group,workers,dynamic_bodies,bodies,contacts,pairs,steps,repeats,median_ms,min_ms,p90_ms");

@@ -172,6 +172,9 @@ I2D_API i2d_status i2d_body_set_linear_velocity(i2d_body_id id, i2d_vec2 v) {
             return last_status();
         }
         if (b.body().type != BodyType::static_body) {
+            if (v.x != 0.0f || v.y != 0.0f) {
+                b.world->wake_body(b.index);
+            }
             b.body().linear_velocity = capi::to_core(v);
         }
         return I2D_OK;
@@ -194,6 +197,9 @@ I2D_API i2d_status i2d_body_set_angular_velocity(i2d_body_id id, float w) {
         Body& body = b.body();
         // Static bodies never move; a fixed-rotation body never turns.
         if (body.type == BodyType::kinematic || (body.type == BodyType::dynamic && body.inv_inertia != 0.0f)) {
+            if (w != 0.0f) {
+                b.world->wake_body(b.index);
+            }
             body.angular_velocity = w;
         }
         return I2D_OK;
@@ -261,43 +267,54 @@ I2D_API i2d_vec2 i2d_body_get_world_point_velocity(i2d_body_id id, i2d_vec2 worl
 
 namespace {
 
+// Wakes the body if asked; a body left asleep ignores what it is given (Box2D's rule:
+// a sleeping body has no velocity to change, and forces do not pile up while it sleeps).
+bool prepare_to_receive(BodyRef& b, bool wake) {
+    if (b.body().type != BodyType::dynamic) {
+        return false;
+    }
+    if (wake) {
+        b.world->wake_body(b.index);
+    }
+    return b.world->is_awake(b.index);
+}
+
 // Forces and torques accumulate until the step; a sum that would overflow is refused so
 // that the body stays as it was.
-i2d_status accumulate(Call& call, Body& body, Vec2 force, float torque) {
-    if (body.type != BodyType::dynamic) {
-        return I2D_OK;
-    }
+i2d_status accumulate(Call& call, BodyRef& b, Vec2 force, float torque, bool wake) {
+    Body& body = b.body();
     const Vec2 total_force = body.force + force;
     const float total_torque = body.torque + torque;
     if (!is_finite(total_force) || !std::isfinite(total_torque)) {
         call.fail(I2D_ERR_INVALID_ARGUMENT, "the body's accumulated force or torque would overflow");
         return last_status();
     }
-    body.force = total_force;
-    body.torque = total_torque;
+    if (prepare_to_receive(b, wake)) {
+        body.force = total_force;
+        body.torque = total_torque;
+    }
     return I2D_OK;
 }
 
 // An impulse changes both velocities at once; refused whole if either would overflow.
-i2d_status change_velocity(Call& call, Body& body, Vec2 dv, float dw) {
-    if (body.type != BodyType::dynamic) {
-        return I2D_OK;
-    }
+i2d_status change_velocity(Call& call, BodyRef& b, Vec2 dv, float dw, bool wake) {
+    Body& body = b.body();
     const Vec2 v = body.linear_velocity + dv;
     const float w = body.angular_velocity + dw;
     if (!is_finite(v) || !std::isfinite(w)) {
         call.fail(I2D_ERR_INVALID_ARGUMENT, "the impulse would make the body's velocity overflow");
         return last_status();
     }
-    body.linear_velocity = v;
-    body.angular_velocity = w;
+    if (prepare_to_receive(b, wake)) {
+        body.linear_velocity = v;
+        body.angular_velocity = w;
+    }
     return I2D_OK;
 }
 
 }  // namespace
 
 I2D_API i2d_status i2d_body_apply_force(i2d_body_id id, i2d_vec2 force, i2d_vec2 point, bool wake) {
-    (void)wake;  // every body is awake until sleeping lands
     return guarded("i2d_body_apply_force", I2D_ERR_OUT_OF_MEMORY, [&](Call& call) {
         BodyRef b;
         if (!mutable_body(call, id, b) || !call.finite(force, "force") || !call.coordinate(point, "point")) {
@@ -305,34 +322,31 @@ I2D_API i2d_status i2d_body_apply_force(i2d_body_id id, i2d_vec2 force, i2d_vec2
         }
         Body& body = b.body();
         const Vec2 f = capi::to_core(force);
-        return accumulate(call, body, f, cross(capi::to_core(point) - body.center, f));
+        return accumulate(call, b, f, cross(capi::to_core(point) - body.center, f), wake);
     });
 }
 
 I2D_API i2d_status i2d_body_apply_force_to_center(i2d_body_id id, i2d_vec2 force, bool wake) {
-    (void)wake;
     return guarded("i2d_body_apply_force_to_center", I2D_ERR_OUT_OF_MEMORY, [&](Call& call) {
         BodyRef b;
         if (!mutable_body(call, id, b) || !call.finite(force, "force")) {
             return last_status();
         }
-        return accumulate(call, b.body(), capi::to_core(force), 0.0f);
+        return accumulate(call, b, capi::to_core(force), 0.0f, wake);
     });
 }
 
 I2D_API i2d_status i2d_body_apply_torque(i2d_body_id id, float torque, bool wake) {
-    (void)wake;
     return guarded("i2d_body_apply_torque", I2D_ERR_OUT_OF_MEMORY, [&](Call& call) {
         BodyRef b;
         if (!mutable_body(call, id, b) || !call.finite(torque, "torque")) {
             return last_status();
         }
-        return accumulate(call, b.body(), Vec2{}, torque);
+        return accumulate(call, b, Vec2{}, torque, wake);
     });
 }
 
 I2D_API i2d_status i2d_body_apply_linear_impulse(i2d_body_id id, i2d_vec2 impulse, i2d_vec2 point, bool wake) {
-    (void)wake;
     return guarded("i2d_body_apply_linear_impulse", I2D_ERR_OUT_OF_MEMORY, [&](Call& call) {
         BodyRef b;
         if (!mutable_body(call, id, b) || !call.finite(impulse, "impulse") || !call.coordinate(point, "point")) {
@@ -340,27 +354,45 @@ I2D_API i2d_status i2d_body_apply_linear_impulse(i2d_body_id id, i2d_vec2 impuls
         }
         Body& body = b.body();
         const Vec2 j = capi::to_core(impulse);
-        return change_velocity(call, body, body.inv_mass * j,
-                               body.inv_inertia * cross(capi::to_core(point) - body.center, j));
+        return change_velocity(call, b, body.inv_mass * j, body.inv_inertia * cross(capi::to_core(point) - body.center, j),
+                               wake);
     });
 }
 
 I2D_API i2d_status i2d_body_apply_angular_impulse(i2d_body_id id, float impulse, bool wake) {
-    (void)wake;
     return guarded("i2d_body_apply_angular_impulse", I2D_ERR_OUT_OF_MEMORY, [&](Call& call) {
         BodyRef b;
         if (!mutable_body(call, id, b) || !call.finite(impulse, "impulse")) {
             return last_status();
         }
         Body& body = b.body();
-        return change_velocity(call, body, Vec2{}, body.inv_inertia * impulse);
+        return change_velocity(call, b, Vec2{}, body.inv_inertia * impulse, wake);
     });
 }
 
 I2D_API bool i2d_body_is_awake(i2d_body_id id) {
     return guarded("i2d_body_is_awake", false, [&](Call& call) {
         BodyRef b;
-        return call.body(id, b) && b.body().type != BodyType::static_body;
+        return call.body(id, b) && b.world->is_awake(b.index);
+    });
+}
+
+I2D_API i2d_status i2d_body_set_awake(i2d_body_id id, bool awake) {
+    return guarded("i2d_body_set_awake", I2D_ERR_OUT_OF_MEMORY, [&](Call& call) {
+        BodyRef b;
+        if (!mutable_body(call, id, b)) {
+            return last_status();
+        }
+        if (b.body().type == BodyType::static_body) {
+            call.fail(I2D_ERR_INVALID_ARGUMENT, "a static body neither sleeps nor wakes");
+            return last_status();
+        }
+        if (awake) {
+            b.world->wake_body(b.index);
+        } else {
+            b.world->sleep_body(b.index);
+        }
+        return I2D_OK;
     });
 }
 

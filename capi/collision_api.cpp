@@ -5,6 +5,7 @@
 
 #include "boundary.hpp"
 #include "geometry_checks.hpp"
+#include "collision/collision_constants.hpp"
 #include "collision/geometry.hpp"
 #include "collision/hull.hpp"
 #include "collision/manifold.hpp"
@@ -194,7 +195,7 @@ i2d_manifold collide_checked(const char* name, const A* a, i2d_transform xfa, co
             !valid_transform(call, xfb, "xfb")) {
             return i2d_manifold{};
         }
-        return to_public(collide(to_core(*a), to_core(xfa), to_core(*b), to_core(xfb)));
+        return to_public(collide(to_core(*a), to_core(xfa), to_core(*b), to_core(xfb), speculative_distance));
     });
 }
 

@@ -8,10 +8,19 @@
 
 #include "collision/geometry.hpp"
 #include "collision/shapes.hpp"
+#include "dynamics/mixing.hpp"
 #include "dynamics/shape.hpp"
 #include "math/vec2.hpp"
 
 namespace i2d::capi {
+
+static_assert(int(I2D_MIX_GEOMETRIC_MEAN) == int(MixingRule::geometric_mean) &&
+                  int(I2D_MIX_MINIMUM) == int(MixingRule::minimum) && int(I2D_MIX_MAXIMUM) == int(MixingRule::maximum) &&
+                  int(I2D_MIX_AVERAGE) == int(MixingRule::average) && int(I2D_MIX_MULTIPLY) == int(MixingRule::multiply),
+              "mixing rules");
+/// The rule must have been validated.
+inline MixingRule to_core(i2d_mixing_rule r) { return MixingRule(int(r)); }
+inline i2d_mixing_rule to_public(MixingRule r) { return i2d_mixing_rule(int(r)); }
 
 inline Vec2 to_core(i2d_vec2 v) { return {v.x, v.y}; }
 inline Rot to_core(i2d_rot q) { return {q.c, q.s}; }

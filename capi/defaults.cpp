@@ -12,11 +12,16 @@ I2D_API i2d_world_def i2d_default_world_def(void) {
     i2d_world_def def{};
     def.gravity = to_public(core.gravity);
     def.contact_slop = core.contact_slop;
-    def.contact_correction_percent = core.contact_correction_percent;
+    def.contact_hertz = core.contact_hertz;
+    def.contact_damping_ratio = core.contact_damping_ratio;
+    def.contact_push_max_speed = core.contact_push_max_speed;
     def.restitution_threshold = core.restitution_threshold;
     def.maximum_linear_speed = core.maximum_linear_speed;
-    def.velocity_iterations = core.velocity_iterations;
+    def.friction_mixing = to_public(core.friction_mixing);
+    def.restitution_mixing = to_public(core.restitution_mixing);
     def.enable_sleep = core.enable_sleep;
+    def.sleep_speed_threshold = core.sleep_speed_threshold;
+    def.time_to_sleep = core.time_to_sleep;
     def.internal_cookie = def_cookie;
     return def;
 }
@@ -48,6 +53,8 @@ I2D_API i2d_shape_def i2d_default_shape_def(void) {
     def.density = core.density;
     def.friction = core.friction;
     def.restitution = core.restitution;
+    def.rolling_resistance = core.rolling_resistance;
+    def.tangent_speed = core.tangent_speed;
     def.is_sensor = core.is_sensor;
     def.enable_contact_events = core.enable_contact_events;
     def.enable_sensor_events = core.enable_sensor_events;

@@ -19,7 +19,9 @@ bool validate_shape_def(Call& call, const i2d_shape_def* def) {
     return call.not_null(def, "shape def") && call.cookie(def->internal_cookie, "shape_def") &&
            call.in_range(def->density, 0.0f, max_density, "shape def: density") &&
            call.in_range(def->friction, 0.0f, FLT_MAX, "shape def: friction") &&
-           call.in_range(def->restitution, 0.0f, max_restitution, "shape def: restitution");
+           call.in_range(def->restitution, 0.0f, max_restitution, "shape def: restitution") &&
+           call.in_range(def->rolling_resistance, 0.0f, max_setting, "shape def: rolling_resistance") &&
+           call.in_range(def->tangent_speed, -max_speed_limit, max_speed_limit, "shape def: tangent_speed");
 }
 
 ShapeDef to_core(const i2d_shape_def& def) {
@@ -27,6 +29,8 @@ ShapeDef to_core(const i2d_shape_def& def) {
     core.density = def.density;
     core.friction = def.friction;
     core.restitution = def.restitution;
+    core.rolling_resistance = def.rolling_resistance;
+    core.tangent_speed = def.tangent_speed;
     core.is_sensor = def.is_sensor;
     core.enable_contact_events = def.enable_contact_events;
     core.enable_sensor_events = def.enable_sensor_events;

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 // i2d_world_*: create, destroy, step, gravity, counters.
+#include <cstring>
 #include <memory>
 
 #include "boundary.hpp"
@@ -12,17 +13,30 @@ using namespace i2d::capi;
 
 namespace {
 
+// Read as an integer: a C caller can store any int in an enum field, and loading an
+// out-of-range value as the C++ enum type is undefined behaviour.
+bool valid_mixing_rule(Call& call, const i2d_mixing_rule* rule, const char* field) {
+    static_assert(sizeof(i2d_mixing_rule) == sizeof(int32_t), "enums are 32-bit");
+    int32_t value = 0;
+    std::memcpy(&value, rule, sizeof value);
+    return value >= 0 && value < static_cast<int32_t>(MixingRule::count)
+               ? true
+               : call.fail(I2D_ERR_INVALID_ARGUMENT, "%s is %d; it must be an i2d_mixing_rule", field, value);
+}
+
 bool validate_world_def(Call& call, const i2d_world_def* def) {
     return call.not_null(def, "world def") && call.cookie(def->internal_cookie, "world_def") &&
            call.finite(def->gravity, "world def: gravity") &&
            call.in_range(def->contact_slop, 0.0f, 1.0f, "world def: contact_slop") &&
-           call.in_range(def->contact_correction_percent, 1.0e-6f, 1.0f, "world def: contact_correction_percent") &&
+           call.in_range(def->contact_hertz, min_contact_hertz, max_setting, "world def: contact_hertz") &&
+           call.in_range(def->contact_damping_ratio, 0.0f, max_setting, "world def: contact_damping_ratio") &&
+           call.in_range(def->contact_push_max_speed, 0.0f, max_speed_limit, "world def: contact_push_max_speed") &&
            call.in_range(def->restitution_threshold, 0.0f, max_speed_limit, "world def: restitution_threshold") &&
            call.in_range(def->maximum_linear_speed, 1.0e-6f, max_speed_limit, "world def: maximum_linear_speed") &&
-           (def->velocity_iterations >= 1 && def->velocity_iterations <= max_velocity_iterations
-                ? true
-                : call.fail(I2D_ERR_INVALID_ARGUMENT, "world def: velocity_iterations is %d; it must be in [1, %d]",
-                            def->velocity_iterations, max_velocity_iterations));
+           valid_mixing_rule(call, &def->friction_mixing, "world def: friction_mixing") &&
+           valid_mixing_rule(call, &def->restitution_mixing, "world def: restitution_mixing") &&
+           call.in_range(def->sleep_speed_threshold, 0.0f, max_speed_limit, "world def: sleep_speed_threshold") &&
+           call.in_range(def->time_to_sleep, 0.0f, max_setting, "world def: time_to_sleep");
 }
 
 uint64_t encode_body(uint64_t world_bits, int32_t index, uint16_t generation) {
@@ -37,11 +51,16 @@ WorldDef to_core(const i2d_world_def& def) {
     WorldDef core;
     core.gravity = capi::to_core(def.gravity);
     core.contact_slop = def.contact_slop;
-    core.contact_correction_percent = def.contact_correction_percent;
+    core.contact_hertz = def.contact_hertz;
+    core.contact_damping_ratio = def.contact_damping_ratio;
+    core.contact_push_max_speed = def.contact_push_max_speed;
     core.restitution_threshold = def.restitution_threshold;
     core.maximum_linear_speed = def.maximum_linear_speed;
-    core.velocity_iterations = def.velocity_iterations;
+    core.friction_mixing = capi::to_core(def.friction_mixing);
+    core.restitution_mixing = capi::to_core(def.restitution_mixing);
     core.enable_sleep = def.enable_sleep;
+    core.sleep_speed_threshold = def.sleep_speed_threshold;
+    core.time_to_sleep = def.time_to_sleep;
     return core;
 }
 
@@ -111,6 +130,7 @@ I2D_API i2d_status i2d_world_set_gravity(i2d_world_id id, i2d_vec2 gravity) {
             return last_status();
         }
         w.world->settings.gravity = capi::to_core(gravity);
+        w.world->wake_all();  // resting bodies must feel the new gravity
         return I2D_OK;
     });
 }
@@ -135,7 +155,9 @@ I2D_API i2d_world_counters i2d_world_get_counters(i2d_world_id id) {
                                   c.pair_count,
                                   c.tree_heights[int32_t(ProxyKind::static_proxy)],
                                   c.tree_heights[int32_t(ProxyKind::kinematic_proxy)],
-                                  c.tree_heights[int32_t(ProxyKind::dynamic_proxy)]};
+                                  c.tree_heights[int32_t(ProxyKind::dynamic_proxy)],
+                                  c.awake_body_count,
+                                  c.sleeping_island_count};
     });
 }
 
@@ -146,7 +168,7 @@ I2D_API i2d_profile i2d_world_get_profile(i2d_world_id id) {
             return i2d_profile{};
         }
         const StepProfile& p = w.world->profile();
-        return i2d_profile{p.step, p.pairs, p.collide, p.solve, p.update_bounds, p.events};
+        return i2d_profile{p.step, p.pairs, p.collide, p.solve, p.update_bounds, p.sleep, p.events};
     });
 }
 

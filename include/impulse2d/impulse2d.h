@@ -108,7 +108,8 @@ I2D_API i2d_vec2 i2d_body_get_world_point_velocity(i2d_body_id body, i2d_vec2 wo
 /** Adds a force (N) at a world point (within 1e9 m of the origin) for the next step;
  *  away from the centre of mass it also adds torque. Cleared after each step. Only
  *  dynamic bodies respond. A force that would make the accumulated total overflow is
- *  refused. */
+ *  refused. wake = true wakes a sleeping body; with false, a sleeping body ignores it
+ *  (as it does every apply_* call). */
 I2D_API i2d_status i2d_body_apply_force(i2d_body_id body, i2d_vec2 force, i2d_vec2 point, bool wake);
 /** Adds a force (N) at the centre of mass for the next step: no torque. */
 I2D_API i2d_status i2d_body_apply_force_to_center(i2d_body_id body, i2d_vec2 force, bool wake);
@@ -122,8 +123,15 @@ I2D_API i2d_status i2d_body_apply_linear_impulse(i2d_body_id body, i2d_vec2 impu
                                                  bool wake);
 /** Changes the spin at once by impulse / inertia (N m s). */
 I2D_API i2d_status i2d_body_apply_angular_impulse(i2d_body_id body, float impulse, bool wake);
-/** False for static bodies; other bodies are always awake (sleeping is not implemented yet). */
+/** False for static bodies and for sleeping ones. A body falls asleep with everything
+ *  touching it once all of them have rested for the world's time_to_sleep. It wakes
+ *  (with them) when an awake body starts or stops touching it, when a body or shape
+ *  touching it is destroyed, and when its velocity, transform or shapes change
+ *  or a force, torque or impulse is applied with wake = true. */
 I2D_API bool i2d_body_is_awake(i2d_body_id body);
+/** Wakes the body and everything touching it, or puts them all to sleep at once
+ *  (awake = false; static bodies are refused with I2D_ERR_INVALID_ARGUMENT). */
+I2D_API i2d_status i2d_body_set_awake(i2d_body_id body, bool awake);
 I2D_API void* i2d_body_get_user_data(i2d_body_id body);
 I2D_API i2d_status i2d_body_set_user_data(i2d_body_id body, void* user_data);
 I2D_API int32_t i2d_body_get_shape_count(i2d_body_id body);

@@ -42,27 +42,52 @@ typedef struct i2d_query_filter {
     uint64_t mask_bits;
 } i2d_query_filter;
 
+/** How a contact combines the two shapes' friction or restitution. */
+typedef enum i2d_mixing_rule {
+    I2D_MIX_GEOMETRIC_MEAN = 0, /**< sqrt(a b): the default for friction */
+    I2D_MIX_MINIMUM,            /**< min(a, b): the default for restitution (the seed's rule) */
+    I2D_MIX_MAXIMUM,            /**< max(a, b) */
+    I2D_MIX_AVERAGE,            /**< (a + b) / 2 */
+    I2D_MIX_MULTIPLY            /**< a b */
+} i2d_mixing_rule;
+
 /** World settings. Obtain with i2d_default_world_def(), then edit. */
 typedef struct i2d_world_def {
     /** m/s^2; default (0, -10). Finite. */
     i2d_vec2 gravity;
-    /** Penetration allowed at rest before positions are corrected, m; default 0.005.
-     *  Range [0, 1]. Stops resting contacts from jittering. */
+    /** Touching tolerance, m; default 0.005. Range [0, 1]. Shapes this close count as
+     *  touching (contact begin/end events, counters), so that a resting contact, or a
+     *  bounce stopped by a speculative contact exactly at the surface, is seen. */
     float contact_slop;
-    /** Share of the penetration beyond the slop removed per substep; default 0.8.
-     *  Range [1e-6, 1]: low values let stacks sink, values near 1 may jitter. */
-    float contact_correction_percent;
+    /** Stiffness of contacts, Hz; default 60. Range [0.001, 1e5]. Overlap is removed like
+     *  a damped spring of this frequency, capped at a quarter of the substep rate (60 Hz
+     *  at 1/60 s and 4 substeps); contacts with static and kinematic bodies are twice as
+     *  stiff. A contact under load settles at load / (effective mass x (2 pi hertz)^2)
+     *  of overlap: 0.07 mm per kilogram-weight on a 1 kg pair at the default. */
+    float contact_hertz;
+    /** Damping ratio of that spring; default 10 (heavily over-damped: no bounce from
+     *  push-out). Range [0, 1e5]. */
+    float contact_damping_ratio;
+    /** Fastest speed at which overlap is pushed out, m/s; default 3. Range [0, 1e5].
+     *  Bodies created overlapping separate gently rather than explode apart. */
+    float contact_push_max_speed;
     /** Impacts slower than this (m/s) do not bounce; default 1. Range [0, 1e5]. */
     float restitution_threshold;
     /** Speed limit for every body, m/s; default 400. Range [1e-6, 1e5]. Guards the
      *  world against runaway values from huge forces or impulses. */
     float maximum_linear_speed;
-    /** Sequential-impulse iterations per substep; default 10. Range [1, 1000]. More
-     *  iterations let tall stacks sink less. */
-    int32_t velocity_iterations;
-    /** Lets resting bodies sleep. Default true. Sleeping is not implemented yet
-     *  in this version: every non-static body stays awake whatever this says. */
+    /** Default I2D_MIX_GEOMETRIC_MEAN. */
+    i2d_mixing_rule friction_mixing;
+    /** Default I2D_MIX_MINIMUM. */
+    i2d_mixing_rule restitution_mixing;
+    /** Lets resting bodies sleep; default true. A sleeping body costs nothing per step. */
     bool enable_sleep;
+    /** A body is resting while its speed, and its spin times its largest extent, stay
+     *  below this, m/s; default 0.05. Range [0, 1e5]. */
+    float sleep_speed_threshold;
+    /** Bodies touching one another fall asleep together once every one of them has
+     *  rested this long, s; default 0.5. Range [0, 1e5]. */
+    float time_to_sleep;
     /** Set by i2d_default_world_def(); do not set. */
     uint32_t internal_cookie;
 } i2d_world_def;
@@ -86,7 +111,7 @@ typedef struct i2d_body_def {
     /** Default false. A fixed-rotation body never turns (infinite rotational inertia):
      *  the seed's axis-aligned behaviour. */
     bool fixed_rotation;
-    /** Default true. See i2d_world_def.enable_sleep. */
+    /** Default true. False keeps this body (and whatever touches it) awake. */
     bool enable_sleep;
     /** Default false. Continuous collision for fast bodies; not implemented yet in this
      *  version: it has no effect. */
@@ -106,6 +131,15 @@ typedef struct i2d_shape_def {
     /** Bounciness; default 0. Range [0, 100] (1 = elastic, above 1 adds energy). A
      *  contact uses the minimum of the two shapes'. */
     float restitution;
+    /** Rolling resistance coefficient; default 0. Range [0, 1e5]. A round shape (circle,
+     *  capsule, rounded polygon) rolling on a surface feels a torque of at most this x
+     *  its radius x the normal force, opposing the roll. A contact uses the larger of
+     *  the two shapes' coefficient x radius. */
+    float rolling_resistance;
+    /** Speed of the shape's surface along its outline, m/s, counter-clockwise positive
+     *  (the way a wheel spinning counter-clockwise moves its rim); default 0. Finite,
+     *  |speed| <= 1e5. Friction drags touching bodies along: a conveyor belt. */
+    float tangent_speed;
     /** Default false. A sensor detects overlaps but never pushes: it reports sensor
      *  begin/end events for shapes that enter and leave it. */
     bool is_sensor;
@@ -129,6 +163,8 @@ typedef struct i2d_world_counters {
     int32_t static_tree_height;
     int32_t kinematic_tree_height;
     int32_t dynamic_tree_height;
+    int32_t awake_body_count; /**< dynamic and kinematic bodies that are awake */
+    int32_t sleeping_island_count; /**< groups of touching bodies asleep together */
 } i2d_world_counters;
 
 /** Where the last step's wall time went, ms, summed over its substeps. Timing only: it
@@ -137,8 +173,9 @@ typedef struct i2d_profile {
     float step;           /**< the whole i2d_world_step call */
     float pairs;          /**< broadphase: new pairs from shapes that moved */
     float collide;        /**< narrowphase: every contact's manifold */
-    float solve;          /**< integration, contact impulses, positional correction */
+    float solve;          /**< the soft step: integration, contact impulses, restitution */
     float update_bounds;  /**< shape bounds and tree re-insertions */
+    float sleep;          /**< islands: which bodies fall asleep */
     float events;         /**< contact, sensor and body move events */
 } i2d_profile;
 
@@ -172,7 +209,7 @@ typedef struct i2d_body_move_event {
     i2d_transform transform;
     i2d_body_id body;
     void* user_data;
-    bool fell_asleep; /**< always false: sleeping is not implemented yet */
+    bool fell_asleep; /**< the body fell asleep at the end of this step */
 } i2d_body_move_event;
 typedef struct i2d_body_events {
     const i2d_body_move_event* move_events;

@@ -83,6 +83,17 @@ AABB compute_aabb(const Geometry& g, const Transform& xf) {
     return {lower - r, upper + r};
 }
 
+float extent_from(const Geometry& g, Vec2 local_point) {
+    const Core c = world_core(g, Transform{});
+    float farthest = 0.0f;
+    for (int32_t i = 0; i < c.count; ++i) {
+        farthest = max_of(farthest, length(c.points[i] - local_point));
+    }
+    return farthest + c.radius;
+}
+
+float rounding_radius(const Geometry& g) { return world_core(g, Transform{}).radius; }
+
 bool contains_point(const Geometry& g, const Transform& xf, Vec2 p) {
     switch (g.type) {
         case ShapeType::circle: {

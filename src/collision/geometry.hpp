@@ -13,6 +13,12 @@ float area(const Geometry& g);
 /// Tight world-space bounds of the shape placed by xf.
 AABB compute_aabb(const Geometry& g, const Transform& xf);
 
+/// Farthest distance of the shape's points from a point of the body frame, m.
+float extent_from(const Geometry& g, Vec2 local_point);
+/// Radius of the shape's rounding (circle and capsule radius, polygon rounding), m:
+/// the lever arm of rolling resistance.
+float rounding_radius(const Geometry& g);
+
 /// Exact tests, boundary included. Segments contain no point.
 bool contains_point(const Geometry& g, const Transform& xf, Vec2 p);
 bool overlaps_aabb(const Geometry& g, const Transform& xf, const AABB& box);

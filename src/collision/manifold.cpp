@@ -114,12 +114,13 @@ Manifold collide_aabb_circle(const AABB& a, Vec2 center_b, float radius_b) {
 
 // ---- Round shapes: circles, capsules and segments ------------------------------------
 
-Manifold collide_circles(const Circle& a, const Transform& xf_a, const Circle& b, const Transform& xf_b) {
+Manifold collide_circles(const Circle& a, const Transform& xf_a, const Circle& b, const Transform& xf_b,
+                         float speculative) {
     const Transform xf = inv_mul_transforms(xf_a, xf_b);
     const Vec2 center_b = transform_point(xf, b.center);
     const Vec2 d = center_b - a.center;
     const float distance = length(d);
-    if (distance - a.radius - b.radius > speculative_distance) {
+    if (distance - a.radius - b.radius > speculative) {
         return {};
     }
     // Coincident centres: any fixed axis, the same every time.
@@ -127,13 +128,14 @@ Manifold collide_circles(const Circle& a, const Transform& xf_a, const Circle& b
     return to_world(single_contact(a.center, center_b, normal, distance, a.radius, b.radius, 0), xf_a);
 }
 
-Manifold collide_capsule_circle(const Capsule& a, const Transform& xf_a, const Circle& b, const Transform& xf_b) {
+Manifold collide_capsule_circle(const Capsule& a, const Transform& xf_a, const Circle& b, const Transform& xf_b,
+                                float speculative) {
     const Transform xf = inv_mul_transforms(xf_a, xf_b);
     const Vec2 center_b = transform_point(xf, b.center);
     const Vec2 closest = closest_point_on_segment(a.center1, a.center2, center_b);
     const Vec2 d = center_b - closest;
     const float distance = length(d);
-    if (distance - a.radius - b.radius > speculative_distance) {
+    if (distance - a.radius - b.radius > speculative) {
         return {};
     }
     // A centre on the core: leave sideways, through the capsule's left face.
@@ -144,8 +146,9 @@ Manifold collide_capsule_circle(const Capsule& a, const Transform& xf_a, const C
     return to_world(single_contact(closest, center_b, normal, distance, a.radius, b.radius, 0), xf_a);
 }
 
-Manifold collide_segment_circle(const Segment& a, const Transform& xf_a, const Circle& b, const Transform& xf_b) {
-    return collide_capsule_circle(Capsule{a.point1, a.point2, 0.0f}, xf_a, b, xf_b);
+Manifold collide_segment_circle(const Segment& a, const Transform& xf_a, const Circle& b, const Transform& xf_b,
+                                float speculative) {
+    return collide_capsule_circle(Capsule{a.point1, a.point2, 0.0f}, xf_a, b, xf_b, speculative);
 }
 
 namespace {
@@ -191,7 +194,8 @@ bool outside_slab(const CoreSegment& ref, const CoreSegment& other) {
     return (fp <= 0.0f && fq <= 0.0f) || (fp >= ref.length && fq >= ref.length);
 }
 
-Manifold clip_capsules(const CoreSegment& a, float ra, const CoreSegment& b, float rb, float distance) {
+Manifold clip_capsules(const CoreSegment& a, float ra, const CoreSegment& b, float rb, float distance,
+                       float speculative) {
     Manifold m;
     if (outside_slab(a, b) || outside_slab(b, a)) {
         return m;
@@ -220,8 +224,8 @@ Manifold clip_capsules(const CoreSegment& a, float ra, const CoreSegment& b, flo
     const float seps[2] = {sp, sq};
     for (int32_t i = 0; i < 2; ++i) {
         const float penetration = r_ref + r_inc - seps[i];
-        if (penetration < -speculative_distance) {
-            continue;
+        if (penetration < -speculative) {
+            continue;  // beyond the margin; a larger one keeps this real point of the incident core
         }
         ManifoldPoint& mp = m.points[m.point_count++];
         mp.point = ends[i] + (0.5f * (r_ref - r_inc - seps[i])) * ref_normal;
@@ -244,7 +248,8 @@ CoreSegment core_segment(Vec2 p, Vec2 q) {
 
 // Closest points of the two cores (Ericson 5.1.9, in distance.cpp), then the two-point
 // clip when the cores lie along each other, else one point between the closest points.
-Manifold collide_capsules(const Capsule& a, const Transform& xf_a, const Capsule& b, const Transform& xf_b) {
+Manifold collide_capsules(const Capsule& a, const Transform& xf_a, const Capsule& b, const Transform& xf_b,
+                          float speculative) {
     // A's frame shifted to its first centre keeps precision for capsules far from their body.
     const Vec2 origin = a.center1;
     const Transform frame{transform_point(xf_a, origin), xf_a.q};
@@ -252,14 +257,14 @@ Manifold collide_capsules(const Capsule& a, const Transform& xf_a, const Capsule
     const CoreSegment core_a = core_segment(Vec2{}, a.center2 - origin);
     const CoreSegment core_b = core_segment(transform_point(xf, b.center1), transform_point(xf, b.center2));
     const SegmentDistance sd = segment_distance(core_a.p, core_a.q, core_b.p, core_b.q);
-    const float max_distance = a.radius + b.radius + speculative_distance;
+    const float max_distance = a.radius + b.radius + speculative;
     if (sd.distance_squared > max_distance * max_distance) {
         return {};
     }
     const float distance = std::sqrt(sd.distance_squared);
     Manifold m;
     if (core_a.length > linear_slop && core_b.length > linear_slop) {
-        m = clip_capsules(core_a, a.radius, core_b, b.radius, distance);
+        m = clip_capsules(core_a, a.radius, core_b, b.radius, distance, speculative);
     }
     if (m.point_count == 0) {
         Vec2 normal = distance > 0.0f ? (1.0f / distance) * (sd.closest2 - sd.closest1) : left_perp(core_a.u);
@@ -269,54 +274,58 @@ Manifold collide_capsules(const Capsule& a, const Transform& xf_a, const Capsule
     return to_world(m, frame);
 }
 
-Manifold collide_segment_capsule(const Segment& a, const Transform& xf_a, const Capsule& b, const Transform& xf_b) {
-    return collide_capsules(Capsule{a.point1, a.point2, 0.0f}, xf_a, b, xf_b);
+Manifold collide_segment_capsule(const Segment& a, const Transform& xf_a, const Capsule& b, const Transform& xf_b,
+                                 float speculative) {
+    return collide_capsules(Capsule{a.point1, a.point2, 0.0f}, xf_a, b, xf_b, speculative);
 }
 
-Manifold collide_polygon_capsule(const Polygon& a, const Transform& xf_a, const Capsule& b, const Transform& xf_b) {
-    return collide_polygons(a, xf_a, make_capsule_polygon(b.center1, b.center2, b.radius), xf_b);
+Manifold collide_polygon_capsule(const Polygon& a, const Transform& xf_a, const Capsule& b, const Transform& xf_b,
+                                 float speculative) {
+    return collide_polygons(a, xf_a, make_capsule_polygon(b.center1, b.center2, b.radius), xf_b, speculative);
 }
 
-Manifold collide_segment_polygon(const Segment& a, const Transform& xf_a, const Polygon& b, const Transform& xf_b) {
-    return collide_polygons(make_capsule_polygon(a.point1, a.point2, 0.0f), xf_a, b, xf_b);
+Manifold collide_segment_polygon(const Segment& a, const Transform& xf_a, const Polygon& b, const Transform& xf_b,
+                                 float speculative) {
+    return collide_polygons(make_capsule_polygon(a.point1, a.point2, 0.0f), xf_a, b, xf_b, speculative);
 }
 
 // ---- The pair table (Box2D contact.c's s_registers, Jolt's CollisionDispatch) --------
 
 namespace {
 
-using CollideFn = Manifold (*)(const Geometry&, const Transform&, const Geometry&, const Transform&);
+using CollideFn = Manifold (*)(const Geometry&, const Transform&, const Geometry&, const Transform&, float);
 
-// Adapters from the tagged Geometry to the typed functions, one per primary pair.
-Manifold circle_circle(const Geometry& a, const Transform& xa, const Geometry& b, const Transform& xb) {
-    return collide_circles(a.circle, xa, b.circle, xb);
+// Adapters from the tagged Geometry to the typed functions, one per primary pair; `spec`
+// is the speculative margin, passed through.
+Manifold circle_circle(const Geometry& a, const Transform& xa, const Geometry& b, const Transform& xb, float spec) {
+    return collide_circles(a.circle, xa, b.circle, xb, spec);
 }
-Manifold capsule_circle(const Geometry& a, const Transform& xa, const Geometry& b, const Transform& xb) {
-    return collide_capsule_circle(a.capsule, xa, b.circle, xb);
+Manifold capsule_circle(const Geometry& a, const Transform& xa, const Geometry& b, const Transform& xb, float spec) {
+    return collide_capsule_circle(a.capsule, xa, b.circle, xb, spec);
 }
-Manifold segment_circle(const Geometry& a, const Transform& xa, const Geometry& b, const Transform& xb) {
-    return collide_segment_circle(a.segment, xa, b.circle, xb);
+Manifold segment_circle(const Geometry& a, const Transform& xa, const Geometry& b, const Transform& xb, float spec) {
+    return collide_segment_circle(a.segment, xa, b.circle, xb, spec);
 }
-Manifold polygon_circle(const Geometry& a, const Transform& xa, const Geometry& b, const Transform& xb) {
-    return collide_polygon_circle(a.polygon, xa, b.circle, xb);
+Manifold polygon_circle(const Geometry& a, const Transform& xa, const Geometry& b, const Transform& xb, float spec) {
+    return collide_polygon_circle(a.polygon, xa, b.circle, xb, spec);
 }
-Manifold capsule_capsule(const Geometry& a, const Transform& xa, const Geometry& b, const Transform& xb) {
-    return collide_capsules(a.capsule, xa, b.capsule, xb);
+Manifold capsule_capsule(const Geometry& a, const Transform& xa, const Geometry& b, const Transform& xb, float spec) {
+    return collide_capsules(a.capsule, xa, b.capsule, xb, spec);
 }
-Manifold segment_capsule(const Geometry& a, const Transform& xa, const Geometry& b, const Transform& xb) {
-    return collide_segment_capsule(a.segment, xa, b.capsule, xb);
+Manifold segment_capsule(const Geometry& a, const Transform& xa, const Geometry& b, const Transform& xb, float spec) {
+    return collide_segment_capsule(a.segment, xa, b.capsule, xb, spec);
 }
-Manifold polygon_capsule(const Geometry& a, const Transform& xa, const Geometry& b, const Transform& xb) {
-    return collide_polygon_capsule(a.polygon, xa, b.capsule, xb);
+Manifold polygon_capsule(const Geometry& a, const Transform& xa, const Geometry& b, const Transform& xb, float spec) {
+    return collide_polygon_capsule(a.polygon, xa, b.capsule, xb, spec);
 }
-Manifold segment_polygon(const Geometry& a, const Transform& xa, const Geometry& b, const Transform& xb) {
-    return collide_segment_polygon(a.segment, xa, b.polygon, xb);
+Manifold segment_polygon(const Geometry& a, const Transform& xa, const Geometry& b, const Transform& xb, float spec) {
+    return collide_segment_polygon(a.segment, xa, b.polygon, xb, spec);
 }
-Manifold polygon_polygon(const Geometry& a, const Transform& xa, const Geometry& b, const Transform& xb) {
-    return collide_polygons(a.polygon, xa, b.polygon, xb);
+Manifold polygon_polygon(const Geometry& a, const Transform& xa, const Geometry& b, const Transform& xb, float spec) {
+    return collide_polygons(a.polygon, xa, b.polygon, xb, spec);
 }
 // Segments are static geometry: two of them never need a contact.
-Manifold segment_segment(const Geometry&, const Transform&, const Geometry&, const Transform&) { return {}; }
+Manifold segment_segment(const Geometry&, const Transform&, const Geometry&, const Transform&, float) { return {}; }
 
 struct PairEntry {
     CollideFn fn;
@@ -336,12 +345,13 @@ constexpr PairEntry pair_table[kind_count][kind_count] = {
 
 }  // namespace
 
-Manifold collide_shapes(const Geometry& a, const Transform& xf_a, const Geometry& b, const Transform& xf_b) {
+Manifold collide_shapes(const Geometry& a, const Transform& xf_a, const Geometry& b, const Transform& xf_b,
+                        float speculative) {
     const PairEntry& entry = pair_table[static_cast<int32_t>(a.type)][static_cast<int32_t>(b.type)];
     if (!entry.swapped) {
-        return entry.fn(a, xf_a, b, xf_b);
+        return entry.fn(a, xf_a, b, xf_b, speculative);
     }
-    Manifold m = entry.fn(b, xf_b, a, xf_a);
+    Manifold m = entry.fn(b, xf_b, a, xf_a, speculative);
     m.normal = -m.normal;
     return m;
 }

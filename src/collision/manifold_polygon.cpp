@@ -70,8 +70,11 @@ int32_t incident_edge(const LocalPolygon& inc, Vec2 ref_normal) {
     return edge;
 }
 
-void add_point(Manifold& m, Vec2 point, float penetration, uint32_t id) {
-    if (penetration < -speculative_distance) {
+// Points beyond the speculative margin are dropped; the margin never moves a point, so a
+// larger one only keeps clipped ends that lie on the incident edge inside the reference
+// face's slab, at their true height above the face.
+void add_point(Manifold& m, Vec2 point, float penetration, uint32_t id, float speculative) {
+    if (penetration < -speculative) {
         return;  // too far apart to matter this step
     }
     ManifoldPoint& mp = m.points[m.point_count++];
@@ -86,7 +89,7 @@ void add_point(Manifold& m, Vec2 point, float penetration, uint32_t id) {
 // is its height above the reference face. Because the winding is counter-clockwise the
 // incident edge runs against the reference edge's tangent. Normal: reference to incident.
 Manifold clip_edges(const LocalPolygon& ref, int32_t i11, const LocalPolygon& inc, int32_t i21, bool flip,
-                    bool overlapping) {
+                    bool overlapping, float speculative) {
     const int32_t i12 = ref.next(i11), i22 = inc.next(i21);
     const Vec2 normal = ref.n[i11];
     const Vec2 v11 = ref.v[i11], v12 = ref.v[i12];
@@ -123,8 +126,10 @@ Manifold clip_edges(const LocalPolygon& ref, int32_t i11, const LocalPolygon& in
     m.normal = normal;
     // Midway between the surfaces: the incident core point is r2 beyond its surface and
     // the reference surface lies r1 above the reference core.
-    add_point(m, v_lower + (0.5f * (r1 - r2 - sep_lower)) * normal, pen_lower, make_feature_id(i11, i22, flip));
-    add_point(m, v_upper + (0.5f * (r1 - r2 - sep_upper)) * normal, pen_upper, make_feature_id(i12, i21, flip));
+    add_point(m, v_lower + (0.5f * (r1 - r2 - sep_lower)) * normal, pen_lower, make_feature_id(i11, i22, flip),
+              speculative);
+    add_point(m, v_upper + (0.5f * (r1 - r2 - sep_upper)) * normal, pen_upper, make_feature_id(i12, i21, flip),
+              speculative);
     return m;
 }
 
@@ -142,12 +147,13 @@ float deepest_penetration(const Manifold& m) {
 // end), and one point along the vertex-vertex direction is right. The clipped points
 // win when one of them is as close as those vertices (edges lying along each other):
 // they then carry the true depth and a second point.
-Manifold apart_contact(const LocalPolygon& ref, int32_t i11, const LocalPolygon& inc, int32_t i21, bool flip) {
+Manifold apart_contact(const LocalPolygon& ref, int32_t i11, const LocalPolygon& inc, int32_t i21, bool flip,
+                       float speculative) {
     const int32_t i12 = ref.next(i11), i22 = inc.next(i21);
     const SegmentDistance sd = segment_distance(ref.v[i11], ref.v[i12], inc.v[i21], inc.v[i22]);
     const bool ref_vertex = sd.fraction1 == 0.0f || sd.fraction1 == 1.0f;
     const bool inc_vertex = sd.fraction2 == 0.0f || sd.fraction2 == 1.0f;
-    const Manifold clipped = clip_edges(ref, i11, inc, i21, flip, false);
+    const Manifold clipped = clip_edges(ref, i11, inc, i21, flip, false, speculative);
     if (!ref_vertex || !inc_vertex) {
         return clipped;
     }
@@ -158,7 +164,7 @@ Manifold apart_contact(const LocalPolygon& ref, int32_t i11, const LocalPolygon&
     if (clipped.point_count > 0 && std::fabs(radius - deepest_penetration(clipped) - distance) <= 0.01f * linear_slop) {
         return clipped;
     }
-    if (distance - radius > speculative_distance) {
+    if (distance - radius > speculative) {
         return {};
     }
     const Vec2 normal = (1.0f / distance) * (sd.closest2 - sd.closest1);
@@ -174,7 +180,8 @@ Manifold apart_contact(const LocalPolygon& ref, int32_t i11, const LocalPolygon&
 // faces and clipping (Box2D v3 manifold.c b2CollidePolygons; Gregorius GDC 2013 for the
 // SAT; Ericson 5.1.9 for the closest points of the vertex case). Radii are handled by
 // subtracting them from the core separations.
-Manifold collide_polygons(const Polygon& a, const Transform& xf_a, const Polygon& b, const Transform& xf_b) {
+Manifold collide_polygons(const Polygon& a, const Transform& xf_a, const Polygon& b, const Transform& xf_b,
+                          float speculative) {
     const Vec2 origin = a.vertices[0];
     const Transform frame{transform_point(xf_a, origin), xf_a.q};
     const LocalPolygon pa = place(a, Transform{-origin, Rot{}});
@@ -183,7 +190,7 @@ Manifold collide_polygons(const Polygon& a, const Transform& xf_a, const Polygon
     const FaceQuery qa = max_separation(pa, pb);
     const FaceQuery qb = max_separation(pb, pa);
     const float radius = pa.radius + pb.radius;
-    if (qa.separation > speculative_distance + radius || qb.separation > speculative_distance + radius) {
+    if (qa.separation > speculative + radius || qb.separation > speculative + radius) {
         return {};
     }
     // Prefer A's face unless B's is clearly better: with nearly equal separations the
@@ -197,8 +204,8 @@ Manifold collide_polygons(const Polygon& a, const Transform& xf_a, const Polygon
 
     // Overlapping or nearly touching cores: the face normal is right. The tenth of the
     // slop also keeps the vertex-vertex direction long enough to normalise.
-    Manifold m = separation <= 0.1f * linear_slop ? clip_edges(ref, ref_edge, inc, inc_edge, flip, true)
-                                                  : apart_contact(ref, ref_edge, inc, inc_edge, flip);
+    Manifold m = separation <= 0.1f * linear_slop ? clip_edges(ref, ref_edge, inc, inc_edge, flip, true, speculative)
+                                                  : apart_contact(ref, ref_edge, inc, inc_edge, flip, speculative);
     if (m.point_count == 0) {
         return {};
     }
@@ -211,7 +218,8 @@ Manifold collide_polygons(const Polygon& a, const Transform& xf_a, const Polygon
 // The face of deepest separation decides; beyond the ends of that face (and outside the
 // core) the nearest vertex gives the normal (Box2D v3 b2CollidePolygonAndCircle; Ericson
 // 5.2.8 for the Voronoi regions).
-Manifold collide_polygon_circle(const Polygon& a, const Transform& xf_a, const Circle& b, const Transform& xf_b) {
+Manifold collide_polygon_circle(const Polygon& a, const Transform& xf_a, const Circle& b, const Transform& xf_b,
+                                float speculative) {
     const Transform xf = inv_mul_transforms(xf_a, xf_b);
     const Vec2 c = transform_point(xf, b.center);
     const float radius = a.radius + b.radius;
@@ -224,7 +232,7 @@ Manifold collide_polygon_circle(const Polygon& a, const Transform& xf_a, const C
             face = i;
         }
     }
-    if (separation > radius + speculative_distance) {
+    if (separation > radius + speculative) {
         return {};
     }
     const int32_t next = face + 1 == a.count ? 0 : face + 1;
@@ -235,7 +243,7 @@ Manifold collide_polygon_circle(const Polygon& a, const Transform& xf_a, const C
     if (separation > FLT_EPSILON && (beyond_v1 || beyond_v2)) {
         const Vec2 vertex = beyond_v1 ? v1 : v2;
         const float distance = length(c - vertex);
-        if (distance - radius > speculative_distance) {
+        if (distance - radius > speculative) {
             return {};
         }
         m = single_contact(vertex, c, (1.0f / distance) * (c - vertex), distance, a.radius, b.radius,

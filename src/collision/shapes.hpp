@@ -57,7 +57,7 @@ struct Geometry {
 
 struct ManifoldPoint {
     Vec2 point;                // world, midway between the surfaces
-    float penetration = 0.0f;  // > 0 overlapping, 0 touching, down to -speculative_distance
+    float penetration = 0.0f;  // > 0 overlapping, 0 touching, down to minus the speculative margin
     uint32_t id = 0;           // feature key, stable while the same features touch
 };
 

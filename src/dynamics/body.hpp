@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
 // Body: a rigid body's state and settings, kept in the world's body pool.
 //
-// Design note: one struct for now; the solver issue splits the hot velocity state into a
-// dense awake-only array (Box2D's BodyState) once sleeping and islands exist. The origin
+// Design note: the pool keeps every body; the step copies the awake ones into dense
+// solver arrays (body_state.hpp) and back, so the substeps never touch this. The origin
 // (transform.p) and the centre of mass (center) are both kept: the solver moves the
 // centre, users place the origin, and transform.p = center - rotate(q, local_center).
 #pragma once
@@ -53,6 +53,11 @@ struct Body {
     int32_t head_contact_key = null_index;  // list of contacts, linked through ContactEdge
     int32_t contact_count = 0;
     Transform step_start;  // to tell whether the body moved or turned during the step
+    float max_extent = 0.0f;  // farthest shape point from the centre of mass, m
+    float sleep_time = 0.0f;  // how long the body has been resting, s
+    int32_t awake_index = null_index;      // in the world's awake set; null when static or asleep
+    int32_t sleeping_island = null_index;  // the island it sleeps in
+    int32_t next_in_island = null_index;   // links the bodies of a sleeping island
 };
 
 }  // namespace i2d

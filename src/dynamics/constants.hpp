@@ -42,8 +42,15 @@ constexpr float max_speed_limit = 1.0e5f;
 /// from float overflow.
 constexpr float max_time_step = 1000.0f;
 
-/// Largest number of substeps or velocity iterations a caller may ask for.
+/// Largest number of substeps a caller may ask for.
 constexpr int32_t max_substeps = 1000;
-constexpr int32_t max_velocity_iterations = 1000;
+
+/// Upper bound of unitless or per-second settings (stiffness, damping ratio, rolling
+/// resistance, sleep time): far beyond any useful value, small enough to stay finite in
+/// products with speeds and steps.
+constexpr float max_setting = 1.0e5f;
+
+/// Softest contact a world accepts, Hz: below it stacks sink visibly at rest.
+constexpr float min_contact_hertz = 1.0e-3f;
 
 }  // namespace i2d

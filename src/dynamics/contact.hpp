@@ -6,7 +6,9 @@
 // body links its contacts through two edges per contact (index links, Box2D's contact
 // edges), so destroying a body or shape finds its contacts without a scan. The manifold
 // carries the accumulated impulses of each point, matched by feature id when the
-// manifold is updated, which is what warm starting feeds on.
+// manifold is updated, which is what warm starting feeds on. A contact is in the world's
+// awake set while one of its bodies is awake; contacts among sleeping and static bodies
+// are left out, so that a sleeping pile costs nothing.
 #pragma once
 
 #include <cstdint>
@@ -17,12 +19,12 @@
 namespace i2d {
 
 enum ContactFlags : uint32_t {
-    contact_touching = 1u << 0,       // the manifold has points
+    contact_touching = 1u << 0,       // within the contact slop when the last step ended
     contact_sensor = 1u << 1,         // one shape is a sensor: overlap only, never solved
     contact_report_events = 1u << 2,  // both shapes enable contact events (or, for a
                                       // sensor contact, the visitor enables sensor events)
     contact_touching_at_start = 1u << 3,  // touching when the step began
-    contact_touched_in_step = 1u << 4,    // touching after some substep of this step
+    contact_disjoint = 1u << 4,           // fat boxes apart: destroyed at the end of the step
 };
 
 /// A contact's link in one of its bodies' contact lists; keys are (contact << 1) | edge.
@@ -42,8 +44,14 @@ struct Contact {
     ContactEdge edges[2];                                // [0] body of A, [1] body of B
     Manifold manifold;
     ContactImpulse impulses[2];                          // per manifold point
+    float rolling_impulse = 0.0f;
+    // Material, mixed from the shapes' at every narrowphase update so that changing a
+    // shape's friction or restitution takes effect on contacts it already has.
     float friction = 0.0f, restitution = 0.0f;
+    float rolling_resistance = 0.0f;  // torque arm, m
+    float tangent_speed = 0.0f;       // m/s along left_perp(manifold normal)
     uint32_t flags = 0;
+    int32_t awake_index = null_index;  // in the world's awake contact set, if there
 };
 
 /// Replaces the manifold and carries each point's impulses over from the old point with

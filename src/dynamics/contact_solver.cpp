@@ -1,58 +1,13 @@
 // SPDX-License-Identifier: MIT
-// Sequential impulses with angular terms, restitution, Coulomb friction, warm starting;
-// the seed's positional correction per contact point.
+// The soft step's contact passes: prepare, warm start, solve (biased or relaxing),
+// restitution.
 #include "dynamics/contact_solver.hpp"
-#include "math/math.hpp"
 
 #include <cmath>
 
+#include "math/math.hpp"
 
 namespace i2d {
-
-void gather_constraints(const Pool<Contact>& contacts, const Pool<Body>& bodies,
-                        std::vector<ContactConstraint>& out) {
-    out.clear();
-    for (int32_t i = 0; i < contacts.capacity(); ++i) {
-        if (!contacts.is_live(i)) {
-            continue;
-        }
-        const Contact& contact = contacts[i];
-        if ((contact.flags & contact_touching) == 0 || (contact.flags & contact_sensor) != 0) {
-            continue;
-        }
-        ContactConstraint c;
-        c.contact = i;
-        c.body_a = contact.edges[0].body;
-        c.body_b = contact.edges[1].body;
-        const Body& a = bodies[c.body_a];
-        const Body& b = bodies[c.body_b];
-        c.normal = contact.manifold.normal;
-        c.friction = contact.friction;
-        c.restitution = contact.restitution;
-        c.point_count = contact.manifold.point_count;
-        for (int32_t p = 0; p < c.point_count; ++p) {
-            ContactPointConstraint& cp = c.points[p];
-            const Vec2 point = contact.manifold.points[p].point;
-            cp.anchor_a = point - a.center;
-            cp.anchor_b = point - b.center;
-            cp.local_anchor_a = inv_rotate(a.transform.q, cp.anchor_a);
-            cp.local_anchor_b = inv_rotate(b.transform.q, cp.anchor_b);
-            cp.penetration = contact.manifold.points[p].penetration;
-            cp.normal_impulse = contact.impulses[p].normal;
-            cp.tangent_impulse = contact.impulses[p].tangent;
-        }
-        out.push_back(c);
-    }
-}
-
-void scatter_impulses(const std::vector<ContactConstraint>& constraints, Pool<Contact>& contacts) {
-    for (const ContactConstraint& c : constraints) {
-        Contact& contact = contacts[c.contact];
-        for (int32_t p = 0; p < c.point_count; ++p) {
-            contact.impulses[p] = {c.points[p].normal_impulse, c.points[p].tangent_impulse};
-        }
-    }
-}
 
 namespace {
 
@@ -63,84 +18,126 @@ float effective_mass(const ContactConstraint& c, Vec2 r_a, Vec2 r_b, Vec2 direct
     return k > 0.0f ? 1.0f / k : 0.0f;
 }
 
-Vec2 relative_velocity(const Body& a, const Body& b, Vec2 r_a, Vec2 r_b) {
+Vec2 relative_velocity(const BodyState& a, const BodyState& b, Vec2 r_a, Vec2 r_b) {
     return (b.linear_velocity + cross(b.angular_velocity, r_b)) - (a.linear_velocity + cross(a.angular_velocity, r_a));
 }
 
-void apply_impulse(const ContactConstraint& c, const ContactPointConstraint& p, Vec2 impulse, Body& a, Body& b) {
+void apply_impulse(const ContactConstraint& c, const ContactConstraintPoint& p, Vec2 impulse, BodyState& a,
+                   BodyState& b) {
     a.linear_velocity -= c.inv_mass_a * impulse;
     a.angular_velocity -= c.inv_inertia_a * cross(p.anchor_a, impulse);
     b.linear_velocity += c.inv_mass_b * impulse;
     b.angular_velocity += c.inv_inertia_b * cross(p.anchor_b, impulse);
 }
 
+void apply_angular_impulse(const ContactConstraint& c, float impulse, BodyState& a, BodyState& b) {
+    a.angular_velocity -= c.inv_inertia_a * impulse;
+    b.angular_velocity += c.inv_inertia_b * impulse;
+}
+
 }  // namespace
 
-void prepare_contacts(std::vector<ContactConstraint>& constraints, const Pool<Body>& bodies,
-                      const SolverSettings& settings) {
+void prepare_contacts(std::vector<ContactConstraint>& constraints, const std::vector<BodyState>& states) {
     for (ContactConstraint& c : constraints) {
-        const Body& a = bodies[c.body_a];
-        const Body& b = bodies[c.body_b];
-        c.inv_mass_a = a.inv_mass;
-        c.inv_mass_b = b.inv_mass;
-        c.inv_inertia_a = a.inv_inertia;
-        c.inv_inertia_b = b.inv_inertia;
+        const BodyState& a = states[c.state_a];
+        const BodyState& b = states[c.state_b];
         const Vec2 tangent = left_perp(c.normal);
         for (int32_t i = 0; i < c.point_count; ++i) {
-            ContactPointConstraint& p = c.points[i];
+            ContactConstraintPoint& p = c.points[i];
             p.normal_mass = effective_mass(c, p.anchor_a, p.anchor_b, c.normal);
             p.tangent_mass = effective_mass(c, p.anchor_a, p.anchor_b, tangent);
-            const float vn = dot(relative_velocity(a, b, p.anchor_a, p.anchor_b), c.normal);
-            // Slow impacts do not bounce: resting contacts would otherwise never settle.
-            p.target_normal_speed = vn < -settings.restitution_threshold ? -c.restitution * vn : 0.0f;
+            p.relative_velocity = dot(relative_velocity(a, b, p.anchor_a, p.anchor_b), c.normal);
+            p.last_normal_speed = p.relative_velocity;
+            p.max_normal_impulse = 0.0f;
         }
+        const float k = c.inv_inertia_a + c.inv_inertia_b;
+        c.rolling_mass = k > 0.0f ? 1.0f / k : 0.0f;
     }
 }
 
-void warm_start_contacts(const std::vector<ContactConstraint>& constraints, Pool<Body>& bodies) {
+void warm_start_contacts(const std::vector<ContactConstraint>& constraints, std::vector<BodyState>& states) {
     for (const ContactConstraint& c : constraints) {
+        BodyState& a = states[c.state_a];
+        BodyState& b = states[c.state_b];
         const Vec2 tangent = left_perp(c.normal);
-        Body& a = bodies[c.body_a];
-        Body& b = bodies[c.body_b];
         for (int32_t i = 0; i < c.point_count; ++i) {
-            const ContactPointConstraint& p = c.points[i];
+            const ContactConstraintPoint& p = c.points[i];
             apply_impulse(c, p, p.normal_impulse * c.normal + p.tangent_impulse * tangent, a, b);
         }
+        apply_angular_impulse(c, c.rolling_impulse, a, b);
     }
 }
 
 namespace {
 
-void solve_friction(ContactConstraint& c, Body& a, Body& b) {
-    const Vec2 tangent = left_perp(c.normal);
-    for (int32_t i = 0; i < c.point_count; ++i) {
-        ContactPointConstraint& p = c.points[i];
-        // Coulomb: friction can hold at most mu times what the normal pushes.
-        const float vt = dot(relative_velocity(a, b, p.anchor_a, p.anchor_b), tangent);
-        const float max_friction = c.friction * p.normal_impulse;
-        const float old_tangent = p.tangent_impulse;
-        p.tangent_impulse = clamp(old_tangent - p.tangent_mass * vt, -max_friction, max_friction);
-        apply_impulse(c, p, (p.tangent_impulse - old_tangent) * tangent, a, b);
-    }
+// Separation of a point now: as prepared, plus how far its two anchors moved apart
+// along the normal since (anchors ride their bodies' motion and turn).
+float current_separation(const ContactConstraintPoint& p, Vec2 normal, const BodyState& a, const BodyState& b) {
+    const Vec2 moved = (b.delta_position - a.delta_position) +
+                       (rotate(b.delta_rotation, p.anchor_b) - rotate(a.delta_rotation, p.anchor_a));
+    return dot(moved, normal) + p.base_separation;
 }
 
-void solve_normal_point(ContactConstraint& c, ContactPointConstraint& p, Body& a, Body& b) {
+// How one point is solved this pass: impulse = -mass (mass_scale vn + bias) - impulse_scale x.
+struct PointTerms {
+    float bias = 0.0f, mass_scale = 1.0f, impulse_scale = 0.0f;
+};
+
+// A gap allows approach up to closing it within the substep (speculative); overlap is
+// pushed out softly, at most push_max_speed. Soft everywhere, so that the spring's
+// damping also calms resting stacks: a loaded contact settles at the small overlap
+// where push-out balances the load (load / (effective mass x omega^2)).
+PointTerms point_terms(const ContactConstraint& c, float separation, float inv_h, const ContactSolverSettings& s,
+                       bool use_bias) {
+    if (separation > 0.0f) {
+        return {separation * inv_h, 1.0f, 0.0f};
+    }
+    if (use_bias) {
+        const Softness& soft = c.softness;
+        return {max_of(soft.mass_scale * soft.bias_rate * separation, -s.push_max_speed), soft.mass_scale,
+                soft.impulse_scale};
+    }
+    return {};
+}
+
+// Until a point first pushes, its approach speed is tracked; when it does, the impact
+// speed is that speed carried over the remaining gap at the approach's acceleration
+// (gravity, say): v^2 + 2 a gap, what energy says. Bounces then keep their energy
+// instead of losing up to one substep's worth of acceleration each.
+void track_approach(ContactConstraintPoint& p, float vn, float separation, float inv_h) {
+    if (p.max_normal_impulse != 0.0f) {
+        return;
+    }
+    const float acceleration = max_of((p.last_normal_speed - vn) * inv_h, 0.0f);
+    const float gap = max_of(separation, 0.0f);
+    p.relative_velocity = vn < 0.0f ? -std::sqrt(vn * vn + 2.0f * acceleration * gap) : vn;
+    p.last_normal_speed = vn;
+}
+
+void set_normal_impulse(ContactConstraint& c, ContactConstraintPoint& p, float impulse, BodyState& a, BodyState& b) {
+    p.max_normal_impulse = max_of(p.max_normal_impulse, impulse - p.normal_impulse);
+    apply_impulse(c, p, (impulse - p.normal_impulse) * c.normal, a, b);
+    p.normal_impulse = impulse;
+}
+
+void solve_normal_point(ContactConstraint& c, ContactConstraintPoint& p, const PointTerms& t, BodyState& a,
+                        BodyState& b) {
     const float vn = dot(relative_velocity(a, b, p.anchor_a, p.anchor_b), c.normal);
-    const float old_normal = p.normal_impulse;
-    p.normal_impulse = max_of(old_normal - p.normal_mass * (vn - p.target_normal_speed), 0.0f);
-    apply_impulse(c, p, (p.normal_impulse - old_normal) * c.normal, a, b);
+    const float impulse = -p.normal_mass * (t.mass_scale * vn + t.bias) - t.impulse_scale * p.normal_impulse;
+    set_normal_impulse(c, p, max_of(p.normal_impulse + impulse, 0.0f), a, b);
 }
 
 // Both points of a two-point manifold at once, as a 2x2 linear complementarity problem
-// (Box2D 2.4's block solver, after Catto's GDC talks): find accumulated impulses x >= 0
-// with relative normal velocities vn = K x + b >= 0 and x_i vn_i = 0, trying the four
-// cases (both pushing, only one, neither). Solving the points one after the other
-// instead lets each undo part of the other, which turns a resting box and makes tall
-// stacks sway. Returns false when K is too ill-conditioned to invert (points nearly
-// coincident); the caller then solves the points one by one.
-bool solve_normal_block(ContactConstraint& c, Body& a, Body& b) {
-    ContactPointConstraint& p1 = c.points[0];
-    ContactPointConstraint& p2 = c.points[1];
+// (Box2D 2.4's block solver, after Catto's GDC talks, extended to soft terms): find
+// accumulated impulses x >= 0 with w = K (x - (1 - impulse_scale) x_old) + mass_scale vn
+// + bias >= 0 and x_i w_i = 0, trying the four cases (both push, one, neither). For one
+// point this is exactly the single-point rule. Solving the points one after the other
+// instead lets the first take more than its share, which turns a resting box and makes
+// tall stacks lean. Returns false when K is too ill-conditioned (points nearly
+// coincident) or no case fits (round-off at the boundaries): then one by one.
+bool solve_normal_block(ContactConstraint& c, const PointTerms t[2], BodyState& a, BodyState& b) {
+    ContactConstraintPoint& p1 = c.points[0];
+    ContactConstraintPoint& p2 = c.points[1];
     const Vec2 n = c.normal;
     const float rn1a = cross(p1.anchor_a, n), rn1b = cross(p1.anchor_b, n);
     const float rn2a = cross(p2.anchor_a, n), rn2b = cross(p2.anchor_b, n);
@@ -153,95 +150,122 @@ bool solve_normal_block(ContactConstraint& c, Body& a, Body& b) {
     if (!(k11 * k11 < max_condition * det)) {
         return false;
     }
-    const float x1_old = p1.normal_impulse, x2_old = p2.normal_impulse;
+    const float kept1 = (1.0f - t[0].impulse_scale) * p1.normal_impulse;
+    const float kept2 = (1.0f - t[1].impulse_scale) * p2.normal_impulse;
     const float vn1 = dot(relative_velocity(a, b, p1.anchor_a, p1.anchor_b), n);
     const float vn2 = dot(relative_velocity(a, b, p2.anchor_a, p2.anchor_b), n);
-    // vn = K x + bias with the old impulses taken out: bias = vn_now - target - K x_old.
-    const float b1 = vn1 - p1.target_normal_speed - (k11 * x1_old + k12 * x2_old);
-    const float b2 = vn2 - p2.target_normal_speed - (k12 * x1_old + k22 * x2_old);
+    const float q1 = t[0].mass_scale * vn1 + t[0].bias - (k11 * kept1 + k12 * kept2);
+    const float q2 = t[1].mass_scale * vn2 + t[1].bias - (k12 * kept1 + k22 * kept2);
 
     float x1 = 0.0f, x2 = 0.0f;
     const float inv_det = 1.0f / det;
-    const float both1 = -inv_det * (k22 * b1 - k12 * b2), both2 = -inv_det * (k11 * b2 - k12 * b1);
+    const float both1 = -inv_det * (k22 * q1 - k12 * q2), both2 = -inv_det * (k11 * q2 - k12 * q1);
     if (both1 >= 0.0f && both2 >= 0.0f) {
         x1 = both1, x2 = both2;  // both points push
-    } else if (-b1 / k11 >= 0.0f && k12 * (-b1 / k11) + b2 >= 0.0f) {
-        x1 = -b1 / k11;  // only the first pushes; the second separates
-    } else if (-b2 / k22 >= 0.0f && k12 * (-b2 / k22) + b1 >= 0.0f) {
-        x2 = -b2 / k22;  // only the second pushes
-    } else if (b1 >= 0.0f && b2 >= 0.0f) {
-        // neither pushes: both separate on their own
-    } else {
-        return false;  // no case fits (round-off at the boundaries): one by one
+    } else if (-q1 / k11 >= 0.0f && k12 * (-q1 / k11) + q2 >= 0.0f) {
+        x1 = -q1 / k11;  // only the first pushes; the second separates
+    } else if (-q2 / k22 >= 0.0f && k12 * (-q2 / k22) + q1 >= 0.0f) {
+        x2 = -q2 / k22;  // only the second pushes
+    } else if (!(q1 >= 0.0f && q2 >= 0.0f)) {
+        return false;
     }
-    apply_impulse(c, p1, (x1 - x1_old) * n, a, b);
-    apply_impulse(c, p2, (x2 - x2_old) * n, a, b);
-    p1.normal_impulse = x1;
-    p2.normal_impulse = x2;
+    set_normal_impulse(c, p1, x1, a, b);
+    set_normal_impulse(c, p2, x2, a, b);
     return true;
 }
 
-// Friction first, so that it uses the normal impulses of the previous iteration, then
-// the normal constraint, which has the last word on penetration (Box2D's order).
-void solve_contact(ContactConstraint& c, Body& a, Body& b) {
-    solve_friction(c, a, b);
-    if (c.point_count == 2 && solve_normal_block(c, a, b)) {
-        return;
-    }
+// Returns the normal impulses' sum, which bounds the rolling resistance torque.
+float solve_normal(ContactConstraint& c, BodyState& a, BodyState& b, float inv_h, const ContactSolverSettings& s,
+                   bool use_bias) {
+    PointTerms terms[2];
     for (int32_t i = 0; i < c.point_count; ++i) {
-        solve_normal_point(c, c.points[i], a, b);
-    }
-}
-
-}  // namespace
-
-void solve_contact_velocities(std::vector<ContactConstraint>& constraints, Pool<Body>& bodies,
-                              const SolverSettings& settings) {
-    for (int32_t iteration = 0; iteration < settings.velocity_iterations; ++iteration) {
-        for (ContactConstraint& c : constraints) {
-            solve_contact(c, bodies[c.body_a], bodies[c.body_b]);
+        ContactConstraintPoint& p = c.points[i];
+        const float separation = current_separation(p, c.normal, a, b);
+        terms[i] = point_terms(c, separation, inv_h, s, use_bias);
+        if (use_bias) {
+            track_approach(p, dot(relative_velocity(a, b, p.anchor_a, p.anchor_b), c.normal), separation, inv_h);
         }
     }
+    if (c.point_count != 2 || !solve_normal_block(c, terms, a, b)) {
+        for (int32_t i = 0; i < c.point_count; ++i) {
+            solve_normal_point(c, c.points[i], terms[i], a, b);
+        }
+    }
+    float total = 0.0f;
+    for (int32_t i = 0; i < c.point_count; ++i) {
+        total += c.points[i].normal_impulse;
+    }
+    return total;
 }
 
-namespace {
+// Coulomb friction towards the surfaces' relative speed (zero but for conveyor belts).
+void solve_friction(ContactConstraint& c, BodyState& a, BodyState& b) {
+    const Vec2 tangent = left_perp(c.normal);
+    for (int32_t i = 0; i < c.point_count; ++i) {
+        ContactConstraintPoint& p = c.points[i];
+        const float vt = dot(relative_velocity(a, b, p.anchor_a, p.anchor_b), tangent) - c.tangent_speed;
+        const float max_friction = c.friction * p.normal_impulse;
+        const float old = p.tangent_impulse;
+        p.tangent_impulse = clamp(old - p.tangent_mass * vt, -max_friction, max_friction);
+        apply_impulse(c, p, (p.tangent_impulse - old) * tangent, a, b);
+    }
+}
 
-// Moves a body by a position impulse at an anchor; bodies that cannot move keep their
-// exact bits (a static body's transform never changes).
-void displace(Body& body, float inv_mass, float inv_inertia, Vec2 anchor, Vec2 impulse) {
-    if (inv_mass != 0.0f) {
-        body.center += inv_mass * impulse;
+// A torque opposing the relative spin, bounded by arm x normal impulse.
+void solve_rolling(ContactConstraint& c, BodyState& a, BodyState& b, float normal_total) {
+    if (c.rolling_resistance == 0.0f) {
+        return;
     }
-    if (inv_inertia != 0.0f) {
-        body.transform.q = integrate_rotation(body.transform.q, inv_inertia * cross(anchor, impulse));
-    }
-    if (inv_mass != 0.0f || inv_inertia != 0.0f) {
-        body.transform.p = body.center - rotate(body.transform.q, body.local_center);
-    }
+    const float max_torque = c.rolling_resistance * normal_total;
+    const float old = c.rolling_impulse;
+    const float spin = b.angular_velocity - a.angular_velocity;
+    c.rolling_impulse = clamp(old - c.rolling_mass * spin, -max_torque, max_torque);
+    apply_angular_impulse(c, c.rolling_impulse - old, a, b);
 }
 
 }  // namespace
 
-void correct_contact_positions(const std::vector<ContactConstraint>& constraints, Pool<Body>& bodies,
-                               const SolverSettings& settings) {
-    for (const ContactConstraint& c : constraints) {
-        Body& a = bodies[c.body_a];
-        Body& b = bodies[c.body_b];
+void solve_contacts(std::vector<ContactConstraint>& constraints, std::vector<BodyState>& states, float inv_h,
+                    const ContactSolverSettings& settings, bool use_bias) {
+    for (ContactConstraint& c : constraints) {
+        BodyState& a = states[c.state_a];
+        BodyState& b = states[c.state_b];
+        const float normal_total = solve_normal(c, a, b, inv_h, settings, use_bias);
+        solve_friction(c, a, b);
+        solve_rolling(c, a, b, normal_total);
+    }
+}
+
+float separation_of(const ContactConstraint& c, const ContactConstraintPoint& p, const std::vector<BodyState>& states) {
+    return current_separation(p, c.normal, states[c.state_a], states[c.state_b]);
+}
+
+void apply_restitution(std::vector<ContactConstraint>& constraints, std::vector<BodyState>& states,
+                       const ContactSolverSettings& settings) {
+    for (ContactConstraint& c : constraints) {
+        if (c.restitution == 0.0f) {
+            continue;
+        }
+        BodyState& a = states[c.state_a];
+        BodyState& b = states[c.state_b];
+        // Slow impacts do not bounce (resting contacts would never settle), nor do points
+        // that never pushed (a speculative gap that did not close). The target is
+        // vn = -e vn_before: bias e vn_before on a rigid point.
+        PointTerms terms[2];
+        bool bounces[2] = {false, false};
         for (int32_t i = 0; i < c.point_count; ++i) {
-            const ContactPointConstraint& p = c.points[i];
-            const Vec2 r_a = rotate(a.transform.q, p.local_anchor_a);
-            const Vec2 r_b = rotate(b.transform.q, p.local_anchor_b);
-            // Both anchors met at the contact point when it was found; how far they moved
-            // apart along the normal since then has undone that much penetration.
-            const float penetration = p.penetration - dot((b.center + r_b) - (a.center + r_a), c.normal);
-            const float excess = max_of(penetration - settings.contact_slop, 0.0f);
-            const float mass = effective_mass(c, r_a, r_b, c.normal);
-            if (excess == 0.0f || mass == 0.0f) {
-                continue;
+            const ContactConstraintPoint& p = c.points[i];
+            bounces[i] = p.relative_velocity < -settings.restitution_threshold && p.max_normal_impulse != 0.0f;
+            terms[i].bias = c.restitution * p.relative_velocity;
+        }
+        // Both points together, or a face bouncing off a face would start to spin.
+        if (c.point_count == 2 && bounces[0] && bounces[1] && solve_normal_block(c, terms, a, b)) {
+            continue;
+        }
+        for (int32_t i = 0; i < c.point_count; ++i) {
+            if (bounces[i]) {
+                solve_normal_point(c, c.points[i], terms[i], a, b);
             }
-            const Vec2 impulse = (settings.correction_percent * excess * mass) * c.normal;
-            displace(a, c.inv_mass_a, c.inv_inertia_a, r_a, -impulse);
-            displace(b, c.inv_mass_b, c.inv_inertia_b, r_b, impulse);
         }
     }
 }

@@ -24,6 +24,8 @@ struct ShapeDef {
     float density = 1.0f;
     float friction = 0.6f;
     float restitution = 0.0f;
+    float rolling_resistance = 0.0f;
+    float tangent_speed = 0.0f;
     bool is_sensor = false;
     bool enable_contact_events = true;
     bool enable_sensor_events = true;
@@ -36,6 +38,8 @@ struct Shape {
     int32_t prev_in_body = null_index, next_in_body = null_index;
     Geometry geometry;
     float density = 0.0f, friction = 0.0f, restitution = 0.0f;
+    float rolling_resistance = 0.0f;  // coefficient, times the shape's radius at contacts
+    float tangent_speed = 0.0f;       // m/s, counter-clockwise along the outline
     Filter filter;
     bool is_sensor = false;
     bool enable_contact_events = true;

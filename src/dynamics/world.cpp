@@ -7,6 +7,7 @@
 
 #include "collision/geometry.hpp"
 #include "core/timer.hpp"
+#include "math/math.hpp"
 #include "dynamics/constants.hpp"
 
 namespace i2d {
@@ -32,22 +33,6 @@ AABB fatten(const AABB& box, BodyType type, Vec2 displacement) {
     return {min(box.lower, box.lower + displacement) - margin, max(box.upper, box.upper + displacement) + margin};
 }
 
-// The float update overflowed or broke the speed limit: redo it in double, where no
-// finite float input can overflow, then scale down to the limit. Rare, so off the fast path.
-Vec2 limited_velocity(const Body& b, Vec2 gravity, float h, float max_speed) {
-    double ax = 0.0, ay = 0.0, damping_factor = 1.0;
-    if (b.type == BodyType::dynamic) {
-        ax = double(h) * (double(b.gravity_scale) * gravity.x + double(b.inv_mass) * b.force.x);
-        ay = double(h) * (double(b.gravity_scale) * gravity.y + double(b.inv_mass) * b.force.y);
-        damping_factor = 1.0 / (1.0 + double(h) * b.linear_damping);
-    }
-    const double vx = (b.linear_velocity.x + ax) * damping_factor;
-    const double vy = (b.linear_velocity.y + ay) * damping_factor;
-    const double speed = std::sqrt(vx * vx + vy * vy);
-    const double scale = speed > max_speed ? max_speed / speed : 1.0;
-    return {float(vx * scale), float(vy * scale)};
-}
-
 }  // namespace
 
 World::World(const WorldDef& def) : settings(def) {}
@@ -65,6 +50,8 @@ uint64_t World::body_id(int32_t body) const {
 }
 
 int32_t World::create_body(const BodyDef& def) {
+    // Room in the awake set for every body slot first, so that waking never allocates.
+    awake_bodies_.reserve(std::size_t(bodies.capacity()) + 1);
     const int32_t index = bodies.allocate();
     if (index == null_index) {
         return null_index;
@@ -82,13 +69,20 @@ int32_t World::create_body(const BodyDef& def) {
     b.is_bullet = def.is_bullet;
     b.user_data = def.user_data;
     update_mass(index);
+    if (b.type != BodyType::static_body) {
+        add_awake_body(index);
+    }
     return index;
 }
 
 void World::destroy_body(int32_t body) {
+    wake_body(body);  // the island it slept in loses a member
     // Shapes first: each takes its contacts (and their end events) with it.
     while (bodies[body].head_shape != null_index) {
         destroy_shape(bodies[body].head_shape);
+    }
+    if (bodies[body].awake_index != null_index) {
+        remove_awake_body(body);
     }
     bodies.free(body);
 }
@@ -111,6 +105,8 @@ int32_t World::create_shape(int32_t body, const ShapeDef& def, const Geometry& g
     s.density = def.density;
     s.friction = def.friction;
     s.restitution = def.restitution;
+    s.rolling_resistance = def.rolling_resistance;
+    s.tangent_speed = def.tangent_speed;
     s.filter = def.filter;
     s.is_sensor = def.is_sensor;
     s.enable_contact_events = def.enable_contact_events;
@@ -128,10 +124,12 @@ int32_t World::create_shape(int32_t body, const ShapeDef& def, const Geometry& g
     // A new static shape may land on resting bodies: let it look for pairs too.
     create_proxy(index, true);
     update_mass(body);
+    wake_body(body);
     return index;
 }
 
 void World::destroy_shape(int32_t shape) {
+    wake_body(shapes[shape].body);
     destroy_contacts_of_shape(shape, false);
     const Shape& s = shapes[shape];
     broad_phase_.destroy_proxy(s.proxy_key);
@@ -158,6 +156,7 @@ void World::destroy_shape(int32_t shape) {
 void World::update_mass(int32_t body) {
     Body& b = bodies[body];
     b.mass = b.inv_mass = b.inertia = b.inv_inertia = 0.0f;
+    b.max_extent = 0.0f;
     b.local_center = {};
     if (b.type == BodyType::dynamic) {
         float mass = 0.0f, inertia_about_origin = 0.0f;
@@ -177,6 +176,9 @@ void World::update_mass(int32_t body) {
             b.mass = 1.0f;
         }
         b.inv_mass = 1.0f / b.mass;
+        for (int32_t s = b.head_shape; s != null_index; s = shapes[s].next_in_body) {
+            b.max_extent = max_of(b.max_extent, extent_from(shapes[s].geometry, b.local_center));
+        }
         if (b.fixed_rotation) {
             b.inertia = 0.0f;  // it never turns
             b.angular_velocity = 0.0f;
@@ -203,7 +205,29 @@ void World::sync_proxies(int32_t body) {
     }
 }
 
+// Before pairs are found: a body whose velocity changed since its box was fattened (a
+// new body, a velocity or impulse set by the caller) must have a box that covers the
+// step ahead, or a fast body could pass through a thin wall in the first step.
+void World::cover_step_ahead(float time_step) {
+    for (const int32_t body : awake_bodies_) {
+        const Body& b = bodies[body];
+        const Vec2 displacement = time_step * b.linear_velocity;
+        for (int32_t s = b.head_shape; s != null_index; s = shapes[s].next_in_body) {
+            const Shape& shape = shapes[s];
+            const AABB ahead{shape.aabb.lower + displacement, shape.aabb.upper + displacement};
+            if (!contains(broad_phase_.fat_aabb(shape.proxy_key), union_of(shape.aabb, ahead))) {
+                broad_phase_.move_proxy(shape.proxy_key, fatten(shape.aabb, b.type, displacement));
+            }
+        }
+    }
+    broad_phase_.commit_moves();
+}
+
+// Moving a body wakes it and whatever touches it (a static floor moved away from under a
+// sleeping pile, say).
 void World::set_transform(int32_t body, const Transform& xf) {
+    wake_body(body);
+    visit_contacts(body, [this](int32_t, int32_t other) { wake_body(other); });
     Body& b = bodies[body];
     b.transform = xf;
     b.center = transform_point(xf, b.local_center);
@@ -214,123 +238,68 @@ void World::set_transform(int32_t body, const Transform& xf) {
 // The proxy is re-created because the trees keep category bits for query masks; its
 // new pairs are found at the next step (known pairs are skipped).
 void World::set_filter(int32_t shape, const Filter& filter) {
+    wake_body(shapes[shape].body);
     shapes[shape].filter = filter;
     destroy_contacts_of_shape(shape, true);
     broad_phase_.destroy_proxy(shapes[shape].proxy_key);
     create_proxy(shape, true);
 }
 
+// Box2D v3's pipeline: pairs from the last step's moves, one narrowphase, the soft step
+// with its substeps, bounds, sleep. Events are gathered along the way.
 void World::step(float time_step, int32_t substep_count) {
     Timer total, timer;
     profile_ = StepProfile{};
     events_.clear();
     events_.contact_end.swap(pending_contact_ends_);
     events_.sensor_end.swap(pending_sensor_ends_);
-    for (int32_t i = 0; i < bodies.capacity(); ++i) {
-        if (bodies.is_live(i)) {
-            bodies[i].step_start = bodies[i].transform;
-        }
+    if (time_step == 0.0f) {
+        return;  // a paused world: nothing moves, nothing is tested (Box2D's rule)
+    }
+    last_time_step_ = time_step;
+    for (const int32_t body : awake_bodies_) {
+        bodies[body].step_start = bodies[body].transform;
     }
     begin_contact_step();
-    last_time_step_ = time_step;
     profile_.events += timer.lap_ms();
-    if (time_step > 0.0f) {
-        const float h = time_step / static_cast<float>(substep_count);
-        for (int32_t i = 0; i < substep_count; ++i) {
-            substep(h, timer);
-        }
-    }
-    for (int32_t i = 0; i < bodies.capacity(); ++i) {
-        if (bodies.is_live(i)) {
-            bodies[i].force = {};
-            bodies[i].torque = 0.0f;
-        }
-    }
-    end_contact_step();
-    report_body_moves();
-    profile_.events += timer.lap_ms();
-    validate();
-    profile_.step = total.lap_ms();
-}
-
-// One substep of the seed's pipeline: contacts, forces, impulses, positions, correction.
-void World::substep(float h, Timer& timer) {
+    cover_step_ahead(time_step);
     find_new_contacts();
     profile_.pairs += timer.lap_ms();
     update_contacts();
     profile_.collide += timer.lap_ms();
-    integrate_velocities(h);
-    const SolverSettings solver{settings.restitution_threshold, settings.contact_slop,
-                                settings.contact_correction_percent, settings.velocity_iterations};
-    gather_constraints(contacts, bodies, constraints_);
-    prepare_contacts(constraints_, bodies, solver);
-    warm_start_contacts(constraints_, bodies);
-    solve_contact_velocities(constraints_, bodies, solver);
-    integrate_positions(h);
-    correct_contact_positions(constraints_, bodies, solver);
-    scatter_impulses(constraints_, contacts);
+    solve(time_step, substep_count);
     profile_.solve += timer.lap_ms();
-    for (int32_t i = 0; i < bodies.capacity(); ++i) {
-        if (bodies.is_live(i) && bodies[i].type != BodyType::static_body) {
-            sync_proxies(i);
-        }
+    for (const int32_t body : awake_bodies_) {
+        sync_proxies(body);
     }
     broad_phase_.commit_moves();
     profile_.update_bounds += timer.lap_ms();
+    update_sleep_timers(time_step);
+    find_islands_to_sleep();
+    profile_.sleep += timer.lap_ms();
+    update_touching();
+    end_contact_step();
+    report_body_moves();
+    profile_.events += timer.lap_ms();
+    put_marked_islands_to_sleep();
+    profile_.sleep += timer.lap_ms();
+    validate();
+    profile_.step = total.lap_ms();
 }
 
-// Gravity, forces and damping for dynamic bodies; the speed limit for every moving body
-// (kinematic ones too: a caller may set any finite velocity).
-void World::integrate_velocities(float h) {
-    const float max_speed = settings.maximum_linear_speed;
-    for (int32_t i = 0; i < bodies.capacity(); ++i) {
-        if (!bodies.is_live(i) || bodies[i].type == BodyType::static_body) {
-            continue;
-        }
-        Body& b = bodies[i];
-        Vec2 v = b.linear_velocity;
-        float w = b.angular_velocity;
-        if (b.type == BodyType::dynamic) {
-            v += h * (b.gravity_scale * settings.gravity + b.inv_mass * b.force);
-            w += h * b.inv_inertia * b.torque;
-            // Implicit damping: stable for any damping and step, v -> v / (1 + h c).
-            v = (1.0f / (1.0f + h * b.linear_damping)) * v;
-            w = (1.0f / (1.0f + h * b.angular_damping)) * w;
-        }
-        // NaN-safe: an overflow anywhere above fails this test too.
-        b.linear_velocity = length_squared(v) <= max_speed * max_speed ? v
-                                                                     : limited_velocity(b, settings.gravity, h, max_speed);
-        // At most a quarter turn per substep: faster spins alias and tunnel.
-        const float max_spin = max_rotation_per_substep / h;
-        b.angular_velocity = w >= -max_spin && w <= max_spin ? w : (w > 0.0f ? max_spin : -max_spin);
-    }
-}
-
-void World::integrate_positions(float h) {
-    for (int32_t i = 0; i < bodies.capacity(); ++i) {
-        if (!bodies.is_live(i) || bodies[i].type == BodyType::static_body) {
-            continue;
-        }
-        Body& b = bodies[i];
-        b.center += h * b.linear_velocity;
-        if (b.angular_velocity != 0.0f) {
-            b.transform.q = integrate_rotation(b.transform.q, h * b.angular_velocity);
-        }
-        b.transform.p = b.center - rotate(b.transform.q, b.local_center);
-    }
-}
-
+// Only awake bodies can have moved; a body falling asleep reports even if it did not.
 void World::report_body_moves() {
-    for (int32_t i = 0; i < bodies.capacity(); ++i) {
-        if (!bodies.is_live(i) || bodies[i].type == BodyType::static_body) {
-            continue;
-        }
-        const Body& b = bodies[i];
+    for (int32_t k = 0; k < int32_t(awake_bodies_.size()); ++k) {
+        const int32_t i = awake_bodies_[k];
+        Body& b = bodies[i];
         const Transform& start = b.step_start;
-        if (b.transform.p == start.p && b.transform.q.c == start.q.c && b.transform.q.s == start.q.s) {
-            continue;  // neither moved nor turned
+        const bool moved = !(b.transform.p == start.p && b.transform.q.c == start.q.c && b.transform.q.s == start.q.s);
+        const bool falls_asleep = falls_asleep_[k] != 0;
+        if (moved || falls_asleep) {
+            events_.body_moves.push_back({b.transform, body_id(i), b.user_data, falls_asleep});
         }
-        events_.body_moves.push_back({b.transform, body_id(i), b.user_data, false});
+        b.force = {};
+        b.torque = 0.0f;
     }
 }
 
@@ -347,6 +316,8 @@ WorldCounters World::counters() const {
     for (int32_t k = 0; k < int32_t(ProxyKind::count); ++k) {
         c.tree_heights[k] = broad_phase_.tree(ProxyKind(k)).height();
     }
+    c.awake_body_count = int32_t(awake_bodies_.size());
+    c.sleeping_island_count = sleeping_islands_.count();
     return c;
 }
 

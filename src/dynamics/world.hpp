@@ -16,9 +16,11 @@
 #include "core/hash_set.hpp"
 #include "core/pool.hpp"
 #include "dynamics/body.hpp"
+#include "dynamics/body_state.hpp"
 #include "dynamics/contact.hpp"
 #include "dynamics/contact_solver.hpp"
 #include "dynamics/events.hpp"
+#include "dynamics/mixing.hpp"
 #include "dynamics/shape.hpp"
 
 namespace i2d {
@@ -28,11 +30,16 @@ class Timer;
 struct WorldDef {
     Vec2 gravity{0.0f, -10.0f};
     float contact_slop = 0.005f;
-    float contact_correction_percent = 0.8f;
+    float contact_hertz = 60.0f;
+    float contact_damping_ratio = 10.0f;
+    float contact_push_max_speed = 3.0f;
     float restitution_threshold = 1.0f;
     float maximum_linear_speed = 400.0f;
-    int32_t velocity_iterations = 10;
+    MixingRule friction_mixing = MixingRule::geometric_mean;
+    MixingRule restitution_mixing = MixingRule::minimum;
     bool enable_sleep = true;
+    float sleep_speed_threshold = 0.05f;
+    float time_to_sleep = 0.5f;
 };
 
 struct WorldCounters {
@@ -41,6 +48,8 @@ struct WorldCounters {
     int32_t contact_count = 0;  // touching, sensors excluded
     int32_t pair_count = 0;     // contacts alive
     int32_t tree_heights[int32_t(ProxyKind::count)] = {};
+    int32_t awake_body_count = 0;
+    int32_t sleeping_island_count = 0;
 };
 
 /// Where the last step's time went, ms (summed over its substeps).
@@ -48,9 +57,16 @@ struct StepProfile {
     float step = 0.0f;
     float pairs = 0.0f;        // broadphase: new pairs from the move buffer
     float collide = 0.0f;      // narrowphase: every contact's manifold
-    float solve = 0.0f;        // integration, impulses, positional correction
+    float solve = 0.0f;        // the soft step: integration, impulses, restitution
     float update_bounds = 0.0f;  // tight and fat boxes, tree re-insertions
+    float sleep = 0.0f;        // islands and sleep timers
     float events = 0.0f;       // begin/end and body move events
+};
+
+/// Bodies that fall asleep together, linked through Body::next_in_island.
+struct SleepingIsland {
+    int32_t head_body = null_index;
+    int32_t body_count = 0;
 };
 
 struct RayResult {
@@ -78,6 +94,12 @@ public:
     void destroy_shape(int32_t shape);
 
     void set_transform(int32_t body, const Transform& xf);
+    /// Wakes the body's island (and resets its rest timer); a no-op for static bodies.
+    void wake_body(int32_t body);
+    /// Puts the body and everything touching it to sleep now.
+    void sleep_body(int32_t body);
+    bool is_awake(int32_t body) const { return bodies[body].awake_index != null_index; }
+    void wake_all();
     /// Changes a shape's filter; its contacts are rebuilt at the next step.
     void set_filter(int32_t shape, const Filter& filter);
     void step(float time_step, int32_t substep_count);
@@ -106,10 +128,22 @@ public:
 private:
     friend class QueryLock;
 
+    /// Calls visit(contact, other_body) for each contact of the body; visit must not
+    /// destroy contacts.
+    template <class Visit>
+    void visit_contacts(int32_t body, Visit visit) {
+        for (int32_t key = bodies[body].head_contact_key; key != null_index;) {
+            const Contact& c = contacts[key >> 1];
+            const int32_t next = c.edges[key & 1].next_key;
+            visit(key >> 1, c.edges[(key & 1) ^ 1].body);
+            key = next;
+        }
+    }
     // Bodies and shapes.
     void update_mass(int32_t body);
     void create_proxy(int32_t shape, bool query_now);
     void sync_proxies(int32_t body);
+    void cover_step_ahead(float time_step);
     // Contacts (world_contacts.cpp).
     void create_contact(int32_t shape_a, int32_t shape_b);
     ShapePairEvent event_of(const Contact& contact) const;
@@ -121,10 +155,29 @@ private:
     void destroy_contacts_of_shape(int32_t shape, bool only_filtered_out);
     void find_new_contacts();
     void update_contacts();
-    // The step.
-    void substep(float h, Timer& timer);
+    void update_contact(Contact& contact, const Shape& a, const Shape& b);
+    void update_touching();
+    void add_awake_contact(int32_t contact);
+    void remove_awake_contact(int32_t contact);
+    // The soft step (world_solve.cpp).
+    void solve(float time_step, int32_t substep_count);
+    void gather_bodies();
+    void gather_constraints(float h);
     void integrate_velocities(float h);
     void integrate_positions(float h);
+    void store_impulses();
+    void finalize_bodies();
+    // Islands and sleep (world_sleep.cpp).
+    void add_awake_body(int32_t body);
+    void remove_awake_body(int32_t body);
+    void wake_island(int32_t island);
+    void update_sleep_timers(float time_step);
+    void find_islands_to_sleep();
+    void put_marked_islands_to_sleep();
+    void put_to_sleep(const int32_t* members, int32_t count);
+    void drop_sleeping_contacts();
+    int32_t island_root(int32_t awake_index);
+    void validate_sleep_state(int32_t body) const;
     void report_body_moves();
     uint64_t shape_id(int32_t shape) const;
     uint64_t body_id(int32_t body) const;
@@ -137,6 +190,19 @@ private:
     // Step scratch, kept between steps so that a steady state allocates nothing.
     std::vector<ShapePairCandidate> new_pairs_;
     std::vector<ContactConstraint> constraints_;
+    std::vector<BodyState> states_;    // per awake body, then one fixed state at the end
+    std::vector<BodyMotion> motions_;  // per awake body
+    std::vector<int32_t> islands_to_wake_;
+    std::vector<int32_t> island_parent_;  // union-find over awake indices
+    std::vector<float> island_rest_;      // shortest rest time per island root
+    std::vector<int32_t> island_members_;
+    std::vector<int32_t> island_head_;  // per island root: first member (awake index)
+    std::vector<int32_t> island_next_;  // per awake index: next member of its island
+    std::vector<uint8_t> falls_asleep_;   // per awake index, this step
+    // Awake sets: dense lists of indices; each object knows its place (awake_index).
+    std::vector<int32_t> awake_bodies_;
+    std::vector<int32_t> awake_contacts_;
+    Pool<SleepingIsland> sleeping_islands_;
     StepProfile profile_;
     float last_time_step_ = 0.0f;  // predicts how far bodies move in a step
     mutable int32_t lock_depth_ = 0;

@@ -1,7 +1,11 @@
 // SPDX-License-Identifier: MIT
 // Contact bookkeeping: creation from broadphase pairs, the narrowphase update with
 // begin/end events, and destruction with the body contact lists kept consistent.
+#include <cfloat>
 #include <cmath>
+
+#include "collision/collision_constants.hpp"
+#include "collision/geometry.hpp"
 
 #include "collision/manifold.hpp"
 #include "dynamics/world.hpp"
@@ -14,9 +18,7 @@ namespace {
 int32_t contact_of(int32_t key) { return key >> 1; }
 int32_t edge_of(int32_t key) { return key & 1; }
 
-// Speculative points (penetration < 0: a gap within the speculative distance) are dropped
-// until the soft-step solver lands: it handles them, while the seed's solver would treat
-// a gap as contact and hold the shapes apart.
+// A sensor reports overlap only: its gaps (speculative points) do not count.
 Manifold without_speculative_points(Manifold m) {
     int32_t kept = 0;
     for (int32_t i = 0; i < m.point_count; ++i) {
@@ -28,12 +30,45 @@ Manifold without_speculative_points(Manifold m) {
     return m;
 }
 
+// How far apart the two shapes may be and still meet within the step: the fixed
+// speculative distance plus how far their surfaces can approach in one step (relative
+// speed, and spin times extent). Contacts within it get points the solver can stop at.
+float speculative_margin(const Body& a, const Body& b, float time_step) {
+    const float approach = length(b.linear_velocity - a.linear_velocity) +
+                           std::fabs(a.angular_velocity) * a.max_extent + std::fabs(b.angular_velocity) * b.max_extent;
+    return speculative_distance + time_step * approach;
+}
+
 }  // namespace
+
+namespace {
+
+bool is_moving(const Body& b) {
+    return b.awake_index != null_index && (b.linear_velocity.x != 0.0f || b.linear_velocity.y != 0.0f || b.angular_velocity != 0.0f);
+}
+
+}  // namespace
+
+void World::add_awake_contact(int32_t contact) {
+    contacts[contact].awake_index = int32_t(awake_contacts_.size());
+    awake_contacts_.push_back(contact);
+}
+
+void World::remove_awake_contact(int32_t contact) {
+    const int32_t slot = contacts[contact].awake_index;
+    const int32_t last = awake_contacts_.back();
+    awake_contacts_[slot] = last;
+    contacts[last].awake_index = slot;
+    awake_contacts_.pop_back();
+    contacts[contact].awake_index = null_index;
+}
 
 void World::create_contact(int32_t shape_a, int32_t shape_b) {
     if (!pair_set_.insert(pair_key(shape_a, shape_b))) {
         return;  // the pair has a contact already
     }
+    // Room in the awake set for every contact slot first, so that waking never allocates.
+    awake_contacts_.reserve(std::size_t(contacts.capacity()) + 1);
     const int32_t index = contacts.allocate();
     if (index == null_index) {
         pair_set_.remove(pair_key(shape_a, shape_b));
@@ -44,10 +79,6 @@ void World::create_contact(int32_t shape_a, int32_t shape_b) {
     Contact& c = contacts[index];
     c.shape_a = shape_a;
     c.shape_b = shape_b;
-    // Geometric-mean friction, written so that the product of two huge values cannot
-    // overflow; the seed's minimum for restitution.
-    c.friction = std::sqrt(a.friction) * std::sqrt(b.friction);
-    c.restitution = min_of(a.restitution, b.restitution);
     if (a.is_sensor || b.is_sensor) {
         const Shape& visitor = a.is_sensor ? b : a;
         c.flags = contact_sensor | (visitor.enable_sensor_events ? contact_report_events : 0u);
@@ -66,6 +97,15 @@ void World::create_contact(int32_t shape_a, int32_t shape_b) {
         body.head_contact_key = (index << 1) | e;
         ++body.contact_count;
     }
+    // A pair found while both bodies rest (a shape created or refiltered beside them)
+    // wakes them, or nothing would ever update it.
+    if (!is_awake(a.body) && !is_awake(b.body)) {
+        wake_body(a.body);
+        wake_body(b.body);
+    }
+    if (contacts[index].awake_index == null_index) {
+        add_awake_contact(index);
+    }
 }
 
 // Contact events name the pair in shape order; sensor events name the sensor first.
@@ -75,18 +115,15 @@ ShapePairEvent World::event_of(const Contact& c) const {
                        : ShapePairEvent{shape_id(c.shape_a), shape_id(c.shape_b)};
 }
 
-// Events are net per step, so that applying a step's begin events and then its end
-// events always gives the true final state: begin when a pair touches at the end of the
-// step but did not at its start, end for the reverse, both for a touch that came and
-// went within the step, none for a gap that came and went. (The narrowphase runs every
-// substep, so a pair can change more than once in a step.)
+// Events compare the end of the step with its start, so that applying a step's begin
+// events and then its end events always gives the true final state.
 void World::report_touch_changes(const Contact& c, bool touching_now) {
     if ((c.flags & contact_report_events) == 0) {
         return;
     }
     const bool at_start = (c.flags & contact_touching_at_start) != 0;
-    const bool began = !at_start && (touching_now || (c.flags & contact_touched_in_step));
-    const bool ended = at_start ? !touching_now : (began && !touching_now);
+    const bool began = !at_start && touching_now;
+    const bool ended = at_start && !touching_now;
     const bool sensor = (c.flags & contact_sensor) != 0;
     if (began) {
         (sensor ? events_.sensor_begin : events_.contact_begin).push_back(event_of(c));
@@ -98,6 +135,14 @@ void World::report_touch_changes(const Contact& c, bool touching_now) {
 
 void World::destroy_contact(int32_t index, bool during_step) {
     Contact& c = contacts[index];
+    if (!during_step) {
+        // The caller took something away from under or beside these bodies.
+        wake_body(c.edges[0].body);
+        wake_body(c.edges[1].body);
+    }
+    if (c.awake_index != null_index) {
+        remove_awake_contact(index);
+    }
     if (during_step) {
         report_touch_changes(c, false);
     } else if ((c.flags & contact_touching) && (c.flags & contact_report_events)) {
@@ -161,53 +206,106 @@ void World::find_new_contacts() {
     }
 }
 
-// The narrowphase: every contact in index order (a fixed order) updates its manifold.
-// A contact whose fat boxes stopped overlapping stops touching but lives until the end
-// of the step, so that a pair never has two contacts (and two event histories) in one
-// step.
+// The narrowphase, once per step, over the awake contacts. A contact whose fat boxes
+// stopped overlapping stops touching and is destroyed at the end of the step, so that a
+// pair never has two contacts (and two event histories) in one step. A contact that
+// gains or loses points against a sleeping body wakes it (something arrived or left),
+// as does one whose other body moves (a kinematic platform set going).
 void World::update_contacts() {
-    for (int32_t i = 0; i < contacts.capacity(); ++i) {
-        if (!contacts.is_live(i)) {
-            continue;
-        }
-        Contact& c = contacts[i];
+    islands_to_wake_.clear();
+    for (const int32_t index : awake_contacts_) {
+        Contact& c = contacts[index];
         const Shape& a = shapes[c.shape_a];
         const Shape& b = shapes[c.shape_b];
+        const bool had_points = c.manifold.point_count > 0;
         if (!overlaps(broad_phase_.fat_aabb(a.proxy_key), broad_phase_.fat_aabb(b.proxy_key))) {
-            c.flags &= ~uint32_t(contact_touching);
+            c.flags = (c.flags & ~uint32_t(contact_touching)) | contact_disjoint;
             c.manifold.point_count = 0;
-            continue;
-        }
-        update_manifold(c, without_speculative_points(
-                               collide_shapes(a.geometry, bodies[a.body].transform, b.geometry, bodies[b.body].transform)));
-        if (c.manifold.point_count > 0) {
-            c.flags |= contact_touching | contact_touched_in_step;
         } else {
-            c.flags &= ~uint32_t(contact_touching);
+            update_contact(c, a, b);
         }
+        const bool has_points = c.manifold.point_count > 0;
+        if ((c.flags & contact_sensor) == 0 && (had_points || has_points)) {
+            for (int32_t e = 0; e < 2; ++e) {
+                const Body& body = bodies[c.edges[e].body];
+                const Body& other = bodies[c.edges[e ^ 1].body];
+                if (body.sleeping_island != null_index && (had_points != has_points || is_moving(other))) {
+                    islands_to_wake_.push_back(body.sleeping_island);
+                }
+            }
+        }
+    }
+    // Waking adds to the awake contacts, so it waits until the loop is done; the woken
+    // contacts' manifolds are current, since sleeping bodies did not move.
+    for (const int32_t island : islands_to_wake_) {
+        wake_island(island);
     }
 }
 
-void World::begin_contact_step() {
-    for (int32_t i = 0; i < contacts.capacity(); ++i) {
-        if (contacts.is_live(i)) {
-            Contact& c = contacts[i];
-            c.flags &= ~uint32_t(contact_touching_at_start | contact_touched_in_step);
-            if (c.flags & contact_touching) {
-                c.flags |= contact_touching_at_start;
+// Points within the contact slop count as touching (for events): a resting contact sits
+// about there, and a bounce stopped by a speculative point touches without overlap.
+void World::update_contact(Contact& c, const Shape& a, const Shape& b) {
+    const Body& body_a = bodies[a.body];
+    const Body& body_b = bodies[b.body];
+    c.friction = mix(settings.friction_mixing, a.friction, b.friction);
+    c.restitution = mix(settings.restitution_mixing, a.restitution, b.restitution);
+    c.rolling_resistance = a.rolling_resistance == 0.0f && b.rolling_resistance == 0.0f
+                               ? 0.0f
+                               : max_of(a.rolling_resistance * rounding_radius(a.geometry),
+                                        b.rolling_resistance * rounding_radius(b.geometry));
+    // Each surface moves counter-clockwise around its own shape: along +left_perp(n)
+    // for A, whose outward normal is n, and along -left_perp(n) for B. No slip between
+    // the moving surfaces means dot(vB - vA, left_perp(n)) = speed A + speed B.
+    c.tangent_speed = a.tangent_speed + b.tangent_speed;
+    const bool sensor = (c.flags & contact_sensor) != 0;
+    const Manifold fresh = collide_shapes(a.geometry, body_a.transform, b.geometry, body_b.transform,
+                                          speculative_margin(body_a, body_b, last_time_step_));
+    update_manifold(c, sensor ? without_speculative_points(fresh) : fresh);
+}
+
+// Touching describes where the step left the bodies, so that events arrive in the step
+// that made the touch. A solid contact touches when a point ends within the contact
+// slop: its separation follows from the substeps' motion, with no second narrowphase
+// (its speculative points cover the whole step). A sensor overlap is tested afresh.
+void World::update_touching() {
+    for (const int32_t index : awake_contacts_) {
+        Contact& c = contacts[index];
+        c.flags &= ~uint32_t(contact_touching);
+        if ((c.flags & contact_sensor) != 0 && (c.flags & contact_disjoint) == 0) {
+            const Shape& a = shapes[c.shape_a];
+            const Shape& b = shapes[c.shape_b];
+            const Manifold m = without_speculative_points(
+                collide_shapes(a.geometry, bodies[a.body].transform, b.geometry, bodies[b.body].transform));
+            c.flags |= m.point_count > 0 ? uint32_t(contact_touching) : 0u;
+        }
+    }
+    for (const ContactConstraint& constraint : constraints_) {
+        Contact& c = contacts[constraint.contact];
+        for (int32_t i = 0; i < constraint.point_count; ++i) {
+            if (separation_of(constraint, constraint.points[i], states_) <= settings.contact_slop) {
+                c.flags |= contact_touching;
             }
         }
     }
 }
 
-void World::end_contact_step() {
-    for (int32_t i = 0; i < contacts.capacity(); ++i) {
-        if (!contacts.is_live(i)) {
-            continue;
+void World::begin_contact_step() {
+    for (const int32_t index : awake_contacts_) {
+        Contact& c = contacts[index];
+        c.flags &= ~uint32_t(contact_touching_at_start);
+        if (c.flags & contact_touching) {
+            c.flags |= contact_touching_at_start;
         }
-        const Contact& c = contacts[i];
-        if (!overlaps(broad_phase_.fat_aabb(shapes[c.shape_a].proxy_key), broad_phase_.fat_aabb(shapes[c.shape_b].proxy_key))) {
-            destroy_contact(i, true);
+    }
+}
+
+// Backwards, because destroying a contact moves the last awake contact into its place.
+void World::end_contact_step() {
+    for (int32_t k = int32_t(awake_contacts_.size()) - 1; k >= 0; --k) {
+        const int32_t index = awake_contacts_[k];
+        const Contact& c = contacts[index];
+        if (c.flags & contact_disjoint) {
+            destroy_contact(index, true);
         } else {
             report_touch_changes(c, (c.flags & contact_touching) != 0);
         }

@@ -43,6 +43,13 @@ void World::validate() const {
         }
         I2D_ASSERT(count == b.contact_count);
         contact_edges_seen += count;
+        validate_sleep_state(i);
+    }
+    for (int32_t k = 0; k < int32_t(awake_bodies_.size()); ++k) {
+        I2D_ASSERT(bodies.is_live(awake_bodies_[k]) && bodies[awake_bodies_[k]].awake_index == k);
+    }
+    for (int32_t k = 0; k < int32_t(awake_contacts_.size()); ++k) {
+        I2D_ASSERT(contacts.is_live(awake_contacts_[k]) && contacts[awake_contacts_[k]].awake_index == k);
     }
     I2D_ASSERT(shapes_seen == shapes.count());
     I2D_ASSERT(contact_edges_seen == 2 * contacts.count());
@@ -64,11 +71,33 @@ void World::validate() const {
             const Contact& c = contacts[i];
             I2D_ASSERT(c.shape_a < c.shape_b && shapes.is_live(c.shape_a) && shapes.is_live(c.shape_b));
             I2D_ASSERT(pair_set_.contains(pair_key(c.shape_a, c.shape_b)));
+            // Exactly the contacts with an awake body are updated each step.
+            const bool has_awake_body = is_awake(c.edges[0].body) || is_awake(c.edges[1].body);
+            I2D_ASSERT(has_awake_body == (c.awake_index != null_index));
         }
     }
     for (int32_t k = 0; k < int32_t(ProxyKind::count); ++k) {
         broad_phase_.tree(ProxyKind(k)).validate();
     }
+#endif
+}
+
+// A moving body is either in the awake set or in a live sleeping island, never both;
+// a static one in neither.
+void World::validate_sleep_state(int32_t body) const {
+#if defined(I2D_VALIDATE)
+    const Body& b = bodies[body];
+    if (b.type == BodyType::static_body) {
+        I2D_ASSERT(b.awake_index == null_index && b.sleeping_island == null_index);
+        return;
+    }
+    I2D_ASSERT((b.awake_index == null_index) != (b.sleeping_island == null_index));
+    if (b.sleeping_island != null_index) {
+        I2D_ASSERT(sleeping_islands_.is_live(b.sleeping_island));
+        I2D_ASSERT(b.linear_velocity == Vec2{} && b.angular_velocity == 0.0f);
+    }
+#else
+    (void)body;
 #endif
 }
 

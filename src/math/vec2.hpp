@@ -67,6 +67,8 @@ struct Transform {
 
 inline Vec2 transform_point(const Transform& xf, Vec2 v) { return rotate(xf.q, v) + xf.p; }
 inline Vec2 inv_transform_point(const Transform& xf, Vec2 v) { return inv_rotate(xf.q, v - xf.p); }
+/// q * r: turn by r, then by q.
+inline Rot mul_rot(Rot q, Rot r) { return {q.c * r.c - q.s * r.s, q.s * r.c + q.c * r.s}; }
 /// q^T * r: the rotation r seen from the frame q.
 inline Rot inv_mul_rot(Rot q, Rot r) { return {q.c * r.c + q.s * r.s, q.c * r.s - q.s * r.c}; }
 /// A^-1 * B: frame B expressed in frame A.

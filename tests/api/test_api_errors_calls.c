@@ -234,6 +234,13 @@ static void run_setters_refused(const fixture* a, const fixture* b) {
                   i2d_body_set_transform(a->body[FIX_BALL], v2(NAN, 0.0f), i2d_make_rot(0.3f)),
                   I2D_ERR_INVALID_ARGUMENT);
     CHECK_UNCHANGED("i2d_body_set_transform(NaN position, make_rot(0.3))", a, &before);
+    /* A static body neither sleeps nor wakes. */
+    CHECK_REFUSED("i2d_body_set_awake(static, false)", i2d_body_set_awake(a->body[FIX_GROUND], false),
+                  I2D_ERR_INVALID_ARGUMENT);
+    CHECK_UNCHANGED("i2d_body_set_awake(static, false)", a, &before);
+    CHECK_REFUSED("i2d_body_set_awake(static, true)", i2d_body_set_awake(a->body[FIX_GROUND], true),
+                  I2D_ERR_INVALID_ARGUMENT);
+    CHECK_UNCHANGED("i2d_body_set_awake(static, true)", a, &before);
     check_twins_agree_after_steps(a, b);
 }
 
@@ -749,6 +756,8 @@ static void try_changes_while_locked(const fixture* f, const snapshot* before) {
     CHECK_LOCKED(f, before, i2d_body_apply_torque(ball, 100.0f, true));
     CHECK_LOCKED(f, before, i2d_body_apply_linear_impulse(ball, v2(0.0f, 100.0f), v2(0.0f, 0.0f), true));
     CHECK_LOCKED(f, before, i2d_body_apply_angular_impulse(ball, 100.0f, true));
+    CHECK_LOCKED(f, before, i2d_body_set_awake(ball, false));
+    CHECK_LOCKED(f, before, i2d_body_set_awake(ball, true));
     CHECK_LOCKED(f, before, i2d_world_set_gravity(f->world, v2(0.0f, 10.0f)));
     CHECK_LOCKED(f, before, i2d_shape_set_friction(f->shape[FIX_BALL_CIRCLE], 0.1f));
     CHECK_LOCKED(f, before, i2d_shape_set_restitution(f->shape[FIX_BALL_CIRCLE], 0.9f));

@@ -367,18 +367,29 @@ static const float_field k_world_def_floats[] = {
     {"gravity.x", offsetof(i2d_world_def, gravity.x)},
     {"gravity.y", offsetof(i2d_world_def, gravity.y)},
     {"contact_slop", offsetof(i2d_world_def, contact_slop)},
-    {"contact_correction_percent", offsetof(i2d_world_def, contact_correction_percent)},
+    {"contact_hertz", offsetof(i2d_world_def, contact_hertz)},
+    {"contact_damping_ratio", offsetof(i2d_world_def, contact_damping_ratio)},
+    {"contact_push_max_speed", offsetof(i2d_world_def, contact_push_max_speed)},
     {"restitution_threshold", offsetof(i2d_world_def, restitution_threshold)},
     {"maximum_linear_speed", offsetof(i2d_world_def, maximum_linear_speed)},
+    {"sleep_speed_threshold", offsetof(i2d_world_def, sleep_speed_threshold)},
+    {"time_to_sleep", offsetof(i2d_world_def, time_to_sleep)},
 };
 
 /* Finite values outside the documented ranges. */
 static const float_field_value k_world_def_out_of_range[] = {
     {"contact_slop", offsetof(i2d_world_def, contact_slop), -0.001f},
     {"contact_slop", offsetof(i2d_world_def, contact_slop), 1.5f},
-    {"contact_correction_percent", offsetof(i2d_world_def, contact_correction_percent), 0.0f},
-    {"contact_correction_percent", offsetof(i2d_world_def, contact_correction_percent), -0.5f},
-    {"contact_correction_percent", offsetof(i2d_world_def, contact_correction_percent), 1.5f},
+    {"contact_hertz", offsetof(i2d_world_def, contact_hertz), 0.0f},
+    {"contact_hertz", offsetof(i2d_world_def, contact_hertz), -30.0f},
+    {"contact_hertz", offsetof(i2d_world_def, contact_hertz), 2e5f},
+    {"contact_damping_ratio", offsetof(i2d_world_def, contact_damping_ratio), -0.1f},
+    {"contact_damping_ratio", offsetof(i2d_world_def, contact_damping_ratio), 2e5f},
+    {"contact_push_max_speed", offsetof(i2d_world_def, contact_push_max_speed), -1.0f},
+    {"contact_push_max_speed", offsetof(i2d_world_def, contact_push_max_speed), 2e5f},
+    {"sleep_speed_threshold", offsetof(i2d_world_def, sleep_speed_threshold), -0.01f},
+    {"time_to_sleep", offsetof(i2d_world_def, time_to_sleep), -1.0f},
+    {"time_to_sleep", offsetof(i2d_world_def, time_to_sleep), 2e5f},
     {"restitution_threshold", offsetof(i2d_world_def, restitution_threshold), -1.0f},
     {"maximum_linear_speed", offsetof(i2d_world_def, maximum_linear_speed), 0.0f},
     {"maximum_linear_speed", offsetof(i2d_world_def, maximum_linear_speed), -1.0f},
@@ -390,8 +401,12 @@ static const float_field_value k_world_def_in_range[] = {
     {"gravity.y", offsetof(i2d_world_def, gravity.y), 1e6f},
     {"contact_slop", offsetof(i2d_world_def, contact_slop), 0.0f},
     {"contact_slop", offsetof(i2d_world_def, contact_slop), 1.0f},
-    {"contact_correction_percent", offsetof(i2d_world_def, contact_correction_percent), 1.0f},
-    {"contact_correction_percent", offsetof(i2d_world_def, contact_correction_percent), 0.001f},
+    {"contact_hertz", offsetof(i2d_world_def, contact_hertz), 0.001f},
+    {"contact_hertz", offsetof(i2d_world_def, contact_hertz), 1e5f},
+    {"contact_damping_ratio", offsetof(i2d_world_def, contact_damping_ratio), 0.0f},
+    {"contact_push_max_speed", offsetof(i2d_world_def, contact_push_max_speed), 0.0f},
+    {"sleep_speed_threshold", offsetof(i2d_world_def, sleep_speed_threshold), 0.0f},
+    {"time_to_sleep", offsetof(i2d_world_def, time_to_sleep), 0.0f},
     {"restitution_threshold", offsetof(i2d_world_def, restitution_threshold), 0.0f},
     {"maximum_linear_speed", offsetof(i2d_world_def, maximum_linear_speed), 0.001f},
 };
@@ -434,11 +449,16 @@ I2D_TEST(api_errors_world_def_bad_values) {
                  k_world_def_out_of_range[i].value);
         check_world_def_refused_at(__LINE__, what, &def);
     }
-    static const int32_t bad_iterations[] = {0, -1, 1001, INT32_MIN};
-    for (size_t i = 0; i < sizeof bad_iterations / sizeof bad_iterations[0]; ++i) {
+    /* Enum fields holding values no i2d_mixing_rule has (a C caller can store any int). */
+    static const int bad_rules[] = {-1, 5, 1000, INT32_MIN};
+    for (size_t i = 0; i < sizeof bad_rules / sizeof bad_rules[0]; ++i) {
         i2d_world_def def = i2d_default_world_def();
-        def.velocity_iterations = bad_iterations[i];
-        snprintf(what, sizeof what, "world def velocity_iterations = %d", (int)bad_iterations[i]);
+        def.friction_mixing = (i2d_mixing_rule)bad_rules[i];
+        snprintf(what, sizeof what, "world def friction_mixing = %d", bad_rules[i]);
+        check_world_def_refused_at(__LINE__, what, &def);
+        def = i2d_default_world_def();
+        def.restitution_mixing = (i2d_mixing_rule)bad_rules[i];
+        snprintf(what, sizeof what, "world def restitution_mixing = %d", bad_rules[i]);
         check_world_def_refused_at(__LINE__, what, &def);
     }
 
@@ -449,11 +469,13 @@ I2D_TEST(api_errors_world_def_bad_values) {
         snprintf(what, sizeof what, "world def %s = %g", k_world_def_in_range[i].name, k_world_def_in_range[i].value);
         check_world_def_accepted_at(__LINE__, what, &def);
     }
-    static const int32_t good_iterations[] = {1, 1000};
-    for (size_t i = 0; i < sizeof good_iterations / sizeof good_iterations[0]; ++i) {
+    static const i2d_mixing_rule good_rules[] = {I2D_MIX_GEOMETRIC_MEAN, I2D_MIX_MINIMUM, I2D_MIX_MAXIMUM,
+                                                 I2D_MIX_AVERAGE, I2D_MIX_MULTIPLY};
+    for (size_t i = 0; i < sizeof good_rules / sizeof good_rules[0]; ++i) {
         i2d_world_def def = i2d_default_world_def();
-        def.velocity_iterations = good_iterations[i];
-        snprintf(what, sizeof what, "world def velocity_iterations = %d", (int)good_iterations[i]);
+        def.friction_mixing = good_rules[i];
+        def.restitution_mixing = good_rules[i];
+        snprintf(what, sizeof what, "world def mixing rules = %d", (int)good_rules[i]);
         check_world_def_accepted_at(__LINE__, what, &def);
     }
 }
@@ -761,6 +783,8 @@ static const float_field k_shape_def_floats[] = {
     {"density", offsetof(i2d_shape_def, density)},
     {"friction", offsetof(i2d_shape_def, friction)},
     {"restitution", offsetof(i2d_shape_def, restitution)},
+    {"rolling_resistance", offsetof(i2d_shape_def, rolling_resistance)},
+    {"tangent_speed", offsetof(i2d_shape_def, tangent_speed)},
 };
 
 static const float_field_value k_shape_def_out_of_range[] = {
@@ -770,6 +794,10 @@ static const float_field_value k_shape_def_out_of_range[] = {
     {"friction", offsetof(i2d_shape_def, friction), -0.5f},
     {"restitution", offsetof(i2d_shape_def, restitution), -0.5f},
     {"restitution", offsetof(i2d_shape_def, restitution), 101.0f},
+    {"rolling_resistance", offsetof(i2d_shape_def, rolling_resistance), -0.1f},
+    {"rolling_resistance", offsetof(i2d_shape_def, rolling_resistance), 2e5f},
+    {"tangent_speed", offsetof(i2d_shape_def, tangent_speed), 2e5f},
+    {"tangent_speed", offsetof(i2d_shape_def, tangent_speed), -2e5f},
 };
 
 /* Every shape def refused by every creator. */

@@ -127,11 +127,16 @@ static void cover_defaults(void) {
     i2d_world_def w = i2d_default_world_def();
     I2D_CHECK(w.gravity.x == 0.0f && w.gravity.y == -10.0f);
     I2D_CHECK_NEAR(w.contact_slop, 0.005, 1e-9);
-    I2D_CHECK_NEAR(w.contact_correction_percent, 0.8, 1e-7);
+    I2D_CHECK(w.contact_hertz == 60.0f);
+    I2D_CHECK(w.contact_damping_ratio == 10.0f);
+    I2D_CHECK(w.contact_push_max_speed == 3.0f);
     I2D_CHECK(w.restitution_threshold == 1.0f);
     I2D_CHECK(w.maximum_linear_speed == 400.0f);
-    I2D_CHECK(w.velocity_iterations == 10);
+    I2D_CHECK(w.friction_mixing == I2D_MIX_GEOMETRIC_MEAN);
+    I2D_CHECK(w.restitution_mixing == I2D_MIX_MINIMUM);
     I2D_CHECK(w.enable_sleep);
+    I2D_CHECK_NEAR(w.sleep_speed_threshold, 0.05, 1e-9);
+    I2D_CHECK(w.time_to_sleep == 0.5f);
     I2D_CHECK(w.internal_cookie != 0);
 
     i2d_body_def b = i2d_default_body_def();
@@ -1249,15 +1254,16 @@ I2D_TEST(api_world_struct_layout) {
     CHECK_LAYOUT(offsetof(i2d_ray_result, fraction), 24);
     CHECK_LAYOUT(offsetof(i2d_ray_result, hit), 28);
 
-    CHECK_LAYOUT(sizeof(i2d_profile), 24);
+    CHECK_LAYOUT(sizeof(i2d_profile), 28);
     CHECK_LAYOUT(offsetof(i2d_profile, step), 0);
     CHECK_LAYOUT(offsetof(i2d_profile, pairs), 4);
     CHECK_LAYOUT(offsetof(i2d_profile, collide), 8);
     CHECK_LAYOUT(offsetof(i2d_profile, solve), 12);
     CHECK_LAYOUT(offsetof(i2d_profile, update_bounds), 16);
-    CHECK_LAYOUT(offsetof(i2d_profile, events), 20);
+    CHECK_LAYOUT(offsetof(i2d_profile, sleep), 20);
+    CHECK_LAYOUT(offsetof(i2d_profile, events), 24);
 
-    CHECK_LAYOUT(sizeof(i2d_world_counters), 28);
+    CHECK_LAYOUT(sizeof(i2d_world_counters), 36);
     CHECK_LAYOUT(offsetof(i2d_world_counters, body_count), 0);
     CHECK_LAYOUT(offsetof(i2d_world_counters, shape_count), 4);
     CHECK_LAYOUT(offsetof(i2d_world_counters, contact_count), 8);
@@ -1265,16 +1271,23 @@ I2D_TEST(api_world_struct_layout) {
     CHECK_LAYOUT(offsetof(i2d_world_counters, static_tree_height), 16);
     CHECK_LAYOUT(offsetof(i2d_world_counters, kinematic_tree_height), 20);
     CHECK_LAYOUT(offsetof(i2d_world_counters, dynamic_tree_height), 24);
+    CHECK_LAYOUT(offsetof(i2d_world_counters, awake_body_count), 28);
+    CHECK_LAYOUT(offsetof(i2d_world_counters, sleeping_island_count), 32);
 
-    CHECK_LAYOUT(sizeof(i2d_world_def), 36);
+    CHECK_LAYOUT(sizeof(i2d_world_def), 56);
     CHECK_LAYOUT(offsetof(i2d_world_def, gravity), 0);
     CHECK_LAYOUT(offsetof(i2d_world_def, contact_slop), 8);
-    CHECK_LAYOUT(offsetof(i2d_world_def, contact_correction_percent), 12);
-    CHECK_LAYOUT(offsetof(i2d_world_def, restitution_threshold), 16);
-    CHECK_LAYOUT(offsetof(i2d_world_def, maximum_linear_speed), 20);
-    CHECK_LAYOUT(offsetof(i2d_world_def, velocity_iterations), 24);
-    CHECK_LAYOUT(offsetof(i2d_world_def, enable_sleep), 28);
-    CHECK_LAYOUT(offsetof(i2d_world_def, internal_cookie), 32);
+    CHECK_LAYOUT(offsetof(i2d_world_def, contact_hertz), 12);
+    CHECK_LAYOUT(offsetof(i2d_world_def, contact_damping_ratio), 16);
+    CHECK_LAYOUT(offsetof(i2d_world_def, contact_push_max_speed), 20);
+    CHECK_LAYOUT(offsetof(i2d_world_def, restitution_threshold), 24);
+    CHECK_LAYOUT(offsetof(i2d_world_def, maximum_linear_speed), 28);
+    CHECK_LAYOUT(offsetof(i2d_world_def, friction_mixing), 32);
+    CHECK_LAYOUT(offsetof(i2d_world_def, restitution_mixing), 36);
+    CHECK_LAYOUT(offsetof(i2d_world_def, enable_sleep), 40);
+    CHECK_LAYOUT(offsetof(i2d_world_def, sleep_speed_threshold), 44);
+    CHECK_LAYOUT(offsetof(i2d_world_def, time_to_sleep), 48);
+    CHECK_LAYOUT(offsetof(i2d_world_def, internal_cookie), 52);
 
     CHECK_LAYOUT(sizeof(i2d_body_def), 64);
     CHECK_LAYOUT(offsetof(i2d_body_def, type), 0);
@@ -1291,16 +1304,18 @@ I2D_TEST(api_world_struct_layout) {
     CHECK_LAYOUT(offsetof(i2d_body_def, user_data), 48);
     CHECK_LAYOUT(offsetof(i2d_body_def, internal_cookie), 56);
 
-    CHECK_LAYOUT(sizeof(i2d_shape_def), 56);
+    CHECK_LAYOUT(sizeof(i2d_shape_def), 64);
     CHECK_LAYOUT(offsetof(i2d_shape_def, density), 0);
     CHECK_LAYOUT(offsetof(i2d_shape_def, friction), 4);
     CHECK_LAYOUT(offsetof(i2d_shape_def, restitution), 8);
-    CHECK_LAYOUT(offsetof(i2d_shape_def, is_sensor), 12);
-    CHECK_LAYOUT(offsetof(i2d_shape_def, enable_contact_events), 13);
-    CHECK_LAYOUT(offsetof(i2d_shape_def, enable_sensor_events), 14);
-    CHECK_LAYOUT(offsetof(i2d_shape_def, filter), 16);
-    CHECK_LAYOUT(offsetof(i2d_shape_def, user_data), 40);
-    CHECK_LAYOUT(offsetof(i2d_shape_def, internal_cookie), 48);
+    CHECK_LAYOUT(offsetof(i2d_shape_def, rolling_resistance), 12);
+    CHECK_LAYOUT(offsetof(i2d_shape_def, tangent_speed), 16);
+    CHECK_LAYOUT(offsetof(i2d_shape_def, is_sensor), 20);
+    CHECK_LAYOUT(offsetof(i2d_shape_def, enable_contact_events), 21);
+    CHECK_LAYOUT(offsetof(i2d_shape_def, enable_sensor_events), 22);
+    CHECK_LAYOUT(offsetof(i2d_shape_def, filter), 24);
+    CHECK_LAYOUT(offsetof(i2d_shape_def, user_data), 48);
+    CHECK_LAYOUT(offsetof(i2d_shape_def, internal_cookie), 56);
 
     /* Events: ids are 8 bytes; the arrays are a pointer and an int32 count each. */
     CHECK_LAYOUT(sizeof(i2d_contact_begin_event), 16);

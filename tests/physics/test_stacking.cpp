@@ -32,10 +32,10 @@ I2D_TEST(phys_stack_documented_solver_defaults) {
     const i2d_world_def def = i2d_default_world_def();
     I2D_CHECK(def.gravity.x == 0.0f && def.gravity.y == -10.0f);
     I2D_CHECK_NEAR(def.contact_slop, 0.005, 1e-7);
-    I2D_CHECK_NEAR(def.contact_correction_percent, 0.8, 1e-7);
+    I2D_CHECK(def.contact_hertz == 60.0f && def.contact_damping_ratio == 10.0f);
+    I2D_CHECK(def.contact_push_max_speed == 3.0f);
     I2D_CHECK_NEAR(def.restitution_threshold, 1.0, 1e-7);
     I2D_CHECK_NEAR(def.maximum_linear_speed, 400.0, 1e-4);
-    I2D_CHECK(def.velocity_iterations == 10);
     const i2d_body_def body = i2d_default_body_def();
     I2D_CHECK(body.gravity_scale == 1.0f && body.linear_damping == 0.0f);
     const i2d_shape_def shape = i2d_default_shape_def();

@@ -1,0 +1,35 @@
+// SPDX-License-Identifier: MIT
+// BodyState and BodyMotion: the solver's dense per-step copies of the awake bodies.
+//
+// Design note: the substep loops touch only these arrays, indexed by a body's place in
+// the awake set, never the body pool (Box2D v3's BodyState). The state holds what the
+// substeps change: velocities and the motion since the step began (delta position and
+// delta rotation). Positions themselves are not needed while solving: contacts measure
+// separation from the motion of their anchors, so one shared "fixed" state (zero
+// velocity, no motion) stands in for every static or sleeping body.
+#pragma once
+
+#include <cstdint>
+
+#include "math/vec2.hpp"
+
+namespace i2d {
+
+struct BodyState {
+    Vec2 linear_velocity;
+    float angular_velocity = 0.0f;
+    Vec2 delta_position;  // of the centre of mass since the step began
+    Rot delta_rotation;   // turn since the step began
+};
+
+/// What integrating velocities needs, fixed for the whole step.
+struct BodyMotion {
+    Vec2 force;  // N, accumulated by the caller
+    float torque = 0.0f;
+    float inv_mass = 0.0f, inv_inertia = 0.0f;
+    float gravity_scale = 1.0f;
+    float linear_damping = 0.0f, angular_damping = 0.0f;
+    bool is_dynamic = false;
+};
+
+}  // namespace i2d
