@@ -4,11 +4,15 @@
  *
  * Method (shared/design/scenes.md, as Box2D v3's benchmark does): a new world per run; the first
  * step (hook + world step) untimed; then steps 1..N-1, each hook + world step timed with a
- * monotonic clock; ms per step = their total / (N - 1). Each scene runs R times; the median and
- * the minimum over the runs are reported, and the 90th percentile of single steps. The engine's
- * profile (i2d_world_get_profile) is read after every timed step, outside the clock. Times are
- * never asserted on: the exit status says only whether every scene ran and stayed sane (and gave
- * the same final state in every run). */
+ * monotonic clock; ms per step = their total / (N - 1). A scene whose table row says
+ * BENCH_SLEEP_FIRST (sleeping_pile) is first stepped, untimed, until no body is awake (at most
+ * BENCH_SLEEP_LIMIT_S simulated), and its N steps are timed after that. The other scenes either
+ * disable sleep (the solver scenes: they must never time a sleeping world) or run with it on,
+ * as a game does, and the output says how many bodies were awake at the end. Each scene runs R
+ * times; the median and the minimum over the runs are reported, and the 90th percentile of
+ * single steps. The engine's profile (i2d_world_get_profile) is read after every timed step,
+ * outside the clock. Times are never asserted on: the exit status says only whether every scene
+ * ran and stayed sane (and gave the same final state in every run). */
 
 /* clock_gettime and CLOCK_MONOTONIC are POSIX, not C99. */
 #define _POSIX_C_SOURCE 199309L
@@ -35,6 +39,7 @@ typedef enum stage {
     STAGE_COLLIDE,
     STAGE_SOLVE,
     STAGE_BOUNDS,
+    STAGE_SLEEP,
     STAGE_EVENTS,
     STAGE_STEP,    /* the profile's whole step */
     STAGE_OUTSIDE, /* wall time of hook + i2d_world_step minus the profile's step */
@@ -42,8 +47,20 @@ typedef enum stage {
 } stage;
 
 static const char* const stage_names[STAGE_COUNT] = {"pairs", "collide", "solve", "update_bounds",
-                                                     "events", "step", "outside"};
-#define ENGINE_STAGES 5 /* the first five add up to the profile's step (within timer reads) */
+                                                     "sleep", "events", "step", "outside"};
+#define ENGINE_STAGES 6 /* the first six add up to the profile's step (within timer reads) */
+
+#define STRINGIFY_(x) #x
+#define STRINGIFY(x) STRINGIFY_(x)
+
+/* By bench_sleep: its name in the output, and what it means for the figures. */
+static const char* const sleep_names[] = {"off", "on", "first"};
+static const char* const sleep_notes[] = {
+    "sleep disabled for the solver scenes, so that none times a sleeping world",
+    "sleep enabled, as a game runs; the awake column gives the bodies still awake after the last step",
+    "stepped, untimed, until every body sleeps (at most " STRINGIFY(BENCH_SLEEP_LIMIT_S) " s simulated), then "
+    "timed: the cost of a sleeping world",
+};
 
 /* ---- Options ------------------------------------------------------------------------------ */
 
@@ -76,7 +93,7 @@ static void usage(FILE* f) {
             "  --csv, --json  machine-readable output instead of the table\n"
             "  --list         list the scenes and exit\n"
             "exit status: 0 every scene sane, 1 a sanity check failed or a run differed, 2 bad usage,\n"
-            "             3 an i2d call failed\n",
+            "             3 an i2d call failed or a scene could not be set up (e.g. never fell asleep)\n",
             MAX_REPEATS);
 }
 
@@ -197,6 +214,8 @@ typedef struct scene_result {
     int32_t steps, repeats;
     int32_t dynamic_bodies;      /* the scene's dynamic bodies */
     int32_t bodies, contacts, pairs; /* the world's counters after the last step of the last run */
+    int32_t awake, sleeping_islands; /* awake dynamic bodies and sleeping islands, likewise */
+    int32_t warm_steps;          /* untimed steps before the timed ones, in the last run */
     double ms[MAX_REPEATS];      /* ms per timed step, one per run */
     double stage_ms[MAX_REPEATS][STAGE_COUNT]; /* per run: mean ms per timed step of each stage */
     double median_ms, min_ms, p90_ms;
@@ -229,34 +248,118 @@ static bool step_once(const bench_scene* scene, bench_state* state, int32_t step
     return i2d_world_step(state->world, BENCH_TIME_STEP, BENCH_SUBSTEPS) == I2D_OK;
 }
 
+/* The world must have the sleep setting that the scene's table row states. */
+static bool check_sleep_setting(const bench_scene* scene, bench_state* state) {
+    if (state->sleep_enabled != (scene->sleep != BENCH_SLEEP_OFF)) {
+        state->error = "the world's enable_sleep differs from the scene table's sleep setting";
+        return false;
+    }
+    return true;
+}
+
+/* Untimed: steps until no body is awake, counting the steps in state->warm_steps. Gives up after
+ * BENCH_SLEEP_LIMIT_S simulated seconds. */
+static bool wait_for_sleep(const bench_scene* scene, bench_state* state) {
+    static char message[160];
+    const int32_t limit = (int32_t)((float)BENCH_SLEEP_LIMIT_S / BENCH_TIME_STEP + 0.5f);
+    for (;;) {
+        i2d_world_counters counters = i2d_world_get_counters(state->world);
+        if (i2d_last_status() != I2D_OK) {
+            return false;
+        }
+        if (counters.awake_body_count == 0) {
+            return true;
+        }
+        if (state->warm_steps >= limit) {
+            snprintf(message, sizeof message, "%d bodies still awake after %.0f s simulated (%d steps); giving up",
+                     (int)counters.awake_body_count, (double)BENCH_SLEEP_LIMIT_S, (int)state->warm_steps);
+            state->error = message;
+            return false;
+        }
+        if (!step_once(scene, state, state->warm_steps)) {
+            return false;
+        }
+        state->warm_steps++;
+    }
+}
+
+/* Creates the scene and runs its untimed steps: the first one (it pairs every shape for the first
+ * time) and, in a BENCH_SLEEP_FIRST scene, every one until no body is awake. */
+static bool start_run(const bench_scene* scene, bench_state* state) {
+    if (!scene->create(state) || !check_sleep_setting(scene, state)) {
+        report_failure(scene, state, "create");
+        return false;
+    }
+    if (!step_once(scene, state, 0)) {
+        report_failure(scene, state, "step 0");
+        return false;
+    }
+    state->warm_steps = 1;
+    if (scene->sleep == BENCH_SLEEP_FIRST && !wait_for_sleep(scene, state)) {
+        report_failure(scene, state, "waiting for every body to sleep");
+        return false;
+    }
+    return true;
+}
+
+/* Adds a timed step's profile to the stage sums; ms is the step's wall time. */
+static void add_profile(const i2d_profile* p, double ms, double* stages) {
+    stages[STAGE_PAIRS] += p->pairs;
+    stages[STAGE_COLLIDE] += p->collide;
+    stages[STAGE_SOLVE] += p->solve;
+    stages[STAGE_BOUNDS] += p->update_bounds;
+    stages[STAGE_SLEEP] += p->sleep;
+    stages[STAGE_EVENTS] += p->events;
+    stages[STAGE_STEP] += p->step;
+    stages[STAGE_OUTSIDE] += ms - (double)p->step;
+}
+
+/* After the run's last step: the counters, the awake bodies, the sanity figures and the hash. */
+static bool read_final_state(const bench_scene* scene, const bench_state* state, int32_t steps, scene_result* r,
+                             int32_t run) {
+    bench_sanity sanity;
+    i2d_world_counters counters = i2d_world_get_counters(state->world);
+    uint64_t hash = 0;
+    int32_t awake = 0;
+    memset(&sanity, 0, sizeof sanity);
+    if (i2d_last_status() != I2D_OK || !scene->sanity(state, state->warm_steps - 1 + steps, &sanity) ||
+        !bench_state_hash(state, &hash) || !bench_count_awake(state, &awake)) {
+        report_failure(scene, state, "reading the final state");
+        return false;
+    }
+    r->dynamic_bodies = state->body_count;
+    r->bodies = counters.body_count;
+    r->contacts = counters.contact_count;
+    r->pairs = counters.pair_count;
+    r->awake = awake;
+    r->sleeping_islands = counters.sleeping_island_count;
+    r->warm_steps = state->warm_steps;
+    r->sanity = sanity;
+    r->sane = r->sane && sanity.sane;
+    if (run == 0) {
+        r->hash = hash;
+    }
+    r->deterministic = r->deterministic && hash == r->hash;
+    return true;
+}
+
 /* One run in a new world. Fills the run's time and stage times, the counters, the sanity figures
  * and the hash; appends each timed step's ms to samples (when not NULL). */
 static bool run_once(const bench_scene* scene, int32_t steps, scene_result* r, int32_t run, double* samples) {
     bench_state state;
-    bench_sanity sanity;
-    i2d_world_counters counters;
     double total = 0.0, stages[STAGE_COUNT];
-    uint64_t hash = 0;
     int32_t step, k;
 
     memset(&state, 0, sizeof state);
-    memset(&sanity, 0, sizeof sanity);
     memset(stages, 0, sizeof stages);
-    if (!scene->create(&state)) {
-        report_failure(scene, &state, "create");
-        bench_state_destroy(&state);
-        return false;
-    }
-    /* The first step is not timed: it pairs every shape for the first time. */
-    if (!step_once(scene, &state, 0)) {
-        report_failure(scene, &state, "step 0");
+    if (!start_run(scene, &state)) {
         bench_state_destroy(&state);
         return false;
     }
     for (step = 1; step < steps; ++step) {
         double start = seconds_now(), ms;
         i2d_profile p;
-        if (!step_once(scene, &state, step)) {
+        if (!step_once(scene, &state, state.warm_steps - 1 + step)) {
             report_failure(scene, &state, "step");
             bench_state_destroy(&state);
             return false;
@@ -267,35 +370,16 @@ static bool run_once(const bench_scene* scene, int32_t steps, scene_result* r, i
             samples[step - 1] = ms;
         }
         p = i2d_world_get_profile(state.world);
-        stages[STAGE_PAIRS] += p.pairs;
-        stages[STAGE_COLLIDE] += p.collide;
-        stages[STAGE_SOLVE] += p.solve;
-        stages[STAGE_BOUNDS] += p.update_bounds;
-        stages[STAGE_EVENTS] += p.events;
-        stages[STAGE_STEP] += p.step;
-        stages[STAGE_OUTSIDE] += ms - (double)p.step;
+        add_profile(&p, ms, stages);
     }
     r->ms[run] = total / (double)(steps - 1);
     for (k = 0; k < STAGE_COUNT; ++k) {
         r->stage_ms[run][k] = stages[k] / (double)(steps - 1);
     }
-
-    counters = i2d_world_get_counters(state.world);
-    if (i2d_last_status() != I2D_OK || !scene->sanity(&state, steps, &sanity) || !bench_state_hash(&state, &hash)) {
-        report_failure(scene, &state, "reading the final state");
+    if (!read_final_state(scene, &state, steps, r, run)) {
         bench_state_destroy(&state);
         return false;
     }
-    r->dynamic_bodies = state.body_count;
-    r->bodies = counters.body_count;
-    r->contacts = counters.contact_count;
-    r->pairs = counters.pair_count;
-    r->sanity = sanity;
-    r->sane = r->sane && sanity.sane;
-    if (run == 0) {
-        r->hash = hash;
-    }
-    r->deterministic = r->deterministic && hash == r->hash;
     if (!bench_state_destroy(&state)) {
         report_failure(scene, &state, "i2d_world_destroy");
         return false;
@@ -378,9 +462,15 @@ static double solve_ns_per_contact(const scene_result* r) {
     return r->contacts > 0 ? 1e6 * r->stage_median[STAGE_SOLVE] / ((double)r->contacts * BENCH_SUBSTEPS) : NAN;
 }
 
-/* ns of the collide stage per pair (fat bounds overlapping) per substep. */
+/* ns of the collide stage per pair (fat bounds overlapping) per step: it runs once a step. */
 static double collide_ns_per_pair(const scene_result* r) {
-    return r->pairs > 0 ? 1e6 * r->stage_median[STAGE_COLLIDE] / ((double)r->pairs * BENCH_SUBSTEPS) : NAN;
+    return r->pairs > 0 ? 1e6 * r->stage_median[STAGE_COLLIDE] / (double)r->pairs /* once per step */ : NAN;
+}
+
+/* Simulated seconds a BENCH_SLEEP_FIRST scene took to fall asleep (its untimed steps); NaN for
+ * the other scenes. */
+static double asleep_after_s(const scene_result* r) {
+    return r->scene->sleep == BENCH_SLEEP_FIRST ? (double)r->warm_steps * (double)BENCH_TIME_STEP : NAN;
 }
 
 static const char* verdict(const scene_result* r) {
@@ -465,6 +555,43 @@ static void print_notes(const options* opt) {
     }
 }
 
+/* The selected scenes of one sleep setting, as a JSON array or a comma-separated list; false when
+ * there are none. */
+static bool print_sleep_scenes(const options* opt, bench_sleep mode, bool json) {
+    int32_t i;
+    bool any = false;
+    for (i = 0; i < bench_scene_count; ++i) {
+        if (!is_selected(opt, i) || bench_scenes[i].sleep != mode) {
+            continue;
+        }
+        printf(json ? "%s\"%s\"" : "%s%s", any ? ", " : "", bench_scenes[i].name);
+        any = true;
+    }
+    return any;
+}
+
+/* Which scenes run with sleep off, on, or until asleep first: a line each (text and CSV), or the
+ * members of the header's "sleep" object (JSON). */
+static void print_sleep_notes(const options* opt) {
+    int32_t mode;
+    bool first = true;
+    for (mode = BENCH_SLEEP_OFF; mode <= BENCH_SLEEP_FIRST; ++mode) {
+        if (opt->format == FORMAT_JSON) {
+            printf("%s\"%s\": {\"note\": \"%s\", \"scenes\": [", first ? "" : ", ", sleep_names[mode],
+                   sleep_notes[mode]);
+            print_sleep_scenes(opt, (bench_sleep)mode, true);
+            printf("]}");
+            first = false;
+        } else {
+            printf("# SLEEP %s (%s): ", sleep_names[mode], sleep_notes[mode]);
+            if (!print_sleep_scenes(opt, (bench_sleep)mode, false)) {
+                printf("no scene selected");
+            }
+            printf("\n");
+        }
+    }
+}
+
 static void print_header(const options* opt) {
     if (opt->format == FORMAT_JSON) {
         printf("{\"build\": {");
@@ -473,7 +600,9 @@ static void print_header(const options* opt) {
                " \"notes\": [",
                (double)BENCH_TIME_STEP, BENCH_SUBSTEPS, (int)opt->workers);
         print_notes(opt);
-        printf("],\n \"scenes\": [");
+        printf("],\n \"sleep\": {");
+        print_sleep_notes(opt);
+        printf("},\n \"scenes\": [");
         return;
     }
     bench_print_build_line(stdout, "bench");
@@ -481,17 +610,35 @@ static void print_header(const options* opt) {
            "implemented yet)\n",
            BENCH_SUBSTEPS, (int)opt->workers);
     print_notes(opt);
+    print_sleep_notes(opt);
     if (opt->format == FORMAT_CSV) {
         printf("scene,group,workers,dynamic_bodies,bodies,contacts,pairs,steps,repeats,median_ms,min_ms,p90_ms");
-        printf(",profile_step_ms,pairs_ms,collide_ms,solve_ms,update_bounds_ms,events_ms,outside_ms");
-        printf(",solve_ns_per_contact_substep,collide_ns_per_pair_substep,sanity,verdict,hash\n");
+        printf(",profile_step_ms,pairs_ms,collide_ms,solve_ms,update_bounds_ms,sleep_ms,events_ms,outside_ms");
+        printf(",solve_ns_per_contact_substep,collide_ns_per_pair_step,sanity,verdict,hash");
+        printf(",sleep,awake_bodies,sleeping_islands,asleep_after_s\n");
     } else {
         printf("# ms per step = time of steps 1..N-1 (hook + i2d_world_step) / (N - 1); median and min over the "
                "runs, each in a new world; p90 of single steps; bodies = dynamic bodies; contacts = touching "
-               "pairs after the last step\n");
-        printf("%-17s %6s %8s %5s %4s %10s %10s %10s  %-7s %-16s  %s\n", "scene", "bodies", "contacts", "steps",
-               "runs", "median ms", "min ms", "p90 ms", "verdict", "final-state hash", "sanity");
+               "pairs after the last step; awake = dynamic bodies awake after the last step\n");
+        printf("%-17s %6s %6s %8s %5s %4s %10s %10s %10s  %-7s %-16s  %s\n", "scene", "bodies", "awake", "contacts",
+               "steps", "runs", "median ms", "min ms", "p90 ms", "verdict", "final-state hash", "sanity");
     }
+}
+
+/* Text format: decimals of a row's ms figures, from its step's scale: 3, or 5 below 0.01 ms (a
+ * sleeping world) so that its figures do not all read 0.000. */
+static int ms_decimals(double ms) {
+    return ms < 0.01 ? 5 : 3;
+}
+
+/* Text format: a note under a scene that timed bodies asleep without being meant to. */
+static void print_sleep_warning(const scene_result* r) {
+    if (r->scene->sleep == BENCH_SLEEP_FIRST || r->awake == r->dynamic_bodies) {
+        return;
+    }
+    printf("# NOTE: %s: %d of %d bodies asleep after the last step (%d sleeping islands): its time is partly "
+           "that of a sleeping world\n",
+           r->scene->name, (int)(r->dynamic_bodies - r->awake), (int)r->dynamic_bodies, (int)r->sleeping_islands);
 }
 
 static void print_result(output_format format, int32_t workers, const scene_result* r, bool first) {
@@ -515,31 +662,40 @@ static void print_result(output_format format, int32_t workers, const scene_resu
         }
         printf("}, \"solve_ns_per_contact_substep\": ");
         json_number(solve_ns_per_contact(r));
-        printf(", \"collide_ns_per_pair_substep\": ");
+        printf(", \"collide_ns_per_pair_step\": ");
         json_number(collide_ns_per_pair(r));
         printf(",\n   \"sanity\": {");
         for (i = 0; i < r->sanity.figure_count; ++i) {
             printf("%s\"%s\": ", i ? ", " : "", r->sanity.figures[i].name);
             json_number(r->sanity.figures[i].value);
         }
-        printf("}, \"sane\": %s, \"deterministic\": %s, \"hash\": \"%016llx\"}", r->sane ? "true" : "false",
-               r->deterministic ? "true" : "false", (unsigned long long)r->hash);
+        printf("}, \"sane\": %s, \"deterministic\": %s, \"hash\": \"%016llx\",\n   \"sleep\": \"%s\", "
+               "\"awake_bodies\": %d, \"sleeping_islands\": %d, \"warm_up_steps\": %d, \"asleep_after_s\": ",
+               r->sane ? "true" : "false", r->deterministic ? "true" : "false", (unsigned long long)r->hash,
+               sleep_names[s->sleep], (int)r->awake, (int)r->sleeping_islands, (int)r->warm_steps);
+        json_number(asleep_after_s(r));
+        printf("}");
     } else if (format == FORMAT_CSV) {
         printf("%s,%s,%d,%d,%d,%d,%d,%d,%d,%.6f,%.6f,%.6f", s->name, group_name(s->group), (int)workers,
                (int)r->dynamic_bodies, (int)r->bodies, (int)r->contacts, (int)r->pairs, (int)r->steps,
                (int)r->repeats, r->median_ms, r->min_ms, r->p90_ms);
-        printf(",%.6f,%.6f,%.6f,%.6f,%.6f,%.6f,%.6f", r->stage_median[STAGE_STEP], r->stage_median[STAGE_PAIRS],
-               r->stage_median[STAGE_COLLIDE], r->stage_median[STAGE_SOLVE], r->stage_median[STAGE_BOUNDS],
-               r->stage_median[STAGE_EVENTS], r->stage_median[STAGE_OUTSIDE]);
+        printf(",%.6f,%.6f,%.6f,%.6f,%.6f,%.6f,%.6f,%.6f", r->stage_median[STAGE_STEP],
+               r->stage_median[STAGE_PAIRS], r->stage_median[STAGE_COLLIDE], r->stage_median[STAGE_SOLVE],
+               r->stage_median[STAGE_BOUNDS], r->stage_median[STAGE_SLEEP], r->stage_median[STAGE_EVENTS],
+               r->stage_median[STAGE_OUTSIDE]);
         printf(",%.3f,%.3f,\"", solve_ns_per_contact(r), collide_ns_per_pair(r));
         print_sanity_text(&r->sanity, ";");
-        printf("\",%s,%016llx\n", verdict(r), (unsigned long long)r->hash);
+        printf("\",%s,%016llx", verdict(r), (unsigned long long)r->hash);
+        printf(",%s,%d,%d,%.4f\n", sleep_names[s->sleep], (int)r->awake, (int)r->sleeping_islands,
+               asleep_after_s(r));
     } else {
-        printf("%-17s %6d %8d %5d %4d %10.3f %10.3f %10.3f  %-7s %016llx  ", s->name, (int)r->dynamic_bodies,
-               (int)r->contacts, (int)r->steps, (int)r->repeats, r->median_ms, r->min_ms, r->p90_ms, verdict(r),
-               (unsigned long long)r->hash);
+        int d = ms_decimals(r->median_ms);
+        printf("%-17s %6d %6d %8d %5d %4d %10.*f %10.*f %10.*f  %-7s %016llx  ", s->name, (int)r->dynamic_bodies,
+               (int)r->awake, (int)r->contacts, (int)r->steps, (int)r->repeats, d, r->median_ms, d, r->min_ms, d,
+               r->p90_ms, verdict(r), (unsigned long long)r->hash);
         print_sanity_text(&r->sanity, ", ");
         printf("\n");
+        print_sleep_warning(r);
     }
     fflush(stdout);
 }
@@ -551,20 +707,21 @@ static void print_profile_table(const scene_result* results, int32_t count) {
            "# outside = wall time minus the profile's step (C API boundary, hook); per contact/pair figures use\n"
            "# the final counts and the %d substeps\n",
            BENCH_SUBSTEPS);
-    printf("%-17s %8s %8s %8s %8s %8s %8s %8s  %-13s %14s %14s\n", "scene", "step", "pairs", "collide", "solve",
-           "bounds", "events", "outside", "dominant", "solve ns/c/ss", "collide ns/p/ss");
+    printf("%-17s %8s %8s %8s %8s %8s %8s %8s %8s  %-13s %14s %14s\n", "scene", "step", "pairs", "collide",
+           "solve", "bounds", "sleep", "events", "outside", "dominant", "solve ns/c/ss", "collide ns/p/st");
     for (i = 0; i < count; ++i) {
         const scene_result* r = &results[i];
         double share;
         int32_t top = dominant_stage(r, &share);
+        int d = ms_decimals(r->stage_median[STAGE_STEP]);
         char dominant[32];
-        printf("%-17s %8.3f", r->scene->name, r->stage_median[STAGE_STEP]);
+        printf("%-17s %8.*f", r->scene->name, d, r->stage_median[STAGE_STEP]);
         for (k = 0; k < ENGINE_STAGES; ++k) {
-            printf(" %8.3f", r->stage_median[k]);
+            printf(" %8.*f", d, r->stage_median[k]);
         }
         snprintf(dominant, sizeof dominant, "%s %.0f%%", stage_names[top], 100.0 * share);
-        printf(" %8.3f  %-13s %14.1f %14.1f\n", r->stage_median[STAGE_OUTSIDE], dominant, solve_ns_per_contact(r),
-               collide_ns_per_pair(r));
+        printf(" %8.*f  %-13s %14.1f %14.1f\n", d, r->stage_median[STAGE_OUTSIDE], dominant,
+               solve_ns_per_contact(r), collide_ns_per_pair(r));
     }
 }
 
@@ -625,13 +782,14 @@ static void list_scenes(void) {
     int32_t i;
     for (i = 0; i < bench_scene_count; ++i) {
         const bench_scene* s = &bench_scenes[i];
-        printf("%-17s %-9s %5d steps  %s\n", s->name, group_name(s->group), (int)s->steps, s->description);
+        printf("%-17s %-9s sleep %-5s %5d steps  %s\n", s->name, group_name(s->group), sleep_names[s->sleep],
+               (int)s->steps, s->description);
         if (s->substitution) {
-            printf("%-17s %-9s %5s        substitution: %s\n", "", "", "", s->substitution);
+            printf("%-17s %-9s %11s %5s        substitution: %s\n", "", "", "", "", s->substitution);
         }
     }
     for (i = 0; i < bench_missing_scene_count; ++i) {
-        printf("%-17s %-9s %5s        not run: %s\n", bench_missing_scenes[i].name, "scenes.md", "",
+        printf("%-17s %-9s %11s %5s        not run: %s\n", bench_missing_scenes[i].name, "scenes.md", "", "",
                bench_missing_scenes[i].reason);
     }
 }

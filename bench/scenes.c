@@ -29,6 +29,7 @@ static i2d_aabb aabb(float min_x, float min_y, float max_x, float max_y) {
 static bool create_world(bench_state* state, bool enable_sleep) {
     i2d_world_def def = i2d_default_world_def();
     def.enable_sleep = enable_sleep;
+    state->sleep_enabled = enable_sleep;
     state->world = i2d_world_create(&def);
     return !I2D_IS_NULL(state->world);
 }
@@ -179,11 +180,26 @@ static bool add_pyramid(bench_state* state, int32_t rows, float left, float base
     return true;
 }
 
+/* How many dynamic bodies are PYRAMID_DISPLACED or more from where they started (or NaN). */
+static bool count_displaced(const bench_state* state, int32_t* displaced) {
+    int32_t i;
+    *displaced = 0;
+    for (i = 0; i < state->body_count; ++i) {
+        i2d_vec2 p = i2d_body_get_position(state->bodies[i]);
+        float dx = p.x - state->start_x[i], dy = p.y - state->start_y[i];
+        if (i2d_last_status() != I2D_OK) {
+            return false;
+        }
+        *displaced += !(dx * dx + dy * dy <= PYRAMID_DISPLACED * PYRAMID_DISPLACED);
+    }
+    return true;
+}
+
 /* The marked top boxes: the largest drop below and the largest sideways drift from their start
  * (either NaN when a position is), and how many of all the boxes are displaced. */
 static bool sanity_pyramids(const bench_state* state, int32_t steps_run, bench_sanity* out) {
     double drop = 0.0, drift = 0.0;
-    int32_t i, displaced = 0;
+    int32_t i, displaced;
     (void)steps_run;
     for (i = 0; i < state->mark_count; ++i) {
         int32_t b = state->marks[i];
@@ -202,13 +218,8 @@ static bool sanity_pyramids(const bench_state* state, int32_t steps_run, bench_s
             drift = x;
         }
     }
-    for (i = 0; i < state->body_count; ++i) {
-        i2d_vec2 p = i2d_body_get_position(state->bodies[i]);
-        float dx = p.x - state->start_x[i], dy = p.y - state->start_y[i];
-        if (i2d_last_status() != I2D_OK) {
-            return false;
-        }
-        displaced += !(dx * dx + dy * dy <= PYRAMID_DISPLACED * PYRAMID_DISPLACED);
+    if (!count_displaced(state, &displaced)) {
+        return false;
     }
     set_figure(out, state->mark_count == 1 ? "top drop m" : "max top drop m", drop);
     set_figure(out, state->mark_count == 1 ? "top x drift m" : "max top x drift m", drift);
@@ -380,7 +391,9 @@ static bool sanity_tumbler(const bench_state* state, int32_t steps_run, bench_sa
 
 /* Container and grid grow with the count: about 40 m wide per 1000 circles' square root, walls
  * 1.5 times the height the pile should reach (a circle takes ~0.56 m^2 packed), and the grid
- * starts just above the walls, so the circles rain in through the open top. */
+ * starts just above the walls, so the circles rain in through the open top. Sleep is off: with it
+ * on, the 1000-circle pile is asleep before its 500 steps end while the larger ones are still
+ * raining in, and the sweep would compare a sleeping world with a busy one. */
 static bool create_rain(bench_state* state, int32_t count) {
     uint32_t seed = 0x9e3779b9u;
     float half_width = 20.0f * sqrtf((float)count / 1000.0f);
@@ -390,7 +403,7 @@ static bool create_rain(bench_state* state, int32_t count) {
     float left = -0.5f * RAIN_PITCH * (float)(columns - 1);
     int32_t i;
 
-    if (!create_world(state, true) || !reserve_bodies(state, count, 0) ||
+    if (!create_world(state, false) || !reserve_bodies(state, count, 0) ||
         !add_container(state, half_width, wall_height)) {
         return false;
     }
@@ -481,6 +494,61 @@ static bool sanity_top_row_drop(const bench_state* state, int32_t steps_run, ben
     return true;
 }
 
+/* ---- sleeping_pile: pyramids and columns of boxes, all asleep (extra) ----------------------- */
+
+#define PILE_PYRAMIDS 10
+#define PILE_PYRAMID_ROWS 20
+#define PILE_PYRAMID_SPACING 21.0f /* a 20 m base and a 1 m gap */
+#define PILE_COLUMNS 50
+#define PILE_COLUMN_HEIGHT 20
+#define PILE_HALF_WIDTH 135.0f
+
+/* Ten 20-row pyramids (2100 boxes) and 50 lone columns of 20 boxes (1000), 1 m boxes on one
+ * static ground: 3100 bodies in 60 islands. The runner steps it, untimed, until every body
+ * sleeps (BENCH_SLEEP_FIRST), then times it: what a sleeping pile costs per step. */
+static bool create_sleeping_pile(bench_state* state) {
+    const int32_t pyramid_boxes = PILE_PYRAMID_ROWS * (PILE_PYRAMID_ROWS + 1) / 2;
+    const float columns_left = -PILE_HALF_WIDTH + 3.0f + PILE_PYRAMID_SPACING * (float)PILE_PYRAMIDS;
+    int32_t p, column, row;
+    if (!create_world(state, true) ||
+        !reserve_bodies(state, PILE_PYRAMIDS * pyramid_boxes + PILE_COLUMNS * PILE_COLUMN_HEIGHT, PILE_PYRAMIDS) ||
+        !add_static_box(state, 0.0f, -1.0f, PILE_HALF_WIDTH, 1.0f)) {
+        return false;
+    }
+    for (p = 0; p < PILE_PYRAMIDS; ++p) {
+        float left = -PILE_HALF_WIDTH + 3.0f + PILE_PYRAMID_SPACING * (float)p;
+        if (!add_pyramid(state, PILE_PYRAMID_ROWS, left, 0.0f)) {
+            return false;
+        }
+    }
+    for (column = 0; column < PILE_COLUMNS; ++column) {
+        for (row = 0; row < PILE_COLUMN_HEIGHT; ++row) {
+            i2d_vec2 c = vec2(columns_left + GRID_PITCH * (float)column, 0.5f + (float)row);
+            if (!add_dynamic(state, c, false, PYRAMID_BOX_HALF)) {
+                return false;
+            }
+        }
+    }
+    return true;
+}
+
+/* The pile must have stayed asleep through the timed steps and in place: no body awake, none
+ * displaced. Also gives the sleeping islands and when the pile fell asleep. */
+static bool sanity_sleeping_pile(const bench_state* state, int32_t steps_run, bench_sanity* out) {
+    i2d_world_counters counters = i2d_world_get_counters(state->world);
+    int32_t awake, displaced;
+    (void)steps_run;
+    if (i2d_last_status() != I2D_OK || !bench_count_awake(state, &awake) || !count_displaced(state, &displaced)) {
+        return false;
+    }
+    set_figure(out, "awake", (double)awake);
+    set_figure(out, "sleeping islands", (double)counters.sleeping_island_count);
+    set_figure(out, "asleep after s", (double)state->warm_steps * (double)BENCH_TIME_STEP);
+    set_figure(out, "boxes moved >0.25m", (double)displaced);
+    out->sane = awake == 0 && displaced == 0;
+    return true;
+}
+
 /* ---- small: a game-sized room (extra) ------------------------------------------------------- */
 
 #define SMALL_COUNT 50
@@ -559,41 +627,44 @@ static const char tumbler_substitution[] =
 
 const bench_scene bench_scenes[] = {
     {"large_pyramid", BENCH_GROUP_SCENES_MD, NULL, 0,
-     "100-row pyramid of 5050 1 m boxes on a static box ground (sleep off)", NULL, 500, create_large_pyramid,
-     NULL, sanity_pyramids},
+     "100-row pyramid of 5050 1 m boxes on a static box ground (sleep off)", NULL, BENCH_SLEEP_OFF, 500,
+     create_large_pyramid, NULL, sanity_pyramids},
     {"many_pyramids", BENCH_GROUP_SCENES_MD, NULL, 0,
-     "20 x 20 ten-row pyramids (22000 1 m boxes) on 20 static segments (sleep off)", NULL, 200,
+     "20 x 20 ten-row pyramids (22000 1 m boxes) on 20 static segments (sleep off)", NULL, BENCH_SLEEP_OFF, 200,
      create_many_pyramids, NULL, sanity_pyramids},
     {"tumbler", BENCH_GROUP_SCENES_MD, NULL, 0,
-     "2025 0.25 m boxes in a 20 x 20 hollow drum turning at 25 deg/s (sleep on)", tumbler_substitution, 750,
-     create_tumbler, NULL, sanity_tumbler},
+     "2025 0.25 m boxes in a 20 x 20 hollow drum turning at 25 deg/s (sleep on)", tumbler_substitution,
+     BENCH_SLEEP_ON, 750, create_tumbler, NULL, sanity_tumbler},
     {"small", BENCH_GROUP_EXTRA, NULL, 0, "50 circles and boxes in a room with a scripted kinematic platform",
-     NULL, 500, create_small, small_step_hook, sanity_small},
+     NULL, BENCH_SLEEP_ON, 500, create_small, small_step_hook, sanity_small},
     {"box_grid", BENCH_GROUP_EXTRA, NULL, 0, "50 x 20 columns of 1 m boxes resting on the ground (sleep off)",
-     NULL, 500, create_box_grid, NULL, sanity_top_row_drop},
+     NULL, BENCH_SLEEP_OFF, 500, create_box_grid, NULL, sanity_top_row_drop},
+    {"sleeping_pile", BENCH_GROUP_EXTRA, NULL, 0,
+     "10 twenty-row pyramids and 50 columns of 20 boxes (3100 1 m boxes), stepped until all sleep, then timed",
+     NULL, BENCH_SLEEP_FIRST, 500, create_sleeping_pile, NULL, sanity_sleeping_pile},
     {"rain_circles_1k", BENCH_GROUP_SWEEP, "rain_circles", 1000,
-     "1000 circles (r 0.25-0.5 m) rain from a grid into an open box", NULL, 500, create_rain_1k, NULL,
-     sanity_inside_all},
+     "1000 circles (r 0.25-0.5 m) rain from a grid into an open box (sleep off)", NULL, BENCH_SLEEP_OFF, 500,
+     create_rain_1k, NULL, sanity_inside_all},
     {"rain_circles_4k", BENCH_GROUP_SWEEP, "rain_circles", 4000,
-     "4000 circles (r 0.25-0.5 m) rain from a grid into an open box", NULL, 500, create_rain_4k, NULL,
-     sanity_inside_all},
+     "4000 circles (r 0.25-0.5 m) rain from a grid into an open box (sleep off)", NULL, BENCH_SLEEP_OFF, 500,
+     create_rain_4k, NULL, sanity_inside_all},
     {"rain_circles_16k", BENCH_GROUP_SWEEP, "rain_circles", 16000,
-     "16000 circles (r 0.25-0.5 m) rain from a grid into an open box", NULL, 500, create_rain_16k, NULL,
-     sanity_inside_all},
+     "16000 circles (r 0.25-0.5 m) rain from a grid into an open box (sleep off)", NULL, BENCH_SLEEP_OFF, 500,
+     create_rain_16k, NULL, sanity_inside_all},
     {"rain_circles_64k", BENCH_GROUP_SWEEP, "rain_circles", 64000,
-     "64000 circles (r 0.25-0.5 m) rain from a grid into an open box", NULL, 500, create_rain_64k, NULL,
-     sanity_inside_all},
+     "64000 circles (r 0.25-0.5 m) rain from a grid into an open box (sleep off)", NULL, BENCH_SLEEP_OFF, 500,
+     create_rain_64k, NULL, sanity_inside_all},
     {"pyramid_field_1k", BENCH_GROUP_SWEEP, "pyramid_field", 1000,
-     "18 ten-row pyramids (990 boxes) on segments, as many_pyramids (sleep off)", NULL, 200,
+     "18 ten-row pyramids (990 boxes) on segments, as many_pyramids (sleep off)", NULL, BENCH_SLEEP_OFF, 200,
      create_pyramid_field_1k, NULL, sanity_pyramids},
     {"pyramid_field_4k", BENCH_GROUP_SWEEP, "pyramid_field", 4000,
-     "73 ten-row pyramids (4015 boxes) on segments, as many_pyramids (sleep off)", NULL, 200,
+     "73 ten-row pyramids (4015 boxes) on segments, as many_pyramids (sleep off)", NULL, BENCH_SLEEP_OFF, 200,
      create_pyramid_field_4k, NULL, sanity_pyramids},
     {"pyramid_field_16k", BENCH_GROUP_SWEEP, "pyramid_field", 16000,
-     "291 ten-row pyramids (16005 boxes) on segments, as many_pyramids (sleep off)", NULL, 200,
+     "291 ten-row pyramids (16005 boxes) on segments, as many_pyramids (sleep off)", NULL, BENCH_SLEEP_OFF, 200,
      create_pyramid_field_16k, NULL, sanity_pyramids},
     {"pyramid_field_64k", BENCH_GROUP_SWEEP, "pyramid_field", 64000,
-     "1164 ten-row pyramids (64020 boxes) on segments, as many_pyramids (sleep off)", NULL, 200,
+     "1164 ten-row pyramids (64020 boxes) on segments, as many_pyramids (sleep off)", NULL, BENCH_SLEEP_OFF, 200,
      create_pyramid_field_64k, NULL, sanity_pyramids},
 };
 const int32_t bench_scene_count = (int32_t)(sizeof bench_scenes / sizeof bench_scenes[0]);
@@ -660,5 +731,18 @@ bool bench_state_hash(const bench_state* state, uint64_t* hash) {
         h = fnv1a_float(fnv1a_float(fnv1a_float(h, v.x), v.y), w);
     }
     *hash = h;
+    return true;
+}
+
+bool bench_count_awake(const bench_state* state, int32_t* awake) {
+    int32_t i;
+    *awake = 0;
+    for (i = 0; i < state->body_count; ++i) {
+        bool is_awake = i2d_body_is_awake(state->bodies[i]);
+        if (i2d_last_status() != I2D_OK) {
+            return false;
+        }
+        *awake += is_awake;
+    }
     return true;
 }

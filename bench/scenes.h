@@ -28,11 +28,15 @@ typedef struct bench_state {
     i2d_aabb region;         /* where every dynamic body must stay (the sanity check) */
     i2d_body_id mover;       /* a kinematic body (platform, drum); null when none */
     i2d_vec2 mover_start;
+    bool sleep_enabled;      /* the world's enable_sleep, as create set it */
+    /* Untimed steps before the timed ones: 1 (the first step), or, in a scene that waits for
+     * sleep, every step until no body was awake. Set by the runner. */
+    int32_t warm_steps;
     /* Set when a failure did not come from an i2d_ call (then read i2d_last_error_message()). */
     const char* error;
 } bench_state;
 
-#define BENCH_MAX_FIGURES 3
+#define BENCH_MAX_FIGURES 4
 
 /* One number of a sanity check, with its name (unit included). */
 typedef struct bench_figure {
@@ -52,6 +56,16 @@ typedef enum bench_group {
     BENCH_GROUP_SWEEP      /* the scaling sweep: one family at 1k, 4k, 16k and 64k bodies */
 } bench_group;
 
+/* What a scene's world does with resting bodies. */
+typedef enum bench_sleep {
+    BENCH_SLEEP_OFF,   /* sleep disabled: the scene times the solver, never a sleeping world */
+    BENCH_SLEEP_ON,    /* sleep enabled, as a game runs: bodies may fall asleep during the run */
+    BENCH_SLEEP_FIRST  /* sleep enabled, and the runner steps (untimed) until every body sleeps */
+} bench_sleep;
+
+/* The longest a BENCH_SLEEP_FIRST scene may take to fall asleep, whole simulated seconds. */
+#define BENCH_SLEEP_LIMIT_S 20
+
 typedef struct bench_scene {
     const char* name;
     bench_group group;
@@ -60,6 +74,7 @@ typedef struct bench_scene {
     const char* description;
     /* A departure from scenes.md that the output must state beside the figures; NULL when none. */
     const char* substitution;
+    bench_sleep sleep;       /* must match the enable_sleep that create gives the world */
     int32_t steps;           /* default step count */
     /* Creates the world and the scene in state (zeroed by the caller). False on failure. */
     bool (*create)(bench_state* state);
@@ -89,5 +104,8 @@ bool bench_state_destroy(bench_state* state);
 /* FNV-1a over the bits of every dynamic body's position, rotation and velocities, in creation
  * order: equal inputs on the same binary must give equal hashes. False on failure. */
 bool bench_state_hash(const bench_state* state, uint64_t* hash);
+
+/* How many of the dynamic bodies are awake. False on failure. */
+bool bench_count_awake(const bench_state* state, int32_t* awake);
 
 #endif

@@ -47,7 +47,7 @@ void prepare_contacts(std::vector<ContactConstraint>& constraints, const std::ve
             p.normal_mass = effective_mass(c, p.anchor_a, p.anchor_b, c.normal);
             p.tangent_mass = effective_mass(c, p.anchor_a, p.anchor_b, tangent);
             p.relative_velocity = dot(relative_velocity(a, b, p.anchor_a, p.anchor_b), c.normal);
-            p.last_normal_speed = p.relative_velocity;
+            p.start_speed = p.relative_velocity;
             p.max_normal_impulse = 0.0f;
         }
         const float k = c.inv_inertia_a + c.inv_inertia_b;
@@ -100,18 +100,19 @@ PointTerms point_terms(const ContactConstraint& c, float separation, float inv_h
     return {};
 }
 
-// Until a point first pushes, its approach speed is tracked; when it does, the impact
-// speed is that speed carried over the remaining gap at the approach's acceleration
-// (gravity, say): v^2 + 2 a gap, what energy says. Bounces then keep their energy
-// instead of losing up to one substep's worth of acceleration each.
-void track_approach(ContactConstraintPoint& p, float vn, float separation, float inv_h) {
-    if (p.max_normal_impulse != 0.0f) {
+// Until a point first pushes, the impact speed of a pair that was approaching when the
+// step began is tracked from its free motion: the start speed plus gravity and forces
+// so far, carried over the remaining gap (v^2 + 2 a gap, what energy says). A bounce
+// then keeps its energy instead of losing up to a substep's worth of fall. Speed that
+// other contacts gave the pair within the step does not count, nor does a pair at rest
+// that another contact sets moving bounce: simultaneous impacts have no defined
+// outcome, and bouncing them would create energy.
+void track_impact(const ContactConstraint& c, ContactConstraintPoint& p, float separation, float elapsed) {
+    if (p.start_speed >= 0.0f || p.max_normal_impulse != 0.0f) {
         return;
     }
-    const float acceleration = max_of((p.last_normal_speed - vn) * inv_h, 0.0f);
-    const float gap = max_of(separation, 0.0f);
-    p.relative_velocity = vn < 0.0f ? -std::sqrt(vn * vn + 2.0f * acceleration * gap) : vn;
-    p.last_normal_speed = vn;
+    const float free_speed = p.start_speed - c.approach_acceleration * elapsed;
+    p.relative_velocity = -std::sqrt(free_speed * free_speed + 2.0f * c.approach_acceleration * max_of(separation, 0.0f));
 }
 
 void set_normal_impulse(ContactConstraint& c, ContactConstraintPoint& p, float impulse, BodyState& a, BodyState& b) {
@@ -176,14 +177,14 @@ bool solve_normal_block(ContactConstraint& c, const PointTerms t[2], BodyState& 
 
 // Returns the normal impulses' sum, which bounds the rolling resistance torque.
 float solve_normal(ContactConstraint& c, BodyState& a, BodyState& b, float inv_h, const ContactSolverSettings& s,
-                   bool use_bias) {
+                   bool use_bias, float elapsed) {
     PointTerms terms[2];
     for (int32_t i = 0; i < c.point_count; ++i) {
         ContactConstraintPoint& p = c.points[i];
         const float separation = current_separation(p, c.normal, a, b);
         terms[i] = point_terms(c, separation, inv_h, s, use_bias);
         if (use_bias) {
-            track_approach(p, dot(relative_velocity(a, b, p.anchor_a, p.anchor_b), c.normal), separation, inv_h);
+            track_impact(c, p, separation, elapsed);
         }
     }
     if (c.point_count != 2 || !solve_normal_block(c, terms, a, b)) {
@@ -226,11 +227,11 @@ void solve_rolling(ContactConstraint& c, BodyState& a, BodyState& b, float norma
 }  // namespace
 
 void solve_contacts(std::vector<ContactConstraint>& constraints, std::vector<BodyState>& states, float inv_h,
-                    const ContactSolverSettings& settings, bool use_bias) {
+                    const ContactSolverSettings& settings, bool use_bias, float elapsed) {
     for (ContactConstraint& c : constraints) {
         BodyState& a = states[c.state_a];
         BodyState& b = states[c.state_b];
-        const float normal_total = solve_normal(c, a, b, inv_h, settings, use_bias);
+        const float normal_total = solve_normal(c, a, b, inv_h, settings, use_bias, elapsed);
         solve_friction(c, a, b);
         solve_rolling(c, a, b, normal_total);
     }
@@ -240,32 +241,52 @@ float separation_of(const ContactConstraint& c, const ContactConstraintPoint& p,
     return current_separation(p, c.normal, states[c.state_a], states[c.state_b]);
 }
 
+namespace {
+
+// Slow impacts do not bounce (resting contacts would never settle), nor do points that
+// never pushed (a speculative gap that did not close).
+bool bounces(const ContactConstraint& c, const ContactConstraintPoint& p, float threshold) {
+    return c.restitution != 0.0f && p.relative_velocity < -threshold && p.max_normal_impulse != 0.0f;
+}
+
+// Bouncing points aim at vn = -e v_impact (bias e v_impact on a rigid point); the other
+// points that pushed during the step keep their bodies from moving into each other.
+void restitution_pass(ContactConstraint& c, BodyState& a, BodyState& b, float threshold) {
+    PointTerms terms[2];
+    bool active[2] = {false, false};
+    for (int32_t i = 0; i < c.point_count; ++i) {
+        const ContactConstraintPoint& p = c.points[i];
+        active[i] = p.max_normal_impulse != 0.0f;
+        terms[i].bias = bounces(c, p, threshold) ? c.restitution * p.relative_velocity : 0.0f;
+    }
+    // Both points together, or a face bouncing off a face would start to spin.
+    if (c.point_count == 2 && active[0] && active[1] && solve_normal_block(c, terms, a, b)) {
+        return;
+    }
+    for (int32_t i = 0; i < c.point_count; ++i) {
+        if (active[i]) {
+            solve_normal_point(c, c.points[i], terms[i], a, b);
+        }
+    }
+}
+
+}  // namespace
+
+// Only when something bounces, and then over every contact that pushed, a few times: a
+// ball bouncing off a row of touching balls must push the whole row, not bounce as if
+// its neighbour were free (that would create energy).
 void apply_restitution(std::vector<ContactConstraint>& constraints, std::vector<BodyState>& states,
                        const ContactSolverSettings& settings) {
-    for (ContactConstraint& c : constraints) {
-        if (c.restitution == 0.0f) {
-            continue;
-        }
-        BodyState& a = states[c.state_a];
-        BodyState& b = states[c.state_b];
-        // Slow impacts do not bounce (resting contacts would never settle), nor do points
-        // that never pushed (a speculative gap that did not close). The target is
-        // vn = -e vn_before: bias e vn_before on a rigid point.
-        PointTerms terms[2];
-        bool bounces[2] = {false, false};
+    bool any = false;
+    for (const ContactConstraint& c : constraints) {
         for (int32_t i = 0; i < c.point_count; ++i) {
-            const ContactConstraintPoint& p = c.points[i];
-            bounces[i] = p.relative_velocity < -settings.restitution_threshold && p.max_normal_impulse != 0.0f;
-            terms[i].bias = c.restitution * p.relative_velocity;
+            any = any || bounces(c, c.points[i], settings.restitution_threshold);
         }
-        // Both points together, or a face bouncing off a face would start to spin.
-        if (c.point_count == 2 && bounces[0] && bounces[1] && solve_normal_block(c, terms, a, b)) {
-            continue;
-        }
-        for (int32_t i = 0; i < c.point_count; ++i) {
-            if (bounces[i]) {
-                solve_normal_point(c, c.points[i], terms[i], a, b);
-            }
+    }
+    constexpr int32_t restitution_iterations = 4;
+    for (int32_t iteration = 0; any && iteration < restitution_iterations; ++iteration) {
+        for (ContactConstraint& c : constraints) {
+            restitution_pass(c, states[c.state_a], states[c.state_b], settings.restitution_threshold);
         }
     }
 }

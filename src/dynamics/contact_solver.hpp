@@ -31,10 +31,10 @@ struct ContactConstraintPoint {
     Vec2 anchor_a, anchor_b;         // from each centre of mass to the point, when prepared
     float base_separation = 0.0f;    // separation minus dot(anchor_b - anchor_a, normal)
     float relative_velocity = 0.0f;  // normal speed at impact, for restitution
-    float last_normal_speed = 0.0f;  // normal speed one substep earlier, while approaching
     float normal_mass = 0.0f, tangent_mass = 0.0f;
     float normal_impulse = 0.0f, tangent_impulse = 0.0f;
     float max_normal_impulse = 0.0f;  // did the point push at all during the step?
+    float start_speed = 0.0f;         // normal speed when the step began
 };
 
 struct ContactConstraint {
@@ -47,6 +47,7 @@ struct ContactConstraint {
     float tangent_speed = 0.0f;       // surface speed, m/s, along left_perp(normal)
     float rolling_resistance = 0.0f;  // torque arm, m: coefficient x radius
     float rolling_mass = 0.0f, rolling_impulse = 0.0f;
+    float approach_acceleration = 0.0f;  // m/s^2 along -normal from gravity and forces, >= 0
     Softness softness;
     int32_t point_count = 0;
     ContactConstraintPoint points[2];
@@ -61,8 +62,9 @@ struct ContactSolverSettings {
 void prepare_contacts(std::vector<ContactConstraint>& constraints, const std::vector<BodyState>& states);
 void warm_start_contacts(const std::vector<ContactConstraint>& constraints, std::vector<BodyState>& states);
 /// One pass over every contact; use_bias pushes overlap out, without it the pass relaxes.
+/// elapsed: time since the step began, s.
 void solve_contacts(std::vector<ContactConstraint>& constraints, std::vector<BodyState>& states, float inv_h,
-                    const ContactSolverSettings& settings, bool use_bias);
+                    const ContactSolverSettings& settings, bool use_bias, float elapsed);
 /// Separation of a point where the substeps left the two bodies, m.
 float separation_of(const ContactConstraint& c, const ContactConstraintPoint& p, const std::vector<BodyState>& states);
 void apply_restitution(std::vector<ContactConstraint>& constraints, std::vector<BodyState>& states,

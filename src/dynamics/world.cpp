@@ -176,9 +176,6 @@ void World::update_mass(int32_t body) {
             b.mass = 1.0f;
         }
         b.inv_mass = 1.0f / b.mass;
-        for (int32_t s = b.head_shape; s != null_index; s = shapes[s].next_in_body) {
-            b.max_extent = max_of(b.max_extent, extent_from(shapes[s].geometry, b.local_center));
-        }
         if (b.fixed_rotation) {
             b.inertia = 0.0f;  // it never turns
             b.angular_velocity = 0.0f;
@@ -187,6 +184,11 @@ void World::update_mass(int32_t body) {
         } else {
             b.inertia = 0.0f;  // no shapes yet, or a point mass: torque cannot turn it
         }
+    }
+    // How fast the body's farthest point moves when it spins: a spinning kinematic
+    // drum is not resting.
+    for (int32_t s = b.head_shape; s != null_index; s = shapes[s].next_in_body) {
+        b.max_extent = max_of(b.max_extent, extent_from(shapes[s].geometry, b.local_center));
     }
     b.center = transform_point(b.transform, b.local_center);
 }

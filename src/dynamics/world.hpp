@@ -163,6 +163,7 @@ private:
     void solve(float time_step, int32_t substep_count);
     void gather_bodies();
     void gather_constraints(float h);
+    Vec2 free_acceleration(const Body& body, float inv_mass) const;
     void integrate_velocities(float h);
     void integrate_positions(float h);
     void store_impulses();

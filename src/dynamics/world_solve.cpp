@@ -29,6 +29,16 @@ Vec2 limited_velocity(const BodyMotion& m, Vec2 v, Vec2 gravity, float h, float 
 
 }  // namespace
 
+// Gravity and force over mass of a body the solver moves; zero for fixed ones (and
+// finite whatever the force, for the restitution estimate that uses it).
+Vec2 World::free_acceleration(const Body& b, float inv_mass) const {
+    if (b.type != BodyType::dynamic || inv_mass == 0.0f) {
+        return {};
+    }
+    const Vec2 a = b.gravity_scale * settings.gravity + inv_mass * b.force;
+    return is_finite(a) ? a : Vec2{};
+}
+
 void World::solve(float time_step, int32_t substep_count) {
     const float h = time_step / float(substep_count);
     const float inv_h = float(substep_count) / time_step;
@@ -39,9 +49,10 @@ void World::solve(float time_step, int32_t substep_count) {
     for (int32_t i = 0; i < substep_count; ++i) {
         integrate_velocities(h);
         warm_start_contacts(constraints_, states_);
-        solve_contacts(constraints_, states_, inv_h, contact_settings, true);
+        const float elapsed = float(i + 1) * h;
+        solve_contacts(constraints_, states_, inv_h, contact_settings, true, elapsed);
         integrate_positions(h);
-        solve_contacts(constraints_, states_, inv_h, contact_settings, false);
+        solve_contacts(constraints_, states_, inv_h, contact_settings, false, elapsed);
     }
     apply_restitution(constraints_, states_, contact_settings);
     store_impulses();
@@ -97,6 +108,8 @@ void World::gather_constraints(float h) {
         c.inv_inertia_b = c.state_b != fixed_state ? b.inv_inertia : 0.0f;
         c.softness = c.inv_mass_a == 0.0f || c.inv_mass_b == 0.0f ? fixed_soft : soft;
         c.normal = contact.manifold.normal;
+        const Vec2 relative_acceleration = free_acceleration(b, c.inv_mass_b) - free_acceleration(a, c.inv_mass_a);
+        c.approach_acceleration = max_of(-dot(relative_acceleration, c.normal), 0.0f);
         c.friction = contact.friction;
         c.restitution = contact.restitution;
         c.tangent_speed = contact.tangent_speed;
