@@ -1,13 +1,13 @@
 // SPDX-License-Identifier: MIT
 // Contact bookkeeping: creation from broadphase pairs, the narrowphase update with
 // begin/end events, and destruction with the body contact lists kept consistent.
-#include <cfloat>
 #include <cmath>
 
 #include "collision/collision_constants.hpp"
 #include "collision/geometry.hpp"
 
 #include "collision/manifold.hpp"
+#include "dynamics/awake_set.hpp"
 #include "dynamics/world.hpp"
 #include "math/math.hpp"
 
@@ -39,29 +39,15 @@ float speculative_margin(const Body& a, const Body& b, float time_step) {
     return speculative_distance + time_step * approach;
 }
 
-}  // namespace
-
-namespace {
-
 bool is_moving(const Body& b) {
     return b.awake_index != null_index && (b.linear_velocity.x != 0.0f || b.linear_velocity.y != 0.0f || b.angular_velocity != 0.0f);
 }
 
 }  // namespace
 
-void World::add_awake_contact(int32_t contact) {
-    contacts[contact].awake_index = int32_t(awake_contacts_.size());
-    awake_contacts_.push_back(contact);
-}
+void World::add_awake_contact(int32_t contact) { add_to_awake_set(awake_contacts_, contacts, contact); }
 
-void World::remove_awake_contact(int32_t contact) {
-    const int32_t slot = contacts[contact].awake_index;
-    const int32_t last = awake_contacts_.back();
-    awake_contacts_[slot] = last;
-    contacts[last].awake_index = slot;
-    awake_contacts_.pop_back();
-    contacts[contact].awake_index = null_index;
-}
+void World::remove_awake_contact(int32_t contact) { remove_from_awake_set(awake_contacts_, contacts, contact); }
 
 void World::create_contact(int32_t shape_a, int32_t shape_b) {
     if (!pair_set_.insert(pair_key(shape_a, shape_b))) {

@@ -8,24 +8,15 @@
 // bodies, so that waking it is linear in its size. Kinematic bodies do not join
 // islands (they would chain everything they touch into one), but a moving one keeps
 // the islands it touches awake.
+#include "dynamics/awake_set.hpp"
 #include "dynamics/world.hpp"
 #include "math/math.hpp"
 
 namespace i2d {
 
-void World::add_awake_body(int32_t body) {
-    bodies[body].awake_index = int32_t(awake_bodies_.size());
-    awake_bodies_.push_back(body);
-}
+void World::add_awake_body(int32_t body) { add_to_awake_set(awake_bodies_, bodies, body); }
 
-void World::remove_awake_body(int32_t body) {
-    const int32_t slot = bodies[body].awake_index;
-    const int32_t last = awake_bodies_.back();
-    awake_bodies_[slot] = last;
-    bodies[last].awake_index = slot;
-    awake_bodies_.pop_back();
-    bodies[body].awake_index = null_index;
-}
+void World::remove_awake_body(int32_t body) { remove_from_awake_set(awake_bodies_, bodies, body); }
 
 void World::wake_body(int32_t body) {
     Body& b = bodies[body];
@@ -109,30 +100,23 @@ void World::find_islands_to_sleep() {
         const Contact& c = contacts[index];
         const Body& a = bodies[c.edges[0].body];
         const Body& b = bodies[c.edges[1].body];
-        if (links_island(c) && a.type == BodyType::dynamic && b.type == BodyType::dynamic &&
-            a.awake_index != null_index && b.awake_index != null_index) {
+        if (!links_island(c) || a.awake_index == null_index || b.awake_index == null_index) {
+            continue;
+        }
+        if (a.type == BodyType::dynamic && b.type == BodyType::dynamic) {
             const int32_t root_a = island_root(a.awake_index), root_b = island_root(b.awake_index);
             // The smaller index becomes the root: the same scene gives the same islands.
             island_parent_[max_of(root_a, root_b)] = min_of(root_a, root_b);
+        } else if ((a.type == BodyType::kinematic) != (b.type == BodyType::kinematic)) {
+            // A kinematic body shares its rest time with the island it touches.
+            const Body& mover = a.type == BodyType::kinematic ? a : b;
+            const Body& other = a.type == BodyType::kinematic ? b : a;
+            island_rest_[other.awake_index] = min_of(island_rest_[other.awake_index], mover.sleep_time);
         }
     }
     for (int32_t k = 0; k < count; ++k) {
         const int32_t root = island_root(k);
         island_rest_[root] = min_of(island_rest_[root], island_rest_[k]);
-    }
-    // A kinematic body shares its rest time with each island it touches.
-    for (const int32_t index : awake_contacts_) {
-        const Contact& c = contacts[index];
-        const Body& a = bodies[c.edges[0].body];
-        const Body& b = bodies[c.edges[1].body];
-        if (!links_island(c) || a.awake_index == null_index || b.awake_index == null_index ||
-            (a.type == BodyType::kinematic) == (b.type == BodyType::kinematic)) {
-            continue;
-        }
-        const Body& mover = a.type == BodyType::kinematic ? a : b;
-        const Body& other = a.type == BodyType::kinematic ? b : a;
-        const int32_t root = island_root(other.awake_index);
-        island_rest_[root] = min_of(island_rest_[root], mover.sleep_time);
     }
     for (int32_t k = 0; k < count; ++k) {
         falls_asleep_[k] = island_rest_[island_root(k)] >= settings.time_to_sleep ? 1 : 0;
