@@ -17,6 +17,7 @@
 #include "core/pool.hpp"
 #include "dynamics/body.hpp"
 #include "dynamics/body_state.hpp"
+#include "dynamics/constraint_colors.hpp"
 #include "dynamics/contact.hpp"
 #include "dynamics/contact_solver.hpp"
 #include "dynamics/events.hpp"
@@ -163,6 +164,8 @@ private:
     void solve(float time_step, int32_t substep_count);
     void gather_bodies();
     void gather_constraints(float h);
+    void color_constraints();
+    ContactConstraint make_constraint(int32_t contact, const Softness& soft, const Softness& fixed_soft) const;
     Vec2 free_acceleration(const Body& body, float inv_mass) const;
     void integrate_velocities(float h);
     void integrate_positions(float h);
@@ -190,7 +193,10 @@ private:
     std::vector<ShapePairEvent> pending_sensor_ends_;
     // Step scratch, kept between steps so that a steady state allocates nothing.
     std::vector<ShapePairCandidate> new_pairs_;
-    std::vector<ContactConstraint> constraints_;
+    std::vector<ContactConstraint> constraints_;  // in solve order: by colour
+    ConstraintColors colors_;
+    std::vector<int8_t> contact_colors_;  // per awake contact, or -1 when it is not solved
+    std::vector<int32_t> color_starts_;   // per colour: its first slot in constraints_
     std::vector<BodyState> states_;    // per awake body, then one fixed state at the end
     std::vector<BodyMotion> motions_;  // per awake body
     std::vector<int32_t> islands_to_wake_;

@@ -83,50 +83,81 @@ void World::gather_bodies() {
 // Contacts with a static or kinematic body are twice as stiff (Box2D v3's choice): the
 // fixed side cannot give, so the pair has half the mass to move and settles as fast.
 // Stiffness is capped at a quarter of the substep rate, beyond which the implicit
-// spring stops being accurate.
+// spring stops being accurate. Constraints are laid out colour by colour (a counting
+// sort that keeps awake order within a colour), which is the order they are solved in.
 void World::gather_constraints(float h) {
     const float hertz = min_of(settings.contact_hertz, 0.25f / h);
     const Softness soft = make_softness(hertz, settings.contact_damping_ratio, h);
     const Softness fixed_soft = make_softness(2.0f * hertz, settings.contact_damping_ratio, h);
-    const int32_t fixed_state = int32_t(awake_bodies_.size());
-    constraints_.clear();
-    for (const int32_t index : awake_contacts_) {
-        const Contact& contact = contacts[index];
-        if ((contact.flags & contact_sensor) != 0 || contact.manifold.point_count == 0) {
-            continue;
+    color_constraints();
+    constraints_.resize(std::size_t(color_starts_[ConstraintColors::count]));
+    for (std::size_t k = 0; k < awake_contacts_.size(); ++k) {
+        const int32_t color = contact_colors_[k];
+        if (color >= 0) {
+            constraints_[std::size_t(color_starts_[color]++)] = make_constraint(awake_contacts_[k], soft, fixed_soft);
         }
-        ContactConstraint c;
-        c.contact = index;
-        const Body& a = bodies[contact.edges[0].body];
-        const Body& b = bodies[contact.edges[1].body];
-        // A body outside the awake set (static, or asleep until the next wake) is fixed.
-        c.state_a = a.awake_index != null_index ? a.awake_index : fixed_state;
-        c.state_b = b.awake_index != null_index ? b.awake_index : fixed_state;
-        c.inv_mass_a = c.state_a != fixed_state ? a.inv_mass : 0.0f;
-        c.inv_mass_b = c.state_b != fixed_state ? b.inv_mass : 0.0f;
-        c.inv_inertia_a = c.state_a != fixed_state ? a.inv_inertia : 0.0f;
-        c.inv_inertia_b = c.state_b != fixed_state ? b.inv_inertia : 0.0f;
-        c.softness = c.inv_mass_a == 0.0f || c.inv_mass_b == 0.0f ? fixed_soft : soft;
-        c.normal = contact.manifold.normal;
-        const Vec2 relative_acceleration = free_acceleration(b, c.inv_mass_b) - free_acceleration(a, c.inv_mass_a);
-        c.approach_acceleration = max_of(-dot(relative_acceleration, c.normal), 0.0f);
-        c.friction = contact.friction;
-        c.restitution = contact.restitution;
-        c.tangent_speed = contact.tangent_speed;
-        c.rolling_resistance = contact.rolling_resistance;
-        c.rolling_impulse = contact.rolling_impulse;
-        c.point_count = contact.manifold.point_count;
-        for (int32_t i = 0; i < c.point_count; ++i) {
-            const ManifoldPoint& mp = contact.manifold.points[i];
-            ContactConstraintPoint& p = c.points[i];
-            p.anchor_a = mp.point - a.center;
-            p.anchor_b = mp.point - b.center;
-            p.base_separation = -mp.penetration - dot(p.anchor_b - p.anchor_a, c.normal);
-            p.normal_impulse = contact.impulses[i].normal;
-            p.tangent_impulse = contact.impulses[i].tangent;
-        }
-        constraints_.push_back(c);
     }
+}
+
+// A colour for every awake contact the solver will see, and where each colour starts.
+// A body outside the awake set (static, or asleep until the next wake) is fixed, and so
+// is a kinematic one: contacts never move it.
+void World::color_constraints() {
+    colors_.reset(int32_t(awake_bodies_.size()));
+    contact_colors_.resize(awake_contacts_.size());
+    color_starts_.assign(ConstraintColors::count + 1, 0);
+    const auto moving_state = [](const Body& b) {
+        return b.awake_index != null_index && b.type == BodyType::dynamic ? b.awake_index : ConstraintColors::null_state;
+    };
+    for (std::size_t k = 0; k < awake_contacts_.size(); ++k) {
+        const Contact& contact = contacts[awake_contacts_[k]];
+        int32_t color = -1;
+        if ((contact.flags & contact_sensor) == 0 && contact.manifold.point_count != 0) {
+            color = colors_.assign(moving_state(bodies[contact.edges[0].body]),
+                                   moving_state(bodies[contact.edges[1].body]));
+            ++color_starts_[color + 1];
+        }
+        contact_colors_[k] = int8_t(color);
+    }
+    for (int32_t color = 0; color < ConstraintColors::count; ++color) {
+        color_starts_[color + 1] += color_starts_[color];
+    }
+}
+
+ContactConstraint World::make_constraint(int32_t index, const Softness& soft, const Softness& fixed_soft) const {
+    const Contact& contact = contacts[index];
+    const int32_t fixed_state = int32_t(awake_bodies_.size());
+    ContactConstraint c;
+    c.contact = index;
+    const Body& a = bodies[contact.edges[0].body];
+    const Body& b = bodies[contact.edges[1].body];
+    // A body outside the awake set (static, or asleep until the next wake) is fixed.
+    c.state_a = a.awake_index != null_index ? a.awake_index : fixed_state;
+    c.state_b = b.awake_index != null_index ? b.awake_index : fixed_state;
+    c.inv_mass_a = c.state_a != fixed_state ? a.inv_mass : 0.0f;
+    c.inv_mass_b = c.state_b != fixed_state ? b.inv_mass : 0.0f;
+    c.inv_inertia_a = c.state_a != fixed_state ? a.inv_inertia : 0.0f;
+    c.inv_inertia_b = c.state_b != fixed_state ? b.inv_inertia : 0.0f;
+    c.softness = c.inv_mass_a == 0.0f || c.inv_mass_b == 0.0f ? fixed_soft : soft;
+    c.normal = contact.manifold.normal;
+    const Vec2 relative_acceleration = free_acceleration(b, c.inv_mass_b) - free_acceleration(a, c.inv_mass_a);
+    c.approach_acceleration = max_of(-dot(relative_acceleration, c.normal), 0.0f);
+    c.friction = contact.friction;
+    c.restitution = contact.restitution;
+    c.tangent_speed = contact.tangent_speed;
+    c.rolling_resistance = contact.rolling_resistance;
+    c.rolling_impulse = contact.rolling_impulse;
+    c.point_count = contact.manifold.point_count;
+    for (int32_t i = 0; i < c.point_count; ++i) {
+        const ManifoldPoint& mp = contact.manifold.points[i];
+        ContactConstraintPoint& p = c.points[i];
+        p.anchor_a = mp.point - a.center;
+        p.anchor_b = mp.point - b.center;
+        p.base_separation = -mp.penetration - dot(p.anchor_b - p.anchor_a, c.normal);
+        p.normal_impulse = contact.impulses[i].normal;
+        p.tangent_impulse = contact.impulses[i].tangent;
+    }
+    return c;
 }
 
 // Gravity, forces and damping for dynamic bodies; the speed limit for every moving body
