@@ -17,7 +17,7 @@ int32_t BroadPhase::create_proxy(const AABB& fat_aabb, uint64_t category_bits, i
 }
 
 void BroadPhase::destroy_proxy(int32_t key) {
-    if (move_set_.remove(uint64_t(key) + 1)) {
+    if (move_set_.remove(key)) {
         // Blank the entry rather than erase it: the buffer's order is the pair order.
         for (int32_t& moved : move_buffer_) {
             if (moved == key) {
@@ -92,9 +92,21 @@ void BroadPhase::sort_spatially(std::vector<MoveEntry>& entries) {
         const Vec2 c = center(e.box) - bounds.lower;
         e.morton = spread_bits(uint32_t(c.x * sx)) | (spread_bits(uint32_t(c.y * sy)) << 1);
     }
-    std::sort(entries.begin(), entries.end(), [](const MoveEntry& l, const MoveEntry& r) {
-        return l.morton != r.morton ? l.morton < r.morton : l.key < r.key;
-    });
+    // Least significant byte first; each pass is stable, so the result is too.
+    sort_scratch_.resize(entries.size());
+    for (int32_t shift = 0; shift < 32; shift += 8) {
+        std::size_t starts[257] = {};
+        for (const MoveEntry& e : entries) {
+            ++starts[((e.morton >> shift) & 0xFFu) + 1];
+        }
+        for (int32_t digit = 0; digit < 256; ++digit) {
+            starts[digit + 1] += starts[digit];
+        }
+        for (const MoveEntry& e : entries) {
+            sort_scratch_[starts[(e.morton >> shift) & 0xFFu]++] = e;
+        }
+        entries.swap(sort_scratch_);
+    }
 }
 
 void BroadPhase::commit_moves() {
@@ -117,7 +129,7 @@ void BroadPhase::commit_moves() {
 }
 
 void BroadPhase::buffer_move(int32_t key) {
-    if (move_set_.insert(uint64_t(key) + 1)) {
+    if (move_set_.insert(key)) {
         move_buffer_.push_back(key);
     }
 }

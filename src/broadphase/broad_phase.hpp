@@ -14,7 +14,7 @@
 #include <vector>
 
 #include "broadphase/dynamic_tree.hpp"
-#include "core/hash_set.hpp"
+#include "core/bit_set.hpp"
 
 namespace i2d {
 
@@ -69,15 +69,17 @@ private:
         int32_t key;
         AABB box;
     };
-    /// Sorts entries along a Morton (Z-order) curve of their boxes' centres, ties by key.
-    static void sort_spatially(std::vector<MoveEntry>& entries);
+    /// Sorts entries along a Morton (Z-order) curve of their boxes' centres; ties keep
+    /// their order. A radix sort: linear in the count, as the rest of the update is.
+    void sort_spatially(std::vector<MoveEntry>& entries);
 
     DynamicTree trees_[int32_t(ProxyKind::count)];
     std::vector<int32_t> move_buffer_;  // proxy keys, in the order they moved
-    HashSet move_set_;                  // the same keys, for "did the other one move too"
+    BitSet move_set_;                   // the same keys, for "did the other one move too"
     std::vector<MoveEntry> pending_moves_;  // re-insertions waiting for commit_moves
     std::vector<int32_t> pending_slot_;     // key -> index in pending_moves_, or null_index
     std::vector<MoveEntry> sorted_moves_;   // the move buffer in query order
+    std::vector<MoveEntry> sort_scratch_;
 };
 
 }  // namespace i2d

@@ -29,7 +29,7 @@ void BroadPhase::update_pairs(Accept&& accept, std::vector<ShapePairCandidate>& 
             tree(other_kind).query(box, ~uint64_t(0), [&](int32_t proxy, int32_t other_shape) {
                 const int32_t other_key = make_proxy_key(proxy, other_kind);
                 // Itself, or a pair both of whose proxies moved: the lower key reports it.
-                if (other_key == key || (other_key < key && move_set_.contains(uint64_t(other_key) + 1))) {
+                if (other_key == key || (other_key < key && move_set_.contains(other_key))) {
                     return true;
                 }
                 const int32_t a = shape < other_shape ? shape : other_shape;
@@ -43,7 +43,7 @@ void BroadPhase::update_pairs(Accept&& accept, std::vector<ShapePairCandidate>& 
     }
     for (const int32_t key : move_buffer_) {
         if (key != null_index) {
-            move_set_.remove(uint64_t(key) + 1);
+            move_set_.remove(key);
         }
     }
     move_buffer_.clear();

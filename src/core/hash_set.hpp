@@ -1,10 +1,11 @@
 // SPDX-License-Identifier: MIT
 // HashSet: a set of 64-bit keys by open addressing with linear probing.
 //
-// Design note: used for shape-pair keys and the move set. Deletion uses backward-shift
-// (no tombstones), so lookups stay short however many pairs come and go. Key 0 marks
-// an empty slot, so callers store key + 1 or keys that are never 0. Iteration order is
-// never used by the step (it depends on the table size): the set answers membership only.
+// Design note: used for shape-pair keys (dense keys such as the move set's proxy keys
+// use a BitSet). Deletion uses backward-shift (no tombstones), so lookups stay short
+// however many pairs come and go. Key 0 marks an empty slot, so callers store key + 1
+// or keys that are never 0. Iteration order is never used by the step (it depends on
+// the table size): the set answers membership only.
 #pragma once
 
 #include <cstdint>
