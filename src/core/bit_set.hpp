@@ -2,8 +2,9 @@
 // BitSet: membership of small non-negative integers (ids, keys), one bit each.
 //
 // Design note: where keys are dense indices, a bit array answers "is it in?" with one
-// load from a table 64 times smaller than a hash set's, which stays in cache when the
-// hash table no longer does (the broadphase asks it for every candidate pair).
+// load and no hashing, from one bit per possible key (32 KB for the 256k proxy keys of
+// 64k shapes), which stays in cache where a hash table of 12k moved keys (256 KB) did
+// not. The broadphase asks it for every candidate pair.
 #pragma once
 
 #include <cstdint>
