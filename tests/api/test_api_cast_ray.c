@@ -10,6 +10,7 @@
 
 #include "api_test_support.h"
 #include "check.h"
+#include "ref_shape.h"
 
 /* ---- Small helpers ---------------------------------------------------------------- */
 
@@ -51,22 +52,6 @@ static int compare_ids(const void* a, const void* b) {
 /* ---- The reference model: every shape's exact geometry, kept by the test ----------- */
 
 enum { MAX_BODIES = 1200, MAX_SHAPES = 2400 };
-
-typedef struct ref_shape {
-    i2d_shape_id id;
-    int body; /* index into scene.bodies */
-    i2d_shape_type type;
-    i2d_vec2 local_center; /* circles; boxes are centred on the body origin */
-    float radius;
-    i2d_vec2 half;
-    i2d_filter filter;
-    bool alive;
-    /* Refreshed from the body transform: the world centre, and the world direction of the
-     * box's local x axis (the body's rotation; local y is (-uy, ux)). Bodies turn, so a
-     * box is axis-aligned only in its own frame. */
-    double cx, cy;
-    double ux, uy;
-} ref_shape;
 
 typedef struct scene {
     i2d_world_id world;
@@ -270,92 +255,6 @@ static int find_shape(const scene* s, i2d_shape_id id) {
 }
 
 /* ---- Brute force rays ----------------------------------------------------------------- */
-
-typedef struct ray_case {
-    double ox, oy, dx, dy;
-} ray_case;
-
-typedef struct ray_hit {
-    bool hit;
-    double t;    /* fraction where the ray enters */
-    int axis;    /* boxes: the slab entered last, in the box's frame: 0 = local x, 1 = local y */
-    bool corner; /* boxes: both slabs entered at nearly the same fraction */
-} ray_hit;
-
-/* A world offset (dx, dy) from the shape's centre, in the box's frame. */
-static void to_box_frame(const ref_shape* s, double dx, double dy, double* lx, double* ly) {
-    *lx = s->ux * dx + s->uy * dy;
-    *ly = -s->uy * dx + s->ux * dy;
-}
-
-static const ray_hit k_no_hit = {false, 0.0, -1, false};
-
-/* Circle: the smaller root of |o + t d - c|^2 = r^2; no hit from inside (closed disc). */
-static ray_hit ray_circle(double cx, double cy, double r, const ray_case* ray) {
-    if (r <= 0.0) {
-        return k_no_hit;
-    }
-    double mx = ray->ox - cx, my = ray->oy - cy;
-    double c = mx * mx + my * my - r * r;
-    if (c <= 0.0) {
-        return k_no_hit;
-    }
-    double a = ray->dx * ray->dx + ray->dy * ray->dy;
-    double b = mx * ray->dx + my * ray->dy;
-    double disc = b * b - a * c;
-    if (a == 0.0 || disc < 0.0) {
-        return k_no_hit;
-    }
-    double t = (-b - sqrt(disc)) / a;
-    if (t < 0.0 || t > 1.0) {
-        return k_no_hit;
-    }
-    ray_hit h = {true, t, -1, false};
-    return h;
-}
-
-/* Box: slab test in the box's frame (a rigid motion keeps the fraction); no hit from
- * inside (closed box). */
-static ray_hit ray_box(const ref_shape* s, double hx, double hy, const ray_case* ray) {
-    if (hx <= 0.0 || hy <= 0.0) {
-        return k_no_hit;
-    }
-    double o[2], d[2];
-    to_box_frame(s, ray->ox - s->cx, ray->oy - s->cy, &o[0], &o[1]);
-    to_box_frame(s, ray->dx, ray->dy, &d[0], &d[1]);
-    double h[2] = {hx, hy};
-    if (fabs(o[0]) <= h[0] && fabs(o[1]) <= h[1]) {
-        return k_no_hit;
-    }
-    double enter[2] = {-INFINITY, -INFINITY};
-    double t_exit = INFINITY;
-    for (int i = 0; i < 2; ++i) {
-        if (d[i] == 0.0) {
-            if (fabs(o[i]) > h[i]) {
-                return k_no_hit;
-            }
-            continue;
-        }
-        double t1 = (-h[i] - o[i]) / d[i];
-        double t2 = (h[i] - o[i]) / d[i];
-        enter[i] = fmin(t1, t2);
-        t_exit = fmin(t_exit, fmax(t1, t2));
-    }
-    int axis = enter[0] >= enter[1] ? 0 : 1;
-    double t = enter[axis];
-    if (t > t_exit || t < 0.0 || t > 1.0) {
-        return k_no_hit;
-    }
-    ray_hit hit = {true, t, axis, fabs(enter[0] - enter[1]) <= 1e-4};
-    return hit;
-}
-
-static ray_hit ray_shape(const ref_shape* s, double delta, const ray_case* ray) {
-    if (s->type == I2D_SHAPE_CIRCLE) {
-        return ray_circle(s->cx, s->cy, s->radius + delta, ray);
-    }
-    return ray_box(s, s->half.x + delta, s->half.y + delta, ray);
-}
 
 /* Float rounding in the library can move a boundary by about 1e-5 m: shapes grown and
  * shrunk by EPS that disagree (or enter more than GRAZING_SPREAD apart) are judged
