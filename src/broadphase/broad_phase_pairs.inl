@@ -26,7 +26,7 @@ void BroadPhase::update_pairs(Accept&& accept, std::vector<ShapePairCandidate>& 
             if (kind != ProxyKind::dynamic_proxy && other_kind != ProxyKind::dynamic_proxy) {
                 continue;
             }
-            tree(other_kind).query(box, ~uint64_t(0), [&](int32_t proxy, int32_t other_shape) {
+            tree(other_kind).query(box, [&](int32_t proxy, int32_t other_shape) {
                 const int32_t other_key = make_proxy_key(proxy, other_kind);
                 // Itself, or a pair both of whose proxies moved: the lower key reports it.
                 if (other_key == key || (other_key < key && move_set_.contains(other_key))) {

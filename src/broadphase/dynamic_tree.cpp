@@ -39,6 +39,7 @@ int32_t DynamicTree::create_proxy(const AABB& fat_aabb, uint64_t category_bits, 
     if (free_proxies_.empty() && proxy_nodes_.size() == proxy_nodes_.capacity()) {
         const size_t capacity = proxy_nodes_.capacity() < 16 ? 16 : 2 * proxy_nodes_.capacity();
         proxy_nodes_.reserve(capacity);
+        proxy_categories_.reserve(capacity);
         free_proxies_.reserve(capacity);
     }
     const int32_t leaf = allocate_node();
@@ -46,14 +47,15 @@ int32_t DynamicTree::create_proxy(const AABB& fat_aabb, uint64_t category_bits, 
     if (free_proxies_.empty()) {
         proxy = int32_t(proxy_nodes_.size());
         proxy_nodes_.push_back(leaf);
+        proxy_categories_.push_back(category_bits);
     } else {
         proxy = free_proxies_.back();
         free_proxies_.pop_back();
         proxy_nodes_[proxy] = leaf;
+        proxy_categories_[proxy] = category_bits;
     }
     TreeNode& node = nodes_[leaf];
     node.aabb = fat_aabb;
-    node.category_bits = category_bits;
     node.user_value() = user_value;
     node.proxy() = proxy;
     node.height = 0;
@@ -152,7 +154,6 @@ void DynamicTree::insert_leaf(int32_t leaf, int32_t start) {
     TreeNode& parent = nodes_[new_parent];
     parent.parent = old_parent;
     parent.aabb = union_of(nodes_[leaf].aabb, nodes_[sibling].aabb);
-    parent.category_bits = nodes_[leaf].category_bits | nodes_[sibling].category_bits;
     parent.height = int16_t(nodes_[sibling].height + 1);
     parent.child1() = sibling;
     parent.child2() = leaf;
@@ -193,20 +194,17 @@ int32_t DynamicTree::remove_leaf(int32_t leaf) {
     return grand == null_index ? sibling : grand;
 }
 
-// Stops at the first ancestor that comes out unchanged (same box, categories, height,
-// no rotation): everything above it depends only on it.
+// Stops at the first ancestor that comes out unchanged (same box, height, no
+// rotation): everything above it depends only on it.
 void DynamicTree::refit_upward(int32_t index, bool rotate_nodes) {
     while (index != null_index) {
         TreeNode& node = nodes_[index];
         const TreeNode& c1 = nodes_[node.child1()];
         const TreeNode& c2 = nodes_[node.child2()];
         const AABB box = union_of(c1.aabb, c2.aabb);
-        const uint64_t category_bits = c1.category_bits | c2.category_bits;
         const int16_t height = int16_t(1 + std::max(c1.height, c2.height));
-        bool changed = !(box.lower == node.aabb.lower && box.upper == node.aabb.upper) ||
-                       category_bits != node.category_bits || height != node.height;
+        bool changed = !(box.lower == node.aabb.lower && box.upper == node.aabb.upper) || height != node.height;
         node.aabb = box;
-        node.category_bits = category_bits;
         node.height = height;
         if (rotate_nodes && rotate(index)) {
             changed = true;
@@ -270,7 +268,6 @@ bool DynamicTree::rotate(int32_t a) {
     const TreeNode& h1 = nodes_[host.child1()];
     const TreeNode& h2 = nodes_[host.child2()];
     host.aabb = union_of(h1.aabb, h2.aabb);
-    host.category_bits = h1.category_bits | h2.category_bits;
     host.height = int16_t(1 + std::max(h1.height, h2.height));
     node.height = int16_t(1 + std::max(nodes_[node.child1()].height, nodes_[node.child2()].height));
     return true;
@@ -456,7 +453,7 @@ int32_t DynamicTree::build_top_down(int32_t* leaves, int32_t count) {
             nodes_[node].parent = task.parent;
         }
     }
-    // Boxes, categories and heights bottom-up: children were allocated after parents, and
+    // Boxes and heights bottom-up: children were allocated after parents, and
     // leaves are final, so a pass in reverse allocation order is not enough in general;
     // recompute by walking up from every leaf instead.
     for (int32_t i = 0; i < count; ++i) {
@@ -468,7 +465,6 @@ int32_t DynamicTree::build_top_down(int32_t* leaves, int32_t count) {
             const TreeNode& c1 = nodes_[n.child1()];
             const TreeNode& c2 = nodes_[n.child2()];
             n.aabb = union_of(c1.aabb, c2.aabb);
-            n.category_bits = c1.category_bits | c2.category_bits;
             n.height = int16_t(1 + std::max(c1.height, c2.height));
         }
     }
@@ -495,7 +491,6 @@ void DynamicTree::validate() const {
         I2D_ASSERT(c1.parent == i && c2.parent == i);
         I2D_ASSERT(n.height == 1 + std::max(c1.height, c2.height));
         I2D_ASSERT(contains(n.aabb, c1.aabb) && contains(n.aabb, c2.aabb));
-        I2D_ASSERT(n.category_bits == (c1.category_bits | c2.category_bits));
     }
     I2D_ASSERT(leaves == proxy_count_);
     int32_t free_count = 0;

@@ -7,7 +7,7 @@
 namespace i2d {
 
 template <class Visit>
-void DynamicTree::query(const AABB& box, uint64_t mask_bits, Visit&& visit) const {
+void DynamicTree::query(const AABB& box, Visit&& visit) const {
     if (root_ == null_index) {
         return;
     }
@@ -16,7 +16,7 @@ void DynamicTree::query(const AABB& box, uint64_t mask_bits, Visit&& visit) cons
     while (!stack.empty()) {
         const int32_t index = stack.pop();
         const TreeNode& node = nodes_[index];
-        if ((node.category_bits & mask_bits) == 0 || !overlaps(node.aabb, box)) {
+        if (!overlaps(node.aabb, box)) {
             continue;
         }
         if (node.is_leaf()) {
@@ -32,6 +32,13 @@ void DynamicTree::query(const AABB& box, uint64_t mask_bits, Visit&& visit) cons
             stack.push(node.child2());
         }
     }
+}
+
+template <class Visit>
+void DynamicTree::query(const AABB& box, uint64_t mask_bits, Visit&& visit) const {
+    query(box, [&](int32_t proxy, int32_t user_value) {
+        return (proxy_categories_[proxy] & mask_bits) == 0 || visit(proxy, user_value);
+    });
 }
 
 namespace tree_detail {
@@ -76,13 +83,15 @@ void DynamicTree::ray_cast(const TreeRayInput& input, uint64_t mask_bits, Visit&
     while (!stack.empty()) {
         const int32_t index = stack.pop();
         const TreeNode& node = nodes_[index];
-        if ((node.category_bits & mask_bits) == 0 ||
-            !tree_detail::segment_touches(current.origin, current.translation, current.max_fraction, node.aabb)) {
+        if (!tree_detail::segment_touches(current.origin, current.translation, current.max_fraction, node.aabb)) {
             continue;
         }
         if (!node.is_leaf()) {
             stack.push(node.child1());
             stack.push(node.child2());
+            continue;
+        }
+        if ((proxy_categories_[node.proxy()] & mask_bits) == 0) {
             continue;
         }
         const float value = visit(static_cast<const TreeRayInput&>(current), node.proxy(), node.user_value());
