@@ -63,57 +63,14 @@ void BroadPhase::enlarge_proxy(int32_t key, const AABB& fat_aabb) {
     buffer_move(key);
 }
 
-namespace {
-
-// Spreads the low 16 bits of v to the even bit positions.
-uint32_t spread_bits(uint32_t v) {
-    v &= 0xFFFF;
-    v = (v | (v << 8)) & 0x00FF00FF;
-    v = (v | (v << 4)) & 0x0F0F0F0F;
-    v = (v | (v << 2)) & 0x33333333;
-    v = (v | (v << 1)) & 0x55555555;
-    return v;
-}
-
-}  // namespace
-
-void BroadPhase::sort_spatially(std::vector<MoveEntry>& entries) {
-    if (entries.empty()) {
-        return;
-    }
-    AABB bounds = entries[0].box;
-    for (const MoveEntry& e : entries) {
-        bounds = union_of(bounds, e.box);
-    }
-    const Vec2 size = bounds.upper - bounds.lower;
-    const float sx = size.x > 0.0f ? 65535.0f / size.x : 0.0f;
-    const float sy = size.y > 0.0f ? 65535.0f / size.y : 0.0f;
-    for (MoveEntry& e : entries) {
-        const Vec2 c = center(e.box) - bounds.lower;
-        e.morton = spread_bits(uint32_t(c.x * sx)) | (spread_bits(uint32_t(c.y * sy)) << 1);
-    }
-    // Least significant byte first; each pass is stable, so the result is too.
-    sort_scratch_.resize(entries.size());
-    for (int32_t shift = 0; shift < 32; shift += 8) {
-        std::size_t starts[257] = {};
-        for (const MoveEntry& e : entries) {
-            ++starts[((e.morton >> shift) & 0xFFu) + 1];
-        }
-        for (int32_t digit = 0; digit < 256; ++digit) {
-            starts[digit + 1] += starts[digit];
-        }
-        for (const MoveEntry& e : entries) {
-            sort_scratch_[starts[(e.morton >> shift) & 0xFFu]++] = e;
-        }
-        entries.swap(sort_scratch_);
-    }
-}
-
 void BroadPhase::commit_moves() {
     pending_moves_.erase(std::remove_if(pending_moves_.begin(), pending_moves_.end(),
                                         [](const MoveEntry& e) { return e.key == null_index; }),
                          pending_moves_.end());
-    sort_spatially(pending_moves_);
+    for (MoveEntry& e : pending_moves_) {
+        e.order = storage_order(e.key);
+    }
+    radix_sort(pending_moves_, move_scratch_, [](const MoveEntry& e) { return e.order; });
     for (const MoveEntry& e : pending_moves_) {
         tree(proxy_kind(e.key)).move_proxy(proxy_id(e.key), e.box);
         pending_slot_[e.key] = null_index;

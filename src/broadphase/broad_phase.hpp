@@ -5,9 +5,10 @@
 // static level costs nothing per step; only proxies whose tight box left their fat box
 // (the move buffer) are queried, against the trees they can collide with (a moved
 // dynamic proxy against all three trees, a moved kinematic or static one against the
-// dynamic tree). Pairs come out in move-buffer order and, per proxy, in tree order: the
-// same inputs give the same pairs in the same order. Existing pairs are skipped through
-// a caller's test (the world keeps the set of shape pairs that have a contact).
+// dynamic tree). Pairs come out in the storage order of the moved proxies (below) and,
+// per proxy, in tree order: the same inputs give the same pairs in the same order.
+// Existing pairs are skipped through a caller's test (the world keeps the set of shape
+// pairs that have a contact).
 #pragma once
 
 #include <cstdint>
@@ -15,6 +16,7 @@
 
 #include "broadphase/dynamic_tree.hpp"
 #include "core/bit_set.hpp"
+#include "core/radix_sort.hpp"
 
 namespace i2d {
 
@@ -40,10 +42,8 @@ public:
     /// before then replaces the box) and queues the proxy for pair finding. Until the
     /// commit the trees and fat_aabb() still show the old box.
     void move_proxy(int32_t key, const AABB& fat_aabb);
-    /// Performs the queued re-insertions in Morton order of their new boxes: neighbours
-    /// in space are re-inserted one after the other and walk tree nodes that are still
-    /// in cache. In caller order (random in space) a large tree misses the cache on
-    /// nearly every node.
+    /// Performs the queued re-insertions in the order their leaves lie in the tree's node
+    /// array (see storage order below).
     void commit_moves();
     /// Grows the fat box in place (or the queued box of a pending move) and queues the
     /// proxy for pair finding.
@@ -64,22 +64,34 @@ public:
 private:
     void buffer_move(int32_t key);
     int32_t& pending_slot(int32_t key);
+    // Storage order: re-insertions and pair queries are made in the order of the
+    // proxies' leaves in the node array, which compact() keeps depth-first. In caller
+    // order (random in space) a tree larger than the cache misses it at nearly every
+    // node; in storage order consecutive proxies are neighbours in the tree, share most
+    // of their paths, and walk memory forwards, which the hardware prefetches. Sorting
+    // by a Morton code of the boxes instead was 19 % slower at 64k moving shapes.
     struct MoveEntry {
-        uint32_t morton;
+        uint32_t order;  // the leaf's storage order
         int32_t key;
         AABB box;
     };
-    /// Sorts entries along a Morton (Z-order) curve of their boxes' centres; ties keep
-    /// their order. A radix sort: linear in the count, as the rest of the update is.
-    void sort_spatially(std::vector<MoveEntry>& entries);
+    struct QueryEntry {
+        uint32_t order;
+        int32_t key;
+    };
+    uint32_t storage_order(int32_t key) const {
+        // Trees of other kinds interleave; each one's leaves still come in order.
+        return uint32_t(tree(proxy_kind(key)).storage_order(proxy_id(key)));
+    }
 
     DynamicTree trees_[int32_t(ProxyKind::count)];
     std::vector<int32_t> move_buffer_;  // proxy keys, in the order they moved
     BitSet move_set_;                   // the same keys, for "did the other one move too"
     std::vector<MoveEntry> pending_moves_;  // re-insertions waiting for commit_moves
     std::vector<int32_t> pending_slot_;     // key -> index in pending_moves_, or null_index
-    std::vector<MoveEntry> sorted_moves_;   // the move buffer in query order
-    std::vector<MoveEntry> sort_scratch_;
+    std::vector<MoveEntry> move_scratch_;
+    std::vector<QueryEntry> queries_;       // the move buffer in storage order
+    std::vector<QueryEntry> query_scratch_;
 };
 
 }  // namespace i2d

@@ -7,14 +7,14 @@ namespace i2d {
 template <class Accept>
 void BroadPhase::update_pairs(Accept&& accept, std::vector<ShapePairCandidate>& out) {
     commit_moves();
-    sorted_moves_.clear();
+    queries_.clear();
     for (const int32_t key : move_buffer_) {
         if (key != null_index) {  // blank: destroyed after it moved
-            sorted_moves_.push_back({0, key, fat_aabb(key)});
+            queries_.push_back({storage_order(key), key});
         }
     }
-    sort_spatially(sorted_moves_);
-    for (const MoveEntry& entry : sorted_moves_) {
+    radix_sort(queries_, query_scratch_, [](const QueryEntry& e) { return e.order; });
+    for (const QueryEntry& entry : queries_) {
         const int32_t key = entry.key;
         const ProxyKind kind = proxy_kind(key);
         const DynamicTree& own = tree(kind);
