@@ -105,8 +105,9 @@ public:
     int32_t proxy_count() const { return proxy_count_; }
     /// Sum of the perimeters of all internal nodes: the quality measure the SAH minimises.
     float total_perimeter() const;
-    /// Aborts on a broken invariant (parent links, heights, boxes that are exactly their children's union, counts); a
-    /// no-op unless the build defines I2D_VALIDATE.
+    /// Aborts on a broken invariant (parent links, heights, counts, internal boxes that
+    /// are not exactly their children's union); a no-op unless the build defines
+    /// I2D_VALIDATE.
     void validate() const;
 
 private:
