@@ -67,13 +67,15 @@ void BroadPhase::commit_moves() {
     pending_moves_.erase(std::remove_if(pending_moves_.begin(), pending_moves_.end(),
                                         [](const MoveEntry& e) { return e.key == null_index; }),
                          pending_moves_.end());
+    // The slots are cleared in the order the moves came in, which is the order of the
+    // keys when bodies move in creation order: a forward walk, not a random one.
     for (MoveEntry& e : pending_moves_) {
         e.order = storage_order(e.key);
+        pending_slot_[e.key] = null_index;
     }
     radix_sort(pending_moves_, move_scratch_, [](const MoveEntry& e) { return e.order; });
     for (const MoveEntry& e : pending_moves_) {
         tree(proxy_kind(e.key)).move_proxy(proxy_id(e.key), e.box);
-        pending_slot_[e.key] = null_index;
     }
     pending_moves_.clear();
     // Once a quarter of a tree has been re-inserted its nodes are scattered again; the

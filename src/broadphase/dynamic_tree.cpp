@@ -328,37 +328,29 @@ void DynamicTree::compact() {
     compact_scratch_.clear();
     compact_scratch_.reserve(size_t(2 * proxy_count_));
     if (root_ != null_index) {
+        // Each stacked node carries its new parent, so links are set as nodes are placed:
+        // no second pass through the old array to translate indices.
         compact_stack_.clear();
-        compact_stack_.push_back(root_);
+        compact_stack_.push_back({root_, null_index});
         while (!compact_stack_.empty()) {
-            const int32_t old_index = compact_stack_.back();
+            const CompactItem item = compact_stack_.back();
             compact_stack_.pop_back();
             const int32_t new_index = int32_t(compact_scratch_.size());
-            compact_scratch_.push_back(nodes_[old_index]);
-            // The old node keeps its new index in `parent` until the links are fixed.
-            nodes_[old_index].parent = new_index;
-            if (!nodes_[old_index].is_leaf()) {
-                compact_stack_.push_back(nodes_[old_index].child2());
-                compact_stack_.push_back(nodes_[old_index].child1());
+            compact_scratch_.push_back(nodes_[item.old_index]);
+            TreeNode& node = compact_scratch_.back();
+            node.parent = item.new_parent;
+            if (item.new_parent != null_index) {
+                TreeNode& parent = compact_scratch_[item.new_parent];
+                // The first child is placed right after its parent.
+                (new_index == item.new_parent + 1 ? parent.child1() : parent.child2()) = new_index;
             }
-        }
-        for (TreeNode& node : compact_scratch_) {
             if (node.is_leaf()) {
-                continue;
-            }
-            node.child1() = nodes_[node.child1()].parent;
-            node.child2() = nodes_[node.child2()].parent;
-        }
-        for (int32_t i = 0; i < int32_t(compact_scratch_.size()); ++i) {
-            TreeNode& node = compact_scratch_[i];
-            if (!node.is_leaf()) {
-                compact_scratch_[node.child1()].parent = i;
-                compact_scratch_[node.child2()].parent = i;
+                proxy_nodes_[node.proxy()] = new_index;
             } else {
-                proxy_nodes_[node.proxy()] = i;
+                compact_stack_.push_back({node.child2(), new_index});
+                compact_stack_.push_back({node.child1(), new_index});
             }
         }
-        compact_scratch_[0].parent = null_index;
         root_ = 0;
     }
     nodes_.swap(compact_scratch_);

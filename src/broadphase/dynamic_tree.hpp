@@ -135,7 +135,11 @@ private:
     std::vector<uint64_t> proxy_categories_;  // proxy id -> category bits
     std::vector<int32_t> free_proxies_;
     std::vector<TreeNode> compact_scratch_;
-    std::vector<int32_t> compact_stack_;
+    struct CompactItem {
+        int32_t old_index;
+        int32_t new_parent;
+    };
+    std::vector<CompactItem> compact_stack_;
     int32_t root_ = null_index;
     int32_t free_list_ = null_index;
     int32_t proxy_count_ = 0;
