@@ -75,7 +75,7 @@ void BroadPhase::commit_moves() {
     }
     radix_sort(pending_moves_, move_scratch_, [](const MoveEntry& e) { return e.order; });
     for (const MoveEntry& e : pending_moves_) {
-        tree(proxy_kind(e.key)).move_proxy(proxy_id(e.key), e.box);
+        tree(proxy_kind(e.key)).move_proxy_at(int32_t(e.order), e.box);
     }
     pending_moves_.clear();
     // Once a quarter of a tree has been re-inserted its nodes are scattered again; the

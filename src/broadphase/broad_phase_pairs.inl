@@ -18,8 +18,8 @@ void BroadPhase::update_pairs(Accept&& accept, std::vector<ShapePairCandidate>& 
         const int32_t key = entry.key;
         const ProxyKind kind = proxy_kind(key);
         const DynamicTree& own = tree(kind);
-        const AABB box = own.fat_aabb(proxy_id(key));
-        const int32_t shape = own.user_value(proxy_id(key));
+        const AABB box = own.fat_aabb_at(int32_t(entry.order));
+        const int32_t shape = own.user_value_at(int32_t(entry.order));
         // Static and kinematic proxies only pair with dynamic ones.
         for (int32_t t = 0; t < int32_t(ProxyKind::count); ++t) {
             const ProxyKind other_kind = ProxyKind(t);

@@ -74,10 +74,14 @@ void DynamicTree::destroy_proxy(int32_t proxy) {
     --proxy_count_;
 }
 
+void DynamicTree::move_proxy(int32_t proxy, const AABB& fat_aabb) {
+    move_proxy_at(proxy_nodes_[proxy], fat_aabb);
+}
+
 // Most moves are short: the leaf goes back in below the lowest former ancestor that
 // still contains its new box, not from the root, which keeps the walk local.
-void DynamicTree::move_proxy(int32_t proxy, const AABB& fat_aabb) {
-    const int32_t leaf = proxy_nodes_[proxy];
+void DynamicTree::move_proxy_at(int32_t leaf, const AABB& fat_aabb) {
+    I2D_ASSERT(nodes_[leaf].is_leaf());
     const int32_t parent = nodes_[leaf].parent;
     if (parent != null_index && contains(nodes_[parent].aabb, fat_aabb)) {
         // Still inside its parent (one move in five): it keeps its sibling, and only

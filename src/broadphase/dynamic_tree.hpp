@@ -72,11 +72,17 @@ public:
     /// when the box only gets bigger. The box must contain the old one.
     void enlarge_proxy(int32_t proxy, const AABB& fat_aabb);
 
-    /// Where the proxy's leaf lies in the node array: handling proxies in this order walks
-    /// memory forwards.
-    int32_t storage_order(int32_t proxy) const { return proxy_nodes_[proxy]; }
     const AABB& fat_aabb(int32_t proxy) const { return nodes_[proxy_nodes_[proxy]].aabb; }
     int32_t user_value(int32_t proxy) const { return nodes_[proxy_nodes_[proxy]].user_value(); }
+
+    /// Where the proxy's leaf lies in the node array: handling proxies in this order walks
+    /// memory forwards. The value also reaches the leaf without the proxy table, whose
+    /// random reads cost a cache miss each in a large tree; it holds until the next
+    /// compact() or rebuild() (moves and inserts leave leaves where they are).
+    int32_t storage_order(int32_t proxy) const { return proxy_nodes_[proxy]; }
+    const AABB& fat_aabb_at(int32_t order) const { return nodes_[order].aabb; }
+    int32_t user_value_at(int32_t order) const { return nodes_[order].user_value(); }
+    void move_proxy_at(int32_t order, const AABB& fat_aabb);
     uint64_t category_bits(int32_t proxy) const { return proxy_categories_[proxy]; }
 
     /// Calls visit(proxy, user_value) for every leaf whose box overlaps `box` (touching

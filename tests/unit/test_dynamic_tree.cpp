@@ -122,6 +122,7 @@ public:
     DynamicTree tree;
     std::vector<Entry> entries;  // index = user value; never reused
     int32_t live = 0;
+    int32_t moves = 0;
 
     int32_t create(const AABB& box, uint64_t category) {
         Entry e;
@@ -139,8 +140,14 @@ public:
         entries[user].alive = false;
         --live;
     }
+    // Every other move goes through the leaf's storage order, as the broadphase moves.
     void move(int32_t user, const AABB& box) {
-        tree.move_proxy(entries[user].proxy, box);
+        const int32_t proxy = entries[user].proxy;
+        if (++moves % 2 == 0) {
+            tree.move_proxy(proxy, box);
+        } else {
+            tree.move_proxy_at(tree.storage_order(proxy), box);
+        }
         entries[user].box = box;
     }
     void enlarge(int32_t user, const AABB& box) {
@@ -186,13 +193,16 @@ public:
         return out;
     }
 
-    // Stored boxes, categories and user values equal the model's; the count matches.
+    // Stored boxes, categories and user values equal the model's, whether reached by proxy
+    // or by storage order; the count matches.
     int32_t check_storage() const {
         int32_t bad = tree.proxy_count() == live ? 0 : 1;
         for (size_t u = 0; u < entries.size(); ++u) {
             const Entry& e = entries[u];
+            const int32_t order = e.alive ? tree.storage_order(e.proxy) : null_index;
             if (e.alive && (!same_box(tree.fat_aabb(e.proxy), e.box) || tree.user_value(e.proxy) != int32_t(u) ||
-                            tree.category_bits(e.proxy) != e.category)) {
+                            tree.category_bits(e.proxy) != e.category || !same_box(tree.fat_aabb_at(order), e.box) ||
+                            tree.user_value_at(order) != int32_t(u))) {
                 ++bad;
             }
         }
