@@ -171,12 +171,7 @@ I2D_API i2d_status i2d_body_set_linear_velocity(i2d_body_id id, i2d_vec2 v) {
         if (!mutable_body(call, id, b) || !call.finite(v, "velocity")) {
             return last_status();
         }
-        if (b.body().type != BodyType::static_body) {
-            if (v.x != 0.0f || v.y != 0.0f) {
-                b.world->wake_body(b.index);
-            }
-            b.body().linear_velocity = capi::to_core(v);
-        }
+        b.world->set_linear_velocity(b.index, capi::to_core(v));
         return I2D_OK;
     });
 }
@@ -194,14 +189,7 @@ I2D_API i2d_status i2d_body_set_angular_velocity(i2d_body_id id, float w) {
         if (!mutable_body(call, id, b) || !call.finite(w, "angular velocity")) {
             return last_status();
         }
-        Body& body = b.body();
-        // Static bodies never move; a fixed-rotation body never turns.
-        if (body.type == BodyType::kinematic || (body.type == BodyType::dynamic && body.inv_inertia != 0.0f)) {
-            if (w != 0.0f) {
-                b.world->wake_body(b.index);
-            }
-            body.angular_velocity = w;
-        }
+        b.world->set_angular_velocity(b.index, w);
         return I2D_OK;
     });
 }
@@ -267,50 +255,17 @@ I2D_API i2d_vec2 i2d_body_get_world_point_velocity(i2d_body_id id, i2d_vec2 worl
 
 namespace {
 
-// Wakes the body if asked; a body left asleep ignores what it is given (Box2D's rule:
-// a sleeping body has no velocity to change, and forces do not pile up while it sleeps).
-bool prepare_to_receive(BodyRef& b, bool wake) {
-    if (b.body().type != BodyType::dynamic) {
-        return false;
+// The core refuses a force or impulse whose result would overflow, changing nothing.
+i2d_status refused_unless(Call& call, bool applied, const char* what) {
+    if (applied) {
+        return I2D_OK;
     }
-    if (wake) {
-        b.world->wake_body(b.index);
-    }
-    return b.world->is_awake(b.index);
+    call.fail(I2D_ERR_INVALID_ARGUMENT, "%s", what);
+    return last_status();
 }
 
-// Forces and torques accumulate until the step; a sum that would overflow is refused so
-// that the body stays as it was.
-i2d_status accumulate(Call& call, BodyRef& b, Vec2 force, float torque, bool wake) {
-    Body& body = b.body();
-    const Vec2 total_force = body.force + force;
-    const float total_torque = body.torque + torque;
-    if (!is_finite(total_force) || !std::isfinite(total_torque)) {
-        call.fail(I2D_ERR_INVALID_ARGUMENT, "the body's accumulated force or torque would overflow");
-        return last_status();
-    }
-    if (prepare_to_receive(b, wake)) {
-        body.force = total_force;
-        body.torque = total_torque;
-    }
-    return I2D_OK;
-}
-
-// An impulse changes both velocities at once; refused whole if either would overflow.
-i2d_status change_velocity(Call& call, BodyRef& b, Vec2 dv, float dw, bool wake) {
-    Body& body = b.body();
-    const Vec2 v = body.linear_velocity + dv;
-    const float w = body.angular_velocity + dw;
-    if (!is_finite(v) || !std::isfinite(w)) {
-        call.fail(I2D_ERR_INVALID_ARGUMENT, "the impulse would make the body's velocity overflow");
-        return last_status();
-    }
-    if (prepare_to_receive(b, wake)) {
-        body.linear_velocity = v;
-        body.angular_velocity = w;
-    }
-    return I2D_OK;
-}
+constexpr const char* force_overflow = "the body's accumulated force or torque would overflow";
+constexpr const char* impulse_overflow = "the impulse would make the body's velocity overflow";
 
 }  // namespace
 
@@ -320,9 +275,8 @@ I2D_API i2d_status i2d_body_apply_force(i2d_body_id id, i2d_vec2 force, i2d_vec2
         if (!mutable_body(call, id, b) || !call.finite(force, "force") || !call.coordinate(point, "point")) {
             return last_status();
         }
-        Body& body = b.body();
-        const Vec2 f = capi::to_core(force);
-        return accumulate(call, b, f, cross(capi::to_core(point) - body.center, f), wake);
+        return refused_unless(call, b.world->apply_force(b.index, capi::to_core(force), capi::to_core(point), wake),
+                              force_overflow);
     });
 }
 
@@ -332,7 +286,8 @@ I2D_API i2d_status i2d_body_apply_force_to_center(i2d_body_id id, i2d_vec2 force
         if (!mutable_body(call, id, b) || !call.finite(force, "force")) {
             return last_status();
         }
-        return accumulate(call, b, capi::to_core(force), 0.0f, wake);
+        return refused_unless(call, b.world->apply_force_to_center(b.index, capi::to_core(force), wake),
+                              force_overflow);
     });
 }
 
@@ -342,7 +297,7 @@ I2D_API i2d_status i2d_body_apply_torque(i2d_body_id id, float torque, bool wake
         if (!mutable_body(call, id, b) || !call.finite(torque, "torque")) {
             return last_status();
         }
-        return accumulate(call, b, Vec2{}, torque, wake);
+        return refused_unless(call, b.world->apply_torque(b.index, torque, wake), force_overflow);
     });
 }
 
@@ -352,10 +307,9 @@ I2D_API i2d_status i2d_body_apply_linear_impulse(i2d_body_id id, i2d_vec2 impuls
         if (!mutable_body(call, id, b) || !call.finite(impulse, "impulse") || !call.coordinate(point, "point")) {
             return last_status();
         }
-        Body& body = b.body();
-        const Vec2 j = capi::to_core(impulse);
-        return change_velocity(call, b, body.inv_mass * j, body.inv_inertia * cross(capi::to_core(point) - body.center, j),
-                               wake);
+        return refused_unless(
+            call, b.world->apply_linear_impulse(b.index, capi::to_core(impulse), capi::to_core(point), wake),
+            impulse_overflow);
     });
 }
 
@@ -365,8 +319,7 @@ I2D_API i2d_status i2d_body_apply_angular_impulse(i2d_body_id id, float impulse,
         if (!mutable_body(call, id, b) || !call.finite(impulse, "impulse")) {
             return last_status();
         }
-        Body& body = b.body();
-        return change_velocity(call, b, Vec2{}, body.inv_inertia * impulse, wake);
+        return refused_unless(call, b.world->apply_angular_impulse(b.index, impulse, wake), impulse_overflow);
     });
 }
 

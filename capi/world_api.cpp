@@ -81,7 +81,7 @@ I2D_API i2d_world_id i2d_world_create(const i2d_world_def* def) {
         f.world_slot = ref.slot;
         f.world_generation = ref.generation;
         const i2d_world_id id = make_world_id(f);
-        world->id_encoder = {encode_body, encode_shape, id.bits};
+        world->set_id_encoder(IdEncoder{encode_body, encode_shape, id.bits});
         world.release();
         return id;
     });
@@ -129,8 +129,7 @@ I2D_API i2d_status i2d_world_set_gravity(i2d_world_id id, i2d_vec2 gravity) {
         if (!call.world(id, w) || !call.unlocked(*w.world) || !call.finite(gravity, "gravity")) {
             return last_status();
         }
-        w.world->settings.gravity = capi::to_core(gravity);
-        w.world->wake_all();  // resting bodies must feel the new gravity
+        w.world->set_gravity(capi::to_core(gravity));
         return I2D_OK;
     });
 }

@@ -2,7 +2,8 @@
 // Body: a rigid body's state and settings, kept in the world's body pool.
 //
 // Design note: the pool keeps every body; the step copies the awake ones into dense
-// solver arrays (body_state.hpp) and back, so the substeps never touch this. The origin
+// solver arrays (body_state.hpp) and back, so the substeps never touch this. Islands
+// (island.hpp) link the bodies that touch one another, so that they sleep together. The origin
 // (transform.p) and the centre of mass (center) are both kept: the solver moves the
 // centre, users place the origin, and transform.p = center - rotate(q, local_center).
 #pragma once
@@ -55,9 +56,10 @@ struct Body {
     Transform step_start;  // to tell whether the body moved or turned during the step
     float max_extent = 0.0f;  // farthest shape point from the centre of mass, m
     float sleep_time = 0.0f;  // how long the body has been resting, s
-    int32_t awake_index = null_index;      // in the world's awake set; null when static or asleep
-    int32_t sleeping_island = null_index;  // the island it sleeps in
-    int32_t next_in_island = null_index;   // links the bodies of a sleeping island
+    int32_t awake_index = null_index;  // in the awake body list; null when static or asleep
+    int32_t island = null_index;       // every moving body has one; static bodies none
+    int32_t island_prev = null_index, island_next = null_index;  // the island's body list
+    int32_t move_event = null_index;   // its body move event of the last step, if any
 };
 
 }  // namespace i2d

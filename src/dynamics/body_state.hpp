@@ -29,6 +29,7 @@ struct BodyMotion {
     float inv_mass = 0.0f, inv_inertia = 0.0f;
     float gravity_scale = 1.0f;
     float linear_damping = 0.0f, angular_damping = 0.0f;
+    Vec2 free_acceleration;  // gravity and force over mass, m/s^2; zero unless dynamic
     bool is_dynamic = false;
 };
 

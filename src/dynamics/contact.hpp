@@ -1,14 +1,16 @@
 // SPDX-License-Identifier: MIT
 // Contact: one per pair of shapes whose fat boxes overlap, kept from step to step.
 //
-// Design note: contacts live in a pool and are found by shape pair through a hash set of
-// pair keys (the world's), so that the broadphase can skip known pairs in O(1). Each
-// body links its contacts through two edges per contact (index links, Box2D's contact
-// edges), so destroying a body or shape finds its contacts without a scan. The manifold
-// carries the accumulated impulses of each point, matched by feature id when the
-// manifold is updated, which is what warm starting feeds on. A contact is in the world's
-// awake set while one of its bodies is awake; contacts among sleeping and static bodies
-// are left out, so that a sleeping pile costs nothing.
+// Design note: contacts live in the contact set's pool and are found by shape pair
+// through its hash set of pair keys, so that the broadphase can skip known pairs in
+// O(1). Each body links its contacts through two edges per contact (index links, Box2D's
+// contact edges), so destroying a body or shape finds its contacts without a scan. A
+// contact's points keep their anchors on the two bodies (from each centre of mass, in
+// world orientation, when the manifold was made) and the accumulated impulses, matched
+// by feature id when the manifold is remade, which is what warm starting feeds on. The
+// narrowphase also caches what the solver needs of the bodies (their places in the
+// solver's state array, whether the contact can move them), so that colouring and
+// preparing constraints read the contact and nothing else.
 #pragma once
 
 #include <cstdint>
@@ -25,6 +27,10 @@ enum ContactFlags : uint32_t {
                                       // sensor contact, the visitor enables sensor events)
     contact_touching_at_start = 1u << 3,  // touching when the step began
     contact_disjoint = 1u << 4,           // fat boxes apart: destroyed at the end of the step
+    contact_island_link = 1u << 5,        // joins its two bodies' islands (solid, has points,
+                                          // both bodies dynamic)
+    contact_moves_a = 1u << 6,            // the solver may move body A (dynamic and awake)
+    contact_moves_b = 1u << 7,
 };
 
 /// A contact's link in one of its bodies' contact lists; keys are (contact << 1) | edge.
@@ -34,28 +40,38 @@ struct ContactEdge {
     int32_t next_key = null_index;
 };
 
-struct ContactImpulse {
-    float normal = 0.0f;
-    float tangent = 0.0f;
+inline int32_t contact_of_key(int32_t key) { return key >> 1; }
+inline int32_t edge_of_key(int32_t key) { return key & 1; }
+
+struct ContactPoint {
+    Vec2 anchor_a, anchor_b;      // from each centre of mass to the point, m, world orientation
+    float separation = 0.0f;      // m, negative when overlapping, at the start of the step
+    float normal_impulse = 0.0f;  // accumulated, N s
+    float tangent_impulse = 0.0f;
+    uint32_t id = 0;              // feature key, stable while the same features touch
 };
 
 struct Contact {
     int32_t shape_a = null_index, shape_b = null_index;  // shape_a < shape_b
     ContactEdge edges[2];                                // [0] body of A, [1] body of B
-    Manifold manifold;
-    ContactImpulse impulses[2];                          // per manifold point
+    Vec2 normal;                                         // unit, from A to B
+    int32_t point_count = 0;
+    ContactPoint points[2];
     float rolling_impulse = 0.0f;
     // Material, mixed from the shapes' at every narrowphase update so that changing a
     // shape's friction or restitution takes effect on contacts it already has.
     float friction = 0.0f, restitution = 0.0f;
     float rolling_resistance = 0.0f;  // torque arm, m
-    float tangent_speed = 0.0f;       // m/s along left_perp(manifold normal)
+    float tangent_speed = 0.0f;       // m/s along left_perp(normal)
     uint32_t flags = 0;
-    int32_t awake_index = null_index;  // in the world's awake contact set, if there
+    int32_t awake_index = null_index;  // in the awake contact list, if there
+    // The bodies' places in the solver's state array this step (null when fixed).
+    int32_t state_a = null_index, state_b = null_index;
 };
 
-/// Replaces the manifold and carries each point's impulses over from the old point with
-/// the same feature id (new points start from zero).
-void update_manifold(Contact& contact, const Manifold& fresh);
+/// Replaces the contact's points by those of a fresh world-space manifold, anchored at the
+/// bodies' centres of mass, and carries each point's impulses over from the old point
+/// with the same feature id (new points start from zero).
+void update_points(Contact& contact, const Manifold& fresh, Vec2 center_a, Vec2 center_b);
 
 }  // namespace i2d

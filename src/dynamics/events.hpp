@@ -31,6 +31,13 @@ struct IdEncoder {
     uint64_t (*body)(uint64_t tag, int32_t index, uint16_t generation) = nullptr;
     uint64_t (*shape)(uint64_t tag, int32_t index, uint16_t generation) = nullptr;
     uint64_t tag = 0;
+
+    uint64_t body_id(int32_t index, uint16_t generation) const {
+        return body ? body(tag, index, generation) : (uint64_t(generation) << 32) | uint32_t(index);
+    }
+    uint64_t shape_id(int32_t index, uint16_t generation) const {
+        return shape ? shape(tag, index, generation) : (uint64_t(generation) << 32) | uint32_t(index);
+    }
 };
 
 struct WorldEvents {
@@ -41,6 +48,21 @@ struct WorldEvents {
     void clear() {
         contact_begin.clear(), contact_end.clear(), sensor_begin.clear(), sensor_end.clear();
         body_moves.clear();
+    }
+};
+
+/// The events of the last step, and the ends caused between steps, which wait for the
+/// next step's arrays so that the arrays a caller holds stay valid until then.
+struct EventRecorder {
+    WorldEvents current;
+    std::vector<ShapePairEvent> pending_contact_ends;
+    std::vector<ShapePairEvent> pending_sensor_ends;
+    IdEncoder ids;
+
+    void begin_step() {
+        current.clear();
+        current.contact_end.swap(pending_contact_ends);
+        current.sensor_end.swap(pending_sensor_ends);
     }
 };
 

@@ -1,57 +1,23 @@
 // SPDX-License-Identifier: MIT
-// World lifecycle (bodies, shapes, mass, proxies) and the step.
+// World: creating, changing and destroying bodies and shapes (mass, proxies, waking).
 #include "dynamics/world.hpp"
 
 #include <cfloat>
 #include <cmath>
 
 #include "collision/geometry.hpp"
-#include "core/timer.hpp"
+#include "dynamics/shape_bounds.hpp"
 #include "math/math.hpp"
-#include "dynamics/constants.hpp"
 
 namespace i2d {
 
-namespace {
-
-ProxyKind proxy_kind_of(BodyType type) {
-    switch (type) {
-        case BodyType::static_body: return ProxyKind::static_proxy;
-        case BodyType::kinematic: return ProxyKind::kinematic_proxy;
-        default: return ProxyKind::dynamic_proxy;
-    }
-}
-
-// Static shapes never move, so their fat box is their tight box. A moving shape's box
-// grows by the margin and stretches along the displacement expected over one step, so
-// that a falling body is re-inserted about once a step rather than every substep.
-AABB fatten(const AABB& box, BodyType type, Vec2 displacement) {
-    if (type == BodyType::static_body) {
-        return box;
-    }
-    const Vec2 margin{aabb_margin, aabb_margin};
-    return {min(box.lower, box.lower + displacement) - margin, max(box.upper, box.upper + displacement) + margin};
-}
-
-}  // namespace
-
-World::World(const WorldDef& def) : settings(def) {}
-
-uint64_t World::shape_id(int32_t shape) const {
-    const uint16_t generation = shapes.generation(shape);
-    return id_encoder.shape ? id_encoder.shape(id_encoder.tag, shape, generation)
-                            : (uint64_t(generation) << 32) | uint32_t(shape);
-}
-
-uint64_t World::body_id(int32_t body) const {
-    const uint16_t generation = bodies.generation(body);
-    return id_encoder.body ? id_encoder.body(id_encoder.tag, body, generation)
-                           : (uint64_t(generation) << 32) | uint32_t(body);
-}
+World::World(const WorldDef& def)
+    : settings(def),
+      contacts_(settings, bodies, shapes, broad_phase_, islands_, events_),
+      islands_(bodies, contacts_),
+      solver_(SolverLinks{settings, bodies, shapes, contacts_, islands_, broad_phase_, events_}) {}
 
 int32_t World::create_body(const BodyDef& def) {
-    // Room in the awake set for every body slot first, so that waking never allocates.
-    awake_bodies_.reserve(std::size_t(bodies.capacity()) + 1);
     const int32_t index = bodies.allocate();
     if (index == null_index) {
         return null_index;
@@ -70,7 +36,7 @@ int32_t World::create_body(const BodyDef& def) {
     b.user_data = def.user_data;
     update_mass(index);
     if (b.type != BodyType::static_body) {
-        add_awake_body(index);
+        islands_.add_body(index);
     }
     return index;
 }
@@ -81,8 +47,8 @@ void World::destroy_body(int32_t body) {
     while (bodies[body].head_shape != null_index) {
         destroy_shape(bodies[body].head_shape);
     }
-    if (bodies[body].awake_index != null_index) {
-        remove_awake_body(body);
+    if (bodies[body].type != BodyType::static_body) {
+        islands_.remove_body(body);
     }
     bodies.free(body);
 }
@@ -130,7 +96,7 @@ int32_t World::create_shape(int32_t body, const ShapeDef& def, const Geometry& g
 
 void World::destroy_shape(int32_t shape) {
     wake_body(shapes[shape].body);
-    destroy_contacts_of_shape(shape, false);
+    contacts_.destroy_contacts_of_shape(shape, false);
     const Shape& s = shapes[shape];
     broad_phase_.destroy_proxy(s.proxy_key);
     Body& b = bodies[s.body];
@@ -193,34 +159,13 @@ void World::update_mass(int32_t body) {
     b.center = transform_point(b.transform, b.local_center);
 }
 
-// Tight boxes follow the body; a shape whose tight box left its fat box is re-inserted
-// with a new fat box and queued for pair finding.
-void World::sync_proxies(int32_t body) {
-    const Body& b = bodies[body];
-    const Vec2 displacement = last_time_step_ * b.linear_velocity;
-    for (int32_t s = b.head_shape; s != null_index; s = shapes[s].next_in_body) {
-        Shape& shape = shapes[s];
-        shape.aabb = compute_aabb(shape.geometry, b.transform);
-        if (!contains(broad_phase_.fat_aabb(shape.proxy_key), shape.aabb)) {
-            broad_phase_.move_proxy(shape.proxy_key, fatten(shape.aabb, b.type, displacement));
-        }
-    }
-}
-
 // Before pairs are found: a body whose velocity changed since its box was fattened (a
 // new body, a velocity or impulse set by the caller) must have a box that covers the
 // step ahead, or a fast body could pass through a thin wall in the first step.
 void World::cover_step_ahead(float time_step) {
-    for (const int32_t body : awake_bodies_) {
+    for (const int32_t body : islands_.awake_bodies()) {
         const Body& b = bodies[body];
-        const Vec2 displacement = time_step * b.linear_velocity;
-        for (int32_t s = b.head_shape; s != null_index; s = shapes[s].next_in_body) {
-            const Shape& shape = shapes[s];
-            const AABB ahead{shape.aabb.lower + displacement, shape.aabb.upper + displacement};
-            if (!contains(broad_phase_.fat_aabb(shape.proxy_key), union_of(shape.aabb, ahead))) {
-                broad_phase_.move_proxy(shape.proxy_key, fatten(shape.aabb, b.type, displacement));
-            }
-        }
+        update_shape_bounds(b, shapes, broad_phase_, time_step * b.linear_velocity, true);
     }
     broad_phase_.commit_moves();
 }
@@ -229,12 +174,97 @@ void World::cover_step_ahead(float time_step) {
 // sleeping pile, say).
 void World::set_transform(int32_t body, const Transform& xf) {
     wake_body(body);
-    visit_contacts(body, [this](int32_t, int32_t other) { wake_body(other); });
+    contacts_.visit_contacts(body, [this](int32_t, int32_t other) { wake_body(other); });
     Body& b = bodies[body];
     b.transform = xf;
     b.center = transform_point(xf, b.local_center);
-    sync_proxies(body);
+    update_shape_bounds(b, shapes, broad_phase_, Vec2{}, false);
     broad_phase_.commit_moves();
+}
+
+void World::set_linear_velocity(int32_t body, Vec2 v) {
+    Body& b = bodies[body];
+    if (b.type == BodyType::static_body) {
+        return;
+    }
+    if (v.x != 0.0f || v.y != 0.0f) {
+        wake_body(body);
+    }
+    b.linear_velocity = v;
+}
+
+void World::set_angular_velocity(int32_t body, float w) {
+    Body& b = bodies[body];
+    const bool turns = b.type == BodyType::kinematic || (b.type == BodyType::dynamic && b.inv_inertia != 0.0f);
+    if (!turns) {
+        return;
+    }
+    if (w != 0.0f) {
+        wake_body(body);
+    }
+    b.angular_velocity = w;
+}
+
+// Wakes the body if asked; a body left asleep ignores what it is given.
+bool World::prepare_to_receive(int32_t body, bool wake) {
+    if (bodies[body].type != BodyType::dynamic) {
+        return false;
+    }
+    if (wake) {
+        wake_body(body);
+    }
+    return is_awake(body);
+}
+
+bool World::accumulate(int32_t body, Vec2 force, float torque, bool wake) {
+    Body& b = bodies[body];
+    const Vec2 total_force = b.force + force;
+    const float total_torque = b.torque + torque;
+    if (!is_finite(total_force) || !std::isfinite(total_torque)) {
+        return false;
+    }
+    if (prepare_to_receive(body, wake)) {
+        b.force = total_force;
+        b.torque = total_torque;
+    }
+    return true;
+}
+
+bool World::change_velocity(int32_t body, Vec2 dv, float dw, bool wake) {
+    Body& b = bodies[body];
+    const Vec2 v = b.linear_velocity + dv;
+    const float w = b.angular_velocity + dw;
+    if (!is_finite(v) || !std::isfinite(w)) {
+        return false;
+    }
+    if (prepare_to_receive(body, wake)) {
+        b.linear_velocity = v;
+        b.angular_velocity = w;
+    }
+    return true;
+}
+
+bool World::apply_force(int32_t body, Vec2 force, Vec2 point, bool wake) {
+    return accumulate(body, force, cross(point - bodies[body].center, force), wake);
+}
+
+bool World::apply_force_to_center(int32_t body, Vec2 force, bool wake) { return accumulate(body, force, 0.0f, wake); }
+
+bool World::apply_torque(int32_t body, float torque, bool wake) { return accumulate(body, Vec2{}, torque, wake); }
+
+bool World::apply_linear_impulse(int32_t body, Vec2 impulse, Vec2 point, bool wake) {
+    const Body& b = bodies[body];
+    return change_velocity(body, b.inv_mass * impulse, b.inv_inertia * cross(point - b.center, impulse), wake);
+}
+
+bool World::apply_angular_impulse(int32_t body, float impulse, bool wake) {
+    return change_velocity(body, Vec2{}, bodies[body].inv_inertia * impulse, wake);
+}
+
+// Resting bodies must feel the new gravity.
+void World::set_gravity(Vec2 gravity) {
+    settings.gravity = gravity;
+    wake_all();
 }
 
 // The proxy is re-created because the trees keep category bits for query masks; its
@@ -242,85 +272,9 @@ void World::set_transform(int32_t body, const Transform& xf) {
 void World::set_filter(int32_t shape, const Filter& filter) {
     wake_body(shapes[shape].body);
     shapes[shape].filter = filter;
-    destroy_contacts_of_shape(shape, true);
+    contacts_.destroy_contacts_of_shape(shape, true);
     broad_phase_.destroy_proxy(shapes[shape].proxy_key);
     create_proxy(shape, true);
-}
-
-// Box2D v3's pipeline: pairs from the last step's moves, one narrowphase, the soft step
-// with its substeps, bounds, sleep. Events are gathered along the way.
-void World::step(float time_step, int32_t substep_count) {
-    Timer total, timer;
-    profile_ = StepProfile{};
-    events_.clear();
-    events_.contact_end.swap(pending_contact_ends_);
-    events_.sensor_end.swap(pending_sensor_ends_);
-    if (time_step == 0.0f) {
-        return;  // a paused world: nothing moves, nothing is tested (Box2D's rule)
-    }
-    last_time_step_ = time_step;
-    for (const int32_t body : awake_bodies_) {
-        bodies[body].step_start = bodies[body].transform;
-    }
-    begin_contact_step();
-    profile_.events += timer.lap_ms();
-    cover_step_ahead(time_step);
-    find_new_contacts();
-    profile_.pairs += timer.lap_ms();
-    update_contacts();
-    profile_.collide += timer.lap_ms();
-    solve(time_step, substep_count);
-    profile_.solve += timer.lap_ms();
-    for (const int32_t body : awake_bodies_) {
-        sync_proxies(body);
-    }
-    broad_phase_.commit_moves();
-    profile_.update_bounds += timer.lap_ms();
-    update_sleep_timers(time_step);
-    find_islands_to_sleep();
-    profile_.sleep += timer.lap_ms();
-    update_touching();
-    end_contact_step();
-    report_body_moves();
-    profile_.events += timer.lap_ms();
-    put_marked_islands_to_sleep();
-    profile_.sleep += timer.lap_ms();
-    validate();
-    profile_.step = total.lap_ms();
-}
-
-// Only awake bodies can have moved; a body falling asleep reports even if it did not.
-void World::report_body_moves() {
-    for (int32_t k = 0; k < int32_t(awake_bodies_.size()); ++k) {
-        const int32_t i = awake_bodies_[k];
-        Body& b = bodies[i];
-        const Transform& start = b.step_start;
-        const bool moved = !(b.transform.p == start.p && b.transform.q.c == start.q.c && b.transform.q.s == start.q.s);
-        const bool falls_asleep = falls_asleep_[k] != 0;
-        if (moved || falls_asleep) {
-            events_.body_moves.push_back({b.transform, body_id(i), b.user_data, falls_asleep});
-        }
-        b.force = {};
-        b.torque = 0.0f;
-    }
-}
-
-WorldCounters World::counters() const {
-    WorldCounters c;
-    c.body_count = bodies.count();
-    c.shape_count = shapes.count();
-    c.pair_count = contacts.count();
-    for (int32_t i = 0; i < contacts.capacity(); ++i) {
-        if (contacts.is_live(i) && (contacts[i].flags & (contact_touching | contact_sensor)) == contact_touching) {
-            ++c.contact_count;
-        }
-    }
-    for (int32_t k = 0; k < int32_t(ProxyKind::count); ++k) {
-        c.tree_heights[k] = broad_phase_.tree(ProxyKind(k)).height();
-    }
-    c.awake_body_count = int32_t(awake_bodies_.size());
-    c.sleeping_island_count = sleeping_islands_.count();
-    return c;
 }
 
 }  // namespace i2d

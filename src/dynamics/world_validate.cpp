@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
-// World::validate: cross-checks bodies, shapes, contacts and their links (I2D_VALIDATE).
+// World::validate: cross-checks bodies, shapes, contacts, islands and their links
+// (I2D_VALIDATE).
 #include <cmath>
 
 #include "core/assert.hpp"
@@ -32,6 +33,7 @@ void World::validate() const {
 
         count = 0;
         int32_t prev_key = null_index;
+        const Pool<Contact>& contacts = contacts_.pool();
         for (int32_t key = b.head_contact_key; key != null_index;) {
             const Contact& c = contacts[key >> 1];
             const ContactEdge& edge = c.edges[key & 1];
@@ -43,17 +45,10 @@ void World::validate() const {
         }
         I2D_ASSERT(count == b.contact_count);
         contact_edges_seen += count;
-        validate_sleep_state(i);
-    }
-    for (int32_t k = 0; k < int32_t(awake_bodies_.size()); ++k) {
-        I2D_ASSERT(bodies.is_live(awake_bodies_[k]) && bodies[awake_bodies_[k]].awake_index == k);
-    }
-    for (int32_t k = 0; k < int32_t(awake_contacts_.size()); ++k) {
-        I2D_ASSERT(contacts.is_live(awake_contacts_[k]) && contacts[awake_contacts_[k]].awake_index == k);
+        validate_body(i);
     }
     I2D_ASSERT(shapes_seen == shapes.count());
-    I2D_ASSERT(contact_edges_seen == 2 * contacts.count());
-    I2D_ASSERT(pair_set_.count() == contacts.count());
+    I2D_ASSERT(contact_edges_seen == 2 * contacts_.pool().count());
     for (int32_t i = 0; i < shapes.capacity(); ++i) {
         if (!shapes.is_live(i)) {
             continue;
@@ -66,34 +61,25 @@ void World::validate() const {
         I2D_ASSERT(s.aabb.upper.x <= fat.upper.x && s.aabb.upper.y <= fat.upper.y);
         I2D_ASSERT(broad_phase_.tree(proxy_kind(s.proxy_key)).user_value(proxy_id(s.proxy_key)) == i);
     }
-    for (int32_t i = 0; i < contacts.capacity(); ++i) {
-        if (contacts.is_live(i)) {
-            const Contact& c = contacts[i];
-            I2D_ASSERT(c.shape_a < c.shape_b && shapes.is_live(c.shape_a) && shapes.is_live(c.shape_b));
-            I2D_ASSERT(pair_set_.contains(pair_key(c.shape_a, c.shape_b)));
-            // Exactly the contacts with an awake body are updated each step.
-            const bool has_awake_body = is_awake(c.edges[0].body) || is_awake(c.edges[1].body);
-            I2D_ASSERT(has_awake_body == (c.awake_index != null_index));
-        }
-    }
+    contacts_.validate();
+    islands_.validate();
     for (int32_t k = 0; k < int32_t(ProxyKind::count); ++k) {
         broad_phase_.tree(ProxyKind(k)).validate();
     }
 #endif
 }
 
-// A moving body is either in the awake set or in a live sleeping island, never both;
-// a static one in neither.
-void World::validate_sleep_state(int32_t body) const {
+// A moving body belongs to an island, and one asleep does not move; a static body is
+// in no island and never awake.
+void World::validate_body(int32_t body) const {
 #if defined(I2D_VALIDATE)
     const Body& b = bodies[body];
     if (b.type == BodyType::static_body) {
-        I2D_ASSERT(b.awake_index == null_index && b.sleeping_island == null_index);
+        I2D_ASSERT(b.awake_index == null_index && b.island == null_index);
         return;
     }
-    I2D_ASSERT((b.awake_index == null_index) != (b.sleeping_island == null_index));
-    if (b.sleeping_island != null_index) {
-        I2D_ASSERT(sleeping_islands_.is_live(b.sleeping_island));
+    I2D_ASSERT(b.island != null_index);
+    if (b.awake_index == null_index) {
         I2D_ASSERT(b.linear_velocity == Vec2{} && b.angular_velocity == 0.0f);
     }
 #else

@@ -668,3 +668,39 @@ I2D_TEST(phys_sleep_kinematic_support_wakes_pile) {
     I2D_CHECK_NEAR(d0, expected, 0.02);
     I2D_CHECK_NEAR(d1, expected, 0.02);
 }
+
+I2D_TEST(phys_sleep_island_splits_when_its_middle_goes) {
+    // Three unit boxes side by side on the ground, touching (A | B | C), fall asleep as
+    // one island. Destroying B wakes A and C, which no longer touch: they must fall
+    // asleep again as two islands (the island is split once it wants to sleep), so that
+    // an impulse on A (wake = true) wakes A alone and C stays bitwise still.
+    Scene scene;
+    I2D_REQUIRE(!I2D_IS_NULL(scene.ground(0.0f)));
+    const i2d_body_id a = scene.dynamic_box(i2d_vec2{-1.0f, 0.5f}, 0.5f, 0.5f);
+    const i2d_body_id b = scene.dynamic_box(i2d_vec2{0.0f, 0.5f}, 0.5f, 0.5f);
+    const i2d_body_id c = scene.dynamic_box(i2d_vec2{1.0f, 0.5f}, 0.5f, 0.5f);
+    I2D_REQUIRE(all_valid(Bodies{a, b, c}));
+    I2D_REQUIRE(wait_asleep(scene, Bodies{a, b, c}, 3.0) > 0);
+    const int islands_together = i2d_world_get_counters(scene.world).sleeping_island_count;
+    I2D_CHECK_STATUS(i2d_body_destroy(b), I2D_OK);
+    const bool woke = i2d_body_is_awake(a) && i2d_body_is_awake(c);
+    const double asleep_after = wait_asleep(scene, Bodies{a, c}, 3.0);
+    const int islands_apart = i2d_world_get_counters(scene.world).sleeping_island_count;
+    const Snapshot c_before(Bodies{c});
+    I2D_CHECK_STATUS(i2d_body_apply_linear_impulse(a, i2d_vec2{0, 1}, i2d_body_get_world_center_of_mass(a), true),
+                     I2D_OK);
+    I2D_REQUIRE(scene.step(steps_for(0.2)));
+    const bool a_awake = i2d_body_is_awake(a), c_awake = i2d_body_is_awake(c);
+    const int c_moved = c_before.differ(Snapshot(Bodies{c}), true);
+    fprintf(stderr,
+            "    A|B|C asleep as %d island(s); B destroyed: A and C woke %d, asleep again after %.3f s as %d "
+            "island(s); impulse on A: A awake %d, C awake %d, C moved %d\n",
+            islands_together, woke, asleep_after, islands_apart, a_awake, c_awake, c_moved);
+    I2D_CHECK(islands_together == 1);
+    I2D_CHECK(woke);
+    I2D_CHECK(asleep_after > 0);
+    I2D_CHECK(islands_apart == 2);
+    I2D_CHECK(a_awake);
+    I2D_CHECK(!c_awake);
+    I2D_CHECK(c_moved == 0);
+}

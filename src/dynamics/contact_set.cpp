@@ -1,0 +1,377 @@
+// SPDX-License-Identifier: MIT
+// ContactSet: creation from broadphase pairs, the narrowphase, links into islands, events
+// and destruction with the body contact lists kept consistent.
+#include "dynamics/contact_set.hpp"
+
+#include <cmath>
+
+#include "collision/geometry.hpp"
+#include "collision/manifold.hpp"
+#include "core/assert.hpp"
+#include "dynamics/island.hpp"
+#include "math/math.hpp"
+
+namespace i2d {
+
+namespace {
+
+// A sensor reports overlap only: its gaps (speculative points) do not count.
+Manifold without_speculative_points(Manifold m) {
+    int32_t kept = 0;
+    for (int32_t i = 0; i < m.point_count; ++i) {
+        if (m.points[i].penetration >= 0.0f) {
+            m.points[kept++] = m.points[i];
+        }
+    }
+    m.point_count = kept;
+    return m;
+}
+
+// How far apart the two shapes may be and still meet within the step: the fixed
+// speculative distance plus how far their surfaces can approach in one step (relative
+// speed, and spin times extent). Contacts within it get points the solver can stop at.
+float speculative_margin(const Body& a, const Body& b, float time_step) {
+    const float approach = length(b.linear_velocity - a.linear_velocity) +
+                           std::fabs(a.angular_velocity) * a.max_extent + std::fabs(b.angular_velocity) * b.max_extent;
+    return speculative_distance + time_step * approach;
+}
+
+bool is_moving(const Body& b) {
+    return b.awake_index != null_index && (b.linear_velocity.x != 0.0f || b.linear_velocity.y != 0.0f || b.angular_velocity != 0.0f);
+}
+
+bool is_asleep(const Body& b) { return b.island != null_index && b.awake_index == null_index; }
+
+bool is_solid(const Contact& c) { return (c.flags & contact_sensor) == 0; }
+
+// The solver moves a body only while it is dynamic and awake.
+uint32_t moves_flag(const Body& b, int32_t edge) {
+    const bool moves = b.type == BodyType::dynamic && b.awake_index != null_index;
+    return moves ? (edge == 0 ? uint32_t(contact_moves_a) : uint32_t(contact_moves_b)) : 0u;
+}
+
+void set_solver_state(Contact& c, int32_t edge, const Body& b) {
+    (edge == 0 ? c.state_a : c.state_b) = b.awake_index;
+    const uint32_t flag = edge == 0 ? contact_moves_a : contact_moves_b;
+    c.flags = (c.flags & ~flag) | moves_flag(b, edge);
+}
+
+}  // namespace
+
+void ContactSet::add_awake(int32_t contact) {
+    contacts_[contact].awake_index = int32_t(awake_.size());
+    awake_.push_back(contact);
+}
+
+// O(1): the last awake contact moves into the hole.
+void ContactSet::remove_awake(int32_t contact) {
+    const int32_t slot = contacts_[contact].awake_index;
+    const int32_t last = awake_.back();
+    awake_[std::size_t(slot)] = last;
+    contacts_[last].awake_index = slot;
+    awake_.pop_back();
+    contacts_[contact].awake_index = null_index;
+}
+
+void ContactSet::create_contact(int32_t shape_a, int32_t shape_b) {
+    if (!pair_set_.insert(pair_key(shape_a, shape_b))) {
+        return;  // the pair has a contact already
+    }
+    // Room in the awake list for every contact slot first, so that waking never allocates.
+    awake_.reserve(std::size_t(contacts_.capacity()) + 1);
+    const int32_t index = contacts_.allocate();
+    if (index == null_index) {
+        pair_set_.remove(pair_key(shape_a, shape_b));
+        return;  // 16.7 million contacts: the pair goes without one
+    }
+    const Shape& a = shapes_[shape_a];
+    const Shape& b = shapes_[shape_b];
+    Contact& c = contacts_[index];
+    c.shape_a = shape_a;
+    c.shape_b = shape_b;
+    if (a.is_sensor || b.is_sensor) {
+        const Shape& visitor = a.is_sensor ? b : a;
+        c.flags = contact_sensor | (visitor.enable_sensor_events ? contact_report_events : 0u);
+    } else if (a.enable_contact_events && b.enable_contact_events) {
+        c.flags = contact_report_events;
+    }
+    const int32_t body_of[2] = {a.body, b.body};
+    for (int32_t e = 0; e < 2; ++e) {
+        Body& body = bodies_[body_of[e]];
+        ContactEdge& edge = c.edges[e];
+        edge.body = body_of[e];
+        edge.next_key = body.head_contact_key;
+        if (body.head_contact_key != null_index) {
+            contacts_[contact_of_key(body.head_contact_key)].edges[edge_of_key(body.head_contact_key)].prev_key =
+                (index << 1) | e;
+        }
+        body.head_contact_key = (index << 1) | e;
+        ++body.contact_count;
+    }
+    // A pair found while both bodies rest (a shape created or refiltered beside them)
+    // wakes them, or nothing would ever update it.
+    if (!islands_.is_awake(a.body) && !islands_.is_awake(b.body)) {
+        islands_.wake_body(a.body);
+        islands_.wake_body(b.body);
+    }
+    if (contacts_[index].awake_index == null_index) {
+        add_awake(index);
+    }
+}
+
+// Contact events name the pair in shape order; sensor events name the sensor first.
+ShapePairEvent ContactSet::event_of(const Contact& c) const {
+    const bool sensor_is_b = (c.flags & contact_sensor) != 0 && !shapes_[c.shape_a].is_sensor;
+    const uint64_t a = events_.ids.shape_id(c.shape_a, shapes_.generation(c.shape_a));
+    const uint64_t b = events_.ids.shape_id(c.shape_b, shapes_.generation(c.shape_b));
+    return sensor_is_b ? ShapePairEvent{b, a} : ShapePairEvent{a, b};
+}
+
+// Events compare the end of the step with its start, so that applying a step's begin
+// events and then its end events always gives the true final state.
+void ContactSet::report_touch_changes(const Contact& c, bool touching_now) {
+    if ((c.flags & contact_report_events) == 0) {
+        return;
+    }
+    const bool at_start = (c.flags & contact_touching_at_start) != 0;
+    const bool sensor = (c.flags & contact_sensor) != 0;
+    WorldEvents& e = events_.current;
+    if (!at_start && touching_now) {
+        (sensor ? e.sensor_begin : e.contact_begin).push_back(event_of(c));
+    }
+    if (at_start && !touching_now) {
+        (sensor ? e.sensor_end : e.contact_end).push_back(event_of(c));
+    }
+}
+
+void ContactSet::destroy_contact(int32_t index, bool during_step) {
+    if (!during_step) {
+        // The caller took something away from under or beside these bodies.
+        islands_.wake_body(contacts_[index].edges[0].body);
+        islands_.wake_body(contacts_[index].edges[1].body);
+    }
+    Contact& c = contacts_[index];
+    if (c.flags & contact_island_link) {
+        islands_.unlink(c.edges[0].body);
+    }
+    if (c.awake_index != null_index) {
+        remove_awake(index);
+    }
+    if (during_step) {
+        report_touch_changes(c, false);
+    } else if ((c.flags & contact_touching) && (c.flags & contact_report_events)) {
+        // Between steps the last step reported the pair as touching: it ends now, and
+        // the end waits for the next step's arrays so that the current ones stay valid.
+        const bool sensor = (c.flags & contact_sensor) != 0;
+        (sensor ? events_.pending_sensor_ends : events_.pending_contact_ends).push_back(event_of(c));
+    }
+    for (int32_t e = 0; e < 2; ++e) {
+        const ContactEdge& edge = c.edges[e];
+        Body& body = bodies_[edge.body];
+        if (edge.prev_key != null_index) {
+            contacts_[contact_of_key(edge.prev_key)].edges[edge_of_key(edge.prev_key)].next_key = edge.next_key;
+        } else {
+            body.head_contact_key = edge.next_key;
+        }
+        if (edge.next_key != null_index) {
+            contacts_[contact_of_key(edge.next_key)].edges[edge_of_key(edge.next_key)].prev_key = edge.prev_key;
+        }
+        --body.contact_count;
+    }
+    pair_set_.remove(pair_key(c.shape_a, c.shape_b));
+    contacts_.free(index);
+}
+
+// Called between steps: destroying a shape (all its contacts go), changing its filter
+// (only the contacts the new filter forbids go; the others keep touching, no events).
+void ContactSet::destroy_contacts_of_shape(int32_t shape, bool only_filtered_out) {
+    int32_t key = bodies_[shapes_[shape].body].head_contact_key;
+    while (key != null_index) {
+        const Contact& c = contacts_[contact_of_key(key)];
+        const int32_t next = c.edges[edge_of_key(key)].next_key;
+        const bool involved = c.shape_a == shape || c.shape_b == shape;
+        if (involved && (!only_filtered_out || !should_collide(shapes_[c.shape_a].filter, shapes_[c.shape_b].filter))) {
+            destroy_contact(contact_of_key(key), false);
+        }
+        key = next;
+    }
+}
+
+void ContactSet::body_woke(int32_t body) {
+    visit_contacts(body, [&](int32_t contact, int32_t) {
+        Contact& c = contacts_[contact];
+        if (c.awake_index == null_index) {
+            add_awake(contact);
+        }
+        const int32_t edge = c.edges[0].body == body ? 0 : 1;
+        set_solver_state(c, edge, bodies_[body]);
+    });
+}
+
+void ContactSet::body_slept(int32_t body) {
+    visit_contacts(body, [&](int32_t contact, int32_t other) {
+        if (contacts_[contact].awake_index != null_index && !islands_.is_awake(other)) {
+            remove_awake(contact);
+        }
+    });
+}
+
+void ContactSet::find_new_contacts(BroadPhase& broad_phase) {
+    new_pairs_.clear();
+    broad_phase.update_pairs(
+        [this](int32_t shape_a, int32_t shape_b) {
+            const Shape& a = shapes_[shape_a];
+            const Shape& b = shapes_[shape_b];
+            if (a.body == b.body || (a.is_sensor && b.is_sensor)) {
+                return false;
+            }
+            if (bodies_[a.body].type != BodyType::dynamic && bodies_[b.body].type != BodyType::dynamic) {
+                return false;
+            }
+            return should_collide(a.filter, b.filter) && !pair_set_.contains(pair_key(shape_a, shape_b));
+        },
+        new_pairs_);
+    for (const ShapePairCandidate& pair : new_pairs_) {
+        create_contact(pair.shape_a, pair.shape_b);
+    }
+}
+
+// Once per step over the awake contacts. A contact whose fat boxes stopped overlapping
+// stops touching and is destroyed at the end of the step, so that a pair never has two
+// contacts (and two event histories) in one step. A contact that gains or loses points
+// against a sleeping body wakes it (something arrived or left), as does one whose other
+// body moves (a kinematic platform set going). Touching is cleared here and set again
+// by the solver for the contacts that end the step within the slop.
+void ContactSet::collide(float time_step) {
+    islands_to_wake_.clear();
+    point_changes_.clear();
+    for (const int32_t index : awake_) {
+        Contact& c = contacts_[index];
+        const uint32_t at_start = (c.flags & contact_touching) ? uint32_t(contact_touching_at_start) : 0u;
+        c.flags = (c.flags & ~uint32_t(contact_touching | contact_touching_at_start)) | at_start;
+        const Shape& a = shapes_[c.shape_a];
+        const Shape& b = shapes_[c.shape_b];
+        set_solver_state(c, 0, bodies_[a.body]);
+        set_solver_state(c, 1, bodies_[b.body]);
+        const bool had_points = c.point_count > 0;
+        if (!overlaps(broad_phase_.fat_aabb(a.proxy_key), broad_phase_.fat_aabb(b.proxy_key))) {
+            c.flags |= contact_disjoint;
+            c.point_count = 0;
+        } else if (is_solid(c)) {
+            update_contact(c, a, b, time_step);
+        }
+        if (is_solid(c)) {
+            note_point_change(index, had_points);
+        }
+    }
+}
+
+void ContactSet::note_point_change(int32_t index, bool had_points) {
+    const Contact& c = contacts_[index];
+    const bool has_points = c.point_count > 0;
+    if (!had_points && !has_points) {
+        return;
+    }
+    for (int32_t e = 0; e < 2; ++e) {
+        const Body& body = bodies_[c.edges[e].body];
+        if (is_asleep(body) && (had_points != has_points || is_moving(bodies_[c.edges[e ^ 1].body]))) {
+            islands_to_wake_.push_back(body.island);
+        }
+    }
+    if (had_points != has_points) {
+        point_changes_.push_back(index);
+    }
+}
+
+void ContactSet::update_contact(Contact& c, const Shape& a, const Shape& b, float time_step) {
+    const Body& body_a = bodies_[a.body];
+    const Body& body_b = bodies_[b.body];
+    c.friction = mix(settings_.friction_mixing, a.friction, b.friction);
+    c.restitution = mix(settings_.restitution_mixing, a.restitution, b.restitution);
+    c.rolling_resistance = a.rolling_resistance == 0.0f && b.rolling_resistance == 0.0f
+                               ? 0.0f
+                               : max_of(a.rolling_resistance * rounding_radius(a.geometry),
+                                        b.rolling_resistance * rounding_radius(b.geometry));
+    // Each surface moves counter-clockwise around its own shape: along +left_perp(n)
+    // for A, whose outward normal is n, and along -left_perp(n) for B. No slip between
+    // the moving surfaces means dot(vB - vA, left_perp(n)) = speed A + speed B.
+    c.tangent_speed = a.tangent_speed + b.tangent_speed;
+    const Manifold fresh = collide_shapes(a.geometry, body_a.transform, b.geometry, body_b.transform,
+                                          speculative_margin(body_a, body_b, time_step));
+    update_points(c, fresh, body_a.center, body_b.center);
+}
+
+// Contacts that gained their first point join their bodies' islands; those that lost
+// their last one leave.
+void ContactSet::update_links() {
+    for (const int32_t index : point_changes_) {
+        Contact& c = contacts_[index];
+        const int32_t body_a = c.edges[0].body, body_b = c.edges[1].body;
+        const bool linked = (c.flags & contact_island_link) != 0;
+        const bool joins = bodies_[body_a].type == BodyType::dynamic && bodies_[body_b].type == BodyType::dynamic;
+        if (c.point_count > 0 && !linked && joins) {
+            c.flags |= contact_island_link;
+            islands_.link(body_a, body_b);
+        } else if (c.point_count == 0 && linked) {
+            c.flags &= ~uint32_t(contact_island_link);
+            islands_.unlink(body_a);
+        }
+    }
+}
+
+// A sensor overlap is tested afresh where the step left the bodies. Backwards, because
+// destroying a contact moves the last awake contact into its place.
+void ContactSet::end_step() {
+    for (int32_t k = int32_t(awake_.size()) - 1; k >= 0; --k) {
+        const int32_t index = awake_[std::size_t(k)];
+        Contact& c = contacts_[index];
+        if (c.flags & contact_disjoint) {
+            destroy_contact(index, true);
+            continue;
+        }
+        if (!is_solid(c)) {
+            const Shape& a = shapes_[c.shape_a];
+            const Shape& b = shapes_[c.shape_b];
+            const Manifold m = without_speculative_points(
+                collide_shapes(a.geometry, bodies_[a.body].transform, b.geometry, bodies_[b.body].transform));
+            c.flags |= m.point_count > 0 ? uint32_t(contact_touching) : 0u;
+        }
+        report_touch_changes(c, (c.flags & contact_touching) != 0);
+    }
+}
+
+int32_t ContactSet::touching_count() const {
+    int32_t count = 0;
+    for (int32_t i = 0; i < contacts_.capacity(); ++i) {
+        if (contacts_.is_live(i) && (contacts_[i].flags & (contact_touching | contact_sensor)) == contact_touching) {
+            ++count;
+        }
+    }
+    return count;
+}
+
+void ContactSet::validate() const {
+#if defined(I2D_VALIDATE)
+    for (int32_t k = 0; k < int32_t(awake_.size()); ++k) {
+        I2D_ASSERT(contacts_.is_live(awake_[k]) && contacts_[awake_[k]].awake_index == k);
+    }
+    I2D_ASSERT(pair_set_.count() == contacts_.count());
+    for (int32_t i = 0; i < contacts_.capacity(); ++i) {
+        if (!contacts_.is_live(i)) {
+            continue;
+        }
+        const Contact& c = contacts_[i];
+        I2D_ASSERT(c.shape_a < c.shape_b && shapes_.is_live(c.shape_a) && shapes_.is_live(c.shape_b));
+        I2D_ASSERT(pair_set_.contains(pair_key(c.shape_a, c.shape_b)));
+        // Exactly the contacts with an awake body are updated each step.
+        const bool has_awake_body = islands_.is_awake(c.edges[0].body) || islands_.is_awake(c.edges[1].body);
+        I2D_ASSERT(has_awake_body == (c.awake_index != null_index));
+        // A link joins two bodies of one island.
+        if (c.flags & contact_island_link) {
+            I2D_ASSERT(bodies_[c.edges[0].body].island == bodies_[c.edges[1].body].island);
+        }
+    }
+#endif
+}
+
+}  // namespace i2d

@@ -1,0 +1,110 @@
+// SPDX-License-Identifier: MIT
+// ContactSet: every contact, the pair set that finds them, the awake contact list and the
+// narrowphase that updates their manifolds.
+//
+// Design note: a contact exists while its shapes' fat boxes overlap; it is in the awake
+// list while one of its bodies is awake, and only awake contacts are updated, so that a
+// sleeping pile costs nothing. The narrowphase runs once per step, before the solver,
+// and records what the islands need to hear (contacts that gained or lost points, bodies
+// asleep that something reached); the world passes that on. Touching, for events,
+// describes where the step left the bodies: the solver reports it per contact at the end
+// of the step, and end_step turns changes into begin and end events.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "broadphase/broad_phase.hpp"
+#include "core/hash_set.hpp"
+#include "core/pool.hpp"
+#include "dynamics/body.hpp"
+#include "dynamics/contact.hpp"
+#include "dynamics/events.hpp"
+#include "dynamics/shape.hpp"
+#include "dynamics/world_def.hpp"
+
+namespace i2d {
+
+class Islands;
+
+class ContactSet {
+public:
+    ContactSet(const WorldDef& settings, Pool<Body>& bodies, const Pool<Shape>& shapes, const BroadPhase& broad_phase,
+               Islands& islands, EventRecorder& events)
+        : settings_(settings), bodies_(bodies), shapes_(shapes), broad_phase_(broad_phase), islands_(islands),
+          events_(events) {}
+
+    Pool<Contact>& pool() { return contacts_; }
+    const Pool<Contact>& pool() const { return contacts_; }
+    const std::vector<int32_t>& awake() const { return awake_; }
+
+    /// New pairs from the broadphase's moved proxies; pairs that may not collide (one
+    /// body, two bodies that cannot move each other, two sensors, filters) get none.
+    void find_new_contacts(BroadPhase& broad_phase);
+    /// The narrowphase over the awake contacts; time_step predicts how far bodies can
+    /// approach. Afterwards islands_to_wake() and link_changes() say what changed.
+    void collide(float time_step);
+    const std::vector<int32_t>& islands_to_wake() const { return islands_to_wake_; }
+    /// After the islands woke: contacts that gained or lost points join or leave islands.
+    void update_links();
+    /// Begin and end events from the touching flags the solver left, and destruction of
+    /// the contacts whose fat boxes parted.
+    void end_step();
+
+    /// Destroys the shape's contacts between steps (all, or those its filter now forbids).
+    void destroy_contacts_of_shape(int32_t shape, bool only_filtered_out);
+    /// A body woke: its contacts join the awake list, with its new solver state.
+    void body_woke(int32_t body);
+    /// A body fell asleep: its contacts with nothing awake leave the awake list.
+    void body_slept(int32_t body);
+    /// Calls visit(contact, other_body) for each contact of the body; visit must not
+    /// destroy contacts.
+    template <class Visit>
+    void visit_contacts(int32_t body, Visit&& visit) const {
+        for (int32_t key = bodies_[body].head_contact_key; key != null_index;) {
+            const Contact& c = contacts_[contact_of_key(key)];
+            const int32_t next = c.edges[edge_of_key(key)].next_key;
+            visit(contact_of_key(key), c.edges[edge_of_key(key) ^ 1].body);
+            key = next;
+        }
+    }
+    /// Calls visit(other_body) for each contact that links the body into its island.
+    template <class Visit>
+    void visit_links(int32_t body, Visit&& visit) const {
+        visit_contacts(body, [&](int32_t contact, int32_t other) {
+            if (contacts_[contact].flags & contact_island_link) {
+                visit(other);
+            }
+        });
+    }
+
+    /// Touching contacts (sensors excluded) after the last step.
+    int32_t touching_count() const;
+    void validate() const;
+
+private:
+    void create_contact(int32_t shape_a, int32_t shape_b);
+    void destroy_contact(int32_t contact, bool during_step);
+    void add_awake(int32_t contact);
+    void remove_awake(int32_t contact);
+    void update_contact(Contact& contact, const Shape& a, const Shape& b, float time_step);
+    void note_point_change(int32_t contact, bool had_points);
+    void report_touch_changes(const Contact& contact, bool touching_now);
+    ShapePairEvent event_of(const Contact& contact) const;
+
+    const WorldDef& settings_;
+    Pool<Body>& bodies_;
+    const Pool<Shape>& shapes_;
+    const BroadPhase& broad_phase_;
+    Islands& islands_;
+    EventRecorder& events_;
+    Pool<Contact> contacts_;
+    HashSet pair_set_;  // pair_key of the shapes of every contact
+    std::vector<int32_t> awake_;
+    // Step scratch, kept so that a steady state allocates nothing.
+    std::vector<ShapePairCandidate> new_pairs_;
+    std::vector<int32_t> islands_to_wake_;
+    std::vector<int32_t> point_changes_;  // contacts that gained or lost all their points
+};
+
+}  // namespace i2d

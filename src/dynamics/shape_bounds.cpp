@@ -1,0 +1,39 @@
+// SPDX-License-Identifier: MIT
+// Tight and fat boxes of a body's shapes.
+#include "dynamics/shape_bounds.hpp"
+
+#include "collision/geometry.hpp"
+#include "dynamics/constants.hpp"
+
+namespace i2d {
+
+ProxyKind proxy_kind_of(BodyType type) {
+    switch (type) {
+        case BodyType::static_body: return ProxyKind::static_proxy;
+        case BodyType::kinematic: return ProxyKind::kinematic_proxy;
+        default: return ProxyKind::dynamic_proxy;
+    }
+}
+
+AABB fatten(const AABB& box, BodyType type, Vec2 displacement) {
+    if (type == BodyType::static_body) {
+        return box;
+    }
+    const Vec2 margin{aabb_margin, aabb_margin};
+    return {min(box.lower, box.lower + displacement) - margin, max(box.upper, box.upper + displacement) + margin};
+}
+
+void update_shape_bounds(const Body& body, Pool<Shape>& shapes, BroadPhase& broad_phase, Vec2 displacement,
+                         bool ahead) {
+    for (int32_t s = body.head_shape; s != null_index; s = shapes[s].next_in_body) {
+        Shape& shape = shapes[s];
+        shape.aabb = compute_aabb(shape.geometry, body.transform);
+        const AABB needed = ahead ? union_of(shape.aabb, {shape.aabb.lower + displacement, shape.aabb.upper + displacement})
+                                  : shape.aabb;
+        if (!contains(broad_phase.fat_aabb(shape.proxy_key), needed)) {
+            broad_phase.move_proxy(shape.proxy_key, fatten(shape.aabb, body.type, displacement));
+        }
+    }
+}
+
+}  // namespace i2d

@@ -1,0 +1,294 @@
+// SPDX-License-Identifier: MIT
+// The soft step: gather, colour, substep, write back.
+#include "dynamics/solver.hpp"
+
+#include <cmath>
+
+#include "dynamics/constants.hpp"
+#include "dynamics/contact_set.hpp"
+#include "dynamics/island.hpp"
+#include "dynamics/shape_bounds.hpp"
+#include "math/math.hpp"
+
+namespace i2d {
+
+namespace {
+
+// The float update overflowed or broke the speed limit: redo it in double, where no
+// finite float input can overflow, then scale down to the limit. Rare, so off the fast path.
+Vec2 limited_velocity(const BodyMotion& m, Vec2 v, Vec2 gravity, float h, float max_speed) {
+    double ax = 0.0, ay = 0.0, damping_factor = 1.0;
+    if (m.is_dynamic) {
+        ax = double(h) * (double(m.gravity_scale) * gravity.x + double(m.inv_mass) * m.force.x);
+        ay = double(h) * (double(m.gravity_scale) * gravity.y + double(m.inv_mass) * m.force.y);
+        damping_factor = 1.0 / (1.0 + double(h) * m.linear_damping);
+    }
+    const double vx = (v.x + ax) * damping_factor;
+    const double vy = (v.y + ay) * damping_factor;
+    const double speed = std::sqrt(vx * vx + vy * vy);
+    const double scale = speed > max_speed ? max_speed / speed : 1.0;
+    return {float(vx * scale), float(vy * scale)};
+}
+
+// Gravity and force over mass of a body the solver moves; zero for fixed ones (and
+// finite whatever the force, for the restitution estimate that uses it).
+Vec2 free_acceleration(const Body& b, Vec2 gravity) {
+    if (b.type != BodyType::dynamic || b.inv_mass == 0.0f) {
+        return {};
+    }
+    const Vec2 a = b.gravity_scale * gravity + b.inv_mass * b.force;
+    return is_finite(a) ? a : Vec2{};
+}
+
+}  // namespace
+
+void Solver::step(float time_step, int32_t substep_count) {
+    const float h = time_step / float(substep_count);
+    const float inv_h = float(substep_count) / time_step;
+    gather_bodies();
+    gather_constraints(h);
+    prepare_contacts(constraints_, states_);
+    const WorldDef& s = links_.settings;
+    const ContactSolverSettings contact_settings{s.contact_push_max_speed, s.restitution_threshold};
+    for (int32_t i = 0; i < substep_count; ++i) {
+        integrate_velocities(h);
+        warm_start_contacts(constraints_, states_);
+        const float elapsed = float(i + 1) * h;
+        solve_contacts(constraints_, states_, inv_h, contact_settings, true, elapsed);
+        integrate_positions(h);
+        solve_contacts(constraints_, states_, inv_h, contact_settings, false, elapsed);
+    }
+    apply_restitution(constraints_, states_, contact_settings);
+    store_impulses();
+    finalize_bodies(time_step);
+}
+
+// One state per awake body in awake order, then the shared fixed state.
+void Solver::gather_bodies() {
+    const std::vector<int32_t>& awake = links_.islands.awake_bodies();
+    const std::size_t count = awake.size();
+    states_.resize(count + 1);
+    motions_.resize(count + 1);
+    for (std::size_t k = 0; k < count; ++k) {
+        const Body& b = links_.bodies[awake[k]];
+        states_[k] = BodyState{b.linear_velocity, b.angular_velocity, Vec2{}, Rot{}};
+        BodyMotion& m = motions_[k];
+        m.force = b.force;
+        m.torque = b.torque;
+        m.inv_mass = b.inv_mass;
+        m.inv_inertia = b.inv_inertia;
+        m.gravity_scale = b.gravity_scale;
+        m.linear_damping = b.linear_damping;
+        m.angular_damping = b.angular_damping;
+        m.free_acceleration = free_acceleration(b, links_.settings.gravity);
+        m.is_dynamic = b.type == BodyType::dynamic;
+    }
+    states_[count] = BodyState{};
+    motions_[count] = BodyMotion{};
+}
+
+// Contacts with a static or kinematic body are twice as stiff (Box2D v3's choice): the
+// fixed side cannot give, so the pair has half the mass to move and settles as fast.
+// Stiffness is capped at a quarter of the substep rate, beyond which the implicit
+// spring stops being accurate. Constraints are laid out colour by colour (a counting
+// sort that keeps awake order within a colour), which is the order they are solved in.
+void Solver::gather_constraints(float h) {
+    const WorldDef& s = links_.settings;
+    const float hertz = min_of(s.contact_hertz, 0.25f / h);
+    const Softness soft = make_softness(hertz, s.contact_damping_ratio, h);
+    const Softness fixed_soft = make_softness(2.0f * hertz, s.contact_damping_ratio, h);
+    color_constraints();
+    constraints_.resize(std::size_t(color_starts_[ConstraintColors::count]));
+    const std::vector<int32_t>& awake = links_.contacts.awake();
+    for (std::size_t k = 0; k < awake.size(); ++k) {
+        const int32_t color = contact_colors_[k];
+        if (color >= 0) {
+            constraints_[std::size_t(color_starts_[color]++)] = make_constraint(awake[k], soft, fixed_soft);
+        }
+    }
+}
+
+// A colour for every awake contact the solver will see, and where each colour starts.
+// A body the contact cannot move (static, kinematic, asleep) takes no colour slot.
+void Solver::color_constraints() {
+    const std::vector<int32_t>& awake = links_.contacts.awake();
+    const Pool<Contact>& contacts = links_.contacts.pool();
+    colors_.reset(int32_t(links_.islands.awake_bodies().size()));
+    contact_colors_.resize(awake.size());
+    color_starts_.assign(ConstraintColors::count + 1, 0);
+    for (std::size_t k = 0; k < awake.size(); ++k) {
+        const Contact& contact = contacts[awake[k]];
+        int32_t color = -1;
+        if ((contact.flags & contact_sensor) == 0 && contact.point_count != 0) {
+            color = colors_.assign((contact.flags & contact_moves_a) ? contact.state_a : ConstraintColors::null_state,
+                                   (contact.flags & contact_moves_b) ? contact.state_b : ConstraintColors::null_state);
+            ++color_starts_[color + 1];
+        }
+        contact_colors_[k] = int8_t(color);
+    }
+    for (int32_t color = 0; color < ConstraintColors::count; ++color) {
+        color_starts_[color + 1] += color_starts_[color];
+    }
+}
+
+ContactConstraint Solver::make_constraint(int32_t index, const Softness& soft, const Softness& fixed_soft) const {
+    const Contact& contact = links_.contacts.pool()[index];
+    const int32_t fixed_state = int32_t(states_.size()) - 1;
+    ContactConstraint c;
+    c.contact = index;
+    // A body outside the awake list (static, or asleep) is fixed.
+    c.state_a = contact.state_a != null_index ? contact.state_a : fixed_state;
+    c.state_b = contact.state_b != null_index ? contact.state_b : fixed_state;
+    const BodyMotion& a = motions_[std::size_t(c.state_a)];
+    const BodyMotion& b = motions_[std::size_t(c.state_b)];
+    c.inv_mass_a = a.inv_mass;
+    c.inv_mass_b = b.inv_mass;
+    c.inv_inertia_a = a.inv_inertia;
+    c.inv_inertia_b = b.inv_inertia;
+    c.softness = c.inv_mass_a == 0.0f || c.inv_mass_b == 0.0f ? fixed_soft : soft;
+    c.normal = contact.normal;
+    const Vec2 relative_acceleration = b.free_acceleration - a.free_acceleration;
+    c.approach_acceleration = max_of(-dot(relative_acceleration, c.normal), 0.0f);
+    c.friction = contact.friction;
+    c.restitution = contact.restitution;
+    c.tangent_speed = contact.tangent_speed;
+    c.rolling_resistance = contact.rolling_resistance;
+    c.rolling_impulse = contact.rolling_impulse;
+    c.point_count = contact.point_count;
+    for (int32_t i = 0; i < c.point_count; ++i) {
+        const ContactPoint& cp = contact.points[i];
+        ContactConstraintPoint& p = c.points[i];
+        p.anchor_a = cp.anchor_a;
+        p.anchor_b = cp.anchor_b;
+        p.base_separation = cp.separation - dot(p.anchor_b - p.anchor_a, c.normal);
+        p.normal_impulse = cp.normal_impulse;
+        p.tangent_impulse = cp.tangent_impulse;
+    }
+    return c;
+}
+
+// Gravity, forces and damping for dynamic bodies; the speed limit for every moving body
+// (kinematic ones too: a caller may set any finite velocity).
+void Solver::integrate_velocities(float h) {
+    const Vec2 gravity = links_.settings.gravity;
+    const float max_speed = links_.settings.maximum_linear_speed;
+    const float max_spin = max_rotation_per_substep / h;
+    const std::size_t count = states_.size() - 1;
+    for (std::size_t k = 0; k < count; ++k) {
+        const BodyMotion& m = motions_[k];
+        BodyState& s = states_[k];
+        Vec2 v = s.linear_velocity;
+        float w = s.angular_velocity;
+        if (m.is_dynamic) {
+            v += h * (m.gravity_scale * gravity + m.inv_mass * m.force);
+            w += h * m.inv_inertia * m.torque;
+            // Implicit damping: stable for any damping and step, v -> v / (1 + h c).
+            v = (1.0f / (1.0f + h * m.linear_damping)) * v;
+            w = (1.0f / (1.0f + h * m.angular_damping)) * w;
+        }
+        // NaN-safe: an overflow anywhere above fails this test too.
+        s.linear_velocity = length_squared(v) <= max_speed * max_speed
+                                ? v
+                                : limited_velocity(m, s.linear_velocity, gravity, h, max_speed);
+        // At most a quarter turn per substep: faster spins alias and tunnel.
+        s.angular_velocity = w >= -max_spin && w <= max_spin ? w : (w > 0.0f ? max_spin : -max_spin);
+    }
+}
+
+void Solver::integrate_positions(float h) {
+    const std::size_t count = states_.size() - 1;
+    for (std::size_t k = 0; k < count; ++k) {
+        BodyState& s = states_[k];
+        s.delta_position += h * s.linear_velocity;
+        if (s.angular_velocity != 0.0f) {
+            s.delta_rotation = integrate_rotation(s.delta_rotation, h * s.angular_velocity);
+        }
+    }
+}
+
+// Impulses go back to the contacts for the next step's warm start. A solid contact
+// touches when a point ends the step within the contact slop: its separation follows
+// from the substeps' motion, with no second narrowphase (its speculative points cover
+// the whole step).
+void Solver::store_impulses() {
+    Pool<Contact>& contacts = links_.contacts.pool();
+    const float slop = links_.settings.contact_slop;
+    for (const ContactConstraint& c : constraints_) {
+        Contact& contact = contacts[c.contact];
+        for (int32_t i = 0; i < c.point_count; ++i) {
+            contact.points[i].normal_impulse = c.points[i].normal_impulse;
+            contact.points[i].tangent_impulse = c.points[i].tangent_impulse;
+            if (separation_of(c, c.points[i], states_) <= slop) {
+                contact.flags |= contact_touching;
+            }
+        }
+        contact.rolling_impulse = c.rolling_impulse;
+    }
+}
+
+void Solver::finalize_bodies(float time_step) {
+    const std::size_t count = states_.size() - 1;
+    if (links_.settings.enable_sleep) {
+        links_.islands.begin_rest_times();
+    }
+    for (std::size_t k = 0; k < count; ++k) {
+        finalize_body(int32_t(k), time_step);
+    }
+}
+
+// The body's new pose (bodies that did not turn keep their rotation's exact bits), its
+// shapes' bounds, its rest time and its move event.
+void Solver::finalize_body(int32_t k, float time_step) {
+    const BodyState& s = states_[std::size_t(k)];
+    const int32_t index = links_.islands.awake_bodies()[std::size_t(k)];
+    Body& b = links_.bodies[index];
+    const Transform start = b.transform;
+    b.linear_velocity = s.linear_velocity;
+    b.angular_velocity = s.angular_velocity;
+    b.center += s.delta_position;
+    if (s.delta_rotation.c != 1.0f || s.delta_rotation.s != 0.0f) {
+        b.transform.q = normalize(mul_rot(s.delta_rotation, b.transform.q));
+    }
+    b.transform.p = b.center - rotate(b.transform.q, b.local_center);
+    b.force = {};
+    b.torque = 0.0f;
+    update_shape_bounds(b, links_.shapes, links_.broad_phase, time_step * b.linear_velocity, false);
+
+    const WorldDef& settings = links_.settings;
+    if (settings.enable_sleep) {
+        // A body rests while its fastest point (spin x extent) and its centre stay slow.
+        const float threshold = settings.sleep_speed_threshold;
+        const bool resting = b.enable_sleep && length(b.linear_velocity) <= threshold &&
+                             std::fabs(b.angular_velocity) * b.max_extent <= threshold;
+        b.sleep_time = resting ? b.sleep_time + time_step : 0.0f;
+        links_.islands.note_rest_time(index, b.sleep_time);
+        if (b.type == BodyType::kinematic) {
+            share_kinematic_rest(index);
+        }
+    }
+    const bool moved = !(b.transform.p == start.p && b.transform.q.c == start.q.c && b.transform.q.s == start.q.s);
+    b.move_event = null_index;
+    if (moved) {
+        EventRecorder& events = links_.events;
+        b.move_event = int32_t(events.current.body_moves.size());
+        events.current.body_moves.push_back(
+            {b.transform, events.ids.body_id(index, links_.bodies.generation(index)), b.user_data, false});
+    }
+}
+
+// A moving kinematic body keeps what it touches awake: the islands it touches rest no
+// longer than it does.
+void Solver::share_kinematic_rest(int32_t body) {
+    const float rest = links_.bodies[body].sleep_time;
+    const Pool<Contact>& contacts = links_.contacts.pool();
+    links_.contacts.visit_contacts(body, [&](int32_t contact, int32_t other) {
+        const Contact& c = contacts[contact];
+        const Body& o = links_.bodies[other];
+        if ((c.flags & contact_sensor) == 0 && c.point_count > 0 && o.type == BodyType::dynamic &&
+            o.awake_index != null_index) {
+            links_.islands.note_rest_time(other, rest);
+        }
+    });
+}
+
+}  // namespace i2d

@@ -1,0 +1,74 @@
+// SPDX-License-Identifier: MIT
+// Solver: the soft step over the awake bodies and their contacts, from gathering the
+// bodies' states to writing them back.
+//
+// Design note: the substeps touch only dense arrays the solver owns, indexed by a body's
+// place in the awake list: the states (velocities and motion since the step began) and
+// the motions (what integration needs), plus one shared "fixed" state at the end that
+// stands in for every static or sleeping body. Contacts become constraints laid out
+// colour by colour (constraint_colors.hpp), the order they are solved in. The stage
+// loop is Box2D v3's: per substep integrate velocities, warm start, solve with push-out,
+// integrate positions, relax; then restitution, impulses back to the contacts, and the
+// bodies' final pose, bounds, rest time and move event in one pass over them.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "broadphase/broad_phase.hpp"
+#include "core/pool.hpp"
+#include "dynamics/body.hpp"
+#include "dynamics/body_state.hpp"
+#include "dynamics/constraint_colors.hpp"
+#include "dynamics/contact_solver.hpp"
+#include "dynamics/events.hpp"
+#include "dynamics/shape.hpp"
+#include "dynamics/world_def.hpp"
+
+namespace i2d {
+
+class ContactSet;
+class Islands;
+
+/// What the solver reads and writes outside its own arrays; the world owns all of it.
+struct SolverLinks {
+    const WorldDef& settings;
+    Pool<Body>& bodies;
+    Pool<Shape>& shapes;
+    ContactSet& contacts;
+    Islands& islands;
+    BroadPhase& broad_phase;
+    EventRecorder& events;
+};
+
+class Solver {
+public:
+    explicit Solver(const SolverLinks& links) : links_(links) {}
+
+    /// Steps the awake bodies by time_step in substep_count substeps and leaves them at
+    /// their new poses, with new bounds, rest times and move events; contacts get their
+    /// impulses and touching flags.
+    void step(float time_step, int32_t substep_count);
+
+private:
+    void gather_bodies();
+    void gather_constraints(float h);
+    void color_constraints();
+    ContactConstraint make_constraint(int32_t contact, const Softness& soft, const Softness& fixed_soft) const;
+    void integrate_velocities(float h);
+    void integrate_positions(float h);
+    void store_impulses();
+    void finalize_bodies(float time_step);
+    void finalize_body(int32_t awake_index, float time_step);
+    void share_kinematic_rest(int32_t body);
+
+    SolverLinks links_;
+    std::vector<ContactConstraint> constraints_;  // in solve order: by colour
+    ConstraintColors colors_;
+    std::vector<int8_t> contact_colors_;  // per awake contact, or -1 when it is not solved
+    std::vector<int32_t> color_starts_;   // per colour: its first slot in constraints_
+    std::vector<BodyState> states_;       // per awake body, then the fixed state
+    std::vector<BodyMotion> motions_;     // the same, the fixed one all zero
+};
+
+}  // namespace i2d

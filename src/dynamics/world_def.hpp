@@ -1,0 +1,25 @@
+// SPDX-License-Identifier: MIT
+// WorldDef: a world's settings, as the C API's world def gives them (with their units).
+#pragma once
+
+#include "dynamics/mixing.hpp"
+#include "math/vec2.hpp"
+
+namespace i2d {
+
+struct WorldDef {
+    Vec2 gravity{0.0f, -10.0f};
+    float contact_slop = 0.005f;
+    float contact_hertz = 60.0f;
+    float contact_damping_ratio = 10.0f;
+    float contact_push_max_speed = 3.0f;
+    float restitution_threshold = 1.0f;
+    float maximum_linear_speed = 400.0f;
+    MixingRule friction_mixing = MixingRule::geometric_mean;
+    MixingRule restitution_mixing = MixingRule::minimum;
+    bool enable_sleep = true;
+    float sleep_speed_threshold = 0.05f;
+    float time_to_sleep = 0.5f;
+};
+
+}  // namespace i2d

@@ -1,0 +1,69 @@
+// SPDX-License-Identifier: MIT
+// The step, top-down: Box2D v3's pipeline of pairs, one narrowphase, the soft step with
+// its substeps, bounds, events and sleep.
+#include "core/timer.hpp"
+#include "dynamics/world.hpp"
+
+namespace i2d {
+
+void World::step(float time_step, int32_t substep_count) {
+    Timer total, timer;
+    profile_ = StepProfile{};
+    events_.begin_step();
+    if (time_step == 0.0f) {
+        return;  // a paused world: nothing moves, nothing is tested (Box2D's rule)
+    }
+    cover_step_ahead(time_step);
+    contacts_.find_new_contacts(broad_phase_);
+    profile_.pairs += timer.lap_ms();
+
+    contacts_.collide(time_step);
+    // Waking adds to the awake contacts, so it waits until the narrowphase is done; the
+    // woken contacts' manifolds are current, since sleeping bodies did not move.
+    for (const int32_t island : contacts_.islands_to_wake()) {
+        islands_.wake_island(island);
+    }
+    contacts_.update_links();
+    profile_.collide += timer.lap_ms();
+
+    solver_.step(time_step, substep_count);
+    profile_.solve += timer.lap_ms();
+    broad_phase_.commit_moves();
+    profile_.update_bounds += timer.lap_ms();
+
+    contacts_.end_step();
+    profile_.events += timer.lap_ms();
+    if (settings.enable_sleep) {
+        islands_.sleep_rested_islands(settings.time_to_sleep, [this](int32_t body) { report_falling_asleep(body); });
+    }
+    profile_.sleep += timer.lap_ms();
+    validate();
+    profile_.step = total.lap_ms();
+}
+
+// A body falling asleep reports a move event even if it did not move.
+void World::report_falling_asleep(int32_t body) {
+    Body& b = bodies[body];
+    std::vector<BodyMoveEvent>& moves = events_.current.body_moves;
+    if (b.move_event == null_index) {
+        b.move_event = int32_t(moves.size());
+        moves.push_back({b.transform, events_.ids.body_id(body, bodies.generation(body)), b.user_data, false});
+    }
+    moves[std::size_t(b.move_event)].fell_asleep = true;
+}
+
+WorldCounters World::counters() const {
+    WorldCounters c;
+    c.body_count = bodies.count();
+    c.shape_count = shapes.count();
+    c.pair_count = contacts_.pool().count();
+    c.contact_count = contacts_.touching_count();
+    for (int32_t k = 0; k < int32_t(ProxyKind::count); ++k) {
+        c.tree_heights[k] = broad_phase_.tree(ProxyKind(k)).height();
+    }
+    c.awake_body_count = int32_t(islands_.awake_bodies().size());
+    c.sleeping_island_count = islands_.sleeping_island_count();
+    return c;
+}
+
+}  // namespace i2d
