@@ -22,6 +22,7 @@ I2D_API i2d_world_def i2d_default_world_def(void) {
     def.enable_sleep = core.enable_sleep;
     def.sleep_speed_threshold = core.sleep_speed_threshold;
     def.time_to_sleep = core.time_to_sleep;
+    def.simd_path = I2D_SIMD_AUTOMATIC;
     def.internal_cookie = def_cookie;
     return def;
 }

@@ -24,6 +24,24 @@ bool valid_mixing_rule(Call& call, const i2d_mixing_rule* rule, const char* fiel
                : call.fail(I2D_ERR_INVALID_ARGUMENT, "%s is %d; it must be an i2d_mixing_rule", field, value);
 }
 
+// Read as an integer, like the mixing rules; a path the CPU lacks is refused, so that a
+// world never runs on kernels it cannot execute.
+bool valid_simd_path(Call& call, const i2d_simd_path* path) {
+    static_assert(sizeof(i2d_simd_path) == sizeof(int32_t), "enums are 32-bit");
+    int32_t value = 0;
+    std::memcpy(&value, path, sizeof value);
+    if (value < 0 || value >= static_cast<int32_t>(SimdPath::count)) {
+        return call.fail(I2D_ERR_INVALID_ARGUMENT, "world def: simd_path is %d; it must be an i2d_simd_path", value);
+    }
+    if (!simd_path_supported(SimdPath(value))) {
+        return call.fail(I2D_ERR_INVALID_ARGUMENT,
+                         "world def: simd_path %d is not supported by this build or CPU; check "
+                         "i2d_simd_path_supported first",
+                         value);
+    }
+    return true;
+}
+
 bool validate_world_def(Call& call, const i2d_world_def* def) {
     return call.not_null(def, "world def") && call.cookie(def->internal_cookie, "world_def") &&
            call.finite(def->gravity, "world def: gravity") &&
@@ -36,7 +54,8 @@ bool validate_world_def(Call& call, const i2d_world_def* def) {
            valid_mixing_rule(call, &def->friction_mixing, "world def: friction_mixing") &&
            valid_mixing_rule(call, &def->restitution_mixing, "world def: restitution_mixing") &&
            call.in_range(def->sleep_speed_threshold, 0.0f, max_speed_limit, "world def: sleep_speed_threshold") &&
-           call.in_range(def->time_to_sleep, 0.0f, max_setting, "world def: time_to_sleep");
+           call.in_range(def->time_to_sleep, 0.0f, max_setting, "world def: time_to_sleep") &&
+           valid_simd_path(call, &def->simd_path);
 }
 
 uint64_t encode_body(uint64_t world_bits, int32_t index, uint16_t generation) {
@@ -61,6 +80,7 @@ WorldDef to_core(const i2d_world_def& def) {
     core.enable_sleep = def.enable_sleep;
     core.sleep_speed_threshold = def.sleep_speed_threshold;
     core.time_to_sleep = def.time_to_sleep;
+    core.simd_path = SimdPath(int(def.simd_path));
     return core;
 }
 
@@ -179,5 +199,27 @@ I2D_API i2d_status i2d_world_rebuild_static_tree(i2d_world_id id) {
         }
         w.world->rebuild_static_tree();
         return I2D_OK;
+    });
+}
+
+I2D_API uint64_t i2d_world_get_state_hash(i2d_world_id id) {
+    return guarded("i2d_world_get_state_hash", uint64_t(0), [&](Call& call) {
+        WorldRef w;
+        return call.world(id, w) ? w.world->state_hash() : uint64_t(0);
+    });
+}
+
+I2D_API i2d_simd_path i2d_world_get_simd_path(i2d_world_id id) {
+    return guarded("i2d_world_get_simd_path", I2D_SIMD_SCALAR, [&](Call& call) {
+        WorldRef w;
+        return call.world(id, w) ? static_cast<i2d_simd_path>(w.world->simd_path()) : I2D_SIMD_SCALAR;
+    });
+}
+
+I2D_API bool i2d_simd_path_supported(i2d_simd_path path) {
+    return guarded("i2d_simd_path_supported", false, [&](Call&) {
+        int32_t value = 0;
+        std::memcpy(&value, &path, sizeof value);
+        return value >= 0 && value < static_cast<int32_t>(SimdPath::count) && simd_path_supported(SimdPath(value));
     });
 }

@@ -64,6 +64,15 @@ I2D_API i2d_vec2 i2d_world_get_gravity(i2d_world_id world);
 I2D_API i2d_world_counters i2d_world_get_counters(i2d_world_id world);
 /** Where the last step's time went (zeros before the first step). */
 I2D_API i2d_profile i2d_world_get_profile(i2d_world_id world);
+/** A 64-bit hash of the bits of every body's transform and velocities and every
+ *  contact's impulses: equal hashes mean equal states. Two runs of the same scene give
+ *  the same hash on any machine, whatever the SIMD path. 0 for a bad id. */
+I2D_API uint64_t i2d_world_get_state_hash(i2d_world_id world);
+/** The SIMD path the world solves contacts with (never I2D_SIMD_AUTOMATIC); scalar
+ *  for a bad id. */
+I2D_API i2d_simd_path i2d_world_get_simd_path(i2d_world_id world);
+/** Whether this library on this CPU can run the path (I2D_SIMD_AUTOMATIC always can). */
+I2D_API bool i2d_simd_path_supported(i2d_simd_path path);
 
 /* ---- Bodies --------------------------------------------------------------------- */
 

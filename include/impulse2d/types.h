@@ -51,6 +51,16 @@ typedef enum i2d_mixing_rule {
     I2D_MIX_MULTIPLY            /**< a b */
 } i2d_mixing_rule;
 
+/** Which instruction set solves contacts. Every path gives bitwise the same results; the
+ *  widest the CPU supports is the fastest. Check i2d_simd_path_supported() before asking
+ *  for one. */
+typedef enum i2d_simd_path {
+    I2D_SIMD_AUTOMATIC = 0, /**< the widest this CPU supports (the default) */
+    I2D_SIMD_SCALAR,        /**< one contact at a time, plain C++: every platform */
+    I2D_SIMD_SSE2,          /**< 4 contacts at a time: every x86-64 CPU */
+    I2D_SIMD_AVX2           /**< 8 contacts at a time: x86-64 CPUs with AVX2 */
+} i2d_simd_path;
+
 /** World settings. Obtain with i2d_default_world_def(), then edit. */
 typedef struct i2d_world_def {
     /** m/s^2; default (0, -10). Finite. */
@@ -89,6 +99,8 @@ typedef struct i2d_world_def {
     /** Bodies touching one another fall asleep together once every one of them has
      *  rested this long, s; default 0.5. Range [0, 1e5]. */
     float time_to_sleep;
+    /** Default I2D_SIMD_AUTOMATIC. A path the CPU does not support is refused. */
+    i2d_simd_path simd_path;
     /** Set by i2d_default_world_def(); do not set. */
     uint32_t internal_cookie;
 } i2d_world_def;

@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: MIT
-// The soft step's contact passes: prepare, warm start, solve (biased or relaxing),
-// restitution.
+// The contact solver's lanes: packing contacts into blocks, running the kernels colour
+// by colour, and the impulses back.
 #include "dynamics/contact_solver.hpp"
 
-#include <cmath>
+#include <cstddef>
 
 #include "math/math.hpp"
 
@@ -12,9 +12,9 @@ namespace i2d {
 namespace {
 
 // 1 / (invMassA + invMassB + (rA x d)^2 invIA + (rB x d)^2 invIB), or 0 when nothing moves.
-float effective_mass(const ContactConstraint& c, Vec2 r_a, Vec2 r_b, Vec2 direction) {
+float effective_mass(const BodyMotion& a, const BodyMotion& b, Vec2 r_a, Vec2 r_b, Vec2 direction) {
     const float ra = cross(r_a, direction), rb = cross(r_b, direction);
-    const float k = c.inv_mass_a + c.inv_mass_b + c.inv_inertia_a * ra * ra + c.inv_inertia_b * rb * rb;
+    const float k = a.inv_mass + b.inv_mass + a.inv_inertia * ra * ra + b.inv_inertia * rb * rb;
     return k > 0.0f ? 1.0f / k : 0.0f;
 }
 
@@ -22,273 +22,234 @@ Vec2 relative_velocity(const BodyState& a, const BodyState& b, Vec2 r_a, Vec2 r_
     return (b.linear_velocity + cross(b.angular_velocity, r_b)) - (a.linear_velocity + cross(a.angular_velocity, r_a));
 }
 
-void apply_impulse(const ContactConstraint& c, const ContactConstraintPoint& p, Vec2 impulse, BodyState& a,
-                   BodyState& b) {
-    a.linear_velocity -= c.inv_mass_a * impulse;
-    a.angular_velocity -= c.inv_inertia_a * cross(p.anchor_a, impulse);
-    b.linear_velocity += c.inv_mass_b * impulse;
-    b.angular_velocity += c.inv_inertia_b * cross(p.anchor_b, impulse);
+// A lane that changes nothing: both bodies the fixed state, no mass, no impulse.
+template <int W>
+void clear_lane(ContactBlock<W>& block, int lane, int32_t fixed_state) {
+    // Every field but the two state arrays is a float array of W: zero lane `lane` of each.
+    float* fields = reinterpret_cast<float*>(&block.point_count);
+    const int field_count = int((sizeof(ContactBlock<W>) - offsetof(ContactBlock<W>, point_count)) / (W * sizeof(float)));
+    for (int f = 0; f < field_count; ++f) {
+        fields[f * W + lane] = 0.0f;
+    }
+    block.state_a[lane] = block.state_b[lane] = fixed_state;
 }
 
-void apply_angular_impulse(const ContactConstraint& c, float impulse, BodyState& a, BodyState& b) {
-    a.angular_velocity -= c.inv_inertia_a * impulse;
-    b.angular_velocity += c.inv_inertia_b * impulse;
+template <int W>
+void pack_point(ContactPointLanes<W>& p, int lane, const ContactPoint& cp, Vec2 normal, const BodyState& sa,
+                const BodyState& sb, const BodyMotion& ma, const BodyMotion& mb) {
+    p.anchor_ax[lane] = cp.anchor_a.x;
+    p.anchor_ay[lane] = cp.anchor_a.y;
+    p.anchor_bx[lane] = cp.anchor_b.x;
+    p.anchor_by[lane] = cp.anchor_b.y;
+    p.base_separation[lane] = cp.separation - dot(cp.anchor_b - cp.anchor_a, normal);
+    const float speed = dot(relative_velocity(sa, sb, cp.anchor_a, cp.anchor_b), normal);
+    p.relative_velocity[lane] = speed;
+    p.start_speed[lane] = speed;
+    p.normal_mass[lane] = effective_mass(ma, mb, cp.anchor_a, cp.anchor_b, normal);
+    p.tangent_mass[lane] = effective_mass(ma, mb, cp.anchor_a, cp.anchor_b, left_perp(normal));
+    p.normal_impulse[lane] = cp.normal_impulse;
+    p.tangent_impulse[lane] = cp.tangent_impulse;
+    p.max_normal_impulse[lane] = 0.0f;
 }
 
-}  // namespace
-
-void prepare_contacts(std::vector<ContactConstraint>& constraints, const std::vector<BodyState>& states) {
-    for (ContactConstraint& c : constraints) {
-        const BodyState& a = states[c.state_a];
-        const BodyState& b = states[c.state_b];
-        const Vec2 tangent = left_perp(c.normal);
-        for (int32_t i = 0; i < c.point_count; ++i) {
-            ContactConstraintPoint& p = c.points[i];
-            p.normal_mass = effective_mass(c, p.anchor_a, p.anchor_b, c.normal);
-            p.tangent_mass = effective_mass(c, p.anchor_a, p.anchor_b, tangent);
-            p.relative_velocity = dot(relative_velocity(a, b, p.anchor_a, p.anchor_b), c.normal);
-            p.start_speed = p.relative_velocity;
-            p.max_normal_impulse = 0.0f;
-        }
-        const float k = c.inv_inertia_a + c.inv_inertia_b;
-        c.rolling_mass = k > 0.0f ? 1.0f / k : 0.0f;
+// Contacts with a static or kinematic body are twice as stiff (Box2D v3's choice): the
+// fixed side cannot give, so the pair has half the mass to move and settles as fast.
+template <int W>
+void pack_lane(ContactBlock<W>& block, int lane, const Contact& contact, const ContactLayout& layout) {
+    clear_lane(block, lane, layout.fixed_state);
+    const int32_t state_a = contact.state_a != null_index ? contact.state_a : layout.fixed_state;
+    const int32_t state_b = contact.state_b != null_index ? contact.state_b : layout.fixed_state;
+    const BodyMotion& ma = layout.motions[state_a];
+    const BodyMotion& mb = layout.motions[state_b];
+    const BodyState& sa = layout.states[state_a];
+    const BodyState& sb = layout.states[state_b];
+    block.state_a[lane] = state_a;
+    block.state_b[lane] = state_b;
+    block.point_count[lane] = float(contact.point_count);
+    block.inv_mass_a[lane] = ma.inv_mass;
+    block.inv_mass_b[lane] = mb.inv_mass;
+    block.inv_inertia_a[lane] = ma.inv_inertia;
+    block.inv_inertia_b[lane] = mb.inv_inertia;
+    block.normal_x[lane] = contact.normal.x;
+    block.normal_y[lane] = contact.normal.y;
+    block.friction[lane] = contact.friction;
+    block.restitution[lane] = contact.restitution;
+    block.tangent_speed[lane] = contact.tangent_speed;
+    block.rolling_resistance[lane] = contact.rolling_resistance;
+    const float k = ma.inv_inertia + mb.inv_inertia;
+    block.rolling_mass[lane] = k > 0.0f ? 1.0f / k : 0.0f;
+    block.rolling_impulse[lane] = contact.rolling_impulse;
+    const Vec2 relative_acceleration = mb.free_acceleration - ma.free_acceleration;
+    block.approach_acceleration[lane] = max_of(-dot(relative_acceleration, contact.normal), 0.0f);
+    const Softness& soft = ma.inv_mass == 0.0f || mb.inv_mass == 0.0f ? layout.fixed_soft : layout.soft;
+    block.bias_rate[lane] = soft.bias_rate;
+    block.mass_scale[lane] = soft.mass_scale;
+    block.impulse_scale[lane] = soft.impulse_scale;
+    for (int32_t i = 0; i < contact.point_count; ++i) {
+        pack_point(block.points[i], lane, contact.points[i], contact.normal, sa, sb, ma, mb);
     }
 }
 
-void warm_start_contacts(const std::vector<ContactConstraint>& constraints, std::vector<BodyState>& states) {
-    for (const ContactConstraint& c : constraints) {
-        BodyState& a = states[c.state_a];
-        BodyState& b = states[c.state_b];
-        const Vec2 tangent = left_perp(c.normal);
-        for (int32_t i = 0; i < c.point_count; ++i) {
-            const ContactConstraintPoint& p = c.points[i];
-            apply_impulse(c, p, p.normal_impulse * c.normal + p.tangent_impulse * tangent, a, b);
-        }
-        apply_angular_impulse(c, c.rolling_impulse, a, b);
-    }
-}
-
-namespace {
-
-// Separation of a point now: as prepared, plus how far its two anchors moved apart
-// along the normal since (anchors ride their bodies' motion and turn).
-float current_separation(const ContactConstraintPoint& p, Vec2 normal, const BodyState& a, const BodyState& b) {
+// Separation of a lane's point where the substeps left the bodies, m.
+template <int W>
+float final_separation(const ContactBlock<W>& block, int lane, int i, const BodyState* states) {
+    const ContactPointLanes<W>& p = block.points[i];
+    const BodyState& a = states[block.state_a[lane]];
+    const BodyState& b = states[block.state_b[lane]];
+    const Vec2 anchor_a{p.anchor_ax[lane], p.anchor_ay[lane]}, anchor_b{p.anchor_bx[lane], p.anchor_by[lane]};
     const Vec2 moved = (b.delta_position - a.delta_position) +
-                       (rotate(b.delta_rotation, p.anchor_b) - rotate(a.delta_rotation, p.anchor_a));
-    return dot(moved, normal) + p.base_separation;
-}
-
-// How one point is solved this pass: impulse = -mass (mass_scale vn + bias) - impulse_scale x.
-struct PointTerms {
-    float bias = 0.0f, mass_scale = 1.0f, impulse_scale = 0.0f;
-};
-
-// A gap allows approach up to closing it within the substep (speculative); overlap is
-// pushed out softly, at most push_max_speed. Soft everywhere, so that the spring's
-// damping also calms resting stacks: a loaded contact settles at the small overlap
-// where push-out balances the load (load / (effective mass x omega^2)).
-PointTerms point_terms(const ContactConstraint& c, float separation, float inv_h, const ContactSolverSettings& s,
-                       bool use_bias) {
-    if (separation > 0.0f) {
-        return {separation * inv_h, 1.0f, 0.0f};
-    }
-    if (use_bias) {
-        const Softness& soft = c.softness;
-        return {max_of(soft.mass_scale * soft.bias_rate * separation, -s.push_max_speed), soft.mass_scale,
-                soft.impulse_scale};
-    }
-    return {};
-}
-
-// Until a point first pushes, the impact speed of a pair that was approaching when the
-// step began is tracked from its free motion: the start speed plus gravity and forces
-// so far, carried over the remaining gap (v^2 + 2 a gap, what energy says). A bounce
-// then keeps its energy instead of losing up to a substep's worth of fall. Speed that
-// other contacts gave the pair within the step does not count, nor does a pair at rest
-// that another contact sets moving bounce: simultaneous impacts have no defined
-// outcome, and bouncing them would create energy.
-void track_impact(const ContactConstraint& c, ContactConstraintPoint& p, float separation, float elapsed) {
-    if (p.start_speed >= 0.0f || p.max_normal_impulse != 0.0f) {
-        return;
-    }
-    const float free_speed = p.start_speed - c.approach_acceleration * elapsed;
-    p.relative_velocity = -std::sqrt(free_speed * free_speed + 2.0f * c.approach_acceleration * max_of(separation, 0.0f));
-}
-
-void set_normal_impulse(ContactConstraint& c, ContactConstraintPoint& p, float impulse, BodyState& a, BodyState& b) {
-    p.max_normal_impulse = max_of(p.max_normal_impulse, impulse - p.normal_impulse);
-    apply_impulse(c, p, (impulse - p.normal_impulse) * c.normal, a, b);
-    p.normal_impulse = impulse;
-}
-
-void solve_normal_point(ContactConstraint& c, ContactConstraintPoint& p, const PointTerms& t, BodyState& a,
-                        BodyState& b) {
-    const float vn = dot(relative_velocity(a, b, p.anchor_a, p.anchor_b), c.normal);
-    const float impulse = -p.normal_mass * (t.mass_scale * vn + t.bias) - t.impulse_scale * p.normal_impulse;
-    set_normal_impulse(c, p, max_of(p.normal_impulse + impulse, 0.0f), a, b);
-}
-
-// Both points of a two-point manifold at once, as a 2x2 linear complementarity problem
-// (Box2D 2.4's block solver, after Catto's GDC talks, extended to soft terms): find
-// accumulated impulses x >= 0 with w = K (x - (1 - impulse_scale) x_old) + mass_scale vn
-// + bias >= 0 and x_i w_i = 0, trying the four cases (both push, one, neither). For one
-// point this is exactly the single-point rule. Solving the points one after the other
-// instead lets the first take more than its share, which turns a resting box and makes
-// tall stacks lean. Returns false when K is too ill-conditioned (points nearly
-// coincident) or no case fits (round-off at the boundaries): then one by one.
-bool solve_normal_block(ContactConstraint& c, const PointTerms t[2], BodyState& a, BodyState& b) {
-    ContactConstraintPoint& p1 = c.points[0];
-    ContactConstraintPoint& p2 = c.points[1];
-    const Vec2 n = c.normal;
-    const float rn1a = cross(p1.anchor_a, n), rn1b = cross(p1.anchor_b, n);
-    const float rn2a = cross(p2.anchor_a, n), rn2b = cross(p2.anchor_b, n);
-    const float m = c.inv_mass_a + c.inv_mass_b;
-    const float k11 = m + c.inv_inertia_a * rn1a * rn1a + c.inv_inertia_b * rn1b * rn1b;
-    const float k22 = m + c.inv_inertia_a * rn2a * rn2a + c.inv_inertia_b * rn2b * rn2b;
-    const float k12 = m + c.inv_inertia_a * rn1a * rn2a + c.inv_inertia_b * rn1b * rn2b;
-    const float det = k11 * k22 - k12 * k12;
-    constexpr float max_condition = 1000.0f;
-    if (!(k11 * k11 < max_condition * det)) {
-        return false;
-    }
-    const float kept1 = (1.0f - t[0].impulse_scale) * p1.normal_impulse;
-    const float kept2 = (1.0f - t[1].impulse_scale) * p2.normal_impulse;
-    const float vn1 = dot(relative_velocity(a, b, p1.anchor_a, p1.anchor_b), n);
-    const float vn2 = dot(relative_velocity(a, b, p2.anchor_a, p2.anchor_b), n);
-    const float q1 = t[0].mass_scale * vn1 + t[0].bias - (k11 * kept1 + k12 * kept2);
-    const float q2 = t[1].mass_scale * vn2 + t[1].bias - (k12 * kept1 + k22 * kept2);
-
-    float x1 = 0.0f, x2 = 0.0f;
-    const float inv_det = 1.0f / det;
-    const float both1 = -inv_det * (k22 * q1 - k12 * q2), both2 = -inv_det * (k11 * q2 - k12 * q1);
-    if (both1 >= 0.0f && both2 >= 0.0f) {
-        x1 = both1, x2 = both2;  // both points push
-    } else if (-q1 / k11 >= 0.0f && k12 * (-q1 / k11) + q2 >= 0.0f) {
-        x1 = -q1 / k11;  // only the first pushes; the second separates
-    } else if (-q2 / k22 >= 0.0f && k12 * (-q2 / k22) + q1 >= 0.0f) {
-        x2 = -q2 / k22;  // only the second pushes
-    } else if (!(q1 >= 0.0f && q2 >= 0.0f)) {
-        return false;
-    }
-    set_normal_impulse(c, p1, x1, a, b);
-    set_normal_impulse(c, p2, x2, a, b);
-    return true;
-}
-
-// Returns the normal impulses' sum, which bounds the rolling resistance torque.
-float solve_normal(ContactConstraint& c, BodyState& a, BodyState& b, float inv_h, const ContactSolverSettings& s,
-                   bool use_bias, float elapsed) {
-    PointTerms terms[2];
-    for (int32_t i = 0; i < c.point_count; ++i) {
-        ContactConstraintPoint& p = c.points[i];
-        const float separation = current_separation(p, c.normal, a, b);
-        terms[i] = point_terms(c, separation, inv_h, s, use_bias);
-        if (use_bias) {
-            track_impact(c, p, separation, elapsed);
-        }
-    }
-    if (c.point_count != 2 || !solve_normal_block(c, terms, a, b)) {
-        for (int32_t i = 0; i < c.point_count; ++i) {
-            solve_normal_point(c, c.points[i], terms[i], a, b);
-        }
-    }
-    float total = 0.0f;
-    for (int32_t i = 0; i < c.point_count; ++i) {
-        total += c.points[i].normal_impulse;
-    }
-    return total;
-}
-
-// Coulomb friction towards the surfaces' relative speed (zero but for conveyor belts).
-void solve_friction(ContactConstraint& c, BodyState& a, BodyState& b) {
-    const Vec2 tangent = left_perp(c.normal);
-    for (int32_t i = 0; i < c.point_count; ++i) {
-        ContactConstraintPoint& p = c.points[i];
-        const float vt = dot(relative_velocity(a, b, p.anchor_a, p.anchor_b), tangent) - c.tangent_speed;
-        const float max_friction = c.friction * p.normal_impulse;
-        const float old = p.tangent_impulse;
-        p.tangent_impulse = clamp(old - p.tangent_mass * vt, -max_friction, max_friction);
-        apply_impulse(c, p, (p.tangent_impulse - old) * tangent, a, b);
-    }
-}
-
-// A torque opposing the relative spin, bounded by arm x normal impulse.
-void solve_rolling(ContactConstraint& c, BodyState& a, BodyState& b, float normal_total) {
-    if (c.rolling_resistance == 0.0f) {
-        return;
-    }
-    const float max_torque = c.rolling_resistance * normal_total;
-    const float old = c.rolling_impulse;
-    const float spin = b.angular_velocity - a.angular_velocity;
-    c.rolling_impulse = clamp(old - c.rolling_mass * spin, -max_torque, max_torque);
-    apply_angular_impulse(c, c.rolling_impulse - old, a, b);
+                       (rotate(b.delta_rotation, anchor_b) - rotate(a.delta_rotation, anchor_a));
+    return dot(moved, Vec2{block.normal_x[lane], block.normal_y[lane]}) + p.base_separation[lane];
 }
 
 }  // namespace
 
-void solve_contacts(std::vector<ContactConstraint>& constraints, std::vector<BodyState>& states, float inv_h,
-                    const ContactSolverSettings& settings, bool use_bias, float elapsed) {
-    for (ContactConstraint& c : constraints) {
-        BodyState& a = states[c.state_a];
-        BodyState& b = states[c.state_b];
-        const float normal_total = solve_normal(c, a, b, inv_h, settings, use_bias, elapsed);
-        solve_friction(c, a, b);
-        solve_rolling(c, a, b, normal_total);
+template <>
+std::vector<ContactBlock<1>>& ContactSolver::blocks<1>() { return blocks1_; }
+template <>
+std::vector<ContactBlock<4>>& ContactSolver::blocks<4>() { return blocks4_; }
+template <>
+std::vector<ContactBlock<8>>& ContactSolver::blocks<8>() { return blocks8_; }
+
+// Colour by colour, each colour's contacts W to a block, the last block padded.
+template <int W>
+void ContactSolver::pack_colors(const ContactLayout& layout) {
+    const int32_t colors = layout.color_count - 1;
+    color_block_starts_.assign(std::size_t(colors) + 1, 0);
+    for (int32_t c = 0; c < colors; ++c) {
+        const int32_t count = layout.color_starts[c + 1] - layout.color_starts[c];
+        color_block_starts_[std::size_t(c) + 1] = color_block_starts_[std::size_t(c)] + (count + W - 1) / W;
+    }
+    std::vector<ContactBlock<W>>& out = blocks<W>();
+    out.resize(std::size_t(color_block_starts_[std::size_t(colors)]));
+    lane_contacts_.assign(out.size() * W, -1);
+    for (int32_t c = 0; c < colors; ++c) {
+        const int32_t first = layout.color_starts[c], count = layout.color_starts[c + 1] - first;
+        const int32_t first_lane = color_block_starts_[std::size_t(c)] * W;
+        const int32_t lanes = (count + W - 1) / W * W;
+        for (int32_t k = 0; k < lanes; ++k) {
+            ContactBlock<W>& block = out[std::size_t((first_lane + k) / W)];
+            if (k < count) {
+                const int32_t contact = layout.ordered[first + k];
+                pack_lane(block, k % W, layout.contacts[contact], layout);
+                lane_contacts_[std::size_t(first_lane + k)] = contact;
+            } else {
+                clear_lane(block, k % W, layout.fixed_state);
+            }
+        }
     }
 }
 
-float separation_of(const ContactConstraint& c, const ContactConstraintPoint& p, const std::vector<BodyState>& states) {
-    return current_separation(p, c.normal, states[c.state_a], states[c.state_b]);
-}
-
-namespace {
-
-// Slow impacts do not bounce (resting contacts would never settle), nor do points that
-// never pushed (a speculative gap that did not close).
-bool bounces(const ContactConstraint& c, const ContactConstraintPoint& p, float threshold) {
-    return c.restitution != 0.0f && p.relative_velocity < -threshold && p.max_normal_impulse != 0.0f;
-}
-
-// Bouncing points aim at vn = -e v_impact (bias e v_impact on a rigid point); the other
-// points that pushed during the step keep their bodies from moving into each other.
-void restitution_pass(ContactConstraint& c, BodyState& a, BodyState& b, float threshold) {
-    PointTerms terms[2];
-    bool active[2] = {false, false};
-    for (int32_t i = 0; i < c.point_count; ++i) {
-        const ContactConstraintPoint& p = c.points[i];
-        active[i] = p.max_normal_impulse != 0.0f;
-        terms[i].bias = bounces(c, p, threshold) ? c.restitution * p.relative_velocity : 0.0f;
+void ContactSolver::pack_overflow(const ContactLayout& layout) {
+    const int32_t overflow = layout.color_count - 1;
+    const int32_t first = layout.color_starts[overflow], count = layout.color_starts[overflow + 1] - first;
+    overflow_.resize(std::size_t(count));
+    overflow_contacts_.assign(layout.ordered + first, layout.ordered + first + count);
+    for (int32_t k = 0; k < count; ++k) {
+        pack_lane(overflow_[std::size_t(k)], 0, layout.contacts[overflow_contacts_[std::size_t(k)]], layout);
     }
-    // Both points together, or a face bouncing off a face would start to spin.
-    if (c.point_count == 2 && active[0] && active[1] && solve_normal_block(c, terms, a, b)) {
+}
+
+void ContactSolver::prepare(const ContactLayout& layout) {
+    switch (kernels_->width) {
+        case 8: pack_colors<8>(layout); break;
+        case 4: pack_colors<4>(layout); break;
+        default: pack_colors<1>(layout); break;
+    }
+    pack_overflow(layout);
+}
+
+// The colours in order, then the overflow colour one contact at a time: stage(kernels,
+// blocks, count).
+template <class Stage>
+void ContactSolver::for_each_color(Stage&& stage) {
+    void* colored = kernels_->width == 8   ? static_cast<void*>(blocks8_.data())
+                    : kernels_->width == 4 ? static_cast<void*>(blocks4_.data())
+                                           : static_cast<void*>(blocks1_.data());
+    const std::size_t block_bytes = kernels_->width == 8   ? sizeof(ContactBlock<8>)
+                                    : kernels_->width == 4 ? sizeof(ContactBlock<4>)
+                                                           : sizeof(ContactBlock<1>);
+    for (std::size_t c = 0; c + 1 < color_block_starts_.size(); ++c) {
+        const int32_t count = color_block_starts_[c + 1] - color_block_starts_[c];
+        if (count > 0) {
+            stage(*kernels_, static_cast<char*>(colored) + block_bytes * std::size_t(color_block_starts_[c]), count);
+        }
+    }
+    if (!overflow_.empty()) {
+        stage(scalar_contact_kernels(), static_cast<void*>(overflow_.data()), int32_t(overflow_.size()));
+    }
+}
+
+void ContactSolver::warm_start(BodyState* states) {
+    for_each_color([states](const ContactKernels& k, void* blocks, int32_t count) { k.warm_start(blocks, count, states); });
+}
+
+void ContactSolver::solve(BodyState* states, const SolvePass& pass) {
+    for_each_color(
+        [states, &pass](const ContactKernels& k, void* blocks, int32_t count) { k.solve(blocks, count, states, pass); });
+}
+
+template <int W>
+bool ContactSolver::any_bounce(const std::vector<ContactBlock<W>>& blocks, float threshold) const {
+    for (const ContactBlock<W>& block : blocks) {
+        for (int lane = 0; lane < W; ++lane) {
+            for (int i = 0; i < 2; ++i) {
+                const ContactPointLanes<W>& p = block.points[i];
+                if (block.restitution[lane] != 0.0f && p.relative_velocity[lane] < -threshold &&
+                    p.max_normal_impulse[lane] != 0.0f) {
+                    return true;
+                }
+            }
+        }
+    }
+    return false;
+}
+
+// Only when something bounces, and then over every contact that pushed, a few times.
+void ContactSolver::apply_restitution(BodyState* states, float threshold) {
+    const bool colored = kernels_->width == 8   ? any_bounce(blocks8_, threshold)
+                         : kernels_->width == 4 ? any_bounce(blocks4_, threshold)
+                                                : any_bounce(blocks1_, threshold);
+    if (!colored && !any_bounce(overflow_, threshold)) {
         return;
-    }
-    for (int32_t i = 0; i < c.point_count; ++i) {
-        if (active[i]) {
-            solve_normal_point(c, c.points[i], terms[i], a, b);
-        }
-    }
-}
-
-}  // namespace
-
-// Only when something bounces, and then over every contact that pushed, a few times: a
-// ball bouncing off a row of touching balls must push the whole row, not bounce as if
-// its neighbour were free (that would create energy).
-void apply_restitution(std::vector<ContactConstraint>& constraints, std::vector<BodyState>& states,
-                       const ContactSolverSettings& settings) {
-    bool any = false;
-    for (const ContactConstraint& c : constraints) {
-        for (int32_t i = 0; i < c.point_count; ++i) {
-            any = any || bounces(c, c.points[i], settings.restitution_threshold);
-        }
     }
     constexpr int32_t restitution_iterations = 4;
-    for (int32_t iteration = 0; any && iteration < restitution_iterations; ++iteration) {
-        for (ContactConstraint& c : constraints) {
-            restitution_pass(c, states[c.state_a], states[c.state_b], settings.restitution_threshold);
-        }
+    for (int32_t iteration = 0; iteration < restitution_iterations; ++iteration) {
+        for_each_color([states, threshold](const ContactKernels& k, void* blocks, int32_t count) {
+            k.restitution(blocks, count, states, threshold);
+        });
     }
+}
+
+template <int W>
+void ContactSolver::store_blocks(const std::vector<ContactBlock<W>>& blocks, const std::vector<int32_t>& contacts_of_lanes,
+                                 Pool<Contact>& contacts, const BodyState* states, float slop) const {
+    for (std::size_t k = 0; k < contacts_of_lanes.size(); ++k) {
+        const int32_t index = contacts_of_lanes[k];
+        if (index < 0) {
+            continue;
+        }
+        const ContactBlock<W>& block = blocks[k / W];
+        const int lane = int(k % W);
+        Contact& contact = contacts[index];
+        for (int32_t i = 0; i < contact.point_count; ++i) {
+            contact.points[i].normal_impulse = block.points[i].normal_impulse[lane];
+            contact.points[i].tangent_impulse = block.points[i].tangent_impulse[lane];
+            if (final_separation(block, lane, i, states) <= slop) {
+                contact.flags |= contact_touching;
+            }
+        }
+        contact.rolling_impulse = block.rolling_impulse[lane];
+    }
+}
+
+void ContactSolver::store(Pool<Contact>& contacts, const BodyState* states, float slop) const {
+    switch (kernels_->width) {
+        case 8: store_blocks(blocks8_, lane_contacts_, contacts, states, slop); break;
+        case 4: store_blocks(blocks4_, lane_contacts_, contacts, states, slop); break;
+        default: store_blocks(blocks1_, lane_contacts_, contacts, states, slop); break;
+    }
+    store_blocks(overflow_, overflow_contacts_, contacts, states, slop);
 }
 
 }  // namespace i2d

@@ -46,20 +46,19 @@ void Solver::step(float time_step, int32_t substep_count) {
     const float h = time_step / float(substep_count);
     const float inv_h = float(substep_count) / time_step;
     gather_bodies();
-    gather_constraints(h);
-    prepare_contacts(constraints_, states_);
+    prepare_contacts(h);
     const WorldDef& s = links_.settings;
-    const ContactSolverSettings contact_settings{s.contact_push_max_speed, s.restitution_threshold};
+    BodyState* states = states_.data();
     for (int32_t i = 0; i < substep_count; ++i) {
         integrate_velocities(h);
-        warm_start_contacts(constraints_, states_);
+        contact_solver_.warm_start(states);
         const float elapsed = float(i + 1) * h;
-        solve_contacts(constraints_, states_, inv_h, contact_settings, true, elapsed);
+        contact_solver_.solve(states, SolvePass{inv_h, s.contact_push_max_speed, elapsed, true});
         integrate_positions(h);
-        solve_contacts(constraints_, states_, inv_h, contact_settings, false, elapsed);
+        contact_solver_.solve(states, SolvePass{inv_h, s.contact_push_max_speed, elapsed, false});
     }
-    apply_restitution(constraints_, states_, contact_settings);
-    store_impulses();
+    contact_solver_.apply_restitution(states, s.restitution_threshold);
+    contact_solver_.store(links_.contacts.pool(), states, s.contact_slop);
     finalize_bodies(time_step);
 }
 
@@ -71,7 +70,8 @@ void Solver::gather_bodies() {
     motions_.resize(count + 1);
     for (std::size_t k = 0; k < count; ++k) {
         const Body& b = links_.bodies[awake[k]];
-        states_[k] = BodyState{b.linear_velocity, b.angular_velocity, Vec2{}, Rot{}};
+        const bool dynamic = b.type == BodyType::dynamic;
+        states_[k] = BodyState{b.linear_velocity, b.angular_velocity, dynamic ? 1.0f : 0.0f, Vec2{}, Rot{}};
         BodyMotion& m = motions_[k];
         m.force = b.force;
         m.torque = b.torque;
@@ -81,36 +81,35 @@ void Solver::gather_bodies() {
         m.linear_damping = b.linear_damping;
         m.angular_damping = b.angular_damping;
         m.free_acceleration = free_acceleration(b, links_.settings.gravity);
-        m.is_dynamic = b.type == BodyType::dynamic;
+        m.is_dynamic = dynamic;
     }
     states_[count] = BodyState{};
     motions_[count] = BodyMotion{};
 }
 
-// Contacts with a static or kinematic body are twice as stiff (Box2D v3's choice): the
-// fixed side cannot give, so the pair has half the mass to move and settles as fast.
-// Stiffness is capped at a quarter of the substep rate, beyond which the implicit
-// spring stops being accurate. Constraints are laid out colour by colour (a counting
-// sort that keeps awake order within a colour), which is the order they are solved in.
-void Solver::gather_constraints(float h) {
+// Stiffness is capped at a quarter of the substep rate, beyond which the implicit spring
+// stops being accurate; contacts with a fixed body get twice the frequency.
+void Solver::prepare_contacts(float h) {
     const WorldDef& s = links_.settings;
     const float hertz = min_of(s.contact_hertz, 0.25f / h);
-    const Softness soft = make_softness(hertz, s.contact_damping_ratio, h);
-    const Softness fixed_soft = make_softness(2.0f * hertz, s.contact_damping_ratio, h);
-    color_constraints();
-    constraints_.resize(std::size_t(color_starts_[ConstraintColors::count]));
-    const std::vector<int32_t>& awake = links_.contacts.awake();
-    for (std::size_t k = 0; k < awake.size(); ++k) {
-        const int32_t color = contact_colors_[k];
-        if (color >= 0) {
-            constraints_[std::size_t(color_starts_[color]++)] = make_constraint(awake[k], soft, fixed_soft);
-        }
-    }
+    color_contacts();
+    const ContactLayout layout{links_.contacts.pool(),
+                               ordered_contacts_.data(),
+                               color_starts_.data(),
+                               ConstraintColors::count,
+                               states_.data(),
+                               motions_.data(),
+                               int32_t(states_.size()) - 1,
+                               make_softness(hertz, s.contact_damping_ratio, h),
+                               make_softness(2.0f * hertz, s.contact_damping_ratio, h)};
+    contact_solver_.prepare(layout);
 }
 
-// A colour for every awake contact the solver will see, and where each colour starts.
-// A body the contact cannot move (static, kinematic, asleep) takes no colour slot.
-void Solver::color_constraints() {
+// A colour for every awake contact the solver will see, then the contacts laid out
+// colour by colour (a counting sort that keeps awake order within a colour), the order
+// they are solved in. A body the contact cannot move (static, kinematic, asleep) takes
+// no colour slot.
+void Solver::color_contacts() {
     const std::vector<int32_t>& awake = links_.contacts.awake();
     const Pool<Contact>& contacts = links_.contacts.pool();
     colors_.reset(int32_t(links_.islands.awake_bodies().size()));
@@ -122,49 +121,21 @@ void Solver::color_constraints() {
         if ((contact.flags & contact_sensor) == 0 && contact.point_count != 0) {
             color = colors_.assign((contact.flags & contact_moves_a) ? contact.state_a : ConstraintColors::null_state,
                                    (contact.flags & contact_moves_b) ? contact.state_b : ConstraintColors::null_state);
-            ++color_starts_[color + 1];
+            ++color_starts_[std::size_t(color) + 1];
         }
         contact_colors_[k] = int8_t(color);
     }
     for (int32_t color = 0; color < ConstraintColors::count; ++color) {
-        color_starts_[color + 1] += color_starts_[color];
+        color_starts_[std::size_t(color) + 1] += color_starts_[std::size_t(color)];
     }
-}
-
-ContactConstraint Solver::make_constraint(int32_t index, const Softness& soft, const Softness& fixed_soft) const {
-    const Contact& contact = links_.contacts.pool()[index];
-    const int32_t fixed_state = int32_t(states_.size()) - 1;
-    ContactConstraint c;
-    c.contact = index;
-    // A body outside the awake list (static, or asleep) is fixed.
-    c.state_a = contact.state_a != null_index ? contact.state_a : fixed_state;
-    c.state_b = contact.state_b != null_index ? contact.state_b : fixed_state;
-    const BodyMotion& a = motions_[std::size_t(c.state_a)];
-    const BodyMotion& b = motions_[std::size_t(c.state_b)];
-    c.inv_mass_a = a.inv_mass;
-    c.inv_mass_b = b.inv_mass;
-    c.inv_inertia_a = a.inv_inertia;
-    c.inv_inertia_b = b.inv_inertia;
-    c.softness = c.inv_mass_a == 0.0f || c.inv_mass_b == 0.0f ? fixed_soft : soft;
-    c.normal = contact.normal;
-    const Vec2 relative_acceleration = b.free_acceleration - a.free_acceleration;
-    c.approach_acceleration = max_of(-dot(relative_acceleration, c.normal), 0.0f);
-    c.friction = contact.friction;
-    c.restitution = contact.restitution;
-    c.tangent_speed = contact.tangent_speed;
-    c.rolling_resistance = contact.rolling_resistance;
-    c.rolling_impulse = contact.rolling_impulse;
-    c.point_count = contact.point_count;
-    for (int32_t i = 0; i < c.point_count; ++i) {
-        const ContactPoint& cp = contact.points[i];
-        ContactConstraintPoint& p = c.points[i];
-        p.anchor_a = cp.anchor_a;
-        p.anchor_b = cp.anchor_b;
-        p.base_separation = cp.separation - dot(p.anchor_b - p.anchor_a, c.normal);
-        p.normal_impulse = cp.normal_impulse;
-        p.tangent_impulse = cp.tangent_impulse;
+    ordered_contacts_.resize(std::size_t(color_starts_[ConstraintColors::count]));
+    std::vector<int32_t>& next = scratch_starts_;
+    next.assign(color_starts_.begin(), color_starts_.end() - 1);
+    for (std::size_t k = 0; k < awake.size(); ++k) {
+        if (contact_colors_[k] >= 0) {
+            ordered_contacts_[std::size_t(next[std::size_t(contact_colors_[k])]++)] = awake[k];
+        }
     }
-    return c;
 }
 
 // Gravity, forces and damping for dynamic bodies; the speed limit for every moving body
@@ -203,26 +174,6 @@ void Solver::integrate_positions(float h) {
         if (s.angular_velocity != 0.0f) {
             s.delta_rotation = integrate_rotation(s.delta_rotation, h * s.angular_velocity);
         }
-    }
-}
-
-// Impulses go back to the contacts for the next step's warm start. A solid contact
-// touches when a point ends the step within the contact slop: its separation follows
-// from the substeps' motion, with no second narrowphase (its speculative points cover
-// the whole step).
-void Solver::store_impulses() {
-    Pool<Contact>& contacts = links_.contacts.pool();
-    const float slop = links_.settings.contact_slop;
-    for (const ContactConstraint& c : constraints_) {
-        Contact& contact = contacts[c.contact];
-        for (int32_t i = 0; i < c.point_count; ++i) {
-            contact.points[i].normal_impulse = c.points[i].normal_impulse;
-            contact.points[i].tangent_impulse = c.points[i].tangent_impulse;
-            if (separation_of(c, c.points[i], states_) <= slop) {
-                contact.flags |= contact_touching;
-            }
-        }
-        contact.rolling_impulse = c.rolling_impulse;
     }
 }
 

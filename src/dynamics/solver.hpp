@@ -23,6 +23,7 @@
 #include "dynamics/contact_solver.hpp"
 #include "dynamics/events.hpp"
 #include "dynamics/shape.hpp"
+#include "dynamics/simd_path.hpp"
 #include "dynamics/world_def.hpp"
 
 namespace i2d {
@@ -43,7 +44,12 @@ struct SolverLinks {
 
 class Solver {
 public:
-    explicit Solver(const SolverLinks& links) : links_(links) {}
+    explicit Solver(const SolverLinks& links)
+        : links_(links),
+          simd_path_(links.settings.simd_path == SimdPath::automatic ? widest_simd_path() : links.settings.simd_path) {
+        contact_solver_.set_kernels(contact_kernels_for(simd_path_));
+    }
+    SimdPath simd_path() const { return simd_path_; }
 
     /// Steps the awake bodies by time_step in substep_count substeps and leaves them at
     /// their new poses, with new bounds, rest times and move events; contacts get their
@@ -52,21 +58,22 @@ public:
 
 private:
     void gather_bodies();
-    void gather_constraints(float h);
-    void color_constraints();
-    ContactConstraint make_constraint(int32_t contact, const Softness& soft, const Softness& fixed_soft) const;
+    void prepare_contacts(float h);
+    void color_contacts();
     void integrate_velocities(float h);
     void integrate_positions(float h);
-    void store_impulses();
     void finalize_bodies(float time_step);
     void finalize_body(int32_t awake_index, float time_step);
     void share_kinematic_rest(int32_t body);
 
     SolverLinks links_;
-    std::vector<ContactConstraint> constraints_;  // in solve order: by colour
+    SimdPath simd_path_;
+    ContactSolver contact_solver_;
     ConstraintColors colors_;
     std::vector<int8_t> contact_colors_;  // per awake contact, or -1 when it is not solved
-    std::vector<int32_t> color_starts_;   // per colour: its first slot in constraints_
+    std::vector<int32_t> color_starts_;   // per colour: its first slot in ordered_contacts_
+    std::vector<int32_t> ordered_contacts_;  // the contacts to solve, colour by colour
+    std::vector<int32_t> scratch_starts_;
     std::vector<BodyState> states_;       // per awake body, then the fixed state
     std::vector<BodyMotion> motions_;     // the same, the fixed one all zero
 };

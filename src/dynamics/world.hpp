@@ -108,6 +108,11 @@ public:
     /// Installs the C boundary's id encoding for the ids inside events.
     void set_id_encoder(const IdEncoder& ids) { events_.ids = ids; }
     WorldCounters counters() const;
+    /// The bits of every body's transform and velocities and every contact's impulses,
+    /// in pool order.
+    uint64_t state_hash() const;
+    /// The contact kernels' instruction set (automatic resolved).
+    SimdPath simd_path() const { return solver_.simd_path(); }
     const WorldEvents& events() const { return events_.current; }
     const StepProfile& profile() const { return profile_; }
     bool is_locked() const { return lock_depth_ > 0; }

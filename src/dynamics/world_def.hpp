@@ -3,6 +3,7 @@
 #pragma once
 
 #include "dynamics/mixing.hpp"
+#include "dynamics/simd_path.hpp"
 #include "math/vec2.hpp"
 
 namespace i2d {
@@ -20,6 +21,7 @@ struct WorldDef {
     bool enable_sleep = true;
     float sleep_speed_threshold = 0.05f;
     float time_to_sleep = 0.5f;
+    SimdPath simd_path = SimdPath::automatic;  // must be supported (simd_path_supported)
 };
 
 }  // namespace i2d

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // The step, top-down: Box2D v3's pipeline of pairs, one narrowphase, the soft step with
 // its substeps, bounds, events and sleep.
+#include "core/state_hash.hpp"
 #include "core/timer.hpp"
 #include "dynamics/world.hpp"
 
@@ -64,6 +65,34 @@ WorldCounters World::counters() const {
     c.awake_body_count = int32_t(islands_.awake_bodies().size());
     c.sleeping_island_count = islands_.sleeping_island_count();
     return c;
+}
+
+uint64_t World::state_hash() const {
+    StateHash hash;
+    for (int32_t i = 0; i < bodies.capacity(); ++i) {
+        if (!bodies.is_live(i)) {
+            continue;
+        }
+        const Body& b = bodies[i];
+        hash.add(i);
+        hash.add_bytes(&b.transform, sizeof b.transform);
+        hash.add_bytes(&b.linear_velocity, sizeof b.linear_velocity);
+        hash.add(b.angular_velocity);
+    }
+    const Pool<Contact>& contacts = contacts_.pool();
+    for (int32_t i = 0; i < contacts.capacity(); ++i) {
+        if (!contacts.is_live(i)) {
+            continue;
+        }
+        const Contact& c = contacts[i];
+        hash.add(i);
+        for (int32_t k = 0; k < c.point_count; ++k) {
+            hash.add(c.points[k].normal_impulse);
+            hash.add(c.points[k].tangent_impulse);
+        }
+        hash.add(c.rolling_impulse);
+    }
+    return hash.value();
 }
 
 }  // namespace i2d

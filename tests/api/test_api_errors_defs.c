@@ -461,6 +461,14 @@ I2D_TEST(api_errors_world_def_bad_values) {
         snprintf(what, sizeof what, "world def restitution_mixing = %d", bad_rules[i]);
         check_world_def_refused_at(__LINE__, what, &def);
     }
+    static const int bad_paths[] = {-1, 4, 1000, INT32_MIN};
+    for (size_t i = 0; i < sizeof bad_paths / sizeof bad_paths[0]; ++i) {
+        i2d_world_def def = i2d_default_world_def();
+        def.simd_path = (i2d_simd_path)bad_paths[i];
+        snprintf(what, sizeof what, "world def simd_path = %d", bad_paths[i]);
+        check_world_def_refused_at(__LINE__, what, &def);
+        I2D_CHECK(!i2d_simd_path_supported((i2d_simd_path)bad_paths[i]));
+    }
 
     /* The edges of every range are accepted, so the refusals above are about the values. */
     for (size_t i = 0; i < sizeof k_world_def_in_range / sizeof k_world_def_in_range[0]; ++i) {
@@ -478,6 +486,19 @@ I2D_TEST(api_errors_world_def_bad_values) {
         snprintf(what, sizeof what, "world def mixing rules = %d", (int)good_rules[i]);
         check_world_def_accepted_at(__LINE__, what, &def);
     }
+    /* Every path this machine supports is accepted; one it does not is refused. */
+    static const i2d_simd_path paths[] = {I2D_SIMD_AUTOMATIC, I2D_SIMD_SCALAR, I2D_SIMD_SSE2, I2D_SIMD_AVX2};
+    for (size_t i = 0; i < sizeof paths / sizeof paths[0]; ++i) {
+        i2d_world_def def = i2d_default_world_def();
+        def.simd_path = paths[i];
+        snprintf(what, sizeof what, "world def simd_path = %d", (int)paths[i]);
+        if (i2d_simd_path_supported(paths[i])) {
+            check_world_def_accepted_at(__LINE__, what, &def);
+        } else {
+            check_world_def_refused_at(__LINE__, what, &def);
+        }
+    }
+    I2D_CHECK(i2d_simd_path_supported(I2D_SIMD_AUTOMATIC) && i2d_simd_path_supported(I2D_SIMD_SCALAR));
 }
 
 I2D_TEST(api_errors_world_def_not_from_default) {

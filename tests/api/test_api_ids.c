@@ -91,6 +91,12 @@ static void check_world_id_refused(i2d_world_id w, const char* ctx) {
     CHECK_LAST_HANDLE_REFUSED(ctx, "i2d_world_get_counters");
     CHECK_IN(ctx, counters.body_count == 0 && counters.shape_count == 0 && counters.contact_count == 0 &&
                       counters.pair_count == 0);
+    const uint64_t hash = i2d_world_get_state_hash(w);
+    CHECK_LAST_HANDLE_REFUSED(ctx, "i2d_world_get_state_hash");
+    CHECK_IN(ctx, hash == 0);
+    const i2d_simd_path path = i2d_world_get_simd_path(w);
+    CHECK_LAST_HANDLE_REFUSED(ctx, "i2d_world_get_simd_path");
+    CHECK_IN(ctx, path == I2D_SIMD_SCALAR);
 
     i2d_body_def body_def = i2d_default_body_def();
     body_def.type = I2D_BODY_DYNAMIC;

@@ -66,6 +66,7 @@ class WorldDef(C.Structure):
         ("enable_sleep", C.c_bool),
         ("sleep_speed_threshold", C.c_float),
         ("time_to_sleep", C.c_float),
+        ("simd_path", C.c_int),
         ("internal_cookie", C.c_uint32),
     ]
 

@@ -1,0 +1,75 @@
+// SPDX-License-Identifier: MIT
+// ContactBlock: W contact constraints side by side, one SIMD lane each (structure of
+// arrays), as the contact kernels (contact_kernels.hpp) read and write them.
+//
+// Design note: every field is an array of W values so that a kernel loads W contacts'
+// worth with one instruction. A block holds contacts of one colour, which never share a
+// body the solver moves, so the W lanes are solved at once without races. W is 8 for
+// AVX2, 4 for SSE2 and 1 for the scalar path and for the overflow colour, whose
+// contacts do share bodies and are solved one at a time. A manifold with one point
+// leaves point 2 zeroed (no mass, no impulse): it changes nothing. Padding lanes at the
+// end of a colour name the fixed state and are zeroed the same way. Everything here is
+// plain data (no constructors): the AVX2 kernels are compiled with other flags, and
+// must not share inline code with the rest of the library.
+#pragma once
+
+#include <cstdint>
+
+namespace i2d {
+
+template <int W>
+struct ContactPointLanes {
+    float anchor_ax[W], anchor_ay[W];  // from A's centre of mass, m, world orientation
+    float anchor_bx[W], anchor_by[W];
+    float base_separation[W];     // separation minus dot(anchor_b - anchor_a, normal), m
+    float relative_velocity[W];   // normal speed at impact, for restitution, m/s
+    float start_speed[W];         // normal speed when the step began, m/s
+    float normal_mass[W], tangent_mass[W];  // kg
+    float normal_impulse[W], tangent_impulse[W];  // accumulated, N s
+    float max_normal_impulse[W];  // largest push in one iteration: did the point push?
+};
+
+template <int W>
+struct alignas(W >= 4 ? 4 * W : 4) ContactBlock {
+    int32_t state_a[W], state_b[W];  // in the state array; the fixed state for fixed bodies
+    float point_count[W];            // 1 or 2
+    float inv_mass_a[W], inv_mass_b[W];
+    float inv_inertia_a[W], inv_inertia_b[W];
+    float normal_x[W], normal_y[W];  // unit, from A to B
+    float friction[W], restitution[W];
+    float tangent_speed[W];          // surface speed along left_perp(normal), m/s
+    float rolling_resistance[W];     // torque arm, m
+    float rolling_mass[W], rolling_impulse[W];
+    float approach_acceleration[W];  // m/s^2 along -normal from gravity and forces, >= 0
+    float bias_rate[W], mass_scale[W], impulse_scale[W];  // the contact's softness
+    ContactPointLanes<W> points[2];
+};
+
+/// What one solve pass needs besides the constraints.
+struct SolvePass {
+    float inv_h;           // 1 / substep, 1/s
+    float push_max_speed;  // m/s
+    float elapsed;         // time since the step began, s
+    bool use_bias;         // push overlap out (solve) or not (relax)
+};
+
+struct BodyState;
+
+/// One instruction set's contact kernels over `count` blocks of its width.
+struct ContactKernels {
+    int32_t width;
+    const char* name;
+    void (*warm_start)(void* blocks, int32_t count, BodyState* states);
+    void (*solve)(void* blocks, int32_t count, BodyState* states, const SolvePass& pass);
+    void (*restitution)(void* blocks, int32_t count, BodyState* states, float threshold);
+};
+
+/// Always there: one lane at a time, plain C++. The overflow colour always uses it.
+const ContactKernels& scalar_contact_kernels();
+/// 4 lanes; null unless the library was built for x86-64.
+const ContactKernels* sse2_contact_kernels();
+/// 8 lanes; null unless built for x86-64 with a compiler that can target AVX2. The CPU
+/// must be checked before use.
+const ContactKernels* avx2_contact_kernels();
+
+}  // namespace i2d
