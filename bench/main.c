@@ -82,7 +82,7 @@ typedef struct options {
 static void usage(FILE* f) {
     fprintf(f,
             "usage: impulse2d_bench [--scene NAME[,NAME...]] [--sweep | --all] [--steps N] [--repeat R]\n"
-            "                       [--workers 1] [--csv | --json] [--list]\n"
+            "                       [--workers 1] [--simd PATH] [--csv | --json] [--list]\n"
             "  (default)      the scenes of scenes.md the engine can run, then the extras\n"
             "  --scene NAMES  only these scenes (see --list); may be given more than once\n"
             "  --sweep        the scaling sweep: rain_circles and pyramid_field at 1k, 4k, 16k, 64k bodies\n"
@@ -90,6 +90,7 @@ static void usage(FILE* f) {
             "  --steps N      steps per run, N >= 2 (the first is untimed); default: each scene's own\n"
             "  --repeat R     runs per scene, each in a new world, 1..%d; default 3\n"
             "  --workers W    worker threads; threads are not implemented yet, so only 1 is valid\n"
+            "  --simd PATH    contact kernels: automatic (default), scalar, sse2 or avx2\n"
             "  --csv, --json  machine-readable output instead of the table\n"
             "  --list         list the scenes and exit\n"
             "exit status: 0 every scene sane, 1 a sanity check failed or a run differed, 2 bad usage,\n"
@@ -141,6 +142,24 @@ static bool choose_scenes(const char* list, options* opt) {
     return true;
 }
 
+/* Sets bench_simd_path from its name; false (with a message) for an unknown or unsupported one. */
+static bool parse_simd_path(const char* name) {
+    static const char* const names[] = {"automatic", "scalar", "sse2", "avx2"};
+    int k;
+    for (k = 0; k < 4; ++k) {
+        if (strcmp(name, names[k]) == 0) {
+            if (!i2d_simd_path_supported((i2d_simd_path)k)) {
+                fprintf(stderr, "impulse2d_bench: --simd %s: not supported by this build or CPU\n", name);
+                return false;
+            }
+            bench_simd_path = (i2d_simd_path)k;
+            return true;
+        }
+    }
+    fprintf(stderr, "impulse2d_bench: --simd %s: expected automatic, scalar, sse2 or avx2\n", name);
+    return false;
+}
+
 static bool parse_options(int argc, char** argv, options* opt) {
     int i;
     memset(opt, 0, sizeof *opt);
@@ -162,6 +181,11 @@ static bool parse_options(int argc, char** argv, options* opt) {
                 fprintf(stderr, "impulse2d_bench: --workers %d: threads are not implemented yet in impulse2d; "
                                 "only --workers 1 is valid\n",
                         (int)opt->workers);
+                return false;
+            }
+            ++i;
+        } else if (strcmp(arg, "--simd") == 0 && value) {
+            if (!parse_simd_path(value)) {
                 return false;
             }
             ++i;
@@ -592,6 +616,19 @@ static void print_sleep_notes(const options* opt) {
     }
 }
 
+/* The name of the contact kernels the scenes' worlds use (bench_simd_path, automatic resolved). */
+static const char* simd_path_in_use(void) {
+    static const char* const names[] = {"automatic", "scalar", "sse2", "avx2"};
+    i2d_world_def def = i2d_default_world_def();
+    i2d_world_id world;
+    i2d_simd_path path;
+    def.simd_path = bench_simd_path;
+    world = i2d_world_create(&def);
+    path = i2d_world_get_simd_path(world);
+    i2d_world_destroy(world);
+    return (int)path >= 0 && (int)path < 4 ? names[path] : "unknown";
+}
+
 static void print_header(const options* opt) {
     if (opt->format == FORMAT_JSON) {
         printf("{\"build\": {");
@@ -607,8 +644,8 @@ static void print_header(const options* opt) {
     }
     bench_print_build_line(stdout, "bench");
     printf("# dt 1/60 s, %d substeps (a solve and a relax pass each), %d worker (threads are not "
-           "implemented yet)\n",
-           BENCH_SUBSTEPS, (int)opt->workers);
+           "implemented yet), contact kernels %s\n",
+           BENCH_SUBSTEPS, (int)opt->workers, simd_path_in_use());
     print_notes(opt);
     print_sleep_notes(opt);
     if (opt->format == FORMAT_CSV) {

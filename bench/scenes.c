@@ -26,9 +26,12 @@ static i2d_aabb aabb(float min_x, float min_y, float max_x, float max_y) {
     return b;
 }
 
+i2d_simd_path bench_simd_path = I2D_SIMD_AUTOMATIC;
+
 static bool create_world(bench_state* state, bool enable_sleep) {
     i2d_world_def def = i2d_default_world_def();
     def.enable_sleep = enable_sleep;
+    def.simd_path = bench_simd_path;
     state->sleep_enabled = enable_sleep;
     state->world = i2d_world_create(&def);
     return !I2D_IS_NULL(state->world);

@@ -15,6 +15,9 @@
 #define BENCH_TIME_STEP (1.0f / 60.0f)
 #define BENCH_SUBSTEPS 4
 
+/* The SIMD path every scene's world uses (the bench's --simd); automatic by default. */
+extern i2d_simd_path bench_simd_path;
+
 /* The world of one run and what its hook and sanity check need to find in it. */
 typedef struct bench_state {
     i2d_world_id world;

@@ -7,10 +7,14 @@
 // body the solver moves, so the W lanes are solved at once without races. W is 8 for
 // AVX2, 4 for SSE2 and 1 for the scalar path and for the overflow colour, whose
 // contacts do share bodies and are solved one at a time. A manifold with one point
-// leaves point 2 zeroed (no mass, no impulse): it changes nothing. Padding lanes at the
-// end of a colour name the fixed state and are zeroed the same way. Everything here is
-// plain data (no constructors): the AVX2 kernels are compiled with other flags, and
-// must not share inline code with the rest of the library.
+// leaves point 2 zeroed: a zero normal mass marks it, and the kernels mask it out, so
+// that a block of single points can skip point 2 altogether with the same result.
+// Padding lanes at the end of a colour name the fixed state and are zeroed the same way.
+// What can be derived cheaply is not stored (the softness follows from whether a body
+// is fixed, the rolling mass from the inertias): the solve passes stream every block
+// from memory, and a block is 38 values per contact. Everything here is plain data (no
+// constructors): the AVX2 kernels are compiled with other flags, and must not share
+// inline code with the rest of the library.
 #pragma once
 
 #include <cstdint>
@@ -24,7 +28,7 @@ struct ContactPointLanes {
     float base_separation[W];     // separation minus dot(anchor_b - anchor_a, normal), m
     float relative_velocity[W];   // normal speed at impact, for restitution, m/s
     float start_speed[W];         // normal speed when the step began, m/s
-    float normal_mass[W], tangent_mass[W];  // kg
+    float normal_mass[W], tangent_mass[W];  // kg; normal mass 0 marks a missing point 2
     float normal_impulse[W], tangent_impulse[W];  // accumulated, N s
     float max_normal_impulse[W];  // largest push in one iteration: did the point push?
 };
@@ -32,17 +36,20 @@ struct ContactPointLanes {
 template <int W>
 struct alignas(W >= 4 ? 4 * W : 4) ContactBlock {
     int32_t state_a[W], state_b[W];  // in the state array; the fixed state for fixed bodies
-    float point_count[W];            // 1 or 2
-    float inv_mass_a[W], inv_mass_b[W];
+    float inv_mass_a[W], inv_mass_b[W];  // 0 for a body the contact cannot move
     float inv_inertia_a[W], inv_inertia_b[W];
     float normal_x[W], normal_y[W];  // unit, from A to B
     float friction[W], restitution[W];
     float tangent_speed[W];          // surface speed along left_perp(normal), m/s
     float rolling_resistance[W];     // torque arm, m
-    float rolling_mass[W], rolling_impulse[W];
+    float rolling_impulse[W];
     float approach_acceleration[W];  // m/s^2 along -normal from gravity and forces, >= 0
-    float bias_rate[W], mass_scale[W], impulse_scale[W];  // the contact's softness
     ContactPointLanes<W> points[2];
+};
+
+/// Softness as the kernels take it (softness.hpp makes it).
+struct LaneSoftness {
+    float bias_rate, mass_scale, impulse_scale;
 };
 
 /// What one solve pass needs besides the constraints.
@@ -51,6 +58,8 @@ struct SolvePass {
     float push_max_speed;  // m/s
     float elapsed;         // time since the step began, s
     bool use_bias;         // push overlap out (solve) or not (relax)
+    LaneSoftness soft;        // between two moving bodies
+    LaneSoftness fixed_soft;  // against a body the contact cannot move (twice as stiff)
 };
 
 struct BodyState;

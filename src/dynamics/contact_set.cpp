@@ -37,7 +37,8 @@ float speculative_margin(const Body& a, const Body& b, float time_step) {
 }
 
 bool is_moving(const Body& b) {
-    return b.awake_index != null_index && (b.linear_velocity.x != 0.0f || b.linear_velocity.y != 0.0f || b.angular_velocity != 0.0f);
+    return b.awake_index != null_index &&
+           (b.linear_velocity.x != 0.0f || b.linear_velocity.y != 0.0f || b.angular_velocity != 0.0f);
 }
 
 bool is_asleep(const Body& b) { return b.island != null_index && b.awake_index == null_index; }

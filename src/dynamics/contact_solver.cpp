@@ -3,7 +3,7 @@
 // by colour, and the impulses back.
 #include "dynamics/contact_solver.hpp"
 
-#include <cstddef>
+#include <cstring>
 
 #include "math/math.hpp"
 
@@ -20,18 +20,6 @@ float effective_mass(const BodyMotion& a, const BodyMotion& b, Vec2 r_a, Vec2 r_
 
 Vec2 relative_velocity(const BodyState& a, const BodyState& b, Vec2 r_a, Vec2 r_b) {
     return (b.linear_velocity + cross(b.angular_velocity, r_b)) - (a.linear_velocity + cross(a.angular_velocity, r_a));
-}
-
-// A lane that changes nothing: both bodies the fixed state, no mass, no impulse.
-template <int W>
-void clear_lane(ContactBlock<W>& block, int lane, int32_t fixed_state) {
-    // Every field but the two state arrays is a float array of W: zero lane `lane` of each.
-    float* fields = reinterpret_cast<float*>(&block.point_count);
-    const int field_count = int((sizeof(ContactBlock<W>) - offsetof(ContactBlock<W>, point_count)) / (W * sizeof(float)));
-    for (int f = 0; f < field_count; ++f) {
-        fields[f * W + lane] = 0.0f;
-    }
-    block.state_a[lane] = block.state_b[lane] = fixed_state;
 }
 
 template <int W>
@@ -54,9 +42,10 @@ void pack_point(ContactPointLanes<W>& p, int lane, const ContactPoint& cp, Vec2 
 
 // Contacts with a static or kinematic body are twice as stiff (Box2D v3's choice): the
 // fixed side cannot give, so the pair has half the mass to move and settles as fast.
+// The block was zeroed: what a contact leaves out (a second point, padding lanes) stays
+// zero, which the kernels read as nothing to do.
 template <int W>
 void pack_lane(ContactBlock<W>& block, int lane, const Contact& contact, const ContactLayout& layout) {
-    clear_lane(block, lane, layout.fixed_state);
     const int32_t state_a = contact.state_a != null_index ? contact.state_a : layout.fixed_state;
     const int32_t state_b = contact.state_b != null_index ? contact.state_b : layout.fixed_state;
     const BodyMotion& ma = layout.motions[state_a];
@@ -65,7 +54,6 @@ void pack_lane(ContactBlock<W>& block, int lane, const Contact& contact, const C
     const BodyState& sb = layout.states[state_b];
     block.state_a[lane] = state_a;
     block.state_b[lane] = state_b;
-    block.point_count[lane] = float(contact.point_count);
     block.inv_mass_a[lane] = ma.inv_mass;
     block.inv_mass_b[lane] = mb.inv_mass;
     block.inv_inertia_a[lane] = ma.inv_inertia;
@@ -76,15 +64,9 @@ void pack_lane(ContactBlock<W>& block, int lane, const Contact& contact, const C
     block.restitution[lane] = contact.restitution;
     block.tangent_speed[lane] = contact.tangent_speed;
     block.rolling_resistance[lane] = contact.rolling_resistance;
-    const float k = ma.inv_inertia + mb.inv_inertia;
-    block.rolling_mass[lane] = k > 0.0f ? 1.0f / k : 0.0f;
     block.rolling_impulse[lane] = contact.rolling_impulse;
     const Vec2 relative_acceleration = mb.free_acceleration - ma.free_acceleration;
     block.approach_acceleration[lane] = max_of(-dot(relative_acceleration, contact.normal), 0.0f);
-    const Softness& soft = ma.inv_mass == 0.0f || mb.inv_mass == 0.0f ? layout.fixed_soft : layout.soft;
-    block.bias_rate[lane] = soft.bias_rate;
-    block.mass_scale[lane] = soft.mass_scale;
-    block.impulse_scale[lane] = soft.impulse_scale;
     for (int32_t i = 0; i < contact.point_count; ++i) {
         pack_point(block.points[i], lane, contact.points[i], contact.normal, sa, sb, ma, mb);
     }
@@ -122,6 +104,7 @@ void ContactSolver::pack_colors(const ContactLayout& layout) {
     }
     std::vector<ContactBlock<W>>& out = blocks<W>();
     out.resize(std::size_t(color_block_starts_[std::size_t(colors)]));
+    std::memset(static_cast<void*>(out.data()), 0, out.size() * sizeof(ContactBlock<W>));
     lane_contacts_.assign(out.size() * W, -1);
     for (int32_t c = 0; c < colors; ++c) {
         const int32_t first = layout.color_starts[c], count = layout.color_starts[c + 1] - first;
@@ -134,7 +117,7 @@ void ContactSolver::pack_colors(const ContactLayout& layout) {
                 pack_lane(block, k % W, layout.contacts[contact], layout);
                 lane_contacts_[std::size_t(first_lane + k)] = contact;
             } else {
-                clear_lane(block, k % W, layout.fixed_state);
+                block.state_a[k % W] = block.state_b[k % W] = layout.fixed_state;
             }
         }
     }
@@ -144,6 +127,7 @@ void ContactSolver::pack_overflow(const ContactLayout& layout) {
     const int32_t overflow = layout.color_count - 1;
     const int32_t first = layout.color_starts[overflow], count = layout.color_starts[overflow + 1] - first;
     overflow_.resize(std::size_t(count));
+    std::memset(static_cast<void*>(overflow_.data()), 0, overflow_.size() * sizeof(ContactBlock<1>));
     overflow_contacts_.assign(layout.ordered + first, layout.ordered + first + count);
     for (int32_t k = 0; k < count; ++k) {
         pack_lane(overflow_[std::size_t(k)], 0, layout.contacts[overflow_contacts_[std::size_t(k)]], layout);

@@ -40,7 +40,6 @@
 #include "dynamics/body_state.hpp"
 #include "dynamics/contact.hpp"
 #include "dynamics/contact_block.hpp"
-#include "dynamics/softness.hpp"
 
 namespace i2d {
 
@@ -53,7 +52,6 @@ struct ContactLayout {
     const BodyState* states;      // velocities before the step
     const BodyMotion* motions;
     int32_t fixed_state;          // index of the shared fixed state
-    Softness soft, fixed_soft;    // contacts between two moving bodies, and with a fixed one
 };
 
 class ContactSolver {

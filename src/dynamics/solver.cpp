@@ -8,6 +8,7 @@
 #include "dynamics/contact_set.hpp"
 #include "dynamics/island.hpp"
 #include "dynamics/shape_bounds.hpp"
+#include "dynamics/softness.hpp"
 #include "math/math.hpp"
 
 namespace i2d {
@@ -46,16 +47,29 @@ void Solver::step(float time_step, int32_t substep_count) {
     const float h = time_step / float(substep_count);
     const float inv_h = float(substep_count) / time_step;
     gather_bodies();
-    prepare_contacts(h);
+    prepare_contacts();
     const WorldDef& s = links_.settings;
+    // Stiffness is capped at a quarter of the substep rate, beyond which the implicit
+    // spring stops being accurate; contacts with a fixed body get twice the frequency.
+    const float hertz = min_of(s.contact_hertz, 0.25f / h);
+    const Softness soft = make_softness(hertz, s.contact_damping_ratio, h);
+    const Softness fixed_soft = make_softness(2.0f * hertz, s.contact_damping_ratio, h);
+    SolvePass pass{inv_h,
+                   s.contact_push_max_speed,
+                   0.0f,
+                   true,
+                   {soft.bias_rate, soft.mass_scale, soft.impulse_scale},
+                   {fixed_soft.bias_rate, fixed_soft.mass_scale, fixed_soft.impulse_scale}};
     BodyState* states = states_.data();
     for (int32_t i = 0; i < substep_count; ++i) {
         integrate_velocities(h);
         contact_solver_.warm_start(states);
-        const float elapsed = float(i + 1) * h;
-        contact_solver_.solve(states, SolvePass{inv_h, s.contact_push_max_speed, elapsed, true});
+        pass.elapsed = float(i + 1) * h;
+        pass.use_bias = true;
+        contact_solver_.solve(states, pass);
         integrate_positions(h);
-        contact_solver_.solve(states, SolvePass{inv_h, s.contact_push_max_speed, elapsed, false});
+        pass.use_bias = false;
+        contact_solver_.solve(states, pass);
     }
     contact_solver_.apply_restitution(states, s.restitution_threshold);
     contact_solver_.store(links_.contacts.pool(), states, s.contact_slop);
@@ -87,28 +101,20 @@ void Solver::gather_bodies() {
     motions_[count] = BodyMotion{};
 }
 
-// Stiffness is capped at a quarter of the substep rate, beyond which the implicit spring
-// stops being accurate; contacts with a fixed body get twice the frequency.
-void Solver::prepare_contacts(float h) {
-    const WorldDef& s = links_.settings;
-    const float hertz = min_of(s.contact_hertz, 0.25f / h);
+void Solver::prepare_contacts() {
     color_contacts();
-    const ContactLayout layout{links_.contacts.pool(),
-                               ordered_contacts_.data(),
-                               color_starts_.data(),
-                               ConstraintColors::count,
-                               states_.data(),
-                               motions_.data(),
-                               int32_t(states_.size()) - 1,
-                               make_softness(hertz, s.contact_damping_ratio, h),
-                               make_softness(2.0f * hertz, s.contact_damping_ratio, h)};
+    const ContactLayout layout{links_.contacts.pool(), ordered_contacts_.data(), color_starts_.data(),
+                               ConstraintColors::count, states_.data(),      motions_.data(),
+                               int32_t(states_.size()) - 1};
     contact_solver_.prepare(layout);
 }
 
 // A colour for every awake contact the solver will see, then the contacts laid out
-// colour by colour (a counting sort that keeps awake order within a colour), the order
-// they are solved in. A body the contact cannot move (static, kinematic, asleep) takes
-// no colour slot.
+// colour by colour (a counting sort that keeps awake order), the order they are solved
+// in. Within a colour, whose contacts are independent, two-point contacts come first,
+// so that SIMD blocks hold one kind and blocks of single points skip the second; the
+// overflow colour is solved in sequence and keeps awake order. A body the contact
+// cannot move (static, kinematic, asleep) takes no colour slot.
 void Solver::color_contacts() {
     const std::vector<int32_t>& awake = links_.contacts.awake();
     const Pool<Contact>& contacts = links_.contacts.pool();
@@ -131,9 +137,14 @@ void Solver::color_contacts() {
     ordered_contacts_.resize(std::size_t(color_starts_[ConstraintColors::count]));
     std::vector<int32_t>& next = scratch_starts_;
     next.assign(color_starts_.begin(), color_starts_.end() - 1);
-    for (std::size_t k = 0; k < awake.size(); ++k) {
-        if (contact_colors_[k] >= 0) {
-            ordered_contacts_[std::size_t(next[std::size_t(contact_colors_[k])]++)] = awake[k];
+    for (int32_t pass = 0; pass < 2; ++pass) {
+        const int32_t points = 2 - pass;
+        for (std::size_t k = 0; k < awake.size(); ++k) {
+            const int32_t color = contact_colors_[k];
+            const bool in_sequence = color == ConstraintColors::overflow;
+            if (color >= 0 && (in_sequence ? pass == 0 : contacts[awake[k]].point_count == points)) {
+                ordered_contacts_[std::size_t(next[std::size_t(color)]++)] = awake[k];
+            }
         }
     }
 }

@@ -58,7 +58,7 @@ public:
 
 private:
     void gather_bodies();
-    void prepare_contacts(float h);
+    void prepare_contacts();
     void color_contacts();
     void integrate_velocities(float h);
     void integrate_positions(float h);
