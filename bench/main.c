@@ -82,7 +82,7 @@ typedef struct options {
 static void usage(FILE* f) {
     fprintf(f,
             "usage: impulse2d_bench [--scene NAME[,NAME...]] [--sweep | --all] [--steps N] [--repeat R]\n"
-            "                       [--workers 1] [--simd PATH] [--csv | --json] [--list]\n"
+            "                       [--workers 1] [--simd PATH] [--no-recycling] [--csv | --json] [--list]\n"
             "  (default)      the scenes of scenes.md the engine can run, then the extras\n"
             "  --scene NAMES  only these scenes (see --list); may be given more than once\n"
             "  --sweep        the scaling sweep: rain_circles and pyramid_field at 1k, 4k, 16k, 64k bodies\n"
@@ -91,6 +91,7 @@ static void usage(FILE* f) {
             "  --repeat R     runs per scene, each in a new world, 1..%d; default 3\n"
             "  --workers W    worker threads; threads are not implemented yet, so only 1 is valid\n"
             "  --simd PATH    contact kernels: automatic (default), scalar, sse2 or avx2\n"
+            "  --no-recycling make every manifold afresh at every step (enable_contact_recycling off)\n"
             "  --csv, --json  machine-readable output instead of the table\n"
             "  --list         list the scenes and exit\n"
             "exit status: 0 every scene sane, 1 a sanity check failed or a run differed, 2 bad usage,\n"
@@ -189,6 +190,8 @@ static bool parse_options(int argc, char** argv, options* opt) {
                 return false;
             }
             ++i;
+        } else if (strcmp(arg, "--no-recycling") == 0) {
+            bench_contact_recycling = false;
         } else if (strcmp(arg, "--scene") == 0 && value) {
             if (!choose_scenes(value, opt)) {
                 return false;
@@ -644,8 +647,8 @@ static void print_header(const options* opt) {
     }
     bench_print_build_line(stdout, "bench");
     printf("# dt 1/60 s, %d substeps (a solve and a relax pass each), %d worker (threads are not "
-           "implemented yet), contact kernels %s\n",
-           BENCH_SUBSTEPS, (int)opt->workers, simd_path_in_use());
+           "implemented yet), contact kernels %s, contact recycling %s\n",
+           BENCH_SUBSTEPS, (int)opt->workers, simd_path_in_use(), bench_contact_recycling ? "on" : "off");
     print_notes(opt);
     print_sleep_notes(opt);
     if (opt->format == FORMAT_CSV) {

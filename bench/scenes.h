@@ -17,6 +17,8 @@
 
 /* The SIMD path every scene's world uses (the bench's --simd); automatic by default. */
 extern i2d_simd_path bench_simd_path;
+/* Whether the scenes' worlds recycle contact manifolds (the bench's --no-recycling turns it off). */
+extern bool bench_contact_recycling;
 
 /* The world of one run and what its hook and sanity check need to find in it. */
 typedef struct bench_state {

@@ -81,6 +81,7 @@ WorldDef to_core(const i2d_world_def& def) {
     core.sleep_speed_threshold = def.sleep_speed_threshold;
     core.time_to_sleep = def.time_to_sleep;
     core.simd_path = SimdPath(int(def.simd_path));
+    core.enable_contact_recycling = def.enable_contact_recycling;
     return core;
 }
 

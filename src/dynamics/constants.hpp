@@ -50,6 +50,19 @@ constexpr int32_t max_substeps = 1000;
 /// products with speeds and steps.
 constexpr float max_setting = 1.0e5f;
 
+/// Contact recycling (contact.hpp): a manifold is kept while the farthest point of the
+/// two bodies moved less than this relative to each other since it was made, m. A
+/// quarter of the linear slop: kept points stay within a millimetre of fresh ones, and
+/// a resting stack, whose bodies move microns per step, skips the narrowphase for many
+/// steps. Larger values save more narrowphase and let contact points lag further.
+constexpr float recycle_touching_distance = 0.00125f;
+/// The same for contacts that were apart: smaller, so that an approaching feature is
+/// picked up before it arrives, m.
+constexpr float recycle_apart_distance = 0.0005f;
+/// Cosine of the largest turn of either body while its manifolds are kept: 1 degree.
+/// Anchors and normals keep their world orientation, so a larger turn tilts them.
+constexpr float recycle_min_cos = 0.99985f;
+
 /// Softest contact a world accepts, Hz: below it stacks sink visibly at rest.
 constexpr float min_contact_hertz = 1.0e-3f;
 

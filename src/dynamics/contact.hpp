@@ -31,6 +31,7 @@ enum ContactFlags : uint32_t {
                                           // both bodies dynamic)
     contact_moves_a = 1u << 6,            // the solver may move body A (dynamic and awake)
     contact_moves_b = 1u << 7,
+    contact_recyclable = 1u << 8,         // the poses below are those the manifold was made at
 };
 
 /// A contact's link in one of its bodies' contact lists; keys are (contact << 1) | edge.
@@ -46,6 +47,8 @@ inline int32_t edge_of_key(int32_t key) { return key & 1; }
 struct ContactPoint {
     Vec2 anchor_a, anchor_b;      // from each centre of mass to the point, m, world orientation
     float separation = 0.0f;      // m, negative when overlapping, at the start of the step
+    float base_separation = 0.0f; // separation minus dot(centre offset + anchor_b - anchor_a,
+                                  // normal) when the manifold was made, m (for recycling)
     float normal_impulse = 0.0f;  // accumulated, N s
     float tangent_impulse = 0.0f;
     uint32_t id = 0;              // feature key, stable while the same features touch
@@ -67,11 +70,33 @@ struct Contact {
     int32_t awake_index = null_index;  // in the awake contact list, if there
     // The bodies' places in the solver's state array this step (null when fixed).
     int32_t state_a = null_index, state_b = null_index;
+    // The bodies' rotations and B's pose seen from A when the manifold was made.
+    Rot made_rotation_a, made_rotation_b;
+    Transform made_relative_pose;
 };
 
 /// Replaces the contact's points by those of a fresh world-space manifold, anchored at the
 /// bodies' centres of mass, and carries each point's impulses over from the old point
 /// with the same feature id (new points start from zero).
 void update_points(Contact& contact, const Manifold& fresh, Vec2 center_a, Vec2 center_b);
+
+/// Contact recycling (after Box2D v3's): while two bodies barely moved relative to each
+/// other since the manifold was made, the manifold is kept, its anchors ride the bodies
+/// and only the separations follow their motion, the way the substeps measure it. This
+/// saves the narrowphase for resting stacks. The margin bounds how far the kept points
+/// may be from the manifold the narrowphase would make now.
+struct RecycleLimits {
+    float touching_distance;  // m: relative travel of the farthest point, touching before
+    float apart_distance;     // m: the same for contacts that were not touching
+    float min_cos;            // cosine of the largest turn of either body
+};
+
+/// Remembers the bodies' poses and centres of mass a fresh manifold was made at.
+void remember_poses(Contact& contact, const Transform& xf_a, Vec2 center_a, const Transform& xf_b, Vec2 center_b);
+/// Keeps the manifold if the bodies moved within the limits since it was made, updating
+/// the separations; returns false (changing nothing) when a fresh manifold is needed.
+/// extent: the farthest shape point of either moving body from its centre of mass, m.
+bool recycle_manifold(Contact& contact, const Transform& xf_a, Vec2 center_a, const Transform& xf_b, Vec2 center_b,
+                      float extent, const RecycleLimits& limits);
 
 }  // namespace i2d

@@ -8,6 +8,8 @@
 #include "collision/geometry.hpp"
 #include "collision/manifold.hpp"
 #include "core/assert.hpp"
+#include "core/reserve.hpp"
+#include "dynamics/constants.hpp"
 #include "dynamics/island.hpp"
 #include "math/math.hpp"
 
@@ -79,7 +81,7 @@ void ContactSet::create_contact(int32_t shape_a, int32_t shape_b) {
         return;  // the pair has a contact already
     }
     // Room in the awake list for every contact slot first, so that waking never allocates.
-    awake_.reserve(std::size_t(contacts_.capacity()) + 1);
+    reserve_room(awake_, std::size_t(contacts_.capacity()) + 1);
     const int32_t index = contacts_.allocate();
     if (index == null_index) {
         pair_set_.remove(pair_key(shape_a, shape_b));
@@ -259,7 +261,10 @@ void ContactSet::collide(float time_step) {
             c.flags |= contact_disjoint;
             c.point_count = 0;
         } else if (is_solid(c)) {
-            update_contact(c, a, b, time_step);
+            mix_material(c, a, b);
+            if (!recycle(c, bodies_[a.body], bodies_[b.body])) {
+                update_contact(c, a, b, time_step);
+            }
         }
         if (is_solid(c)) {
             note_point_change(index, had_points);
@@ -284,9 +289,9 @@ void ContactSet::note_point_change(int32_t index, bool had_points) {
     }
 }
 
-void ContactSet::update_contact(Contact& c, const Shape& a, const Shape& b, float time_step) {
-    const Body& body_a = bodies_[a.body];
-    const Body& body_b = bodies_[b.body];
+// Material is mixed at every narrowphase update, so that changing a shape's friction or
+// restitution takes effect on the contacts it already has.
+void ContactSet::mix_material(Contact& c, const Shape& a, const Shape& b) const {
     c.friction = mix(settings_.friction_mixing, a.friction, b.friction);
     c.restitution = mix(settings_.restitution_mixing, a.restitution, b.restitution);
     c.rolling_resistance = a.rolling_resistance == 0.0f && b.rolling_resistance == 0.0f
@@ -297,9 +302,29 @@ void ContactSet::update_contact(Contact& c, const Shape& a, const Shape& b, floa
     // for A, whose outward normal is n, and along -left_perp(n) for B. No slip between
     // the moving surfaces means dot(vB - vA, left_perp(n)) = speed A + speed B.
     c.tangent_speed = a.tangent_speed + b.tangent_speed;
+}
+
+bool ContactSet::recycle(Contact& c, const Body& a, const Body& b) const {
+    if (!settings_.enable_contact_recycling) {
+        return false;
+    }
+    const float extent = max_of(a.type == BodyType::static_body ? 0.0f : a.max_extent,
+                                b.type == BodyType::static_body ? 0.0f : b.max_extent);
+    return recycle_manifold(c, a.transform, a.center, b.transform, b.center, extent,
+                            RecycleLimits{recycle_touching_distance, recycle_apart_distance, recycle_min_cos});
+}
+
+void ContactSet::update_contact(Contact& c, const Shape& a, const Shape& b, float time_step) {
+    const Body& body_a = bodies_[a.body];
+    const Body& body_b = bodies_[b.body];
     const Manifold fresh = collide_shapes(a.geometry, body_a.transform, b.geometry, body_b.transform,
                                           speculative_margin(body_a, body_b, time_step));
     update_points(c, fresh, body_a.center, body_b.center);
+    remember_poses(c, body_a.transform, body_a.center, body_b.transform, body_b.center);
+}
+
+void ContactSet::forget_manifolds(int32_t body) {
+    visit_contacts(body, [&](int32_t contact, int32_t) { contacts_[contact].flags &= ~uint32_t(contact_recyclable); });
 }
 
 // Contacts that gained their first point join their bodies' islands; those that lost

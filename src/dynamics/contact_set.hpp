@@ -53,6 +53,9 @@ public:
 
     /// Destroys the shape's contacts between steps (all, or those its filter now forbids).
     void destroy_contacts_of_shape(int32_t shape, bool only_filtered_out);
+    /// The body's centre of mass moved within it (its shapes changed): its manifolds'
+    /// anchors are stale and must be made afresh.
+    void forget_manifolds(int32_t body);
     /// A body woke: its contacts join the awake list, with its new solver state.
     void body_woke(int32_t body);
     /// A body fell asleep: its contacts with nothing awake leave the awake list.
@@ -87,6 +90,8 @@ private:
     void destroy_contact(int32_t contact, bool during_step);
     void add_awake(int32_t contact);
     void remove_awake(int32_t contact);
+    void mix_material(Contact& contact, const Shape& a, const Shape& b) const;
+    bool recycle(Contact& contact, const Body& a, const Body& b) const;
     void update_contact(Contact& contact, const Shape& a, const Shape& b, float time_step);
     void note_point_change(int32_t contact, bool had_points);
     void report_touch_changes(const Contact& contact, bool touching_now);

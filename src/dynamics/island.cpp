@@ -5,6 +5,7 @@
 #include <cfloat>
 
 #include "core/assert.hpp"
+#include "core/reserve.hpp"
 #include "dynamics/contact_set.hpp"
 
 namespace i2d {
@@ -64,9 +65,9 @@ void Islands::detach_body(int32_t body) {
 
 void Islands::add_body(int32_t body) {
     // Room in the awake lists for every slot first, so that waking never allocates.
-    awake_bodies_.reserve(std::size_t(bodies_.capacity()) + 1);
+    reserve_room(awake_bodies_, std::size_t(bodies_.capacity()) + 1);
     const int32_t island = islands_.allocate();
-    awake_islands_.reserve(std::size_t(islands_.capacity()) + 1);
+    reserve_room(awake_islands_, std::size_t(islands_.capacity()) + 1);
     append_body(island, body);
     add_awake_island(island);
     add_awake_body(body);

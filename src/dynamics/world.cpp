@@ -157,6 +157,7 @@ void World::update_mass(int32_t body) {
         b.max_extent = max_of(b.max_extent, extent_from(shapes[s].geometry, b.local_center));
     }
     b.center = transform_point(b.transform, b.local_center);
+    contacts_.forget_manifolds(body);
 }
 
 // Before pairs are found: a body whose velocity changed since its box was fattened (a

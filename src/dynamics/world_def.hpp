@@ -22,6 +22,7 @@ struct WorldDef {
     float sleep_speed_threshold = 0.05f;
     float time_to_sleep = 0.5f;
     SimdPath simd_path = SimdPath::automatic;  // must be supported (simd_path_supported)
+    bool enable_contact_recycling = true;      // keep manifolds of bodies that barely moved
 };
 
 }  // namespace i2d

@@ -1274,7 +1274,7 @@ I2D_TEST(api_world_struct_layout) {
     CHECK_LAYOUT(offsetof(i2d_world_counters, awake_body_count), 28);
     CHECK_LAYOUT(offsetof(i2d_world_counters, sleeping_island_count), 32);
 
-    CHECK_LAYOUT(sizeof(i2d_world_def), 60);
+    CHECK_LAYOUT(sizeof(i2d_world_def), 64);
     CHECK_LAYOUT(offsetof(i2d_world_def, gravity), 0);
     CHECK_LAYOUT(offsetof(i2d_world_def, contact_slop), 8);
     CHECK_LAYOUT(offsetof(i2d_world_def, contact_hertz), 12);
@@ -1288,7 +1288,8 @@ I2D_TEST(api_world_struct_layout) {
     CHECK_LAYOUT(offsetof(i2d_world_def, sleep_speed_threshold), 44);
     CHECK_LAYOUT(offsetof(i2d_world_def, time_to_sleep), 48);
     CHECK_LAYOUT(offsetof(i2d_world_def, simd_path), 52);
-    CHECK_LAYOUT(offsetof(i2d_world_def, internal_cookie), 56);
+    CHECK_LAYOUT(offsetof(i2d_world_def, enable_contact_recycling), 56);
+    CHECK_LAYOUT(offsetof(i2d_world_def, internal_cookie), 60);
 
     CHECK_LAYOUT(sizeof(i2d_body_def), 64);
     CHECK_LAYOUT(offsetof(i2d_body_def, type), 0);

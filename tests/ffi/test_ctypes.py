@@ -67,6 +67,7 @@ class WorldDef(C.Structure):
         ("sleep_speed_threshold", C.c_float),
         ("time_to_sleep", C.c_float),
         ("simd_path", C.c_int),
+        ("enable_contact_recycling", C.c_bool),
         ("internal_cookie", C.c_uint32),
     ]
 
