@@ -92,6 +92,8 @@ template <>
 std::vector<ContactBlock<4>>& ContactSolver::blocks<4>() { return blocks4_; }
 template <>
 std::vector<ContactBlock<8>>& ContactSolver::blocks<8>() { return blocks8_; }
+template <>
+std::vector<ContactBlock<16>>& ContactSolver::blocks<16>() { return blocks16_; }
 
 // Colour by colour, each colour's contacts W to a block, the last block padded.
 template <int W>
@@ -136,6 +138,7 @@ void ContactSolver::pack_overflow(const ContactLayout& layout) {
 
 void ContactSolver::prepare(const ContactLayout& layout) {
     switch (kernels_->width) {
+        case 16: pack_colors<16>(layout); break;
         case 8: pack_colors<8>(layout); break;
         case 4: pack_colors<4>(layout); break;
         default: pack_colors<1>(layout); break;
@@ -147,10 +150,12 @@ void ContactSolver::prepare(const ContactLayout& layout) {
 // blocks, count).
 template <class Stage>
 void ContactSolver::for_each_color(Stage&& stage) {
-    void* colored = kernels_->width == 8   ? static_cast<void*>(blocks8_.data())
+    void* colored = kernels_->width == 16  ? static_cast<void*>(blocks16_.data())
+                    : kernels_->width == 8 ? static_cast<void*>(blocks8_.data())
                     : kernels_->width == 4 ? static_cast<void*>(blocks4_.data())
                                            : static_cast<void*>(blocks1_.data());
-    const std::size_t block_bytes = kernels_->width == 8   ? sizeof(ContactBlock<8>)
+    const std::size_t block_bytes = kernels_->width == 16  ? sizeof(ContactBlock<16>)
+                                    : kernels_->width == 8 ? sizeof(ContactBlock<8>)
                                     : kernels_->width == 4 ? sizeof(ContactBlock<4>)
                                                            : sizeof(ContactBlock<1>);
     for (std::size_t c = 0; c + 1 < color_block_starts_.size(); ++c) {
@@ -191,7 +196,8 @@ bool ContactSolver::any_bounce(const std::vector<ContactBlock<W>>& blocks, float
 
 // Only when something bounces, and then over every contact that pushed, a few times.
 void ContactSolver::apply_restitution(BodyState* states, float threshold) {
-    const bool colored = kernels_->width == 8   ? any_bounce(blocks8_, threshold)
+    const bool colored = kernels_->width == 16  ? any_bounce(blocks16_, threshold)
+                         : kernels_->width == 8 ? any_bounce(blocks8_, threshold)
                          : kernels_->width == 4 ? any_bounce(blocks4_, threshold)
                                                 : any_bounce(blocks1_, threshold);
     if (!colored && !any_bounce(overflow_, threshold)) {
@@ -229,6 +235,7 @@ void ContactSolver::store_blocks(const std::vector<ContactBlock<W>>& blocks, con
 
 void ContactSolver::store(Pool<Contact>& contacts, const BodyState* states, float slop) const {
     switch (kernels_->width) {
+        case 16: store_blocks(blocks16_, lane_contacts_, contacts, states, slop); break;
         case 8: store_blocks(blocks8_, lane_contacts_, contacts, states, slop); break;
         case 4: store_blocks(blocks4_, lane_contacts_, contacts, states, slop); break;
         default: store_blocks(blocks1_, lane_contacts_, contacts, states, slop); break;

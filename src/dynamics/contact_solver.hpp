@@ -90,6 +90,7 @@ private:
     std::vector<ContactBlock<1>> blocks1_;
     std::vector<ContactBlock<4>> blocks4_;
     std::vector<ContactBlock<8>> blocks8_;
+    std::vector<ContactBlock<16>> blocks16_;
     std::vector<ContactBlock<1>> overflow_;
     std::vector<int32_t> color_block_starts_;  // per colour (overflow excluded), one more at the end
     std::vector<int32_t> lane_contacts_;       // per lane of the colours' blocks: its contact, or -1

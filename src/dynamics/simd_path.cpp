@@ -12,12 +12,16 @@ bool simd_path_supported(SimdPath path) {
         case SimdPath::scalar: return true;
         case SimdPath::sse2: return sse2_contact_kernels() != nullptr;
         case SimdPath::avx2: return avx2_contact_kernels() != nullptr && cpu_has_avx2();
+        case SimdPath::avx512: return avx512_contact_kernels() != nullptr && cpu_has_avx512f();
         case SimdPath::count: break;
     }
     return false;
 }
 
 SimdPath widest_simd_path() {
+    if (simd_path_supported(SimdPath::avx512)) {
+        return SimdPath::avx512;
+    }
     if (simd_path_supported(SimdPath::avx2)) {
         return SimdPath::avx2;
     }
@@ -28,6 +32,7 @@ const ContactKernels& contact_kernels_for(SimdPath path) {
     switch (path == SimdPath::automatic ? widest_simd_path() : path) {
         case SimdPath::sse2: return *sse2_contact_kernels();
         case SimdPath::avx2: return *avx2_contact_kernels();
+        case SimdPath::avx512: return *avx512_contact_kernels();
         default: return scalar_contact_kernels();
     }
 }

@@ -144,9 +144,9 @@ std::vector<uint64_t> run(i2d_simd_path path) {
 I2D_TEST(det_every_simd_path_gives_the_scalar_bits) {
     const std::vector<uint64_t> scalar = run(I2D_SIMD_SCALAR);
     I2D_REQUIRE(scalar.size() == steps / hash_every);
-    const i2d_simd_path paths[] = {I2D_SIMD_SSE2, I2D_SIMD_AVX2, I2D_SIMD_AUTOMATIC};
-    const char* names[] = {"sse2", "avx2", "automatic"};
-    for (int p = 0; p < 3; ++p) {
+    const i2d_simd_path paths[] = {I2D_SIMD_SSE2, I2D_SIMD_AVX2, I2D_SIMD_AVX512, I2D_SIMD_AUTOMATIC};
+    const char* names[] = {"sse2", "avx2", "avx512", "automatic"};
+    for (int p = 0; p < 4; ++p) {
         if (!i2d_simd_path_supported(paths[p])) {
             fprintf(stderr, "    %s: not supported on this machine, skipped\n", names[p]);
             continue;
@@ -172,7 +172,7 @@ I2D_TEST(det_same_path_twice_gives_the_same_bits) {
 }
 
 I2D_TEST(det_world_reports_the_path_it_uses) {
-    const i2d_simd_path paths[] = {I2D_SIMD_SCALAR, I2D_SIMD_SSE2, I2D_SIMD_AVX2};
+    const i2d_simd_path paths[] = {I2D_SIMD_SCALAR, I2D_SIMD_SSE2, I2D_SIMD_AVX2, I2D_SIMD_AVX512};
     for (const i2d_simd_path path : paths) {
         i2d_world_def def = i2d_default_world_def();
         def.simd_path = path;
