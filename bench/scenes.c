@@ -34,6 +34,7 @@ static bool create_world(bench_state* state, bool enable_sleep) {
     def.enable_sleep = enable_sleep;
     def.simd_path = bench_simd_path;
     def.enable_contact_recycling = bench_contact_recycling;
+    def.enable_profile = true;
     state->sleep_enabled = enable_sleep;
     state->world = i2d_world_create(&def);
     return !I2D_IS_NULL(state->world);

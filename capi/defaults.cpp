@@ -24,6 +24,7 @@ I2D_API i2d_world_def i2d_default_world_def(void) {
     def.time_to_sleep = core.time_to_sleep;
     def.simd_path = I2D_SIMD_AUTOMATIC;
     def.enable_contact_recycling = core.enable_contact_recycling;
+    def.enable_profile = core.enable_profile;
     def.internal_cookie = def_cookie;
     return def;
 }

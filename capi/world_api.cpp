@@ -82,6 +82,7 @@ WorldDef to_core(const i2d_world_def& def) {
     core.time_to_sleep = def.time_to_sleep;
     core.simd_path = SimdPath(int(def.simd_path));
     core.enable_contact_recycling = def.enable_contact_recycling;
+    core.enable_profile = def.enable_profile;
     return core;
 }
 

@@ -62,7 +62,8 @@ I2D_API i2d_status i2d_world_step(i2d_world_id world, float time_step, int32_t s
 I2D_API i2d_status i2d_world_set_gravity(i2d_world_id world, i2d_vec2 gravity);
 I2D_API i2d_vec2 i2d_world_get_gravity(i2d_world_id world);
 I2D_API i2d_world_counters i2d_world_get_counters(i2d_world_id world);
-/** Where the last step's time went (zeros before the first step). */
+/** Where the last step's time went: zeros before the first timed step. The first call
+ *  turns timing on for the steps after it (or set the world def's enable_profile). */
 I2D_API i2d_profile i2d_world_get_profile(i2d_world_id world);
 /** A 64-bit hash of the bits of every body's transform and velocities and every
  *  contact's impulses: equal hashes mean equal states. Two runs of the same scene give

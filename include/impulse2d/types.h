@@ -108,6 +108,10 @@ typedef struct i2d_world_def {
      *  narrowphase again: resting stacks cost far less. False makes every contact's
      *  manifold afresh at every step. */
     bool enable_contact_recycling;
+    /** Default false. Times every step's stages (i2d_world_get_profile) from the first
+     *  step on. Without it timing starts at the first i2d_world_get_profile call: until
+     *  then a step reads no clock. */
+    bool enable_profile;
     /** Set by i2d_default_world_def(); do not set. */
     uint32_t internal_cookie;
 } i2d_world_def;
@@ -188,7 +192,8 @@ typedef struct i2d_world_counters {
 } i2d_world_counters;
 
 /** Where the last step's wall time went, ms, summed over its substeps. Timing only: it
- *  never changes results. */
+ *  never changes results. Steps are timed once asked: from the first
+ *  i2d_world_get_profile call, or from creation with the world def's enable_profile. */
 typedef struct i2d_profile {
     float step;           /**< the whole i2d_world_step call */
     float pairs;          /**< broadphase: new pairs from shapes that moved */

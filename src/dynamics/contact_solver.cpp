@@ -106,12 +106,18 @@ void ContactSolver::pack_colors(const ContactLayout& layout) {
     }
     std::vector<ContactBlock<W>>& out = blocks<W>();
     out.resize(std::size_t(color_block_starts_[std::size_t(colors)]));
-    std::memset(static_cast<void*>(out.data()), 0, out.size() * sizeof(ContactBlock<W>));
+    if (!out.empty()) {
+        std::memset(static_cast<void*>(out.data()), 0, out.size() * sizeof(ContactBlock<W>));
+    }
     lane_contacts_.assign(out.size() * W, -1);
+    runs_.clear();
     for (int32_t c = 0; c < colors; ++c) {
         const int32_t first = layout.color_starts[c], count = layout.color_starts[c + 1] - first;
         const int32_t first_lane = color_block_starts_[std::size_t(c)] * W;
         const int32_t lanes = (count + W - 1) / W * W;
+        if (count > 0) {
+            runs_.push_back({color_block_starts_[std::size_t(c)], lanes / W});
+        }
         for (int32_t k = 0; k < lanes; ++k) {
             ContactBlock<W>& block = out[std::size_t((first_lane + k) / W)];
             if (k < count) {
@@ -129,7 +135,9 @@ void ContactSolver::pack_overflow(const ContactLayout& layout) {
     const int32_t overflow = layout.color_count - 1;
     const int32_t first = layout.color_starts[overflow], count = layout.color_starts[overflow + 1] - first;
     overflow_.resize(std::size_t(count));
-    std::memset(static_cast<void*>(overflow_.data()), 0, overflow_.size() * sizeof(ContactBlock<1>));
+    if (count > 0) {
+        std::memset(static_cast<void*>(overflow_.data()), 0, overflow_.size() * sizeof(ContactBlock<1>));
+    }
     overflow_contacts_.assign(layout.ordered + first, layout.ordered + first + count);
     for (int32_t k = 0; k < count; ++k) {
         pack_lane(overflow_[std::size_t(k)], 0, layout.contacts[overflow_contacts_[std::size_t(k)]], layout);
@@ -158,11 +166,8 @@ void ContactSolver::for_each_color(Stage&& stage) {
                                     : kernels_->width == 8 ? sizeof(ContactBlock<8>)
                                     : kernels_->width == 4 ? sizeof(ContactBlock<4>)
                                                            : sizeof(ContactBlock<1>);
-    for (std::size_t c = 0; c + 1 < color_block_starts_.size(); ++c) {
-        const int32_t count = color_block_starts_[c + 1] - color_block_starts_[c];
-        if (count > 0) {
-            stage(*kernels_, static_cast<char*>(colored) + block_bytes * std::size_t(color_block_starts_[c]), count);
-        }
+    for (const ColorRun& run : runs_) {
+        stage(*kernels_, static_cast<char*>(colored) + block_bytes * std::size_t(run.first_block), run.block_count);
     }
     if (!overflow_.empty()) {
         stage(scalar_contact_kernels(), static_cast<void*>(overflow_.data()), int32_t(overflow_.size()));

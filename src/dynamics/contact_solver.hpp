@@ -93,6 +93,10 @@ private:
     std::vector<ContactBlock<16>> blocks16_;
     std::vector<ContactBlock<1>> overflow_;
     std::vector<int32_t> color_block_starts_;  // per colour (overflow excluded), one more at the end
+    struct ColorRun {
+        int32_t first_block, block_count;
+    };
+    std::vector<ColorRun> runs_;  // the colours that have contacts, in solve order
     std::vector<int32_t> lane_contacts_;       // per lane of the colours' blocks: its contact, or -1
     std::vector<int32_t> overflow_contacts_;
 };

@@ -15,7 +15,8 @@ World::World(const WorldDef& def)
     : settings(def),
       contacts_(settings, bodies, shapes, broad_phase_, islands_, events_),
       islands_(bodies, contacts_),
-      solver_(SolverLinks{settings, bodies, shapes, contacts_, islands_, broad_phase_, events_}) {}
+      solver_(SolverLinks{settings, bodies, shapes, contacts_, islands_, broad_phase_, events_}),
+      profiling_(def.enable_profile) {}
 
 int32_t World::create_body(const BodyDef& def) {
     const int32_t index = bodies.allocate();

@@ -114,7 +114,12 @@ public:
     /// The contact kernels' instruction set (automatic resolved).
     SimdPath simd_path() const { return solver_.simd_path(); }
     const WorldEvents& events() const { return events_.current; }
-    const StepProfile& profile() const { return profile_; }
+    /// The last step's stage times. Timing costs nothing until it is asked for: reading
+    /// the profile (or the def's enable_profile) turns it on from the next step.
+    const StepProfile& profile() const {
+        profiling_ = true;
+        return profile_;
+    }
     bool is_locked() const { return lock_depth_ > 0; }
     /// Aborts on a broken internal invariant; does nothing unless built with I2D_VALIDATE.
     /// Runs after every step (a whole-world check per creation would make building a
@@ -143,6 +148,7 @@ private:
     Islands islands_;
     Solver solver_;
     StepProfile profile_;
+    mutable bool profiling_ = false;
     mutable int32_t lock_depth_ = 0;
 };
 

@@ -23,6 +23,7 @@ struct WorldDef {
     float time_to_sleep = 0.5f;
     SimdPath simd_path = SimdPath::automatic;  // must be supported (simd_path_supported)
     bool enable_contact_recycling = true;      // keep manifolds of bodies that barely moved
+    bool enable_profile = false;               // time the step's stages from the first step
 };
 
 }  // namespace i2d

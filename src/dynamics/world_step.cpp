@@ -8,7 +8,7 @@
 namespace i2d {
 
 void World::step(float time_step, int32_t substep_count) {
-    Timer total, timer;
+    Timer total(profiling_), timer(profiling_);
     profile_ = StepProfile{};
     events_.begin_step();
     if (time_step == 0.0f) {

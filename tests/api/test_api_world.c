@@ -1289,6 +1289,7 @@ I2D_TEST(api_world_struct_layout) {
     CHECK_LAYOUT(offsetof(i2d_world_def, time_to_sleep), 48);
     CHECK_LAYOUT(offsetof(i2d_world_def, simd_path), 52);
     CHECK_LAYOUT(offsetof(i2d_world_def, enable_contact_recycling), 56);
+    CHECK_LAYOUT(offsetof(i2d_world_def, enable_profile), 57);
     CHECK_LAYOUT(offsetof(i2d_world_def, internal_cookie), 60);
 
     CHECK_LAYOUT(sizeof(i2d_body_def), 64);
@@ -1367,6 +1368,28 @@ I2D_TEST(api_world_struct_layout) {
     /* Elsewhere only the ids' size is fixed by the contract. */
     CHECK_LAYOUT(sizeof(i2d_body_id), 8);
 #endif
+}
+
+/* Timing costs nothing until asked for: a world that never read its profile (nor set
+ * enable_profile) reports zeros; the first read turns timing on for the next step, and
+ * enable_profile times from the first step. */
+I2D_TEST(api_world_profile_only_when_asked) {
+    i2d_world_def world_def = i2d_default_world_def();
+    I2D_CHECK(!world_def.enable_profile);
+    i2d_world_id quiet = i2d_world_create(&world_def);
+    world_def.enable_profile = true;
+    i2d_world_id timed = i2d_world_create(&world_def);
+    I2D_REQUIRE(!I2D_IS_NULL(quiet) && !I2D_IS_NULL(timed));
+    for (int s = 0; s < 3; ++s) {
+        I2D_CHECK_STATUS(i2d_world_step(quiet, 1.0f / 60.0f, 4), I2D_OK);
+        I2D_CHECK_STATUS(i2d_world_step(timed, 1.0f / 60.0f, 4), I2D_OK);
+    }
+    I2D_CHECK(i2d_world_get_profile(quiet).step == 0.0f);
+    I2D_CHECK(i2d_world_get_profile(timed).step > 0.0f);
+    I2D_CHECK_STATUS(i2d_world_step(quiet, 1.0f / 60.0f, 4), I2D_OK);
+    I2D_CHECK(i2d_world_get_profile(quiet).step > 0.0f);
+    i2d_world_destroy(quiet);
+    i2d_world_destroy(timed);
 }
 
 /* The profile splits one step's wall time into stages measured by the same clock: every

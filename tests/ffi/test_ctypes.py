@@ -68,6 +68,7 @@ class WorldDef(C.Structure):
         ("time_to_sleep", C.c_float),
         ("simd_path", C.c_int),
         ("enable_contact_recycling", C.c_bool),
+        ("enable_profile", C.c_bool),
         ("internal_cookie", C.c_uint32),
     ]
 

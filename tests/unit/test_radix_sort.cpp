@@ -52,6 +52,15 @@ I2D_TEST(unit_radix_sort_equals_stable_sort) {
     I2D_CHECK(same_as_stable_sort(random_items(rng, 5000, 0xFF000000u)));
 }
 
+I2D_TEST(unit_radix_sort_short_lists_sort_stably) {
+    // Below the radix passes' threshold the sort is by insertion: every length up to
+    // past it, with ties.
+    TestRng rng(5u);
+    for (int32_t count = 2; count <= 80; ++count) {
+        I2D_CHECK(same_as_stable_sort(random_items(rng, count, 0x0F00000Fu)));
+    }
+}
+
 I2D_TEST(unit_radix_sort_degenerate_inputs) {
     I2D_CHECK(same_as_stable_sort({}));
     I2D_CHECK(same_as_stable_sort({{42u, 0}}));
