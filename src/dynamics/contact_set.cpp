@@ -8,6 +8,7 @@
 #include "collision/geometry.hpp"
 #include "collision/manifold.hpp"
 #include "core/assert.hpp"
+#include "core/prefetch.hpp"
 #include "core/reserve.hpp"
 #include "dynamics/constants.hpp"
 #include "dynamics/island.hpp"
@@ -248,7 +249,10 @@ void ContactSet::find_new_contacts(BroadPhase& broad_phase) {
 void ContactSet::collide(float time_step) {
     islands_to_wake_.clear();
     point_changes_.clear();
-    for (const int32_t index : awake_) {
+    const int32_t count = int32_t(awake_.size());
+    for (int32_t k = 0; k < count; ++k) {
+        prefetch_for_collide(k, count);
+        const int32_t index = awake_[std::size_t(k)];
         Contact& c = contacts_[index];
         const uint32_t at_start = (c.flags & contact_touching) ? uint32_t(contact_touching_at_start) : 0u;
         c.flags = (c.flags & ~uint32_t(contact_touching | contact_touching_at_start)) | at_start;
@@ -257,7 +261,7 @@ void ContactSet::collide(float time_step) {
         set_solver_state(c, 0, bodies_[a.body]);
         set_solver_state(c, 1, bodies_[b.body]);
         const bool had_points = c.point_count > 0;
-        if (!overlaps(broad_phase_.fat_aabb(a.proxy_key), broad_phase_.fat_aabb(b.proxy_key))) {
+        if (!overlaps(a.fat_aabb, b.fat_aabb)) {
             c.flags |= contact_disjoint;
             c.point_count = 0;
         } else if (is_solid(c)) {
@@ -269,6 +273,22 @@ void ContactSet::collide(float time_step) {
         if (is_solid(c)) {
             note_point_change(index, had_points);
         }
+    }
+}
+
+// The awake list is in no spatial order: the contacts (and their shapes and bodies)
+// it names next are asked for ahead, so that their cache misses overlap.
+void ContactSet::prefetch_for_collide(int32_t k, int32_t count) const {
+    constexpr int32_t contacts_ahead = 12, neighbours_ahead = 6;
+    if (k + contacts_ahead < count) {
+        prefetch_object(contacts_[awake_[std::size_t(k + contacts_ahead)]]);
+    }
+    if (k + neighbours_ahead < count) {
+        const Contact& c = contacts_[awake_[std::size_t(k + neighbours_ahead)]];
+        prefetch_line(&shapes_[c.shape_a]);
+        prefetch_line(&shapes_[c.shape_b]);
+        prefetch_object(bodies_[c.edges[0].body]);
+        prefetch_object(bodies_[c.edges[1].body]);
     }
 }
 
@@ -314,11 +334,16 @@ bool ContactSet::recycle(Contact& c, const Body& a, const Body& b) const {
                             RecycleLimits{recycle_touching_distance, recycle_apart_distance, recycle_min_cos});
 }
 
+// Shapes whose tight boxes are farther apart than the speculative margin along an axis
+// are at least that far apart: the narrowphase would give no points, and is skipped.
 void ContactSet::update_contact(Contact& c, const Shape& a, const Shape& b, float time_step) {
     const Body& body_a = bodies_[a.body];
     const Body& body_b = bodies_[b.body];
-    const Manifold fresh = collide_shapes(a.geometry, body_a.transform, b.geometry, body_b.transform,
-                                          speculative_margin(body_a, body_b, time_step));
+    const float margin = speculative_margin(body_a, body_b, time_step);
+    const float gap = max_of(max_of(a.aabb.lower.x - b.aabb.upper.x, b.aabb.lower.x - a.aabb.upper.x),
+                             max_of(a.aabb.lower.y - b.aabb.upper.y, b.aabb.lower.y - a.aabb.upper.y));
+    const Manifold fresh = gap > margin ? Manifold{}
+                                        : collide_shapes(a.geometry, body_a.transform, b.geometry, body_b.transform, margin);
     update_points(c, fresh, body_a.center, body_b.center);
     remember_poses(c, body_a.transform, body_a.center, body_b.transform, body_b.center);
 }

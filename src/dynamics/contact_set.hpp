@@ -94,6 +94,7 @@ private:
     bool recycle(Contact& contact, const Body& a, const Body& b) const;
     void update_contact(Contact& contact, const Shape& a, const Shape& b, float time_step);
     void note_point_change(int32_t contact, bool had_points);
+    void prefetch_for_collide(int32_t k, int32_t count) const;
     void report_touch_changes(const Contact& contact, bool touching_now);
     ShapePairEvent event_of(const Contact& contact) const;
 

@@ -5,7 +5,7 @@
 
 #include <cstring>
 
-#include "core/force_inline.hpp"
+#include "core/prefetch.hpp"
 #include "math/math.hpp"
 
 namespace i2d {
@@ -75,31 +75,15 @@ void pack_lane(ContactBlock<W>& block, int lane, const Contact& contact, const C
 
 // Contacts are read in colour order, which jumps through the contact pool: each one is
 // a cache miss unless asked for ahead. The bodies' states and motions are asked for
-// once the contact itself is close. The helpers are forced inline: GCC counts a
-// prefetch as no side effect, finds these functions pure, and drops the calls.
+// once the contact itself is close.
 constexpr int32_t prefetch_contacts_ahead = 16;
 constexpr int32_t prefetch_bodies_ahead = 4;
-
-I2D_FORCE_INLINE void prefetch(const void* address) {
-#if defined(__GNUC__) || defined(__clang__)
-    __builtin_prefetch(address);
-#else
-    (void)address;
-#endif
-}
-
-I2D_FORCE_INLINE void prefetch_contact(const Contact& c) {
-    const char* bytes = reinterpret_cast<const char*>(&c);
-    for (std::size_t offset = 0; offset < sizeof(Contact); offset += 64) {
-        prefetch(bytes + offset);
-    }
-}
 
 I2D_FORCE_INLINE void prefetch_bodies(const Contact& c, const ContactLayout& layout) {
     for (const int32_t state : {c.state_a, c.state_b}) {
         if (state != null_index) {
-            prefetch(layout.states + state);
-            prefetch(layout.motions + state);
+            prefetch_line(layout.states + state);
+            prefetch_line(layout.motions + state);
         }
     }
 }
@@ -107,7 +91,7 @@ I2D_FORCE_INLINE void prefetch_bodies(const Contact& c, const ContactLayout& lay
 I2D_FORCE_INLINE void prefetch_ahead(const ContactLayout& layout, int32_t index, int32_t end) {
     const int32_t contact_ahead = index + prefetch_contacts_ahead;
     if (contact_ahead < end) {
-        prefetch_contact(layout.contacts[layout.ordered[contact_ahead]]);
+        prefetch_object(layout.contacts[layout.ordered[contact_ahead]]);
     }
     const int32_t bodies_ahead = index + prefetch_bodies_ahead;
     if (bodies_ahead < end) {
@@ -271,7 +255,7 @@ void ContactSolver::store_blocks(const std::vector<ContactBlock<W>>& blocks, con
         }
         const std::size_t ahead = k + std::size_t(prefetch_contacts_ahead);
         if (ahead < contacts_of_lanes.size() && contacts_of_lanes[ahead] >= 0) {
-            prefetch_contact(contacts[contacts_of_lanes[ahead]]);
+            prefetch_object(contacts[contacts_of_lanes[ahead]]);
         }
         const ContactBlock<W>& block = blocks[k / W];
         const int lane = int(k % W);

@@ -33,20 +33,26 @@ struct ShapeDef {
     void* user_data = nullptr;
 };
 
+// Design note: what the narrowphase and the bounds update read every step comes first,
+// in one cache line (body, proxy, boxes, material); the geometry, hundreds of bytes for
+// a polygon, follows. The fat box is the broadphase proxy's, kept here too so that
+// neither step walks the tree to read it.
 struct Shape {
     int32_t body = null_index;
-    int32_t prev_in_body = null_index, next_in_body = null_index;
-    Geometry geometry;
-    float density = 0.0f, friction = 0.0f, restitution = 0.0f;
+    int32_t proxy_key = null_index;  // in the broadphase
+    AABB aabb;      // tight world bounds, current after every step and every move
+    AABB fat_aabb;  // the proxy's box (as of the broadphase's next commit)
+    float friction = 0.0f, restitution = 0.0f;
     float rolling_resistance = 0.0f;  // coefficient, times the shape's radius at contacts
     float tangent_speed = 0.0f;       // m/s, counter-clockwise along the outline
-    Filter filter;
     bool is_sensor = false;
     bool enable_contact_events = true;
     bool enable_sensor_events = true;
+    int32_t prev_in_body = null_index, next_in_body = null_index;
+    float density = 0.0f;
+    Filter filter;
     void* user_data = nullptr;
-    AABB aabb;  // tight world bounds, current after every step and every move
-    int32_t proxy_key = null_index;  // in the broadphase
+    Geometry geometry;
 };
 
 /// A shared positive group always collides, a shared negative group never does;

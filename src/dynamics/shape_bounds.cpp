@@ -30,8 +30,9 @@ void update_shape_bounds(const Body& body, Pool<Shape>& shapes, BroadPhase& broa
         shape.aabb = compute_aabb(shape.geometry, body.transform);
         const AABB needed = ahead ? union_of(shape.aabb, {shape.aabb.lower + displacement, shape.aabb.upper + displacement})
                                   : shape.aabb;
-        if (!contains(broad_phase.fat_aabb(shape.proxy_key), needed)) {
-            broad_phase.move_proxy(shape.proxy_key, fatten(shape.aabb, body.type, displacement));
+        if (!contains(shape.fat_aabb, needed)) {
+            shape.fat_aabb = fatten(shape.aabb, body.type, displacement);
+            broad_phase.move_proxy(shape.proxy_key, shape.fat_aabb);
         }
     }
 }

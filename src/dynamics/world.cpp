@@ -57,7 +57,8 @@ void World::destroy_body(int32_t body) {
 void World::create_proxy(int32_t shape, bool query_now) {
     Shape& s = shapes[shape];
     const BodyType type = bodies[s.body].type;
-    s.proxy_key = broad_phase_.create_proxy(fatten(s.aabb, type, Vec2{}), s.filter.category_bits, shape,
+    s.fat_aabb = fatten(s.aabb, type, Vec2{});
+    s.proxy_key = broad_phase_.create_proxy(s.fat_aabb, s.filter.category_bits, shape,
                                             proxy_kind_of(type), query_now);
 }
 
