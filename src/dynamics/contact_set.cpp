@@ -220,10 +220,15 @@ void ContactSet::body_slept(int32_t body) {
     });
 }
 
+// Most candidates are pairs that have a contact already: the pair set answers that
+// with one lookup, before the shapes and bodies are read.
 void ContactSet::find_new_contacts(BroadPhase& broad_phase) {
     new_pairs_.clear();
     broad_phase.update_pairs(
         [this](int32_t shape_a, int32_t shape_b) {
+            if (pair_set_.contains(pair_key(shape_a, shape_b))) {
+                return false;
+            }
             const Shape& a = shapes_[shape_a];
             const Shape& b = shapes_[shape_b];
             if (a.body == b.body || (a.is_sensor && b.is_sensor)) {
@@ -232,7 +237,7 @@ void ContactSet::find_new_contacts(BroadPhase& broad_phase) {
             if (bodies_[a.body].type != BodyType::dynamic && bodies_[b.body].type != BodyType::dynamic) {
                 return false;
             }
-            return should_collide(a.filter, b.filter) && !pair_set_.contains(pair_key(shape_a, shape_b));
+            return should_collide(a.filter, b.filter);
         },
         new_pairs_);
     for (const ShapePairCandidate& pair : new_pairs_) {
