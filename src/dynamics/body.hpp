@@ -60,6 +60,7 @@ struct Body {
     int32_t island = null_index;       // every moving body has one; static bodies none
     int32_t island_prev = null_index, island_next = null_index;  // the island's body list
     int32_t move_event = null_index;   // its body move event of the last step, if any
+    bool needs_cover = false;          // velocity or pose changed since its boxes were fattened
 };
 
 }  // namespace i2d

@@ -214,7 +214,8 @@ void Solver::finalize_body(int32_t k, float time_step) {
     b.transform.p = b.center - rotate(b.transform.q, b.local_center);
     b.force = {};
     b.torque = 0.0f;
-    update_shape_bounds(b, links_.shapes, links_.broad_phase, time_step * b.linear_velocity, false);
+    // Fattened for the next step too, assuming the same time step (the world checks).
+    update_shape_bounds(b, links_.shapes, links_.broad_phase, time_step * b.linear_velocity, true);
 
     const WorldDef& settings = links_.settings;
     if (settings.enable_sleep) {

@@ -38,6 +38,7 @@ int32_t World::create_body(const BodyDef& def) {
     update_mass(index);
     if (b.type != BodyType::static_body) {
         islands_.add_body(index);
+        mark_for_cover(index);
     }
     return index;
 }
@@ -60,6 +61,7 @@ void World::create_proxy(int32_t shape, bool query_now) {
     s.fat_aabb = fatten(s.aabb, type, Vec2{});
     s.proxy_key = broad_phase_.create_proxy(s.fat_aabb, s.filter.category_bits, shape,
                                             proxy_kind_of(type), query_now);
+    mark_for_cover(s.body);  // the new box is not stretched along the body's motion
 }
 
 int32_t World::create_shape(int32_t body, const ShapeDef& def, const Geometry& geometry) {
@@ -162,15 +164,40 @@ void World::update_mass(int32_t body) {
     contacts_.forget_manifolds(body);
 }
 
-// Before pairs are found: a body whose velocity changed since its box was fattened (a
-// new body, a velocity or impulse set by the caller) must have a box that covers the
-// step ahead, or a fast body could pass through a thin wall in the first step.
+// Before pairs are found, every moving shape's fat box must cover the step ahead, or a
+// fast body could pass through a thin wall before its pair exists. The last step's
+// bounds update fattened the boxes for its own time step and final velocities; only
+// bodies the caller changed since (created, moved, given a velocity or an impulse)
+// need checking again, unless the time step changed.
 void World::cover_step_ahead(float time_step) {
-    for (const int32_t body : islands_.awake_bodies()) {
-        const Body& b = bodies[body];
+    const bool same_step = time_step == last_time_step_;
+    last_time_step_ = time_step;
+    const auto cover = [&](int32_t body) {
+        Body& b = bodies[body];
+        b.needs_cover = false;
         update_shape_bounds(b, shapes, broad_phase_, time_step * b.linear_velocity, true);
+    };
+    if (same_step) {
+        for (const int32_t body : to_cover_) {
+            if (bodies.is_live(body) && bodies[body].needs_cover && is_awake(body)) {
+                cover(body);
+            }
+        }
+    } else {
+        for (const int32_t body : islands_.awake_bodies()) {
+            cover(body);
+        }
     }
+    to_cover_.clear();
     broad_phase_.commit_moves();
+}
+
+void World::mark_for_cover(int32_t body) {
+    Body& b = bodies[body];
+    if (b.type != BodyType::static_body && !b.needs_cover) {
+        b.needs_cover = true;
+        to_cover_.push_back(body);
+    }
 }
 
 // Moving a body wakes it and whatever touches it (a static floor moved away from under a
@@ -183,6 +210,7 @@ void World::set_transform(int32_t body, const Transform& xf) {
     b.center = transform_point(xf, b.local_center);
     update_shape_bounds(b, shapes, broad_phase_, Vec2{}, false);
     broad_phase_.commit_moves();
+    mark_for_cover(body);
 }
 
 void World::set_linear_velocity(int32_t body, Vec2 v) {
@@ -194,6 +222,7 @@ void World::set_linear_velocity(int32_t body, Vec2 v) {
         wake_body(body);
     }
     b.linear_velocity = v;
+    mark_for_cover(body);
 }
 
 void World::set_angular_velocity(int32_t body, float w) {
@@ -243,6 +272,7 @@ bool World::change_velocity(int32_t body, Vec2 dv, float dw, bool wake) {
     if (prepare_to_receive(body, wake)) {
         b.linear_velocity = v;
         b.angular_velocity = w;
+        mark_for_cover(body);
     }
     return true;
 }

@@ -136,6 +136,7 @@ private:
     void update_mass(int32_t body);
     void create_proxy(int32_t shape, bool query_now);
     void cover_step_ahead(float time_step);
+    void mark_for_cover(int32_t body);
     bool accumulate(int32_t body, Vec2 force, float torque, bool wake);
     bool change_velocity(int32_t body, Vec2 dv, float dw, bool wake);
     bool prepare_to_receive(int32_t body, bool wake);
@@ -147,6 +148,8 @@ private:
     ContactSet contacts_;
     Islands islands_;
     Solver solver_;
+    std::vector<int32_t> to_cover_;  // bodies whose boxes must cover the next step afresh
+    float last_time_step_ = 0.0f;
     StepProfile profile_;
     mutable bool profiling_ = false;
     mutable int32_t lock_depth_ = 0;
