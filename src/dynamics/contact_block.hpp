@@ -57,7 +57,8 @@ struct SolvePass {
     float inv_h;           // 1 / substep, 1/s
     float push_max_speed;  // m/s
     float elapsed;         // time since the step began, s
-    bool use_bias;         // push overlap out (solve) or not (relax)
+    bool use_bias;         // push overlap out and pull drift back (solve) or not (relax)
+    float anchor_rate;     // 1/s: share of a sticking point's drift that friction removes per second
     LaneSoftness soft;        // between two moving bodies
     LaneSoftness fixed_soft;  // against a body the contact cannot move (twice as stiff)
 };

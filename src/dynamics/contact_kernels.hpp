@@ -285,18 +285,27 @@ I2D_FORCE_INLINE void warm_start_block(ContactBlock<W>& c, BodyState* states) {
     b.scatter(states, c.state_b);
 }
 
-// Separation of a point now: as prepared, plus how far its two anchors moved apart along
-// the normal since (anchors ride their bodies' motion and turn).
+/// Where a point's two anchors are relative to each other now: anchors ride their
+/// bodies' motion and turn since the step began.
 template <class L>
-I2D_FORCE_INLINE typename L::F current_separation(const BodyLanes<L>& a, const BodyLanes<L>& b, const PairLanes<L>& c,
-                                                  const PointLanes<L>& p, typename L::F base_separation) {
-    using F = typename L::F;
-    const F ra_x = a.dqc * p.rax - a.dqs * p.ray, ra_y = a.dqs * p.rax + a.dqc * p.ray;
-    const F rb_x = b.dqc * p.rbx - b.dqs * p.rby, rb_y = b.dqs * p.rbx + b.dqc * p.rby;
-    const F moved_x = (b.dpx - a.dpx) + (rb_x - ra_x);
-    const F moved_y = (b.dpy - a.dpy) + (rb_y - ra_y);
-    return (moved_x * c.nx + moved_y * c.ny) + base_separation;
-}
+struct AnchorOffset {
+    typename L::F x, y;
+
+    I2D_FORCE_INLINE static AnchorOffset of(const BodyLanes<L>& a, const BodyLanes<L>& b, const PointLanes<L>& p) {
+        using F = typename L::F;
+        const F ra_x = a.dqc * p.rax - a.dqs * p.ray, ra_y = a.dqs * p.rax + a.dqc * p.ray;
+        const F rb_x = b.dqc * p.rbx - b.dqs * p.rby, rb_y = b.dqs * p.rbx + b.dqc * p.rby;
+        return {(b.dpx - a.dpx) + (rb_x - ra_x), (b.dpy - a.dpy) + (rb_y - ra_y)};
+    }
+    /// Separation: as prepared, plus how far the anchors moved apart along the normal.
+    I2D_FORCE_INLINE typename L::F separation(const PairLanes<L>& c, typename L::F base_separation) const {
+        return (x * c.nx + y * c.ny) + base_separation;
+    }
+    /// Drift: how far the anchors slid apart along the tangent since the step began.
+    I2D_FORCE_INLINE typename L::F drift(const PairLanes<L>& c, const PointLanes<L>& p) const {
+        return (x - (p.rbx - p.rax)) * c.tx() + (y - (p.rby - p.ray)) * c.ty();
+    }
+};
 
 // A gap allows approach up to closing it within the substep (speculative); overlap is
 // pushed out softly, at most push_max_speed, and only when the pass uses the bias. A
@@ -338,15 +347,26 @@ I2D_FORCE_INLINE void track_impact(ContactBlock<W>& c, int i, typename L::F sepa
 }
 
 // Coulomb friction towards the surfaces' relative speed (zero but for conveyor belts).
+// In the solve pass a sticking point also pulls back how far its two anchors slid apart
+// since the step began (its drift), capped at the Coulomb limit like the rest of the
+// friction: a velocity-only friction leaves each substep's slip in place, a loaded pile
+// shears a little every step, and a tall pile creeps sideways. The relax pass that
+// follows removes the velocity this adds, as it does the push-out's. Surfaces that move
+// (tangent speed) are meant to slide, and have no anchors.
 template <class L, int W>
 I2D_FORCE_INLINE void solve_friction(Velocities<L>& v, ContactBlock<W>& c, const PairLanes<L>& pair,
                                      const PointLanes<L> p[2], const PointImpulse<L> x[2],
-                                     const SecondPoint<L>& second) {
+                                     const SecondPoint<L>& second, const typename L::F drift[2],
+                                     const SolvePass& pass) {
     using F = typename L::F;
     const F friction = L::load(c.friction), tangent_speed = L::load(c.tangent_speed);
+    const typename L::M anchored = L::eq(tangent_speed, L::splat(0.0f));
     for (int i = 0; i < (second.any ? 2 : 1); ++i) {
         const Velocities<L> before = v;
-        const F vt = relative_speed(v, p[i], pair.tx(), pair.ty()) - tangent_speed;
+        F vt = relative_speed(v, p[i], pair.tx(), pair.ty()) - tangent_speed;
+        if (pass.use_bias) {
+            vt = L::blend(anchored, vt, vt + L::splat(pass.anchor_rate) * drift[i]);
+        }
         const F max_friction = friction * x[i].normal;
         const F old = L::load(c.points[i].tangent_impulse);
         const F impulse = clamp_lanes<L>(old - L::load(c.points[i].tangent_mass) * vt, -max_friction, max_friction);
@@ -393,10 +413,14 @@ I2D_FORCE_INLINE void solve_block(ContactBlock<W>& c, BodyState* states, const S
     PointLanes<L> p[2];
     PointTerms<L> terms[2];
     PointImpulse<L> x[2];
-    F mass[2];
+    F mass[2], drift[2] = {L::splat(0.0f), L::splat(0.0f)};
     for (int i = 0; i < points; ++i) {
         p[i] = PointLanes<L>::load(c.points[i]);
-        const F separation = current_separation(a, b, pair, p[i], L::load(c.points[i].base_separation));
+        const AnchorOffset<L> offset = AnchorOffset<L>::of(a, b, p[i]);
+        const F separation = offset.separation(pair, L::load(c.points[i].base_separation));
+        if (pass.use_bias) {
+            drift[i] = offset.drift(pair, p[i]);
+        }
         terms[i] = point_terms(pair, separation, pass);
         x[i] = {L::load(c.points[i].normal_impulse), L::load(c.points[i].max_normal_impulse)};
         mass[i] = L::load(c.points[i].normal_mass);
@@ -414,7 +438,7 @@ I2D_FORCE_INLINE void solve_block(ContactBlock<W>& c, BodyState* states, const S
         L::store(c.points[i].normal_impulse, x[i].normal);
         L::store(c.points[i].max_normal_impulse, x[i].max_normal);
     }
-    solve_friction<L, W>(v, c, pair, p, x, second);
+    solve_friction<L, W>(v, c, pair, p, x, second, drift, pass);
     solve_rolling<L, W>(v, c, pair, (L::splat(0.0f) + x[0].normal) + x[1].normal);
     v.write_to(a, b);
     a.scatter(states, c.state_a);
