@@ -54,10 +54,15 @@ uint32_t moves_flag(const Body& b, int32_t edge) {
     return moves ? (edge == 0 ? uint32_t(contact_moves_a) : uint32_t(contact_moves_b)) : 0u;
 }
 
-void set_solver_state(Contact& c, int32_t edge, const Body& b) {
-    (edge == 0 ? c.state_a : c.state_b) = b.awake_index;
+// Returns whether anything the colouring reads changed.
+bool set_solver_state(Contact& c, int32_t edge, const Body& b) {
+    int32_t& state = edge == 0 ? c.state_a : c.state_b;
     const uint32_t flag = edge == 0 ? contact_moves_a : contact_moves_b;
-    c.flags = (c.flags & ~flag) | moves_flag(b, edge);
+    const uint32_t flags = (c.flags & ~flag) | moves_flag(b, edge);
+    const bool changed = state != b.awake_index || flags != c.flags;
+    state = b.awake_index;
+    c.flags = flags;
+    return changed;
 }
 
 }  // namespace
@@ -65,6 +70,7 @@ void set_solver_state(Contact& c, int32_t edge, const Body& b) {
 void ContactSet::add_awake(int32_t contact) {
     contacts_[contact].awake_index = int32_t(awake_.size());
     awake_.push_back(contact);
+    ++layout_version_;
 }
 
 // O(1): the last awake contact moves into the hole.
@@ -75,6 +81,7 @@ void ContactSet::remove_awake(int32_t contact) {
     contacts_[last].awake_index = slot;
     awake_.pop_back();
     contacts_[contact].awake_index = null_index;
+    ++layout_version_;
 }
 
 void ContactSet::create_contact(int32_t shape_a, int32_t shape_b) {
@@ -208,7 +215,7 @@ void ContactSet::body_woke(int32_t body) {
             add_awake(contact);
         }
         const int32_t edge = c.edges[0].body == body ? 0 : 1;
-        set_solver_state(c, edge, bodies_[body]);
+        layout_version_ += set_solver_state(c, edge, bodies_[body]) ? 1u : 0u;
     });
 }
 
@@ -255,6 +262,7 @@ void ContactSet::collide(float time_step) {
     islands_to_wake_.clear();
     point_changes_.clear();
     const int32_t count = int32_t(awake_.size());
+    bool layout_changed = false;
     for (int32_t k = 0; k < count; ++k) {
         prefetch_for_collide(k, count);
         const int32_t index = awake_[std::size_t(k)];
@@ -263,9 +271,10 @@ void ContactSet::collide(float time_step) {
         c.flags = (c.flags & ~uint32_t(contact_touching | contact_touching_at_start)) | at_start;
         const Shape& a = shapes_[c.shape_a];
         const Shape& b = shapes_[c.shape_b];
-        set_solver_state(c, 0, bodies_[a.body]);
-        set_solver_state(c, 1, bodies_[b.body]);
-        const bool had_points = c.point_count > 0;
+        const bool state_a_changed = set_solver_state(c, 0, bodies_[a.body]);
+        const bool state_b_changed = set_solver_state(c, 1, bodies_[b.body]);
+        const int32_t old_point_count = c.point_count;
+        const bool had_points = old_point_count > 0;
         if (!overlaps(a.fat_aabb, b.fat_aabb)) {
             c.flags |= contact_disjoint;
             c.point_count = 0;
@@ -278,7 +287,9 @@ void ContactSet::collide(float time_step) {
         if (is_solid(c)) {
             note_point_change(index, had_points);
         }
+        layout_changed = layout_changed || state_a_changed || state_b_changed || c.point_count != old_point_count;
     }
+    layout_version_ += layout_changed ? 1u : 0u;
 }
 
 // The awake list is in no spatial order: the contacts (and their shapes and bodies)

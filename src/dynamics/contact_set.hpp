@@ -37,6 +37,9 @@ public:
     Pool<Contact>& pool() { return contacts_; }
     const Pool<Contact>& pool() const { return contacts_; }
     const std::vector<int32_t>& awake() const { return awake_; }
+    /// Changes whenever what the solver's colouring reads changes: the awake list, a
+    /// contact's point count, its bodies' solver states. Equal versions, equal colours.
+    uint64_t layout_version() const { return layout_version_; }
 
     /// New pairs from the broadphase's moved proxies; pairs that may not collide (one
     /// body, two bodies that cannot move each other, two sensors, filters) get none.
@@ -107,6 +110,7 @@ private:
     Pool<Contact> contacts_;
     HashSet pair_set_;  // pair_key of the shapes of every contact
     std::vector<int32_t> awake_;
+    uint64_t layout_version_ = 0;
     // Step scratch, kept so that a steady state allocates nothing.
     std::vector<ShapePairCandidate> new_pairs_;
     std::vector<int32_t> islands_to_wake_;

@@ -122,9 +122,17 @@ void Solver::prepare_contacts() {
 // overflow colour is solved in sequence and keeps awake order. A body the contact
 // cannot move (static, kinematic, asleep) takes no colour slot.
 void Solver::color_contacts() {
+    const uint64_t version = links_.contacts.layout_version();
+    const int32_t awake_bodies = int32_t(links_.islands.awake_bodies().size());
+    if (colored_ && version == colored_version_ && awake_bodies == colored_body_count_) {
+        return;  // nothing the colours depend on changed: a resting pile keeps them
+    }
+    colored_ = true;
+    colored_version_ = version;
+    colored_body_count_ = awake_bodies;
     const std::vector<int32_t>& awake = links_.contacts.awake();
     const Pool<Contact>& contacts = links_.contacts.pool();
-    colors_.reset(int32_t(links_.islands.awake_bodies().size()));
+    colors_.reset(awake_bodies);
     contact_colors_.resize(awake.size());
     color_starts_.assign(ConstraintColors::count + 1, 0);
     for (std::size_t k = 0; k < awake.size(); ++k) {

@@ -74,6 +74,10 @@ private:
     std::vector<int32_t> color_starts_;   // per colour: its first slot in ordered_contacts_
     std::vector<int32_t> ordered_contacts_;  // the contacts to solve, colour by colour
     std::vector<int32_t> scratch_starts_;
+    // The contact layout the colours above were made for.
+    bool colored_ = false;
+    uint64_t colored_version_ = 0;
+    int32_t colored_body_count_ = 0;
     std::vector<BodyState> states_;       // per awake body, then the fixed state
     std::vector<BodyMotion> motions_;     // the same, the fixed one all zero
 };
