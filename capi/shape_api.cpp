@@ -332,7 +332,7 @@ I2D_API i2d_status i2d_shape_set_friction(i2d_shape_id id, float friction) {
         if (!mutable_shape(call, id, s) || !call.in_range(friction, 0.0f, FLT_MAX, "friction")) {
             return last_status();
         }
-        s.shape().friction = friction;
+        s.world->set_friction(s.index, friction);
         return I2D_OK;
     });
 }
@@ -350,7 +350,7 @@ I2D_API i2d_status i2d_shape_set_restitution(i2d_shape_id id, float restitution)
         if (!mutable_shape(call, id, s) || !call.in_range(restitution, 0.0f, max_restitution, "restitution")) {
             return last_status();
         }
-        s.shape().restitution = restitution;
+        s.world->set_restitution(s.index, restitution);
         return I2D_OK;
     });
 }

@@ -106,6 +106,7 @@ void ContactSet::create_contact(int32_t shape_a, int32_t shape_b) {
     } else if (a.enable_contact_events && b.enable_contact_events) {
         c.flags = contact_report_events;
     }
+    mix_material(c, a, b);
     const int32_t body_of[2] = {a.body, b.body};
     for (int32_t e = 0; e < 2; ++e) {
         Body& body = bodies_[body_of[e]];
@@ -208,6 +209,15 @@ void ContactSet::destroy_contacts_of_shape(int32_t shape, bool only_filtered_out
     }
 }
 
+void ContactSet::mix_materials_of_shape(int32_t shape) {
+    visit_contacts(shapes_[shape].body, [&](int32_t contact, int32_t) {
+        Contact& c = contacts_[contact];
+        if (c.shape_a == shape || c.shape_b == shape) {
+            mix_material(c, shapes_[c.shape_a], shapes_[c.shape_b]);
+        }
+    });
+}
+
 void ContactSet::body_woke(int32_t body) {
     visit_contacts(body, [&](int32_t contact, int32_t) {
         Contact& c = contacts_[contact];
@@ -279,7 +289,6 @@ void ContactSet::collide(float time_step) {
             c.flags |= contact_disjoint;
             c.point_count = 0;
         } else if (is_solid(c)) {
-            mix_material(c, a, b);
             if (!recycle(c, bodies_[a.body], bodies_[b.body])) {
                 update_contact(c, a, b, time_step);
             }
@@ -325,8 +334,8 @@ void ContactSet::note_point_change(int32_t index, bool had_points) {
     }
 }
 
-// Material is mixed at every narrowphase update, so that changing a shape's friction or
-// restitution takes effect on the contacts it already has.
+// Material is mixed when the contact is made and whenever a shape's material changes,
+// not every step: the geometric mean costs two square roots.
 void ContactSet::mix_material(Contact& c, const Shape& a, const Shape& b) const {
     c.friction = mix(settings_.friction_mixing, a.friction, b.friction);
     c.restitution = mix(settings_.restitution_mixing, a.restitution, b.restitution);

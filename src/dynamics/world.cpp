@@ -300,6 +300,16 @@ void World::set_gravity(Vec2 gravity) {
     wake_all();
 }
 
+void World::set_friction(int32_t shape, float friction) {
+    shapes[shape].friction = friction;
+    contacts_.mix_materials_of_shape(shape);
+}
+
+void World::set_restitution(int32_t shape, float restitution) {
+    shapes[shape].restitution = restitution;
+    contacts_.mix_materials_of_shape(shape);
+}
+
 // The proxy is re-created because the trees keep category bits for query masks; its
 // new pairs are found at the next step (known pairs are skipped).
 void World::set_filter(int32_t shape, const Filter& filter) {

@@ -95,6 +95,9 @@ public:
     void sleep_body(int32_t body) { islands_.sleep_island_of(body); }
     void wake_all() { islands_.wake_all(); }
     void set_gravity(Vec2 gravity);
+    /// Changes a shape's material; its contacts mix it in at once (asleep or not).
+    void set_friction(int32_t shape, float friction);
+    void set_restitution(int32_t shape, float restitution);
     /// Changes a shape's filter; its contacts are rebuilt at the next step.
     void set_filter(int32_t shape, const Filter& filter);
     void step(float time_step, int32_t substep_count);

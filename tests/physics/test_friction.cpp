@@ -86,3 +86,25 @@ I2D_TEST(phys_friction_static_threshold) {
     I2D_CHECK_NEAR(velocity(held).x, 0.0, 1e-5);
     I2D_CHECK_NEAR(velocity(pushed).x - pushed_v0, mu * g * 1.0, 0.01 * mu * g);
 }
+
+I2D_TEST(phys_friction_changed_on_a_sliding_box_takes_effect_at_once) {
+    // A unit box slides at 4 m/s on frictionless ground (it keeps its speed). Setting the
+    // box's friction to 0.5 (ground 0.5, geometric mean 0.5) on the existing contact
+    // makes it decelerate at mu g = 5 m/s^2 from the next step: after 0.4 s it moves at
+    // 4 - 5 x 0.4 = 2 m/s.
+    Scene scene;
+    const i2d_body_id ground = scene.ground(0.0f, 50.0f, with_friction(0.5f));
+    const i2d_body_id box = scene.dynamic_box(i2d_vec2{0, 0.5f}, 0.5f, 0.5f, with_friction(0.0f), i2d_vec2{4.0f, 0});
+    I2D_REQUIRE(!I2D_IS_NULL(ground) && !I2D_IS_NULL(box));
+    I2D_REQUIRE(scene.step(steps_for(0.5)));
+    const double free_speed = velocity(box).x;
+    i2d_shape_id shape;
+    I2D_REQUIRE(i2d_body_get_shapes(box, &shape, 1) == 1);
+    I2D_CHECK_STATUS(i2d_shape_set_friction(shape, 0.5f), I2D_OK);
+    I2D_REQUIRE(scene.step(steps_for(0.4)));
+    const double slowed = velocity(box).x;
+    fprintf(stderr, "    frictionless slide %.4f m/s; 0.4 s after friction 0.5: %.4f m/s (expected 2)\n", free_speed,
+            slowed);
+    I2D_CHECK_NEAR(free_speed, 4.0, 1e-3);
+    I2D_CHECK_NEAR(slowed, 2.0, 0.02);
+}
