@@ -166,8 +166,8 @@ I2D_FORCE_INLINE void solve_normal_point(Velocities<L>& v, const PairLanes<L>& c
 /// their inputs, for the caller to solve point by point.
 template <class L>
 I2D_FORCE_INLINE typename L::M solve_normal_block(Velocities<L>& v, const PairLanes<L>& c, const PointLanes<L> p[2],
-                                                  const PointTerms<L> t[2], PointImpulse<L> x[2],
-                                                  typename L::M both_points) {
+                                                  const typename L::F mass[2], const PointTerms<L> t[2],
+                                                  PointImpulse<L> x[2], typename L::M both_points) {
     using F = typename L::F;
     using M = typename L::M;
     constexpr float max_condition = 1000.0f;
@@ -189,7 +189,8 @@ I2D_FORCE_INLINE typename L::M solve_normal_block(Velocities<L>& v, const PairLa
 
     const F inv_det = one / det;
     const F both1 = (-inv_det) * (k22 * q1 - k12 * q2), both2 = (-inv_det) * (k11 * q2 - k12 * q1);
-    const F first = (-q1) / k11, second = (-q2) / k22;
+    // One point alone: its normal mass is 1 / k11 (or 1 / k22), made the same way.
+    const F first = (-q1) * mass[0], second = (-q2) * mass[1];
     const M both_push = L::both(L::ge(both1, zero), L::ge(both2, zero));
     const M first_pushes = L::both(L::ge(first, zero), L::ge(k12 * first + q2, zero));
     const M second_pushes = L::both(L::ge(second, zero), L::ge(k12 * second + q1, zero));
@@ -226,7 +227,7 @@ I2D_FORCE_INLINE void solve_normal(Velocities<L>& v, const PairLanes<L>& c, cons
     }
     const Velocities<L> before = v;
     const PointImpulse<L> before_x[2] = {x[0], x[1]};
-    const typename L::M fits = solve_normal_block(v, c, p, t, x, L::both(active[0], active[1]));
+    const typename L::M fits = solve_normal_block(v, c, p, mass, t, x, L::both(active[0], active[1]));
     if (L::all(fits)) {
         return;
     }
