@@ -8,6 +8,7 @@
 #include "collision/geometry.hpp"
 #include "collision/manifold.hpp"
 #include "core/assert.hpp"
+#include "core/dense_list.hpp"
 #include "core/prefetch.hpp"
 #include "core/reserve.hpp"
 #include "dynamics/constants.hpp"
@@ -68,19 +69,12 @@ bool set_solver_state(Contact& c, int32_t edge, const Body& b) {
 }  // namespace
 
 void ContactSet::add_awake(int32_t contact) {
-    contacts_[contact].awake_index = int32_t(awake_.size());
-    awake_.push_back(contact);
+    dense_list_add(awake_, contact, [this](int32_t c) -> int32_t& { return contacts_[c].awake_index; });
     ++layout_version_;
 }
 
-// O(1): the last awake contact moves into the hole.
 void ContactSet::remove_awake(int32_t contact) {
-    const int32_t slot = contacts_[contact].awake_index;
-    const int32_t last = awake_.back();
-    awake_[std::size_t(slot)] = last;
-    contacts_[last].awake_index = slot;
-    awake_.pop_back();
-    contacts_[contact].awake_index = null_index;
+    dense_list_remove(awake_, contact, [this](int32_t c) -> int32_t& { return contacts_[c].awake_index; });
     ++layout_version_;
 }
 

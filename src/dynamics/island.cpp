@@ -5,38 +5,26 @@
 #include <cfloat>
 
 #include "core/assert.hpp"
+#include "core/dense_list.hpp"
 #include "core/reserve.hpp"
 #include "dynamics/contact_set.hpp"
 
 namespace i2d {
 
 void Islands::add_awake_body(int32_t body) {
-    bodies_[body].awake_index = int32_t(awake_bodies_.size());
-    awake_bodies_.push_back(body);
+    dense_list_add(awake_bodies_, body, [this](int32_t b) -> int32_t& { return bodies_[b].awake_index; });
 }
 
-// O(1): the last awake body moves into the hole.
 void Islands::remove_awake_body(int32_t body) {
-    const int32_t slot = bodies_[body].awake_index;
-    const int32_t last = awake_bodies_.back();
-    awake_bodies_[std::size_t(slot)] = last;
-    bodies_[last].awake_index = slot;
-    awake_bodies_.pop_back();
-    bodies_[body].awake_index = null_index;
+    dense_list_remove(awake_bodies_, body, [this](int32_t b) -> int32_t& { return bodies_[b].awake_index; });
 }
 
 void Islands::add_awake_island(int32_t island) {
-    islands_[island].awake_index = int32_t(awake_islands_.size());
-    awake_islands_.push_back(island);
+    dense_list_add(awake_islands_, island, [this](int32_t i) -> int32_t& { return islands_[i].awake_index; });
 }
 
 void Islands::remove_awake_island(int32_t island) {
-    const int32_t slot = islands_[island].awake_index;
-    const int32_t last = awake_islands_.back();
-    awake_islands_[std::size_t(slot)] = last;
-    islands_[last].awake_index = slot;
-    awake_islands_.pop_back();
-    islands_[island].awake_index = null_index;
+    dense_list_remove(awake_islands_, island, [this](int32_t i) -> int32_t& { return islands_[i].awake_index; });
 }
 
 void Islands::append_body(int32_t island, int32_t body) {

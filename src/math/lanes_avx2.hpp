@@ -15,6 +15,30 @@
 namespace i2d {
 namespace {
 
+// Eight 32-byte states [vx vy w moves dpx dpy dqc dqs] in, eight lanes of each field out:
+// an 8x8 transpose in three rounds (pairs, quads, halves). The AVX-512 lanes use it too.
+inline void transpose_states8(const BodyState* states, const int32_t* index, __m256 fields[8]) {
+    __m256 r[8], t[8], q[8];
+    for (int lane = 0; lane < 8; ++lane) {
+        r[lane] = _mm256_load_ps(reinterpret_cast<const float*>(states + index[lane]));
+    }
+    for (int k = 0; k < 4; ++k) {
+        t[2 * k] = _mm256_unpacklo_ps(r[2 * k], r[2 * k + 1]);
+        t[2 * k + 1] = _mm256_unpackhi_ps(r[2 * k], r[2 * k + 1]);
+    }
+    for (int k = 0; k < 2; ++k) {
+        const int base = 4 * k;
+        q[base + 0] = _mm256_shuffle_ps(t[base + 0], t[base + 2], _MM_SHUFFLE(1, 0, 1, 0));
+        q[base + 1] = _mm256_shuffle_ps(t[base + 0], t[base + 2], _MM_SHUFFLE(3, 2, 3, 2));
+        q[base + 2] = _mm256_shuffle_ps(t[base + 1], t[base + 3], _MM_SHUFFLE(1, 0, 1, 0));
+        q[base + 3] = _mm256_shuffle_ps(t[base + 1], t[base + 3], _MM_SHUFFLE(3, 2, 3, 2));
+    }
+    for (int k = 0; k < 4; ++k) {
+        fields[k] = _mm256_permute2f128_ps(q[k], q[k + 4], 0x20);      // vx vy w moves
+        fields[k + 4] = _mm256_permute2f128_ps(q[k], q[k + 4], 0x31);  // dpx dpy dqc dqs
+    }
+}
+
 struct LanesAvx2 {
     static constexpr int width = 8;
     struct F {
@@ -41,28 +65,11 @@ struct LanesAvx2 {
     static bool any(M m) { return _mm256_movemask_ps(m.v) != 0; }
     static bool all(M m) { return _mm256_movemask_ps(m.v) == 0xFF; }
 
-    // Eight 32-byte states [vx vy w moves dpx dpy dqc dqs] in, eight lanes of each field
-    // out: an 8x8 transpose in three rounds (pairs, quads, halves).
     static void gather(const BodyState* states, const int32_t* index, F out[8]) {
-        __m256 r[8];
-        for (int lane = 0; lane < 8; ++lane) {
-            r[lane] = _mm256_load_ps(reinterpret_cast<const float*>(states + index[lane]));
-        }
-        __m256 t[8], q[8];
-        for (int k = 0; k < 4; ++k) {
-            t[2 * k] = _mm256_unpacklo_ps(r[2 * k], r[2 * k + 1]);
-            t[2 * k + 1] = _mm256_unpackhi_ps(r[2 * k], r[2 * k + 1]);
-        }
-        for (int k = 0; k < 2; ++k) {
-            const int base = 4 * k;
-            q[base + 0] = _mm256_shuffle_ps(t[base + 0], t[base + 2], _MM_SHUFFLE(1, 0, 1, 0));
-            q[base + 1] = _mm256_shuffle_ps(t[base + 0], t[base + 2], _MM_SHUFFLE(3, 2, 3, 2));
-            q[base + 2] = _mm256_shuffle_ps(t[base + 1], t[base + 3], _MM_SHUFFLE(1, 0, 1, 0));
-            q[base + 3] = _mm256_shuffle_ps(t[base + 1], t[base + 3], _MM_SHUFFLE(3, 2, 3, 2));
-        }
-        for (int k = 0; k < 4; ++k) {
-            out[k] = {_mm256_permute2f128_ps(q[k], q[k + 4], 0x20)};      // vx vy w moves
-            out[k + 4] = {_mm256_permute2f128_ps(q[k], q[k + 4], 0x31)};  // dpx dpy dqc dqs
+        __m256 fields[8];
+        transpose_states8(states, index, fields);
+        for (int k = 0; k < 8; ++k) {
+            out[k] = {fields[k]};
         }
     }
     /// Writes [vx vy w moves] back to the lanes whose state moves (moves is as gathered).

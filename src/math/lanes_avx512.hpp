@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 // LanesAvx512: sixteen float lanes in AVX-512F, bit for bit what Lanes1
 // (lanes_scalar.hpp) gives each lane. Masks are the mask registers; the 32 vector
-// registers keep the kernels' working set out of memory. No fused multiply-add.
+// registers keep the kernels' working set out of memory. No fused multiply-add. Bodies
+// are gathered as two halves with the AVX2 transpose (AVX-512F implies AVX2).
 #pragma once
 
 #include <immintrin.h>
@@ -9,6 +10,7 @@
 #include <cstdint>
 
 #include "dynamics/body_state.hpp"
+#include "math/lanes_avx2.hpp"
 
 namespace i2d {
 namespace {
@@ -40,34 +42,13 @@ struct LanesAvx512 {
     static bool all(M m) { return m.v == 0xFFFF; }
 
     // Two 8x8 transposes (lanes 0-7 and 8-15) in 256-bit halves, joined.
-    static void transpose8(const BodyState* states, const int32_t* index, __m256 out[8]) {
-        __m256 r[8], t[8], q[8];
-        for (int lane = 0; lane < 8; ++lane) {
-            r[lane] = _mm256_load_ps(reinterpret_cast<const float*>(states + index[lane]));
-        }
-        for (int k = 0; k < 4; ++k) {
-            t[2 * k] = _mm256_unpacklo_ps(r[2 * k], r[2 * k + 1]);
-            t[2 * k + 1] = _mm256_unpackhi_ps(r[2 * k], r[2 * k + 1]);
-        }
-        for (int k = 0; k < 2; ++k) {
-            const int base = 4 * k;
-            q[base + 0] = _mm256_shuffle_ps(t[base + 0], t[base + 2], _MM_SHUFFLE(1, 0, 1, 0));
-            q[base + 1] = _mm256_shuffle_ps(t[base + 0], t[base + 2], _MM_SHUFFLE(3, 2, 3, 2));
-            q[base + 2] = _mm256_shuffle_ps(t[base + 1], t[base + 3], _MM_SHUFFLE(1, 0, 1, 0));
-            q[base + 3] = _mm256_shuffle_ps(t[base + 1], t[base + 3], _MM_SHUFFLE(3, 2, 3, 2));
-        }
-        for (int k = 0; k < 4; ++k) {
-            out[k] = _mm256_permute2f128_ps(q[k], q[k + 4], 0x20);
-            out[k + 4] = _mm256_permute2f128_ps(q[k], q[k + 4], 0x31);
-        }
-    }
     static __m512 join(__m256 lo, __m256 hi) {
         return _mm512_castpd_ps(_mm512_insertf64x4(_mm512_castpd256_pd512(_mm256_castps_pd(lo)), _mm256_castps_pd(hi), 1));
     }
     static void gather(const BodyState* states, const int32_t* index, F out[8]) {
         __m256 lo[8], hi[8];
-        transpose8(states, index, lo);
-        transpose8(states, index + 8, hi);
+        transpose_states8(states, index, lo);
+        transpose_states8(states, index + 8, hi);
         for (int k = 0; k < 8; ++k) {
             out[k] = {join(lo[k], hi[k])};
         }
