@@ -90,7 +90,7 @@ static void usage(FILE* f) {
             "  --steps N      steps per run, N >= 2 (the first is untimed); default: each scene's own\n"
             "  --repeat R     runs per scene, each in a new world, 1..%d; default 3\n"
             "  --workers W    worker threads; threads are not implemented yet, so only 1 is valid\n"
-            "  --simd PATH    contact kernels: automatic (default), scalar, sse2, avx2 or avx512\n"
+            "  --simd PATH    contact kernels: automatic (default), scalar, sse2, avx2, avx512 or neon\n"
             "  --no-recycling make every manifold afresh at every step (enable_contact_recycling off)\n"
             "  --csv, --json  machine-readable output instead of the table\n"
             "  --list         list the scenes and exit\n"
@@ -145,9 +145,9 @@ static bool choose_scenes(const char* list, options* opt) {
 
 /* Sets bench_simd_path from its name; false (with a message) for an unknown or unsupported one. */
 static bool parse_simd_path(const char* name) {
-    static const char* const names[] = {"automatic", "scalar", "sse2", "avx2", "avx512"};
+    static const char* const names[] = {"automatic", "scalar", "sse2", "avx2", "avx512", "neon"};
     int k;
-    for (k = 0; k < 5; ++k) {
+    for (k = 0; k < 6; ++k) {
         if (strcmp(name, names[k]) == 0) {
             if (!i2d_simd_path_supported((i2d_simd_path)k)) {
                 fprintf(stderr, "impulse2d_bench: --simd %s: not supported by this build or CPU\n", name);
@@ -157,7 +157,7 @@ static bool parse_simd_path(const char* name) {
             return true;
         }
     }
-    fprintf(stderr, "impulse2d_bench: --simd %s: expected automatic, scalar, sse2, avx2 or avx512\n", name);
+    fprintf(stderr, "impulse2d_bench: --simd %s: expected automatic, scalar, sse2, avx2, avx512 or neon\n", name);
     return false;
 }
 
@@ -621,7 +621,7 @@ static void print_sleep_notes(const options* opt) {
 
 /* The name of the contact kernels the scenes' worlds use (bench_simd_path, automatic resolved). */
 static const char* simd_path_in_use(void) {
-    static const char* const names[] = {"automatic", "scalar", "sse2", "avx2", "avx512"};
+    static const char* const names[] = {"automatic", "scalar", "sse2", "avx2", "avx512", "neon"};
     i2d_world_def def = i2d_default_world_def();
     i2d_world_id world;
     i2d_simd_path path;
@@ -629,7 +629,7 @@ static const char* simd_path_in_use(void) {
     world = i2d_world_create(&def);
     path = i2d_world_get_simd_path(world);
     i2d_world_destroy(world);
-    return (int)path >= 0 && (int)path < 5 ? names[path] : "unknown";
+    return (int)path >= 0 && (int)path < 6 ? names[path] : "unknown";
 }
 
 static void print_header(const options* opt) {

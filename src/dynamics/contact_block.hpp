@@ -5,7 +5,7 @@
 // Design note: every field is an array of W values so that a kernel loads W contacts'
 // worth with one instruction. A block holds contacts of one colour, which never share a
 // body the solver moves, so the W lanes are solved at once without races. W is 16 for
-// AVX-512, 8 for AVX2, 4 for SSE2 and 1 for the scalar path and for the overflow colour, whose
+// AVX-512, 8 for AVX2, 4 for SSE2 and NEON, and 1 for the scalar path and for the overflow colour, whose
 // contacts do share bodies and are solved one at a time. A manifold with one point
 // leaves point 2 zeroed: a zero normal mass marks it, and the kernels mask it out, so
 // that a block of single points can skip point 2 altogether with the same result.
@@ -83,5 +83,7 @@ const ContactKernels* sse2_contact_kernels();
 const ContactKernels* avx2_contact_kernels();
 /// 16 lanes in AVX-512F; the same conditions.
 const ContactKernels* avx512_contact_kernels();
+/// 4 lanes in NEON; null unless the library was built for AArch64 (where NEON is always there).
+const ContactKernels* neon_contact_kernels();
 
 }  // namespace i2d

@@ -29,10 +29,9 @@ class Islands;
 
 class ContactSet {
 public:
-    ContactSet(const WorldDef& settings, Pool<Body>& bodies, const Pool<Shape>& shapes, const BroadPhase& broad_phase,
-               Islands& islands, EventRecorder& events)
-        : settings_(settings), bodies_(bodies), shapes_(shapes), broad_phase_(broad_phase), islands_(islands),
-          events_(events) {}
+    ContactSet(const WorldDef& settings, Pool<Body>& bodies, const Pool<Shape>& shapes, Islands& islands,
+               EventRecorder& events)
+        : settings_(settings), bodies_(bodies), shapes_(shapes), islands_(islands), events_(events) {}
 
     Pool<Contact>& pool() { return contacts_; }
     const Pool<Contact>& pool() const { return contacts_; }
@@ -106,7 +105,6 @@ private:
     const WorldDef& settings_;
     Pool<Body>& bodies_;
     const Pool<Shape>& shapes_;
-    const BroadPhase& broad_phase_;
     Islands& islands_;
     EventRecorder& events_;
     Pool<Contact> contacts_;

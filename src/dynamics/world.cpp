@@ -13,7 +13,7 @@ namespace i2d {
 
 World::World(const WorldDef& def)
     : settings(def),
-      contacts_(settings, bodies, shapes, broad_phase_, islands_, events_),
+      contacts_(settings, bodies, shapes, islands_, events_),
       islands_(bodies, contacts_),
       solver_(SolverLinks{settings, bodies, shapes, contacts_, islands_, broad_phase_, events_}),
       profiling_(def.enable_profile) {}

@@ -461,7 +461,7 @@ I2D_TEST(api_errors_world_def_bad_values) {
         snprintf(what, sizeof what, "world def restitution_mixing = %d", bad_rules[i]);
         check_world_def_refused_at(__LINE__, what, &def);
     }
-    static const int bad_paths[] = {-1, 5, 1000, INT32_MIN};
+    static const int bad_paths[] = {-1, 6, 1000, INT32_MIN};
     for (size_t i = 0; i < sizeof bad_paths / sizeof bad_paths[0]; ++i) {
         i2d_world_def def = i2d_default_world_def();
         def.simd_path = (i2d_simd_path)bad_paths[i];
@@ -488,7 +488,7 @@ I2D_TEST(api_errors_world_def_bad_values) {
     }
     /* Every path this machine supports is accepted; one it does not is refused. */
     static const i2d_simd_path paths[] = {I2D_SIMD_AUTOMATIC, I2D_SIMD_SCALAR, I2D_SIMD_SSE2, I2D_SIMD_AVX2,
-                                          I2D_SIMD_AVX512};
+                                          I2D_SIMD_AVX512,    I2D_SIMD_NEON};
     for (size_t i = 0; i < sizeof paths / sizeof paths[0]; ++i) {
         i2d_world_def def = i2d_default_world_def();
         def.simd_path = paths[i];
