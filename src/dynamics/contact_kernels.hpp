@@ -310,7 +310,8 @@ struct AnchorOffset {
 
 // A gap allows approach up to closing it within the substep (speculative); overlap is
 // pushed out softly, at most push_max_speed, and only when the pass uses the bias. A
-// contact with a body it cannot move (inverse mass 0) is twice as stiff.
+// contact with a body it cannot move (inverse mass 0) is twice as stiff (Box2D v3's
+// choice): the fixed side cannot give, so the pair settles as fast with half the mass.
 template <class L>
 I2D_FORCE_INLINE PointTerms<L> point_terms(const PairLanes<L>& c, typename L::F separation, const SolvePass& pass) {
     using F = typename L::F;

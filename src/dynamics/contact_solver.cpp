@@ -41,10 +41,8 @@ void pack_point(ContactPointLanes<W>& p, int lane, const ContactPoint& cp, Vec2 
     p.max_normal_impulse[lane] = 0.0f;
 }
 
-// Contacts with a static or kinematic body are twice as stiff (Box2D v3's choice): the
-// fixed side cannot give, so the pair has half the mass to move and settles as fast.
-// The block was zeroed: what a contact leaves out (a second point, padding lanes) stays
-// zero, which the kernels read as nothing to do.
+// One contact into one lane. The block was zeroed: what a contact leaves out (a second
+// point, padding lanes) stays zero, which the kernels read as nothing to do.
 template <int W>
 void pack_lane(ContactBlock<W>& block, int lane, const Contact& contact, const ContactLayout& layout) {
     const int32_t state_a = contact.state_a != null_index ? contact.state_a : layout.fixed_state;

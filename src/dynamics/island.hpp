@@ -5,12 +5,12 @@
 // the bodies themselves. A solid contact with points between two dynamic bodies links
 // their islands: they merge at once, the smaller into the larger. A link that goes (the
 // contact separated or was destroyed) only counts against its island, which may now be
-// in pieces; islands are split lazily, when one wants to sleep, at most one per step,
-// so a pile that rests costs one search over its bodies when it falls asleep instead of
-// a union-find over every awake contact at every step (the way this engine worked
-// before, and the way Box2D v3 keeps its islands). Static bodies belong to no island;
-// kinematic bodies each keep an island of their own (they would chain everything they
-// touch into one) but keep the islands they touch awake while they move.
+// in pieces; islands are split lazily, when one wants to sleep, at most one per step
+// (Box2D v3 keeps its islands the same way). A pile that rests costs one search over its
+// bodies when it falls asleep, where this engine used to run a union-find over every
+// awake contact at every step. Static bodies belong to no island; kinematic bodies each
+// keep an island of their own (they would chain everything they touch into one) but
+// keep the islands they touch awake while they move.
 //
 // An island sleeps when every body in it has rested for time_to_sleep: its bodies leave
 // the awake list (the solver's arrays) and their contacts with nothing awake leave the

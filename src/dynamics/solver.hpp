@@ -6,10 +6,11 @@
 // place in the awake list: the states (velocities and motion since the step began) and
 // the motions (what integration needs), plus one shared "fixed" state at the end that
 // stands in for every static or sleeping body. Contacts become constraints laid out
-// colour by colour (constraint_colors.hpp), the order they are solved in. The stage
-// loop is Box2D v3's: per substep integrate velocities, warm start, solve with push-out,
-// integrate positions, relax; then restitution, impulses back to the contacts, and the
-// bodies' final pose, bounds, rest time and move event in one pass over them.
+// colour by colour (constraint_colors.hpp), the order they are solved in, and kept
+// while nothing they depend on changes. The stage loop is Box2D v3's: per substep
+// integrate velocities, warm start, solve with push-out, integrate positions, relax;
+// then one more relax, restitution, impulses back to the contacts, and the bodies' final
+// pose, bounds, rest time and move event in one pass over them.
 #pragma once
 
 #include <cstdint>
