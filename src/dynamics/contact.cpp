@@ -14,9 +14,8 @@ void update_points(Contact& contact, const Manifold& m, Vec2 center_a, Vec2 cent
         p.anchor_a = mp.point - center_a;
         p.anchor_b = mp.point - center_b;
         p.separation = -mp.penetration;
-        p.id = mp.id;
         for (int32_t k = 0; k < contact.point_count; ++k) {
-            if (contact.points[k].id == mp.id) {
+            if (contact.point_ids[k] == mp.id) {
                 p.normal_impulse = contact.points[k].normal_impulse;
                 p.tangent_impulse = contact.points[k].tangent_impulse;
                 break;
@@ -27,6 +26,8 @@ void update_points(Contact& contact, const Manifold& m, Vec2 center_a, Vec2 cent
     contact.point_count = m.point_count;
     contact.points[0] = points[0];
     contact.points[1] = points[1];
+    contact.point_ids[0] = m.point_count > 0 ? m.points[0].id : 0u;
+    contact.point_ids[1] = m.point_count > 1 ? m.points[1].id : 0u;
 }
 
 // The base separation makes recycle_manifold's formula give the separation back exactly
@@ -38,8 +39,8 @@ void remember_poses(Contact& contact, const Transform& xf_a, Vec2 center_a, cons
     contact.flags |= contact_recyclable;
     const Vec2 centers = center_b - center_a;
     for (int32_t i = 0; i < contact.point_count; ++i) {
-        ContactPoint& p = contact.points[i];
-        p.base_separation = p.separation - dot(centers + (p.anchor_b - p.anchor_a), contact.normal);
+        const ContactPoint& p = contact.points[i];
+        contact.base_separations[i] = p.separation - dot(centers + (p.anchor_b - p.anchor_a), contact.normal);
     }
 }
 
@@ -66,7 +67,7 @@ bool recycle_manifold(Contact& c, const Transform& xf_a, Vec2 center_a, const Tr
     for (int32_t i = 0; i < c.point_count; ++i) {
         ContactPoint& p = c.points[i];
         const Vec2 moved = centers + (rotate(turn_b, p.anchor_b) - rotate(turn_a, p.anchor_a));
-        p.separation = p.base_separation + dot(moved, c.normal);
+        p.separation = c.base_separations[i] + dot(moved, c.normal);
     }
     return true;
 }

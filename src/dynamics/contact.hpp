@@ -13,6 +13,7 @@
 // preparing constraints read the contact and nothing else.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 
 #include "collision/shapes.hpp"
@@ -44,36 +45,44 @@ struct ContactEdge {
 inline int32_t contact_of_key(int32_t key) { return key >> 1; }
 inline int32_t edge_of_key(int32_t key) { return key & 1; }
 
+/// What the solver reads and writes of a point every step.
 struct ContactPoint {
     Vec2 anchor_a, anchor_b;      // from each centre of mass to the point, m, world orientation
     float separation = 0.0f;      // m, negative when overlapping, at the start of the step
-    float base_separation = 0.0f; // separation minus dot(centre offset + anchor_b - anchor_a,
-                                  // normal) when the manifold was made, m (for recycling)
     float normal_impulse = 0.0f;  // accumulated, N s
     float tangent_impulse = 0.0f;
-    uint32_t id = 0;              // feature key, stable while the same features touch
 };
 
-struct Contact {
-    int32_t shape_a = null_index, shape_b = null_index;  // shape_a < shape_b
-    ContactEdge edges[2];                                // [0] body of A, [1] body of B
-    Vec2 normal;                                         // unit, from A to B
+/// A contact's layout follows who reads it: what the solver packs and stores every step
+/// fills the first two cache lines, which are all it asks for ahead; what only the
+/// narrowphase and the bookkeeping read follows.
+struct alignas(64) Contact {
+    // Solver data.
+    Vec2 normal;  // unit, from A to B
     int32_t point_count = 0;
-    ContactPoint points[2];
+    uint32_t flags = 0;
+    // The bodies' places in the solver's state array this step (null when fixed).
+    int32_t state_a = null_index, state_b = null_index;
     float rolling_impulse = 0.0f;
-    // Material, mixed from the shapes' at every narrowphase update so that changing a
-    // shape's friction or restitution takes effect on contacts it already has.
+    // Material, mixed from the shapes' when the contact is made and when they change.
     float friction = 0.0f, restitution = 0.0f;
     float rolling_resistance = 0.0f;  // torque arm, m
     float tangent_speed = 0.0f;       // m/s along left_perp(normal)
-    uint32_t flags = 0;
     int32_t awake_index = null_index;  // in the awake contact list, if there
-    // The bodies' places in the solver's state array this step (null when fixed).
-    int32_t state_a = null_index, state_b = null_index;
+    ContactPoint points[2];
+    // Narrowphase and bookkeeping.
+    int32_t shape_a = null_index, shape_b = null_index;  // shape_a < shape_b
+    ContactEdge edges[2];                                // [0] body of A, [1] body of B
+    uint32_t point_ids[2] = {};  // feature keys, stable while the same features touch
+    // Separation minus dot(centre offset + anchor_b - anchor_a, normal) when the manifold
+    // was made, m: what recycling adds the bodies' motion to.
+    float base_separations[2] = {};
     // The bodies' rotations and B's pose seen from A when the manifold was made.
     Rot made_rotation_a, made_rotation_b;
     Transform made_relative_pose;
 };
+
+static_assert(offsetof(Contact, points) + sizeof(ContactPoint[2]) <= 128, "solver data in two cache lines");
 
 /// Replaces the contact's points by those of a fresh world-space manifold, anchored at the
 /// bodies' centres of mass, and carries each point's impulses over from the old point
