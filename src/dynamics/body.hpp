@@ -32,35 +32,37 @@ struct BodyDef {
     void* user_data = nullptr;
 };
 
-struct Body {
-    BodyType type = BodyType::static_body;
+// The fields every step reads of every awake body (the narrowphase, gathering states,
+// the final pass) come first, in the first cache line; the lists and settings follow.
+struct alignas(64) Body {
     Transform transform;  // body origin and rotation
-    Vec2 local_center;    // centre of mass in the body frame
     Vec2 center;          // centre of mass in the world
     Vec2 linear_velocity; // of the centre of mass
     float angular_velocity = 0.0f;
-    Vec2 force;           // accumulated until the end of the next step
-    float torque = 0.0f;
-    float mass = 0.0f, inv_mass = 0.0f;
-    float inertia = 0.0f, inv_inertia = 0.0f;  // about the centre of mass
-    float linear_damping = 0.0f, angular_damping = 0.0f;
-    float gravity_scale = 1.0f;
+    float max_extent = 0.0f;  // farthest shape point from the centre of mass, m
+    float inv_mass = 0.0f, inv_inertia = 0.0f;
+    int32_t awake_index = null_index;  // in the awake body list; null when static or asleep
+    BodyType type = BodyType::static_body;
     bool fixed_rotation = false;
     bool enable_sleep = true;
     bool is_bullet = false;
-    void* user_data = nullptr;
+    Vec2 force;  // accumulated until the end of the next step
+    float torque = 0.0f;
+    float gravity_scale = 1.0f;
+    float linear_damping = 0.0f, angular_damping = 0.0f;
+    Vec2 local_center;  // centre of mass in the body frame
+    float sleep_time = 0.0f;  // how long the body has been resting, s
     int32_t head_shape = null_index;  // list of the body's shapes, linked through Shape
+    int32_t island = null_index;      // every moving body has one; static bodies none
+    int32_t move_event = null_index;  // its body move event of the last step, if any
+    bool needs_cover = false;         // velocity or pose changed since its boxes were fattened
+    float mass = 0.0f;
+    float inertia = 0.0f;  // about the centre of mass
+    void* user_data = nullptr;
     int32_t shape_count = 0;
     int32_t head_contact_key = null_index;  // list of contacts, linked through ContactEdge
     int32_t contact_count = 0;
-    Transform step_start;  // to tell whether the body moved or turned during the step
-    float max_extent = 0.0f;  // farthest shape point from the centre of mass, m
-    float sleep_time = 0.0f;  // how long the body has been resting, s
-    int32_t awake_index = null_index;  // in the awake body list; null when static or asleep
-    int32_t island = null_index;       // every moving body has one; static bodies none
     int32_t island_prev = null_index, island_next = null_index;  // the island's body list
-    int32_t move_event = null_index;   // its body move event of the last step, if any
-    bool needs_cover = false;          // velocity or pose changed since its boxes were fattened
 };
 
 }  // namespace i2d
