@@ -82,14 +82,14 @@ typedef struct options {
 static void usage(FILE* f) {
     fprintf(f,
             "usage: impulse2d_bench [--scene NAME[,NAME...]] [--sweep | --all] [--steps N] [--repeat R]\n"
-            "                       [--workers 1] [--simd PATH] [--no-recycling] [--csv | --json] [--list]\n"
+            "                       [--workers W] [--simd PATH] [--no-recycling] [--csv | --json] [--list]\n"
             "  (default)      the scenes of scenes.md the engine can run, then the extras\n"
             "  --scene NAMES  only these scenes (see --list); may be given more than once\n"
             "  --sweep        the scaling sweep: rain_circles and pyramid_field at 1k, 4k, 16k, 64k bodies\n"
             "  --all          every scene: scenes.md, extras and the sweep\n"
             "  --steps N      steps per run, N >= 2 (the first is untimed); default: each scene's own\n"
             "  --repeat R     runs per scene, each in a new world, 1..%d; default 3\n"
-            "  --workers W    worker threads; threads are not implemented yet, so only 1 is valid\n"
+            "  --workers W    worker threads of each world, 1..64 (the built-in pool); default 1\n"
             "  --simd PATH    contact kernels: automatic (default), scalar, sse2, avx2, avx512 or neon\n"
             "  --no-recycling make every manifold afresh at every step (enable_contact_recycling off)\n"
             "  --csv, --json  machine-readable output instead of the table\n"
@@ -177,13 +177,8 @@ static bool parse_options(int argc, char** argv, options* opt) {
             ++i;
         } else if (strcmp(arg, "--repeat") == 0 && parse_int(value, 1, MAX_REPEATS, &opt->repeats)) {
             ++i;
-        } else if (strcmp(arg, "--workers") == 0 && parse_int(value, 1, 1024, &opt->workers)) {
-            if (opt->workers != 1) {
-                fprintf(stderr, "impulse2d_bench: --workers %d: threads are not implemented yet in impulse2d; "
-                                "only --workers 1 is valid\n",
-                        (int)opt->workers);
-                return false;
-            }
+        } else if (strcmp(arg, "--workers") == 0 && parse_int(value, 1, I2D_MAX_WORKERS, &opt->workers)) {
+            bench_worker_count = opt->workers;
             ++i;
         } else if (strcmp(arg, "--simd") == 0 && value) {
             if (!parse_simd_path(value)) {

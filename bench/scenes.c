@@ -28,6 +28,7 @@ static i2d_aabb aabb(float min_x, float min_y, float max_x, float max_y) {
 
 i2d_simd_path bench_simd_path = I2D_SIMD_AUTOMATIC;
 bool bench_contact_recycling = true;
+int32_t bench_worker_count = 1;
 
 static bool create_world(bench_state* state, bool enable_sleep) {
     i2d_world_def def = i2d_default_world_def();
@@ -35,6 +36,7 @@ static bool create_world(bench_state* state, bool enable_sleep) {
     def.simd_path = bench_simd_path;
     def.enable_contact_recycling = bench_contact_recycling;
     def.enable_profile = true;
+    def.worker_count = bench_worker_count;
     state->sleep_enabled = enable_sleep;
     state->world = i2d_world_create(&def);
     return !I2D_IS_NULL(state->world);

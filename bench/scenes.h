@@ -19,6 +19,8 @@
 extern i2d_simd_path bench_simd_path;
 /* Whether the scenes' worlds recycle contact manifolds (the bench's --no-recycling turns it off). */
 extern bool bench_contact_recycling;
+/* Worker threads of every scene's world (the built-in pool when above 1). */
+extern int32_t bench_worker_count;
 
 /* The world of one run and what its hook and sanity check need to find in it. */
 typedef struct bench_state {

@@ -25,6 +25,10 @@ I2D_API i2d_world_def i2d_default_world_def(void) {
     def.simd_path = I2D_SIMD_AUTOMATIC;
     def.enable_contact_recycling = core.enable_contact_recycling;
     def.enable_profile = core.enable_profile;
+    def.worker_count = core.worker_count;
+    def.enqueue_task = nullptr;
+    def.finish_task = nullptr;
+    def.user_task_context = nullptr;
     def.internal_cookie = def_cookie;
     return def;
 }

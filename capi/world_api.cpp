@@ -2,6 +2,7 @@
 // i2d_world_*: create, destroy, step, gravity, counters.
 #include <cstring>
 #include <memory>
+#include <type_traits>
 
 #include "boundary.hpp"
 #include "convert.hpp"
@@ -12,6 +13,11 @@ using namespace i2d;
 using namespace i2d::capi;
 
 namespace {
+
+static_assert(I2D_MAX_WORKERS == max_worker_count, "one limit on workers");
+static_assert(std::is_same<i2d_task_fn*, TaskFn>::value && std::is_same<i2d_enqueue_task_fn*, EnqueueTaskFn>::value &&
+                  std::is_same<i2d_finish_task_fn*, FinishTaskFn>::value,
+              "the core calls the job system as the C API declares it");
 
 // Read as an integer: a C caller can store any int in an enum field, and loading an
 // out-of-range value as the C++ enum type is undefined behaviour.
@@ -42,6 +48,22 @@ bool valid_simd_path(Call& call, const i2d_simd_path* path) {
     return true;
 }
 
+// Workers: a count in range, and a job system given whole or not at all (a world with
+// half a job system could enqueue and never finish).
+bool valid_workers(Call& call, const i2d_world_def& def) {
+    if (def.worker_count < 1 || def.worker_count > I2D_MAX_WORKERS) {
+        return call.fail(I2D_ERR_INVALID_ARGUMENT, "world def: worker_count is %d; it must be in [1, %d]",
+                         int(def.worker_count), int(I2D_MAX_WORKERS));
+    }
+    if ((def.enqueue_task == nullptr) != (def.finish_task == nullptr)) {
+        return call.fail(I2D_ERR_INVALID_ARGUMENT,
+                         "world def: enqueue_task and finish_task must be given together (or both NULL for the "
+                         "built-in threads); %s is NULL",
+                         def.enqueue_task == nullptr ? "enqueue_task" : "finish_task");
+    }
+    return true;
+}
+
 bool validate_world_def(Call& call, const i2d_world_def* def) {
     return call.not_null(def, "world def") && call.cookie(def->internal_cookie, "world_def") &&
            call.finite(def->gravity, "world def: gravity") &&
@@ -55,7 +77,7 @@ bool validate_world_def(Call& call, const i2d_world_def* def) {
            valid_mixing_rule(call, &def->restitution_mixing, "world def: restitution_mixing") &&
            call.in_range(def->sleep_speed_threshold, 0.0f, max_speed_limit, "world def: sleep_speed_threshold") &&
            call.in_range(def->time_to_sleep, 0.0f, max_setting, "world def: time_to_sleep") &&
-           valid_simd_path(call, &def->simd_path);
+           valid_simd_path(call, &def->simd_path) && valid_workers(call, *def);
 }
 
 uint64_t encode_body(uint64_t world_bits, int32_t index, uint16_t generation) {
@@ -83,6 +105,10 @@ WorldDef to_core(const i2d_world_def& def) {
     core.simd_path = SimdPath(int(def.simd_path));
     core.enable_contact_recycling = def.enable_contact_recycling;
     core.enable_profile = def.enable_profile;
+    core.worker_count = def.worker_count;
+    core.tasks.enqueue = def.enqueue_task;
+    core.tasks.finish = def.finish_task;
+    core.tasks.user_context = def.user_task_context;
     return core;
 }
 
@@ -208,6 +234,13 @@ I2D_API uint64_t i2d_world_get_state_hash(i2d_world_id id) {
     return guarded("i2d_world_get_state_hash", uint64_t(0), [&](Call& call) {
         WorldRef w;
         return call.world(id, w) ? w.world->state_hash() : uint64_t(0);
+    });
+}
+
+I2D_API int32_t i2d_world_get_worker_count(i2d_world_id id) {
+    return guarded("i2d_world_get_worker_count", int32_t(0), [&](Call& call) {
+        WorldRef w;
+        return call.world(id, w) ? w.world->worker_count() : int32_t(0);
     });
 }
 

@@ -72,6 +72,8 @@ I2D_API uint64_t i2d_world_get_state_hash(i2d_world_id world);
 /** The SIMD path the world solves contacts with (never I2D_SIMD_AUTOMATIC); scalar
  *  for a bad id. */
 I2D_API i2d_simd_path i2d_world_get_simd_path(i2d_world_id world);
+/** The world def's worker_count; 0 for an invalid id. */
+I2D_API int32_t i2d_world_get_worker_count(i2d_world_id world);
 /** Whether this library on this CPU can run the path (I2D_SIMD_AUTOMATIC always can). */
 I2D_API bool i2d_simd_path_supported(i2d_simd_path path);
 

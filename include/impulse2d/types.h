@@ -63,6 +63,22 @@ typedef enum i2d_simd_path {
     I2D_SIMD_NEON           /**< 4 contacts at a time: every AArch64 CPU */
 } i2d_simd_path;
 
+/** Most workers a world may have (i2d_world_def.worker_count). */
+#define I2D_MAX_WORKERS 64
+
+/** A piece of a step's work: items [start_index, end_index) on worker worker_index, which
+ *  is in [0, worker_count) and names one thread at a time. */
+typedef void i2d_task_fn(int32_t start_index, int32_t end_index, int32_t worker_index, void* task_context);
+/** Your job system's entry: run task over the items [0, item_count), in ranges of at least
+ *  min_range, on threads of yours, and return a handle for i2d_finish_task_fn; or run it
+ *  all on the calling thread and return NULL. The engine enqueues one task per worker
+ *  beyond the first and works as worker 0 itself; tasks may start in any order, late, or
+ *  one after another: the step never waits for a task that has not started. */
+typedef void* i2d_enqueue_task_fn(i2d_task_fn* task, int32_t item_count, int32_t min_range, void* task_context,
+                                  void* user_task_context);
+/** Waits until the task behind the handle has run to its end. */
+typedef void i2d_finish_task_fn(void* user_task, void* user_task_context);
+
 /** World settings. Obtain with i2d_default_world_def(), then edit. */
 typedef struct i2d_world_def {
     /** m/s^2; default (0, -10). Finite. */
@@ -113,6 +129,17 @@ typedef struct i2d_world_def {
      *  step on. Without it timing starts at the first i2d_world_get_profile call: until
      *  then a step reads no clock. */
     bool enable_profile;
+    /** Threads that share each step, in [1, I2D_MAX_WORKERS]; default 1. The results are
+     *  the same bits for every count. A small world (fewer than a few hundred awake
+     *  bodies) steps on the calling thread alone whatever the count. */
+    int32_t worker_count;
+    /** Your job system (both or neither). Neither with worker_count > 1: the world starts
+     *  worker_count - 1 threads of its own at its first large step and stops them when it
+     *  is destroyed. Default NULL. */
+    i2d_enqueue_task_fn* enqueue_task;
+    i2d_finish_task_fn* finish_task;
+    /** Passed to enqueue_task and finish_task; default NULL. */
+    void* user_task_context;
     /** Set by i2d_default_world_def(); do not set. */
     uint32_t internal_cookie;
 } i2d_world_def;

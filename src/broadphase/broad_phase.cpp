@@ -93,4 +93,25 @@ void BroadPhase::buffer_move(int32_t key) {
     }
 }
 
+int32_t BroadPhase::begin_pair_queries() {
+    commit_moves();
+    queries_.clear();
+    for (const int32_t key : move_buffer_) {
+        if (key != null_index) {  // blank: destroyed after it moved
+            queries_.push_back({storage_order(key), key});
+        }
+    }
+    radix_sort(queries_, query_scratch_, [](const QueryEntry& e) { return e.order; });
+    return int32_t(queries_.size());
+}
+
+void BroadPhase::end_pair_queries() {
+    for (const int32_t key : move_buffer_) {
+        if (key != null_index) {
+            move_set_.remove(key);
+        }
+    }
+    move_buffer_.clear();
+}
+
 }  // namespace i2d

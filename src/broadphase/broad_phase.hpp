@@ -55,6 +55,16 @@ public:
     template <class Accept>
     void update_pairs(Accept&& accept, std::vector<ShapePairCandidate>& out);
 
+    // update_pairs in three parts, so that workers can share the queries: begin (one
+    // thread) commits the moves and orders the queued proxies, returning how many there
+    // are; query_pairs does queries [begin, end) and may run on several threads at once
+    // over disjoint ranges, reading only; end_pair_queries (one thread) clears the queue.
+    // Each range's pairs come out in the order update_pairs gives them.
+    int32_t begin_pair_queries();
+    template <class Accept>
+    void query_pairs(int32_t begin, int32_t end, Accept&& accept, std::vector<ShapePairCandidate>& out) const;
+    void end_pair_queries();
+
     const DynamicTree& tree(ProxyKind kind) const { return trees_[int32_t(kind)]; }
     DynamicTree& tree(ProxyKind kind) { return trees_[int32_t(kind)]; }
     const AABB& fat_aabb(int32_t key) const { return tree(proxy_kind(key)).fat_aabb(proxy_id(key)); }

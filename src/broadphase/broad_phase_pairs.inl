@@ -6,15 +6,15 @@ namespace i2d {
 
 template <class Accept>
 void BroadPhase::update_pairs(Accept&& accept, std::vector<ShapePairCandidate>& out) {
-    commit_moves();
-    queries_.clear();
-    for (const int32_t key : move_buffer_) {
-        if (key != null_index) {  // blank: destroyed after it moved
-            queries_.push_back({storage_order(key), key});
-        }
-    }
-    radix_sort(queries_, query_scratch_, [](const QueryEntry& e) { return e.order; });
-    for (const QueryEntry& entry : queries_) {
+    const int32_t count = begin_pair_queries();
+    query_pairs(0, count, accept, out);
+    end_pair_queries();
+}
+
+template <class Accept>
+void BroadPhase::query_pairs(int32_t begin, int32_t end, Accept&& accept, std::vector<ShapePairCandidate>& out) const {
+    for (int32_t q = begin; q < end; ++q) {
+        const QueryEntry& entry = queries_[std::size_t(q)];
         const int32_t key = entry.key;
         const ProxyKind kind = proxy_kind(key);
         const DynamicTree& own = tree(kind);
@@ -41,12 +41,6 @@ void BroadPhase::update_pairs(Accept&& accept, std::vector<ShapePairCandidate>& 
             });
         }
     }
-    for (const int32_t key : move_buffer_) {
-        if (key != null_index) {
-            move_set_.remove(key);
-        }
-    }
-    move_buffer_.clear();
 }
 
 }  // namespace i2d

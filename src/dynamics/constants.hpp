@@ -73,4 +73,17 @@ constexpr float friction_anchor_share = 1.0f;
 /// Softest contact a world accepts, Hz: below it stacks sink visibly at rest.
 constexpr float min_contact_hertz = 1.0e-3f;
 
+// Threads. Handing work to other workers costs microseconds per stage, so a world
+// smaller than this runs its step on the calling thread alone (same bits either way);
+// and no worker claims less than a block of this many items at a time.
+/// Awake bodies below which the solver runs inline.
+constexpr int32_t parallel_min_bodies = 256;
+/// Awake contacts below which the narrowphase runs inline.
+constexpr int32_t parallel_min_contacts = 512;
+/// Moved proxies below which pair finding runs inline.
+constexpr int32_t parallel_min_moved_proxies = 64;
+constexpr int32_t bodies_per_work_block = 64;
+constexpr int32_t contacts_per_work_block = 64;
+constexpr int32_t proxies_per_work_block = 16;
+
 }  // namespace i2d

@@ -233,26 +233,51 @@ void ContactSet::body_slept(int32_t body) {
 
 // Most candidates are pairs that have a contact already: the pair set answers that
 // with one lookup, before the shapes and bodies are read.
+bool ContactSet::may_pair(int32_t shape_a, int32_t shape_b) const {
+    if (pair_set_.contains(pair_key(shape_a, shape_b))) {
+        return false;
+    }
+    const Shape& a = shapes_[shape_a];
+    const Shape& b = shapes_[shape_b];
+    if (a.body == b.body || (a.is_sensor && b.is_sensor)) {
+        return false;
+    }
+    if (bodies_[a.body].type != BodyType::dynamic && bodies_[b.body].type != BodyType::dynamic) {
+        return false;
+    }
+    return should_collide(a.filter, b.filter);
+}
+
+void ContactSet::query_range(void* set, const Stage& stage, int32_t begin, int32_t end, int32_t) {
+    ContactSet& self = *static_cast<ContactSet*>(set);
+    std::vector<ShapePairCandidate>& out = self.block_pairs_[std::size_t(begin / stage.items_per_block)];
+    out.clear();
+    self.querying_->query_pairs(begin, end, [&self](int32_t a, int32_t b) { return self.may_pair(a, b); }, out);
+}
+
+// New pairs, block by block in query order, become contacts on this thread.
 void ContactSet::find_new_contacts(BroadPhase& broad_phase) {
-    new_pairs_.clear();
-    broad_phase.update_pairs(
-        [this](int32_t shape_a, int32_t shape_b) {
-            if (pair_set_.contains(pair_key(shape_a, shape_b))) {
-                return false;
-            }
-            const Shape& a = shapes_[shape_a];
-            const Shape& b = shapes_[shape_b];
-            if (a.body == b.body || (a.is_sensor && b.is_sensor)) {
-                return false;
-            }
-            if (bodies_[a.body].type != BodyType::dynamic && bodies_[b.body].type != BodyType::dynamic) {
-                return false;
-            }
-            return should_collide(a.filter, b.filter);
-        },
-        new_pairs_);
-    for (const ShapePairCandidate& pair : new_pairs_) {
-        create_contact(pair.shape_a, pair.shape_b);
+    const int32_t queries = broad_phase.begin_pair_queries();
+    const bool parallel = tasks_.worker_count() > 1 && queries >= parallel_min_moved_proxies;
+    Stage stage;
+    stage.fn = &ContactSet::query_range;
+    stage.owner = this;
+    stage.item_count = queries;
+    stage.items_per_block = parallel ? items_per_block(queries, tasks_.worker_count(), proxies_per_work_block)
+                                     : (queries > 0 ? queries : 1);
+    const int32_t blocks = stage.block_count();
+    if (int32_t(block_pairs_.size()) < blocks) {
+        block_pairs_.resize(std::size_t(blocks));
+    }
+    stages_.assign(1, stage);
+    querying_ = &broad_phase;
+    runner_.run(tasks_, stages_, parallel);
+    querying_ = nullptr;
+    broad_phase.end_pair_queries();
+    for (int32_t b = 0; b < (queries > 0 ? blocks : 0); ++b) {
+        for (const ShapePairCandidate& pair : block_pairs_[std::size_t(b)]) {
+            create_contact(pair.shape_a, pair.shape_b);
+        }
     }
 }
 
@@ -266,33 +291,72 @@ void ContactSet::collide(float time_step) {
     islands_to_wake_.clear();
     point_changes_.clear();
     const int32_t count = int32_t(awake_.size());
-    bool layout_changed = false;
+    collide_flags_.resize(std::size_t(count));
+    time_step_ = time_step;
+    const bool parallel = tasks_.worker_count() > 1 && count >= parallel_min_contacts;
+    Stage stage;
+    stage.fn = &ContactSet::collide_range;
+    stage.owner = this;
+    stage.item_count = count;
+    stage.items_per_block = parallel ? items_per_block(count, tasks_.worker_count(), contacts_per_work_block)
+                                     : (count > 0 ? count : 1);
+    stages_.assign(1, stage);
+    runner_.run(tasks_, stages_, parallel);
+
+    bool layout_change = false;
     for (int32_t k = 0; k < count; ++k) {
-        prefetch_for_collide(k, count);
+        const uint8_t flags = collide_flags_[std::size_t(k)];
+        if (flags == 0) {
+            continue;
+        }
+        layout_change = layout_change || (flags & layout_changed) != 0;
         const int32_t index = awake_[std::size_t(k)];
-        Contact& c = contacts_[index];
-        const uint32_t at_start = (c.flags & contact_touching) ? uint32_t(contact_touching_at_start) : 0u;
-        c.flags = (c.flags & ~uint32_t(contact_touching | contact_touching_at_start)) | at_start;
-        const Shape& a = shapes_[c.shape_a];
-        const Shape& b = shapes_[c.shape_b];
-        const bool state_a_changed = set_solver_state(c, 0, bodies_[a.body]);
-        const bool state_b_changed = set_solver_state(c, 1, bodies_[b.body]);
-        const int32_t old_point_count = c.point_count;
-        const bool had_points = old_point_count > 0;
-        if (!overlaps(a.fat_aabb, b.fat_aabb)) {
-            c.flags |= contact_disjoint;
-            c.point_count = 0;
-        } else if (is_solid(c)) {
-            if (!recycle(c, bodies_[a.body], bodies_[b.body])) {
-                update_contact(c, a, b, time_step);
+        const Contact& c = contacts_[index];
+        for (int32_t e = 0; e < 2; ++e) {
+            if (flags & (e == 0 ? wakes_a : wakes_b)) {
+                islands_to_wake_.push_back(bodies_[c.edges[e].body].island);
             }
         }
-        if (is_solid(c)) {
-            note_point_change(index, had_points);
+        if (flags & points_changed) {
+            point_changes_.push_back(index);
         }
-        layout_changed = layout_changed || state_a_changed || state_b_changed || c.point_count != old_point_count;
     }
-    layout_version_ += layout_changed ? 1u : 0u;
+    layout_version_ += layout_change ? 1u : 0u;
+}
+
+void ContactSet::collide_range(void* set, const Stage&, int32_t begin, int32_t end, int32_t) {
+    ContactSet& self = *static_cast<ContactSet*>(set);
+    const int32_t count = int32_t(self.awake_.size());
+    for (int32_t k = begin; k < end; ++k) {
+        self.prefetch_for_collide(k, end < count ? end : count);
+        self.collide_flags_[std::size_t(k)] = self.collide_one(k, self.time_step_);
+    }
+}
+
+// Updates the k-th awake contact, writing only to it; returns its CollideFlags.
+uint8_t ContactSet::collide_one(int32_t k, float time_step) {
+    Contact& c = contacts_[awake_[std::size_t(k)]];
+    const uint32_t at_start = (c.flags & contact_touching) ? uint32_t(contact_touching_at_start) : 0u;
+    c.flags = (c.flags & ~uint32_t(contact_touching | contact_touching_at_start)) | at_start;
+    const Shape& a = shapes_[c.shape_a];
+    const Shape& b = shapes_[c.shape_b];
+    const bool state_a_changed = set_solver_state(c, 0, bodies_[a.body]);
+    const bool state_b_changed = set_solver_state(c, 1, bodies_[b.body]);
+    const int32_t old_point_count = c.point_count;
+    const bool had_points = old_point_count > 0;
+    if (!overlaps(a.fat_aabb, b.fat_aabb)) {
+        c.flags |= contact_disjoint;
+        c.point_count = 0;
+    } else if (is_solid(c)) {
+        if (!recycle(c, bodies_[a.body], bodies_[b.body])) {
+            update_contact(c, a, b, time_step);
+        }
+    }
+    uint8_t flags = is_solid(c) ? point_change_flags(c, had_points) : 0;
+    if (state_a_changed || state_b_changed || c.point_count != old_point_count) {
+        flags |= layout_changed;
+    }
+    return flags;
 }
 
 // The awake list is in no spatial order: the contacts (and their shapes and bodies)
@@ -311,21 +375,19 @@ void ContactSet::prefetch_for_collide(int32_t k, int32_t count) const {
     }
 }
 
-void ContactSet::note_point_change(int32_t index, bool had_points) {
-    const Contact& c = contacts_[index];
+uint8_t ContactSet::point_change_flags(const Contact& c, bool had_points) const {
     const bool has_points = c.point_count > 0;
     if (!had_points && !has_points) {
-        return;
+        return 0;
     }
+    uint8_t flags = 0;
     for (int32_t e = 0; e < 2; ++e) {
         const Body& body = bodies_[c.edges[e].body];
         if (is_asleep(body) && (had_points != has_points || is_moving(bodies_[c.edges[e ^ 1].body]))) {
-            islands_to_wake_.push_back(body.island);
+            flags |= e == 0 ? wakes_a : wakes_b;
         }
     }
-    if (had_points != has_points) {
-        point_changes_.push_back(index);
-    }
+    return flags | (had_points != has_points ? points_changed : 0);
 }
 
 // Material is mixed when the contact is made and whenever a shape's material changes,

@@ -9,6 +9,12 @@
 // asleep that something reached); the world passes that on. Touching, for events,
 // describes where the step left the bodies: the solver reports it per contact at the end
 // of the step, and end_step turns changes into begin and end events.
+//
+// Threads: the narrowphase and the pair queries are shared by the world's workers. A
+// contact's update writes only the contact; what the islands must hear it leaves in a
+// flag byte per awake contact, and the pairs each block of queries finds go to that
+// block's list. One thread then reads the flags and the lists in order, so the results
+// are the same for any number of workers.
 #pragma once
 
 #include <cstdint>
@@ -17,6 +23,8 @@
 #include "broadphase/broad_phase.hpp"
 #include "core/hash_set.hpp"
 #include "core/pool.hpp"
+#include "core/stage_runner.hpp"
+#include "core/task_system.hpp"
 #include "dynamics/body.hpp"
 #include "dynamics/contact.hpp"
 #include "dynamics/events.hpp"
@@ -30,8 +38,8 @@ class Islands;
 class ContactSet {
 public:
     ContactSet(const WorldDef& settings, Pool<Body>& bodies, const Pool<Shape>& shapes, Islands& islands,
-               EventRecorder& events)
-        : settings_(settings), bodies_(bodies), shapes_(shapes), islands_(islands), events_(events) {}
+               EventRecorder& events, TaskSystem& tasks)
+        : settings_(settings), bodies_(bodies), shapes_(shapes), islands_(islands), events_(events), tasks_(tasks) {}
 
     Pool<Contact>& pool() { return contacts_; }
     const Pool<Contact>& pool() const { return contacts_; }
@@ -97,8 +105,12 @@ private:
     void mix_material(Contact& contact, const Shape& a, const Shape& b) const;
     bool recycle(Contact& contact, const Body& a, const Body& b) const;
     void update_contact(Contact& contact, const Shape& a, const Shape& b, float time_step);
-    void note_point_change(int32_t contact, bool had_points);
+    uint8_t point_change_flags(const Contact& contact, bool had_points) const;
     void prefetch_for_collide(int32_t k, int32_t count) const;
+    uint8_t collide_one(int32_t k, float time_step);
+    static void collide_range(void* set, const Stage& stage, int32_t begin, int32_t end, int32_t worker);
+    static void query_range(void* set, const Stage& stage, int32_t begin, int32_t end, int32_t worker);
+    bool may_pair(int32_t shape_a, int32_t shape_b) const;
     void report_touch_changes(const Contact& contact, bool touching_now);
     ShapePairEvent event_of(const Contact& contact) const;
 
@@ -107,6 +119,7 @@ private:
     const Pool<Shape>& shapes_;
     Islands& islands_;
     EventRecorder& events_;
+    TaskSystem& tasks_;
     Pool<Contact> contacts_;
     HashSet pair_set_;  // pair_key of the shapes of every contact
     std::vector<int32_t> awake_;
@@ -115,6 +128,14 @@ private:
     std::vector<ShapePairCandidate> new_pairs_;
     std::vector<int32_t> islands_to_wake_;
     std::vector<int32_t> point_changes_;  // contacts that gained or lost all their points
+    // What each awake contact's update found, for the islands (CollideFlags).
+    enum CollideFlags : uint8_t { layout_changed = 1, points_changed = 2, wakes_a = 4, wakes_b = 8 };
+    std::vector<uint8_t> collide_flags_;
+    std::vector<std::vector<ShapePairCandidate>> block_pairs_;  // per block of pair queries
+    BroadPhase* querying_ = nullptr;  // while the pair queries run
+    float time_step_ = 0.0f;
+    std::vector<Stage> stages_;
+    StageRunner runner_;
 };
 
 }  // namespace i2d

@@ -92,14 +92,16 @@ I2D_FORCE_INLINE void prefetch_bodies(const Contact& c, const ContactLayout& lay
     }
 }
 
-I2D_FORCE_INLINE void prefetch_ahead(const ContactLayout& layout, int32_t index, int32_t end) {
-    const int32_t contact_ahead = index + prefetch_contacts_ahead;
-    if (contact_ahead < end) {
-        prefetch_solver_data(layout.contacts[layout.ordered[contact_ahead]]);
+// Packing reads contacts in colour order, lane by lane; -1 lanes are padding.
+I2D_FORCE_INLINE void prefetch_ahead(const ContactLayout& layout, const int32_t* lane_contacts, int32_t lane,
+                                     int32_t end) {
+    const int32_t contact_ahead = lane + prefetch_contacts_ahead;
+    if (contact_ahead < end && lane_contacts[contact_ahead] >= 0) {
+        prefetch_solver_data(layout.contacts[lane_contacts[contact_ahead]]);
     }
-    const int32_t bodies_ahead = index + prefetch_bodies_ahead;
-    if (bodies_ahead < end) {
-        prefetch_bodies(layout.contacts[layout.ordered[bodies_ahead]], layout);
+    const int32_t bodies_ahead = lane + prefetch_bodies_ahead;
+    if (bodies_ahead < end && lane_contacts[bodies_ahead] >= 0) {
+        prefetch_bodies(layout.contacts[lane_contacts[bodies_ahead]], layout);
     }
 }
 
@@ -126,99 +128,116 @@ std::vector<ContactBlock<8>>& ContactSolver::blocks<8>() { return blocks8_; }
 template <>
 std::vector<ContactBlock<16>>& ContactSolver::blocks<16>() { return blocks16_; }
 
-// Colour by colour, each colour's contacts W to a block, the last block padded.
+// Colour by colour, each colour's contacts W to a block, the last block padded: which
+// contact goes in which lane. The blocks are zeroed and filled by pack_range.
 template <int W>
-void ContactSolver::pack_colors(const ContactLayout& layout) {
+void ContactSolver::lay_out_colors(const ContactLayout& layout) {
     const int32_t colors = layout.color_count - 1;
-    color_block_starts_.assign(std::size_t(colors) + 1, 0);
-    for (int32_t c = 0; c < colors; ++c) {
-        const int32_t count = layout.color_starts[c + 1] - layout.color_starts[c];
-        color_block_starts_[std::size_t(c) + 1] = color_block_starts_[std::size_t(c)] + (count + W - 1) / W;
-    }
-    std::vector<ContactBlock<W>>& out = blocks<W>();
-    out.resize(std::size_t(color_block_starts_[std::size_t(colors)]));
-    if (!out.empty()) {
-        std::memset(static_cast<void*>(out.data()), 0, out.size() * sizeof(ContactBlock<W>));
-    }
-    lane_contacts_.assign(out.size() * W, -1);
+    int32_t block_total = 0;
     runs_.clear();
     for (int32_t c = 0; c < colors; ++c) {
-        const int32_t first = layout.color_starts[c], count = layout.color_starts[c + 1] - first;
-        const int32_t first_lane = color_block_starts_[std::size_t(c)] * W;
-        const int32_t lanes = (count + W - 1) / W * W;
+        const int32_t count = layout.color_starts[c + 1] - layout.color_starts[c];
         if (count > 0) {
-            runs_.push_back({color_block_starts_[std::size_t(c)], lanes / W});
+            runs_.push_back({block_total, (count + W - 1) / W});
+            block_total += (count + W - 1) / W;
         }
-        for (int32_t k = 0; k < lanes; ++k) {
-            ContactBlock<W>& block = out[std::size_t((first_lane + k) / W)];
-            if (k < count) {
-                const int32_t contact = layout.ordered[first + k];
-                prefetch_ahead(layout, first + k, layout.color_starts[layout.color_count]);
-                pack_lane(block, k % W, layout.contacts[contact], layout);
-                lane_contacts_[std::size_t(first_lane + k)] = contact;
-            } else {
-                block.state_a[k % W] = block.state_b[k % W] = layout.fixed_state;
-            }
+    }
+    blocks<W>().resize(std::size_t(block_total));
+    lane_contacts_.assign(std::size_t(block_total) * W, -1);
+    int32_t run = 0;
+    for (int32_t c = 0; c < colors; ++c) {
+        const int32_t first = layout.color_starts[c], count = layout.color_starts[c + 1] - first;
+        if (count > 0) {
+            std::memcpy(lane_contacts_.data() + std::size_t(runs_[std::size_t(run++)].first_block) * W,
+                        layout.ordered + first, std::size_t(count) * sizeof(int32_t));
         }
     }
 }
 
-void ContactSolver::pack_overflow(const ContactLayout& layout) {
+void ContactSolver::lay_out(const ContactLayout& layout) {
+    fixed_state_ = layout.fixed_state;
+    switch (kernels_->width) {
+        case 16: lay_out_colors<16>(layout); break;
+        case 8: lay_out_colors<8>(layout); break;
+        case 4: lay_out_colors<4>(layout); break;
+        default: lay_out_colors<1>(layout); break;
+    }
     const int32_t overflow = layout.color_count - 1;
     const int32_t first = layout.color_starts[overflow], count = layout.color_starts[overflow + 1] - first;
     overflow_.resize(std::size_t(count));
-    if (count > 0) {
-        std::memset(static_cast<void*>(overflow_.data()), 0, overflow_.size() * sizeof(ContactBlock<1>));
-    }
     overflow_contacts_.assign(layout.ordered + first, layout.ordered + first + count);
-    for (int32_t k = 0; k < count; ++k) {
-        prefetch_ahead(layout, first + k, first + count);
+}
+
+template <int W>
+void ContactSolver::pack_range(const ContactLayout& layout, int32_t begin, int32_t end) {
+    ContactBlock<W>* out = blocks<W>().data();
+    std::memset(static_cast<void*>(out + begin), 0, std::size_t(end - begin) * sizeof(ContactBlock<W>));
+    const int32_t lane_end = end * W;
+    for (int32_t lane = begin * W; lane < lane_end; ++lane) {
+        ContactBlock<W>& block = out[lane / W];
+        const int32_t contact = lane_contacts_[std::size_t(lane)];
+        if (contact >= 0) {
+            prefetch_ahead(layout, lane_contacts_.data(), lane, lane_end);
+            pack_lane(block, lane % W, layout.contacts[contact], layout);
+        } else {
+            block.state_a[lane % W] = block.state_b[lane % W] = layout.fixed_state;
+        }
+    }
+}
+
+void ContactSolver::pack_blocks(const ContactLayout& layout, int32_t begin, int32_t end) {
+    switch (kernels_->width) {
+        case 16: pack_range<16>(layout, begin, end); break;
+        case 8: pack_range<8>(layout, begin, end); break;
+        case 4: pack_range<4>(layout, begin, end); break;
+        default: pack_range<1>(layout, begin, end); break;
+    }
+}
+
+void ContactSolver::pack_overflow(const ContactLayout& layout, int32_t begin, int32_t end) {
+    std::memset(static_cast<void*>(overflow_.data() + begin), 0, std::size_t(end - begin) * sizeof(ContactBlock<1>));
+    for (int32_t k = begin; k < end; ++k) {
+        prefetch_ahead(layout, overflow_contacts_.data(), k, end);
         pack_lane(overflow_[std::size_t(k)], 0, layout.contacts[overflow_contacts_[std::size_t(k)]], layout);
     }
 }
 
-void ContactSolver::prepare(const ContactLayout& layout) {
-    switch (kernels_->width) {
-        case 16: pack_colors<16>(layout); break;
-        case 8: pack_colors<8>(layout); break;
-        case 4: pack_colors<4>(layout); break;
-        default: pack_colors<1>(layout); break;
-    }
-    pack_overflow(layout);
+int32_t ContactSolver::run_items(int32_t run) const {
+    return run_is_sequential(run) ? int32_t(overflow_.size()) : runs_[std::size_t(run)].block_count;
 }
 
-// The colours in order, then the overflow colour one contact at a time: stage(kernels,
-// blocks, count).
-template <class Stage>
-void ContactSolver::for_each_color(Stage&& stage) {
-    void* colored = kernels_->width == 16  ? static_cast<void*>(blocks16_.data())
-                    : kernels_->width == 8 ? static_cast<void*>(blocks8_.data())
-                    : kernels_->width == 4 ? static_cast<void*>(blocks4_.data())
-                                           : static_cast<void*>(blocks1_.data());
-    const std::size_t block_bytes = kernels_->width == 16  ? sizeof(ContactBlock<16>)
-                                    : kernels_->width == 8 ? sizeof(ContactBlock<8>)
-                                    : kernels_->width == 4 ? sizeof(ContactBlock<4>)
-                                                           : sizeof(ContactBlock<1>);
-    for (const ColorRun& run : runs_) {
-        stage(*kernels_, static_cast<char*>(colored) + block_bytes * std::size_t(run.first_block), run.block_count);
+ContactSolver::RunBlocks ContactSolver::run_blocks(int32_t run, int32_t first) const {
+    if (run_is_sequential(run)) {
+        return {&scalar_contact_kernels(), const_cast<ContactBlock<1>*>(overflow_.data() + first)};
     }
-    if (!overflow_.empty()) {
-        stage(scalar_contact_kernels(), static_cast<void*>(overflow_.data()), int32_t(overflow_.size()));
-    }
+    const std::size_t block = std::size_t(runs_[std::size_t(run)].first_block + first);
+    void* colored = kernels_->width == 16  ? static_cast<void*>(const_cast<ContactBlock<16>*>(blocks16_.data() + block))
+                    : kernels_->width == 8 ? static_cast<void*>(const_cast<ContactBlock<8>*>(blocks8_.data() + block))
+                    : kernels_->width == 4 ? static_cast<void*>(const_cast<ContactBlock<4>*>(blocks4_.data() + block))
+                                           : static_cast<void*>(const_cast<ContactBlock<1>*>(blocks1_.data() + block));
+    return {kernels_, colored};
 }
 
-void ContactSolver::warm_start(BodyState* states) {
-    for_each_color([states](const ContactKernels& k, void* blocks, int32_t count) { k.warm_start(blocks, count, states); });
+void ContactSolver::warm_start(int32_t run, int32_t begin, int32_t end, BodyState* states) const {
+    const RunBlocks r = run_blocks(run, begin);
+    r.kernels->warm_start(r.blocks, end - begin, states);
 }
 
-void ContactSolver::solve(BodyState* states, const SolvePass& pass) {
-    for_each_color(
-        [states, &pass](const ContactKernels& k, void* blocks, int32_t count) { k.solve(blocks, count, states, pass); });
+void ContactSolver::solve(int32_t run, int32_t begin, int32_t end, BodyState* states, const SolvePass& pass) const {
+    const RunBlocks r = run_blocks(run, begin);
+    r.kernels->solve(r.blocks, end - begin, states, pass);
+}
+
+void ContactSolver::apply_restitution(int32_t run, int32_t begin, int32_t end, BodyState* states,
+                                      float threshold) const {
+    const RunBlocks r = run_blocks(run, begin);
+    r.kernels->restitution(r.blocks, end - begin, states, threshold);
 }
 
 template <int W>
-bool ContactSolver::any_bounce(const std::vector<ContactBlock<W>>& blocks, float threshold) const {
-    for (const ContactBlock<W>& block : blocks) {
+bool ContactSolver::bounces(const ContactBlock<W>* blocks, std::size_t count, float threshold) const {
+    for (std::size_t b = 0; b < count; ++b) {
+        const ContactBlock<W>& block = blocks[b];
         for (int lane = 0; lane < W; ++lane) {
             for (int i = 0; i < 2; ++i) {
                 const ContactPointLanes<W>& p = block.points[i];
@@ -232,33 +251,25 @@ bool ContactSolver::any_bounce(const std::vector<ContactBlock<W>>& blocks, float
     return false;
 }
 
-// Only when something bounces, and then over every contact that pushed, a few times.
-void ContactSolver::apply_restitution(BodyState* states, float threshold) {
-    const bool colored = kernels_->width == 16  ? any_bounce(blocks16_, threshold)
-                         : kernels_->width == 8 ? any_bounce(blocks8_, threshold)
-                         : kernels_->width == 4 ? any_bounce(blocks4_, threshold)
-                                                : any_bounce(blocks1_, threshold);
-    if (!colored && !any_bounce(overflow_, threshold)) {
-        return;
-    }
-    constexpr int32_t restitution_iterations = 4;
-    for (int32_t iteration = 0; iteration < restitution_iterations; ++iteration) {
-        for_each_color([states, threshold](const ContactKernels& k, void* blocks, int32_t count) {
-            k.restitution(blocks, count, states, threshold);
-        });
-    }
+bool ContactSolver::any_bounce(float threshold) const {
+    const bool colored = kernels_->width == 16  ? bounces(blocks16_.data(), blocks16_.size(), threshold)
+                         : kernels_->width == 8 ? bounces(blocks8_.data(), blocks8_.size(), threshold)
+                         : kernels_->width == 4 ? bounces(blocks4_.data(), blocks4_.size(), threshold)
+                                                : bounces(blocks1_.data(), blocks1_.size(), threshold);
+    return colored || bounces(overflow_.data(), overflow_.size(), threshold);
 }
 
 template <int W>
-void ContactSolver::store_blocks(const std::vector<ContactBlock<W>>& blocks, const std::vector<int32_t>& contacts_of_lanes,
-                                 Pool<Contact>& contacts, const BodyState* states, float slop) const {
-    for (std::size_t k = 0; k < contacts_of_lanes.size(); ++k) {
+void ContactSolver::store_range(const ContactBlock<W>* blocks, const int32_t* contacts_of_lanes, int32_t lane_begin,
+                                int32_t lane_end, Pool<Contact>& contacts, const BodyState* states,
+                                float slop) const {
+    for (int32_t k = lane_begin; k < lane_end; ++k) {
         const int32_t index = contacts_of_lanes[k];
         if (index < 0) {
             continue;
         }
-        const std::size_t ahead = k + std::size_t(prefetch_contacts_ahead);
-        if (ahead < contacts_of_lanes.size() && contacts_of_lanes[ahead] >= 0) {
+        const int32_t ahead = k + prefetch_contacts_ahead;
+        if (ahead < lane_end && contacts_of_lanes[ahead] >= 0) {
             prefetch_solver_data(contacts[contacts_of_lanes[ahead]]);
         }
         const ContactBlock<W>& block = blocks[k / W];
@@ -275,14 +286,20 @@ void ContactSolver::store_blocks(const std::vector<ContactBlock<W>>& blocks, con
     }
 }
 
-void ContactSolver::store(Pool<Contact>& contacts, const BodyState* states, float slop) const {
-    switch (kernels_->width) {
-        case 16: store_blocks(blocks16_, lane_contacts_, contacts, states, slop); break;
-        case 8: store_blocks(blocks8_, lane_contacts_, contacts, states, slop); break;
-        case 4: store_blocks(blocks4_, lane_contacts_, contacts, states, slop); break;
-        default: store_blocks(blocks1_, lane_contacts_, contacts, states, slop); break;
+void ContactSolver::store_blocks(Pool<Contact>& contacts, const BodyState* states, float slop, int32_t begin,
+                                 int32_t end) const {
+    const int32_t* lanes = lane_contacts_.data();
+    const int32_t W = kernels_->width;
+    switch (W) {
+        case 16: store_range(blocks16_.data(), lanes, begin * W, end * W, contacts, states, slop); break;
+        case 8: store_range(blocks8_.data(), lanes, begin * W, end * W, contacts, states, slop); break;
+        case 4: store_range(blocks4_.data(), lanes, begin * W, end * W, contacts, states, slop); break;
+        default: store_range(blocks1_.data(), lanes, begin * W, end * W, contacts, states, slop); break;
     }
-    store_blocks(overflow_, overflow_contacts_, contacts, states, slop);
+}
+
+void ContactSolver::store_overflow(Pool<Contact>& contacts, const BodyState* states, float slop) const {
+    store_range(overflow_.data(), overflow_contacts_.data(), 0, int32_t(overflow_.size()), contacts, states, slop);
 }
 
 }  // namespace i2d

@@ -59,31 +59,55 @@ public:
     void set_kernels(const ContactKernels& kernels) { kernels_ = &kernels; }
     const ContactKernels& kernels() const { return *kernels_; }
 
-    /// Packs the contacts into blocks: effective masses, anchors, the restitution speeds
-    /// from the velocities before the step, last step's impulses.
-    void prepare(const ContactLayout& layout);
-    void warm_start(BodyState* states);
-    /// One pass over every contact; pass.use_bias pushes overlap out, without it the
-    /// pass relaxes.
-    void solve(BodyState* states, const SolvePass& pass);
-    void apply_restitution(BodyState* states, float threshold);
-    /// Impulses back to the contacts; contacts with a point within `slop` of touching
-    /// where the substeps left the bodies get contact_touching.
-    void store(Pool<Contact>& contacts, const BodyState* states, float slop) const;
+    // The solver's work comes in ranges, so that workers can share it (stage_runner.hpp):
+    // lay_out on one thread, then every other call over any split of its range. A
+    // "run" is a colour's blocks; the last run, run_count() - 1 when there is overflow,
+    // is the overflow colour, which must be done whole, on one worker.
+
+    /// Places the contacts in blocks, colour by colour (one thread).
+    void lay_out(const ContactLayout& layout);
+    /// Blocks of the colours, and contacts of the overflow colour, to pack.
+    int32_t block_count() const { return int32_t(lane_contacts_.size()) / kernels_->width; }
+    int32_t overflow_count() const { return int32_t(overflow_contacts_.size()); }
+    /// Packs blocks [begin, end): effective masses, anchors, the restitution speeds from
+    /// the velocities before the step, last step's impulses.
+    void pack_blocks(const ContactLayout& layout, int32_t begin, int32_t end);
+    void pack_overflow(const ContactLayout& layout, int32_t begin, int32_t end);
+
+    int32_t run_count() const { return int32_t(runs_.size()) + (overflow_.empty() ? 0 : 1); }
+    /// The run's items: blocks of a colour, or the overflow's contacts.
+    int32_t run_items(int32_t run) const;
+    bool run_is_sequential(int32_t run) const { return run == int32_t(runs_.size()); }
+    void warm_start(int32_t run, int32_t begin, int32_t end, BodyState* states) const;
+    /// One pass; pass.use_bias pushes overlap out, without it the pass relaxes.
+    void solve(int32_t run, int32_t begin, int32_t end, BodyState* states, const SolvePass& pass) const;
+    /// Whether any point bounces: only then does the restitution pass run.
+    bool any_bounce(float threshold) const;
+    void apply_restitution(int32_t run, int32_t begin, int32_t end, BodyState* states, float threshold) const;
+    /// Impulses of blocks [begin, end) back to their contacts; contacts with a point
+    /// within `slop` of touching where the substeps left the bodies get contact_touching.
+    void store_blocks(Pool<Contact>& contacts, const BodyState* states, float slop, int32_t begin,
+                      int32_t end) const;
+    void store_overflow(Pool<Contact>& contacts, const BodyState* states, float slop) const;
 
 private:
     template <int W>
     std::vector<ContactBlock<W>>& blocks();
     template <int W>
-    void pack_colors(const ContactLayout& layout);
-    void pack_overflow(const ContactLayout& layout);
+    void lay_out_colors(const ContactLayout& layout);
     template <int W>
-    void store_blocks(const std::vector<ContactBlock<W>>& blocks, const std::vector<int32_t>& contacts_of_lanes,
-                      Pool<Contact>& contacts, const BodyState* states, float slop) const;
+    void pack_range(const ContactLayout& layout, int32_t begin, int32_t end);
     template <int W>
-    bool any_bounce(const std::vector<ContactBlock<W>>& blocks, float threshold) const;
-    template <class Stage>
-    void for_each_color(Stage&& stage);
+    void store_range(const ContactBlock<W>* blocks, const int32_t* contacts_of_lanes, int32_t lane_begin,
+                     int32_t lane_end, Pool<Contact>& contacts, const BodyState* states, float slop) const;
+    template <int W>
+    bool bounces(const ContactBlock<W>* blocks, std::size_t count, float threshold) const;
+    // The kernels and the address of block `first` of the run.
+    struct RunBlocks {
+        const ContactKernels* kernels;
+        void* blocks;
+    };
+    RunBlocks run_blocks(int32_t run, int32_t first) const;
 
     const ContactKernels* kernels_ = &scalar_contact_kernels();
     // The colours' blocks, in the kernels' width; the overflow colour's one per contact.
@@ -92,13 +116,13 @@ private:
     std::vector<ContactBlock<8>> blocks8_;
     std::vector<ContactBlock<16>> blocks16_;
     std::vector<ContactBlock<1>> overflow_;
-    std::vector<int32_t> color_block_starts_;  // per colour (overflow excluded), one more at the end
     struct ColorRun {
         int32_t first_block, block_count;
     };
     std::vector<ColorRun> runs_;  // the colours that have contacts, in solve order
     std::vector<int32_t> lane_contacts_;       // per lane of the colours' blocks: its contact, or -1
     std::vector<int32_t> overflow_contacts_;
+    int32_t fixed_state_ = 0;
 };
 
 }  // namespace i2d

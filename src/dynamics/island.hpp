@@ -66,8 +66,12 @@ public:
     // long enough keeps its island awake (the shortest rest time wins); then resting
     // islands fall asleep.
     void begin_rest_times();
-    void note_rest_time(int32_t body, float rest_time) {
-        float& rest = island_rest_[std::size_t(islands_[bodies_[body].island].awake_index)];
+    void note_rest_time(int32_t body, float rest_time) { note_rest_time_in_slot(rest_slot(body), rest_time); }
+    /// The same in two halves, for workers: the slot of the body's island (read only),
+    /// then, on one thread, the note.
+    int32_t rest_slot(int32_t body) const { return islands_[bodies_[body].island].awake_index; }
+    void note_rest_time_in_slot(int32_t slot, float rest_time) {
+        float& rest = island_rest_[std::size_t(slot)];
         rest = rest < rest_time ? rest : rest_time;
     }
     /// Puts islands that rested for time_to_sleep to sleep, splitting at most one;

@@ -23,8 +23,8 @@ AABB fatten(const AABB& box, BodyType type, Vec2 displacement) {
     return {min(box.lower, box.lower + displacement) - margin, max(box.upper, box.upper + displacement) + margin};
 }
 
-void update_shape_bounds(const Body& body, Pool<Shape>& shapes, BroadPhase& broad_phase, Vec2 displacement,
-                         bool ahead) {
+bool refit_shape_bounds(const Body& body, Pool<Shape>& shapes, Vec2 displacement, bool ahead) {
+    bool any = false;
     for (int32_t s = body.head_shape; s != null_index; s = shapes[s].next_in_body) {
         Shape& shape = shapes[s];
         shape.aabb = compute_aabb(shape.geometry, body.transform);
@@ -32,8 +32,27 @@ void update_shape_bounds(const Body& body, Pool<Shape>& shapes, BroadPhase& broa
                                   : shape.aabb;
         if (!contains(shape.fat_aabb, needed)) {
             shape.fat_aabb = fatten(shape.aabb, body.type, displacement);
+            shape.enlarged = true;
+            any = true;
+        }
+    }
+    return any;
+}
+
+void move_enlarged_proxies(const Body& body, Pool<Shape>& shapes, BroadPhase& broad_phase) {
+    for (int32_t s = body.head_shape; s != null_index; s = shapes[s].next_in_body) {
+        Shape& shape = shapes[s];
+        if (shape.enlarged) {
+            shape.enlarged = false;
             broad_phase.move_proxy(shape.proxy_key, shape.fat_aabb);
         }
+    }
+}
+
+void update_shape_bounds(const Body& body, Pool<Shape>& shapes, BroadPhase& broad_phase, Vec2 displacement,
+                         bool ahead) {
+    if (refit_shape_bounds(body, shapes, displacement, ahead)) {
+        move_enlarged_proxies(body, shapes, broad_phase);
     }
 }
 

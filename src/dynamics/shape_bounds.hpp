@@ -25,4 +25,10 @@ AABB fatten(const AABB& box, BodyType type, Vec2 displacement);
 void update_shape_bounds(const Body& body, Pool<Shape>& shapes, BroadPhase& broad_phase, Vec2 displacement,
                          bool ahead);
 
+/// The same in two halves, for workers that may not touch the broadphase: the first
+/// writes only the body's shapes (marking those that need a new proxy box `enlarged`)
+/// and returns whether any does; the second, on one thread, moves their proxies.
+bool refit_shape_bounds(const Body& body, Pool<Shape>& shapes, Vec2 displacement, bool ahead);
+void move_enlarged_proxies(const Body& body, Pool<Shape>& shapes, BroadPhase& broad_phase);
+
 }  // namespace i2d

@@ -44,55 +44,117 @@ Vec2 free_acceleration(const Body& b, Vec2 gravity) {
 }  // namespace
 
 void Solver::step(float time_step, int32_t substep_count) {
-    const float h = time_step / float(substep_count);
-    const float inv_h = float(substep_count) / time_step;
-    gather_bodies();
-    prepare_contacts();
+    const int32_t awake = int32_t(links_.islands.awake_bodies().size());
+    time_step_ = time_step;
+    substep_ = time_step / float(substep_count);
+    states_.resize(std::size_t(awake) + 1);
+    motions_.resize(std::size_t(awake) + 1);
+    states_[std::size_t(awake)] = BodyState{};
+    motions_[std::size_t(awake)] = BodyMotion{};
+    final_flags_.resize(std::size_t(awake));
+    rest_islands_.resize(std::size_t(awake));
+    rest_times_.resize(std::size_t(awake));
+    color_contacts();
+    contact_solver_.lay_out(contact_layout());
+    if (links_.settings.enable_sleep) {
+        links_.islands.begin_rest_times();
+    }
+    parallel_ = links_.tasks.worker_count() > 1 && awake >= parallel_min_bodies;
+    build_stages(substep_count);
+    runner_.run(links_.tasks, stages_, parallel_);
+    finish_bodies();
+}
+
+ContactLayout Solver::contact_layout() const {
+    return ContactLayout{links_.contacts.pool(), ordered_contacts_.data(), color_starts_.data(),
+                         ConstraintColors::count, states_.data(),      motions_.data(),
+                         int32_t(states_.size()) - 1};
+}
+
+void Solver::add_stage(Stage::Fn fn, int32_t item_count, int32_t min_items_per_block, int32_t arg0, int32_t arg1) {
+    Stage stage;
+    stage.fn = fn;
+    stage.owner = this;
+    stage.item_count = item_count;
+    stage.items_per_block = parallel_ ? items_per_block(item_count, links_.tasks.worker_count(), min_items_per_block)
+                                      : (item_count > 0 ? item_count : 1);
+    stage.arg0 = arg0;
+    stage.arg1 = arg1;
+    stages_.push_back(stage);
+}
+
+// One stage per colour, in solve order; the overflow colour whole, on one worker.
+void Solver::add_contact_stages(Stage::Fn fn, int32_t pass) {
+    const int32_t min_blocks = (contacts_per_work_block + contact_solver_.kernels().width - 1) /
+                               contact_solver_.kernels().width;
+    for (int32_t run = 0; run < contact_solver_.run_count(); ++run) {
+        const int32_t items = contact_solver_.run_items(run);
+        add_stage(fn, items, contact_solver_.run_is_sequential(run) ? items : min_blocks, run, pass);
+    }
+}
+
+// Box2D v3's stage loop: per substep integrate velocities, warm start, solve with
+// push-out, integrate positions, relax. Then one more relax at the end: the velocities a
+// step ends with are the ones the next step starts from (and the ones sleep tests). One
+// sweep per substep leaves a tall stack's last velocities unconverged, and the residue
+// kept a 100-row pyramid vibrating and wandering at centimetres per second; the second
+// sweep lets it rest. Then restitution, impulses back to the contacts, final poses.
+void Solver::build_stages(int32_t substep_count) {
     const WorldDef& s = links_.settings;
+    const float h = substep_, inv_h = float(substep_count) / time_step_;
     // Stiffness is capped at a quarter of the substep rate, beyond which the implicit
     // spring stops being accurate; contacts with a fixed body get twice the frequency.
     const float hertz = min_of(s.contact_hertz, 0.25f / h);
     const Softness soft = make_softness(hertz, s.contact_damping_ratio, h);
     const Softness fixed_soft = make_softness(2.0f * hertz, s.contact_damping_ratio, h);
-    SolvePass pass{inv_h,
-                   s.contact_push_max_speed,
-                   0.0f,
-                   true,
-                   friction_anchor_share * inv_h,
-                   {soft.bias_rate, soft.mass_scale, soft.impulse_scale},
-                   {fixed_soft.bias_rate, fixed_soft.mass_scale, fixed_soft.impulse_scale}};
-    BodyState* states = states_.data();
+    passes_.resize(std::size_t(2 * substep_count));
     for (int32_t i = 0; i < substep_count; ++i) {
-        integrate_velocities(h);
-        contact_solver_.warm_start(states);
-        pass.elapsed = float(i + 1) * h;
-        pass.use_bias = true;
-        contact_solver_.solve(states, pass);
-        integrate_positions(h);
-        pass.use_bias = false;
-        contact_solver_.solve(states, pass);
+        for (int32_t relax = 0; relax < 2; ++relax) {
+            passes_[std::size_t(2 * i + relax)] = SolvePass{inv_h,
+                                                            s.contact_push_max_speed,
+                                                            float(i + 1) * h,
+                                                            relax == 0,
+                                                            friction_anchor_share * inv_h,
+                                                            {soft.bias_rate, soft.mass_scale, soft.impulse_scale},
+                                                            {fixed_soft.bias_rate, fixed_soft.mass_scale,
+                                                             fixed_soft.impulse_scale}};
+        }
     }
-    // One more relax at the end: the velocities a step ends with are the ones the next
-    // step starts from (and the ones sleep tests). One sweep per substep leaves a tall
-    // stack's last velocities unconverged, and the residue kept a 100-row pyramid
-    // vibrating and wandering at centimetres per second; the second sweep lets it rest.
-    contact_solver_.solve(states, pass);
-    contact_solver_.apply_restitution(states, s.restitution_threshold);
-    contact_solver_.store(links_.contacts.pool(), states, s.contact_slop);
-    finalize_bodies(time_step);
+    const int32_t bodies = int32_t(states_.size()) - 1;
+    const int32_t min_blocks = (contacts_per_work_block + contact_solver_.kernels().width - 1) /
+                               contact_solver_.kernels().width;
+    stages_.clear();
+    add_stage(&Solver::gather_bodies, bodies, bodies_per_work_block);
+    add_stage(&Solver::pack_contacts, contact_solver_.block_count(), min_blocks);
+    add_stage(&Solver::pack_overflow, contact_solver_.overflow_count(), contacts_per_work_block);
+    for (int32_t i = 0; i < substep_count; ++i) {
+        add_stage(&Solver::integrate_velocities, bodies, bodies_per_work_block);
+        add_contact_stages(&Solver::warm_start, 0);
+        add_contact_stages(&Solver::solve, 2 * i);
+        add_stage(&Solver::integrate_positions, bodies, bodies_per_work_block);
+        add_contact_stages(&Solver::solve, 2 * i + 1);
+    }
+    add_contact_stages(&Solver::solve, 2 * substep_count - 1);
+    add_stage(&Solver::check_bounce, 1, 1);
+    constexpr int32_t restitution_iterations = 4;
+    for (int32_t iteration = 0; iteration < restitution_iterations; ++iteration) {
+        add_contact_stages(&Solver::restitution, 0);
+    }
+    add_stage(&Solver::store_impulses, contact_solver_.block_count(), min_blocks);
+    add_stage(&Solver::store_overflow, contact_solver_.overflow_count() > 0 ? 1 : 0, 1);
+    add_stage(&Solver::finalize_bodies, bodies, bodies_per_work_block);
 }
 
-// One state per awake body in awake order, then the shared fixed state.
-void Solver::gather_bodies() {
-    const std::vector<int32_t>& awake = links_.islands.awake_bodies();
-    const std::size_t count = awake.size();
-    states_.resize(count + 1);
-    motions_.resize(count + 1);
-    for (std::size_t k = 0; k < count; ++k) {
-        const Body& b = links_.bodies[awake[k]];
+// One state per awake body in awake order (the shared fixed state is set already).
+void Solver::gather_bodies(void* solver, const Stage&, int32_t begin, int32_t end, int32_t) {
+    Solver& self = *static_cast<Solver*>(solver);
+    const std::vector<int32_t>& awake = self.links_.islands.awake_bodies();
+    const Vec2 gravity = self.links_.settings.gravity;
+    for (int32_t k = begin; k < end; ++k) {
+        const Body& b = self.links_.bodies[awake[std::size_t(k)]];
         const bool dynamic = b.type == BodyType::dynamic;
-        states_[k] = BodyState{b.linear_velocity, b.angular_velocity, dynamic ? 1.0f : 0.0f, Vec2{}, Rot{}};
-        BodyMotion& m = motions_[k];
+        self.states_[std::size_t(k)] = BodyState{b.linear_velocity, b.angular_velocity, dynamic ? 1.0f : 0.0f, Vec2{}, Rot{}};
+        BodyMotion& m = self.motions_[std::size_t(k)];
         m.force = b.force;
         m.torque = b.torque;
         m.inv_mass = b.inv_mass;
@@ -100,19 +162,55 @@ void Solver::gather_bodies() {
         m.gravity_scale = b.gravity_scale;
         m.linear_damping = b.linear_damping;
         m.angular_damping = b.angular_damping;
-        m.free_acceleration = free_acceleration(b, links_.settings.gravity);
+        m.free_acceleration = free_acceleration(b, gravity);
         m.is_dynamic = dynamic;
     }
-    states_[count] = BodyState{};
-    motions_[count] = BodyMotion{};
 }
 
-void Solver::prepare_contacts() {
-    color_contacts();
-    const ContactLayout layout{links_.contacts.pool(), ordered_contacts_.data(), color_starts_.data(),
-                               ConstraintColors::count, states_.data(),      motions_.data(),
-                               int32_t(states_.size()) - 1};
-    contact_solver_.prepare(layout);
+void Solver::pack_contacts(void* solver, const Stage&, int32_t begin, int32_t end, int32_t) {
+    Solver& self = *static_cast<Solver*>(solver);
+    self.contact_solver_.pack_blocks(self.contact_layout(), begin, end);
+}
+
+void Solver::pack_overflow(void* solver, const Stage&, int32_t begin, int32_t end, int32_t) {
+    Solver& self = *static_cast<Solver*>(solver);
+    self.contact_solver_.pack_overflow(self.contact_layout(), begin, end);
+}
+
+void Solver::warm_start(void* solver, const Stage& stage, int32_t begin, int32_t end, int32_t) {
+    Solver& self = *static_cast<Solver*>(solver);
+    self.contact_solver_.warm_start(stage.arg0, begin, end, self.states_.data());
+}
+
+void Solver::solve(void* solver, const Stage& stage, int32_t begin, int32_t end, int32_t) {
+    Solver& self = *static_cast<Solver*>(solver);
+    self.contact_solver_.solve(stage.arg0, begin, end, self.states_.data(), self.passes_[std::size_t(stage.arg1)]);
+}
+
+void Solver::check_bounce(void* solver, const Stage&, int32_t, int32_t, int32_t) {
+    Solver& self = *static_cast<Solver*>(solver);
+    self.bounce_ = self.contact_solver_.any_bounce(self.links_.settings.restitution_threshold);
+}
+
+// Only when something bounces, and then over every contact that pushed, a few times.
+void Solver::restitution(void* solver, const Stage& stage, int32_t begin, int32_t end, int32_t) {
+    Solver& self = *static_cast<Solver*>(solver);
+    if (self.bounce_) {
+        self.contact_solver_.apply_restitution(stage.arg0, begin, end, self.states_.data(),
+                                               self.links_.settings.restitution_threshold);
+    }
+}
+
+void Solver::store_impulses(void* solver, const Stage&, int32_t begin, int32_t end, int32_t) {
+    Solver& self = *static_cast<Solver*>(solver);
+    self.contact_solver_.store_blocks(self.links_.contacts.pool(), self.states_.data(), self.links_.settings.contact_slop,
+                                      begin, end);
+}
+
+void Solver::store_overflow(void* solver, const Stage&, int32_t, int32_t, int32_t) {
+    Solver& self = *static_cast<Solver*>(solver);
+    self.contact_solver_.store_overflow(self.links_.contacts.pool(), self.states_.data(),
+                                        self.links_.settings.contact_slop);
 }
 
 // A colour for every awake contact the solver will see, then the contacts laid out
@@ -165,14 +263,15 @@ void Solver::color_contacts() {
 
 // Gravity, forces and damping for dynamic bodies; the speed limit for every moving body
 // (kinematic ones too: a caller may set any finite velocity).
-void Solver::integrate_velocities(float h) {
-    const Vec2 gravity = links_.settings.gravity;
-    const float max_speed = links_.settings.maximum_linear_speed;
+void Solver::integrate_velocities(void* solver, const Stage&, int32_t begin, int32_t end, int32_t) {
+    Solver& self = *static_cast<Solver*>(solver);
+    const float h = self.substep_;
+    const Vec2 gravity = self.links_.settings.gravity;
+    const float max_speed = self.links_.settings.maximum_linear_speed;
     const float max_spin = max_rotation_per_substep / h;
-    const std::size_t count = states_.size() - 1;
-    for (std::size_t k = 0; k < count; ++k) {
-        const BodyMotion& m = motions_[k];
-        BodyState& s = states_[k];
+    for (int32_t k = begin; k < end; ++k) {
+        const BodyMotion& m = self.motions_[std::size_t(k)];
+        BodyState& s = self.states_[std::size_t(k)];
         Vec2 v = s.linear_velocity;
         float w = s.angular_velocity;
         if (m.is_dynamic) {
@@ -191,10 +290,11 @@ void Solver::integrate_velocities(float h) {
     }
 }
 
-void Solver::integrate_positions(float h) {
-    const std::size_t count = states_.size() - 1;
-    for (std::size_t k = 0; k < count; ++k) {
-        BodyState& s = states_[k];
+void Solver::integrate_positions(void* solver, const Stage&, int32_t begin, int32_t end, int32_t) {
+    Solver& self = *static_cast<Solver*>(solver);
+    const float h = self.substep_;
+    for (int32_t k = begin; k < end; ++k) {
+        BodyState& s = self.states_[std::size_t(k)];
         s.delta_position += h * s.linear_velocity;
         if (s.angular_velocity != 0.0f) {
             s.delta_rotation = integrate_rotation(s.delta_rotation, h * s.angular_velocity);
@@ -202,19 +302,17 @@ void Solver::integrate_positions(float h) {
     }
 }
 
-void Solver::finalize_bodies(float time_step) {
-    const std::size_t count = states_.size() - 1;
-    if (links_.settings.enable_sleep) {
-        links_.islands.begin_rest_times();
-    }
-    for (std::size_t k = 0; k < count; ++k) {
-        finalize_body(int32_t(k), time_step);
+void Solver::finalize_bodies(void* solver, const Stage&, int32_t begin, int32_t end, int32_t) {
+    Solver& self = *static_cast<Solver*>(solver);
+    for (int32_t k = begin; k < end; ++k) {
+        self.finalize_body(k);
     }
 }
 
 // The body's new pose (bodies that did not turn keep their rotation's exact bits), its
-// shapes' bounds, its rest time and its move event.
-void Solver::finalize_body(int32_t k, float time_step) {
+// shapes' bounds and its rest time. What reaches beyond the body waits in its slots for
+// finish_bodies.
+void Solver::finalize_body(int32_t k) {
     const BodyState& s = states_[std::size_t(k)];
     const int32_t index = links_.islands.awake_bodies()[std::size_t(k)];
     Body& b = links_.bodies[index];
@@ -229,7 +327,7 @@ void Solver::finalize_body(int32_t k, float time_step) {
     b.force = {};
     b.torque = 0.0f;
     // Fattened for the next step too, assuming the same time step (the world checks).
-    update_shape_bounds(b, links_.shapes, links_.broad_phase, time_step * b.linear_velocity, true);
+    uint8_t flags = refit_shape_bounds(b, links_.shapes, time_step_ * b.linear_velocity, true) ? proxies_enlarged : 0;
 
     const WorldDef& settings = links_.settings;
     if (settings.enable_sleep) {
@@ -237,19 +335,44 @@ void Solver::finalize_body(int32_t k, float time_step) {
         const float threshold = settings.sleep_speed_threshold;
         const bool resting = b.enable_sleep && length(b.linear_velocity) <= threshold &&
                              std::fabs(b.angular_velocity) * b.max_extent <= threshold;
-        b.sleep_time = resting ? b.sleep_time + time_step : 0.0f;
-        links_.islands.note_rest_time(index, b.sleep_time);
-        if (b.type == BodyType::kinematic) {
-            share_kinematic_rest(index);
-        }
+        b.sleep_time = resting ? b.sleep_time + time_step_ : 0.0f;
+        rest_islands_[std::size_t(k)] = links_.islands.rest_slot(index);
+        rest_times_[std::size_t(k)] = b.sleep_time;
+        flags |= b.type == BodyType::kinematic ? kinematic_rest : 0;
     }
     const bool moved = !(b.transform.p == start.p && b.transform.q.c == start.q.c && b.transform.q.s == start.q.s);
+    flags |= moved ? body_moved : 0;
     b.move_event = null_index;
-    if (moved) {
-        EventRecorder& events = links_.events;
-        b.move_event = int32_t(events.current.body_moves.size());
-        events.current.body_moves.push_back(
-            {b.transform, events.ids.body_id(index, links_.bodies.generation(index)), b.user_data, false});
+    final_flags_[std::size_t(k)] = flags;
+}
+
+// On one thread, in awake order: proxies to move, rest times to share with the islands,
+// move events.
+void Solver::finish_bodies() {
+    const std::vector<int32_t>& awake = links_.islands.awake_bodies();
+    const bool sleep = links_.settings.enable_sleep;
+    EventRecorder& events = links_.events;
+    for (std::size_t k = 0; k < awake.size(); ++k) {
+        const uint8_t flags = final_flags_[k];
+        if (sleep) {
+            links_.islands.note_rest_time_in_slot(rest_islands_[k], rest_times_[k]);
+        }
+        if (flags == 0) {
+            continue;
+        }
+        const int32_t index = awake[k];
+        Body& b = links_.bodies[index];
+        if (flags & proxies_enlarged) {
+            move_enlarged_proxies(b, links_.shapes, links_.broad_phase);
+        }
+        if (flags & kinematic_rest) {
+            share_kinematic_rest(index);
+        }
+        if (flags & body_moved) {
+            b.move_event = int32_t(events.current.body_moves.size());
+            events.current.body_moves.push_back(
+                {b.transform, events.ids.body_id(index, links_.bodies.generation(index)), b.user_data, false});
+        }
     }
 }
 

@@ -11,6 +11,13 @@
 // integrate velocities, warm start, solve with push-out, integrate positions, relax;
 // then one more relax, restitution, impulses back to the contacts, and the bodies' final
 // pose, bounds, rest time and move event in one pass over them.
+//
+// Threads: the step is a list of stages (stage_runner.hpp) that the world's workers
+// share: bodies in blocks, each colour's contact blocks, the overflow colour whole on one
+// worker. Within a stage no two items write the same memory (a colour's contacts share
+// no moving body), so any split gives the same bits. What the final pass would write
+// outside its own body (the broadphase, the islands' rest times, the move events) it
+// leaves in per-body slots, which one thread then applies in awake order.
 #pragma once
 
 #include <cstdint>
@@ -18,6 +25,8 @@
 
 #include "broadphase/broad_phase.hpp"
 #include "core/pool.hpp"
+#include "core/stage_runner.hpp"
+#include "core/task_system.hpp"
 #include "dynamics/body.hpp"
 #include "dynamics/body_state.hpp"
 #include "dynamics/constraint_colors.hpp"
@@ -41,6 +50,7 @@ struct SolverLinks {
     Islands& islands;
     BroadPhase& broad_phase;
     EventRecorder& events;
+    TaskSystem& tasks;
 };
 
 class Solver {
@@ -58,13 +68,28 @@ public:
     void step(float time_step, int32_t substep_count);
 
 private:
-    void gather_bodies();
-    void prepare_contacts();
     void color_contacts();
-    void integrate_velocities(float h);
-    void integrate_positions(float h);
-    void finalize_bodies(float time_step);
-    void finalize_body(int32_t awake_index, float time_step);
+    void build_stages(int32_t substep_count);
+    void add_stage(Stage::Fn fn, int32_t item_count, int32_t min_items_per_block, int32_t arg0 = 0,
+                   int32_t arg1 = 0);
+    void add_contact_stages(Stage::Fn fn, int32_t pass);
+    ContactLayout contact_layout() const;
+    void finish_bodies();
+
+    // The stages; `begin` and `end` index the stage's items.
+    static void gather_bodies(void* solver, const Stage& stage, int32_t begin, int32_t end, int32_t worker);
+    static void pack_contacts(void* solver, const Stage& stage, int32_t begin, int32_t end, int32_t worker);
+    static void pack_overflow(void* solver, const Stage& stage, int32_t begin, int32_t end, int32_t worker);
+    static void integrate_velocities(void* solver, const Stage& stage, int32_t begin, int32_t end, int32_t worker);
+    static void warm_start(void* solver, const Stage& stage, int32_t begin, int32_t end, int32_t worker);
+    static void solve(void* solver, const Stage& stage, int32_t begin, int32_t end, int32_t worker);
+    static void integrate_positions(void* solver, const Stage& stage, int32_t begin, int32_t end, int32_t worker);
+    static void check_bounce(void* solver, const Stage& stage, int32_t begin, int32_t end, int32_t worker);
+    static void restitution(void* solver, const Stage& stage, int32_t begin, int32_t end, int32_t worker);
+    static void store_impulses(void* solver, const Stage& stage, int32_t begin, int32_t end, int32_t worker);
+    static void store_overflow(void* solver, const Stage& stage, int32_t begin, int32_t end, int32_t worker);
+    static void finalize_bodies(void* solver, const Stage& stage, int32_t begin, int32_t end, int32_t worker);
+    void finalize_body(int32_t awake_index);
     void share_kinematic_rest(int32_t body);
 
     SolverLinks links_;
@@ -81,6 +106,18 @@ private:
     int32_t colored_body_count_ = 0;
     std::vector<BodyState> states_;       // per awake body, then the fixed state
     std::vector<BodyMotion> motions_;     // the same, the fixed one all zero
+    // This step's settings and stages.
+    float time_step_ = 0.0f, substep_ = 0.0f;
+    std::vector<SolvePass> passes_;  // per substep: with push-out, then relaxing
+    bool bounce_ = false;
+    std::vector<Stage> stages_;
+    StageRunner runner_;
+    bool parallel_ = false;
+    // What the final pass leaves per awake body for finish_bodies.
+    enum FinalFlags : uint8_t { body_moved = 1, proxies_enlarged = 2, kinematic_rest = 4 };
+    std::vector<uint8_t> final_flags_;
+    std::vector<int32_t> rest_islands_;  // the body's island's rest slot (Islands::rest_slot)
+    std::vector<float> rest_times_;
 };
 
 }  // namespace i2d

@@ -13,9 +13,10 @@ namespace i2d {
 
 World::World(const WorldDef& def)
     : settings(def),
-      contacts_(settings, bodies, shapes, islands_, events_),
+      tasks_(def.worker_count, def.tasks),
+      contacts_(settings, bodies, shapes, islands_, events_, tasks_),
       islands_(bodies, contacts_),
-      solver_(SolverLinks{settings, bodies, shapes, contacts_, islands_, broad_phase_, events_}),
+      solver_(SolverLinks{settings, bodies, shapes, contacts_, islands_, broad_phase_, events_, tasks_}),
       profiling_(def.enable_profile) {}
 
 int32_t World::create_body(const BodyDef& def) {

@@ -114,6 +114,7 @@ public:
     /// The bits of every body's transform and velocities and every contact's impulses,
     /// in pool order.
     uint64_t state_hash() const;
+    int32_t worker_count() const { return tasks_.worker_count(); }
     /// The contact kernels' instruction set (automatic resolved).
     SimdPath simd_path() const { return solver_.simd_path(); }
     const WorldEvents& events() const { return events_.current; }
@@ -146,6 +147,7 @@ private:
     void report_falling_asleep(int32_t body);
     void validate_body(int32_t body) const;
 
+    TaskSystem tasks_;
     BroadPhase broad_phase_;
     EventRecorder events_;
     ContactSet contacts_;

@@ -2,6 +2,7 @@
 // WorldDef: a world's settings, as the C API's world def gives them (with their units).
 #pragma once
 
+#include "core/task_system.hpp"
 #include "dynamics/mixing.hpp"
 #include "dynamics/simd_path.hpp"
 #include "math/vec2.hpp"
@@ -24,6 +25,8 @@ struct WorldDef {
     SimdPath simd_path = SimdPath::automatic;  // must be supported (simd_path_supported)
     bool enable_contact_recycling = true;      // keep manifolds of bodies that barely moved
     bool enable_profile = false;               // time the step's stages from the first step
+    int32_t worker_count = 1;                  // in [1, max_worker_count]
+    TaskCallbacks tasks;                       // both null: the built-in pool
 };
 
 }  // namespace i2d

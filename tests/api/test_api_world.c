@@ -1274,7 +1274,7 @@ I2D_TEST(api_world_struct_layout) {
     CHECK_LAYOUT(offsetof(i2d_world_counters, awake_body_count), 28);
     CHECK_LAYOUT(offsetof(i2d_world_counters, sleeping_island_count), 32);
 
-    CHECK_LAYOUT(sizeof(i2d_world_def), 64);
+    CHECK_LAYOUT(sizeof(i2d_world_def), 96);
     CHECK_LAYOUT(offsetof(i2d_world_def, gravity), 0);
     CHECK_LAYOUT(offsetof(i2d_world_def, contact_slop), 8);
     CHECK_LAYOUT(offsetof(i2d_world_def, contact_hertz), 12);
@@ -1290,7 +1290,11 @@ I2D_TEST(api_world_struct_layout) {
     CHECK_LAYOUT(offsetof(i2d_world_def, simd_path), 52);
     CHECK_LAYOUT(offsetof(i2d_world_def, enable_contact_recycling), 56);
     CHECK_LAYOUT(offsetof(i2d_world_def, enable_profile), 57);
-    CHECK_LAYOUT(offsetof(i2d_world_def, internal_cookie), 60);
+    CHECK_LAYOUT(offsetof(i2d_world_def, worker_count), 60);
+    CHECK_LAYOUT(offsetof(i2d_world_def, enqueue_task), 64);
+    CHECK_LAYOUT(offsetof(i2d_world_def, finish_task), 72);
+    CHECK_LAYOUT(offsetof(i2d_world_def, user_task_context), 80);
+    CHECK_LAYOUT(offsetof(i2d_world_def, internal_cookie), 88);
 
     CHECK_LAYOUT(sizeof(i2d_body_def), 64);
     CHECK_LAYOUT(offsetof(i2d_body_def, type), 0);
