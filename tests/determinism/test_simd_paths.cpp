@@ -2,12 +2,7 @@
 // Every SIMD path the machine supports gives bitwise the same simulation as the scalar
 // path: the state hash (every body's transform and velocities, every contact's
 // impulses) is compared every 50 steps of a mixed scene for 500 steps.
-//
-// The scene exercises every branch the kernels blend per lane: boxes, circles,
-// capsules, rounded and plain polygons; one- and two-point manifolds; restitution
-// (bouncing balls), rolling resistance and a conveyor (tangent speed); a kinematic
-// platform; a heavy plank carrying more contacts than there are colours (the overflow
-// colour); and a pile that falls asleep while the rest moves.
+// The scene (det_scenes.hpp) exercises every branch the kernels blend per lane.
 #include <impulse2d/impulse2d.h>
 
 #include <cinttypes>
@@ -16,103 +11,19 @@
 #include <vector>
 
 #include "check.h"
+#include "det_scenes.hpp"
 
 namespace {
 
-constexpr float time_step = 1.0f / 60.0f;
-constexpr int substeps = 4;
+using det::substeps;
+using det::time_step;
 constexpr int steps = 500;
 constexpr int hash_every = 50;
-
-i2d_body_id add_body(i2d_world_id world, i2d_body_type type, i2d_vec2 position, float angle = 0.0f) {
-    i2d_body_def def = i2d_default_body_def();
-    def.type = type;
-    def.position = position;
-    def.rotation = i2d_make_rot(angle);
-    return i2d_body_create(world, &def);
-}
-
-i2d_shape_def material(float friction, float restitution, float rolling = 0.0f, float tangent_speed = 0.0f) {
-    i2d_shape_def def = i2d_default_shape_def();
-    def.friction = friction;
-    def.restitution = restitution;
-    def.rolling_resistance = rolling;
-    def.tangent_speed = tangent_speed;
-    return def;
-}
-
-// One of four shapes, by index.
-void add_mixed_shape(i2d_body_id body, int kind, const i2d_shape_def* def) {
-    switch (kind % 4) {
-        case 0: i2d_shape_create_box(body, def, 0.3f, 0.2f); break;
-        case 1: {
-            const i2d_circle circle = {{0.0f, 0.0f}, 0.25f};
-            i2d_shape_create_circle(body, def, &circle);
-            break;
-        }
-        case 2: i2d_shape_create_capsule(body, def, i2d_vec2{-0.2f, 0.0f}, i2d_vec2{0.2f, 0.0f}, 0.15f); break;
-        default: {
-            i2d_vec2 hexagon[6];
-            for (int k = 0; k < 6; ++k) {
-                hexagon[k] = i2d_vec2{0.28f * std::cos(1.0472f * float(k)), 0.28f * std::sin(1.0472f * float(k))};
-            }
-            i2d_shape_create_polygon(body, def, hexagon, 6);
-            break;
-        }
-    }
-}
 
 i2d_world_id build_scene(i2d_simd_path path) {
     i2d_world_def wd = i2d_default_world_def();
     wd.simd_path = path;
-    const i2d_world_id world = i2d_world_create(&wd);
-    if (I2D_IS_NULL(world)) {
-        return world;
-    }
-    const i2d_shape_def ground_material = material(0.6f, 0.0f);
-    const i2d_body_id ground = add_body(world, I2D_BODY_STATIC, i2d_vec2{0, 0});
-    i2d_shape_create_offset_box(ground, &ground_material, 30.0f, 0.5f, i2d_vec2{0, -0.5f}, i2d_make_rot(0));
-    i2d_shape_create_offset_box(ground, &ground_material, 0.5f, 10.0f, i2d_vec2{-30.5f, 10.0f}, i2d_make_rot(0));
-    i2d_shape_create_offset_box(ground, &ground_material, 0.5f, 10.0f, i2d_vec2{30.5f, 10.0f}, i2d_make_rot(0));
-    const i2d_shape_def conveyor = material(0.8f, 0.0f, 0.0f, 1.5f);
-    i2d_shape_create_offset_box(ground, &conveyor, 4.0f, 0.25f, i2d_vec2{-20.0f, 3.0f}, i2d_make_rot(0.1f));
-
-    // A rain of mixed shapes, some bouncy, some rolling, with a little spin.
-    for (int i = 0; i < 160; ++i) {
-        const float x = -18.0f + 0.75f * float(i % 48) + 0.05f * float(i % 7);
-        const float y = 2.0f + 0.9f * float(i / 48);
-        const i2d_body_id body = add_body(world, I2D_BODY_DYNAMIC, i2d_vec2{x, y}, 0.1f * float(i % 11));
-        const i2d_shape_def def = material(0.3f + 0.1f * float(i % 5), (i % 6 == 0) ? 0.7f : 0.0f,
-                                           (i % 9 == 0) ? 0.2f : 0.0f);
-        add_mixed_shape(body, i, &def);
-        i2d_body_set_angular_velocity(body, 0.5f * float(i % 5) - 1.0f);
-    }
-    // A heavy plank with a row of 30 boxes on it: more contacts on one body than colours.
-    const i2d_body_id plank = add_body(world, I2D_BODY_DYNAMIC, i2d_vec2{12.0f, 0.6f});
-    const i2d_shape_def heavy = material(0.6f, 0.0f);
-    i2d_shape_create_box(plank, &heavy, 9.5f, 0.1f);
-    for (int i = 0; i < 30; ++i) {
-        const i2d_body_id box = add_body(world, I2D_BODY_DYNAMIC, i2d_vec2{3.0f + 0.62f * float(i), 0.95f});
-        i2d_shape_create_box(box, &heavy, 0.3f, 0.25f);
-    }
-    // A kinematic platform sweeping under falling rounded boxes.
-    const i2d_body_id platform = add_body(world, I2D_BODY_KINEMATIC, i2d_vec2{-8.0f, 6.0f});
-    i2d_shape_create_box(platform, &heavy, 2.0f, 0.2f);
-    i2d_body_set_linear_velocity(platform, i2d_vec2{1.0f, 0.0f});
-    i2d_body_set_angular_velocity(platform, 0.2f);
-    const i2d_vec2 corners[4] = {{-0.2f, -0.2f}, {0.2f, -0.2f}, {0.2f, 0.2f}, {-0.2f, 0.2f}};
-    i2d_polygon rounded;
-    i2d_make_polygon(corners, 4, 0.05f, &rounded);
-    for (int i = 0; i < 6; ++i) {
-        const i2d_body_id body = add_body(world, I2D_BODY_DYNAMIC, i2d_vec2{-9.5f + 0.6f * float(i), 7.0f});
-        i2d_shape_create_polygon_from(body, &heavy, &rounded);
-    }
-    // A small pile off to the side that falls asleep while the rest moves.
-    for (int i = 0; i < 4; ++i) {
-        const i2d_body_id box = add_body(world, I2D_BODY_DYNAMIC, i2d_vec2{26.0f, 0.5f + float(i)});
-        i2d_shape_create_box(box, &heavy, 0.5f, 0.5f);
-    }
-    return world;
+    return det::mixed_scene(wd);
 }
 
 // The hashes every hash_every steps, or an empty list when the scene failed.

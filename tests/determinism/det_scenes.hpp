@@ -1,0 +1,138 @@
+// SPDX-License-Identifier: MIT
+// The determinism suite's scenes: built through the public API, identical in every test
+// and process that builds them.
+//
+// mixed_scene exercises every branch the contact kernels blend per lane: boxes, circles,
+// capsules, rounded and plain polygons; one- and two-point manifolds; restitution
+// (bouncing balls), rolling resistance and a conveyor (tangent speed); a kinematic
+// platform; a heavy plank carrying more contacts than there are colours (the overflow
+// colour); and a pile that falls asleep while the rest moves.
+//
+// sleeping_bin is large enough for every stage of the step to be shared by workers
+// (several hundred awake bodies, thousands of contacts) and comes to rest: a bin of
+// mixed shapes, some bouncy, with a heavy plank (the overflow colour), that all sleep.
+#pragma once
+
+#include <impulse2d/impulse2d.h>
+
+#include <cmath>
+
+namespace det {
+
+constexpr float time_step = 1.0f / 60.0f;
+constexpr int substeps = 4;
+
+inline i2d_body_id add_body(i2d_world_id world, i2d_body_type type, i2d_vec2 position, float angle = 0.0f) {
+    i2d_body_def def = i2d_default_body_def();
+    def.type = type;
+    def.position = position;
+    def.rotation = i2d_make_rot(angle);
+    return i2d_body_create(world, &def);
+}
+
+inline i2d_shape_def material(float friction, float restitution, float rolling = 0.0f, float tangent_speed = 0.0f) {
+    i2d_shape_def def = i2d_default_shape_def();
+    def.friction = friction;
+    def.restitution = restitution;
+    def.rolling_resistance = rolling;
+    def.tangent_speed = tangent_speed;
+    return def;
+}
+
+// One of four shapes, by index.
+inline void add_mixed_shape(i2d_body_id body, int kind, const i2d_shape_def* def) {
+    switch (kind % 4) {
+        case 0: i2d_shape_create_box(body, def, 0.3f, 0.2f); break;
+        case 1: {
+            const i2d_circle circle = {{0.0f, 0.0f}, 0.25f};
+            i2d_shape_create_circle(body, def, &circle);
+            break;
+        }
+        case 2: i2d_shape_create_capsule(body, def, i2d_vec2{-0.2f, 0.0f}, i2d_vec2{0.2f, 0.0f}, 0.15f); break;
+        default: {
+            i2d_vec2 hexagon[6];
+            for (int k = 0; k < 6; ++k) {
+                hexagon[k] = i2d_vec2{0.28f * std::cos(1.0472f * float(k)), 0.28f * std::sin(1.0472f * float(k))};
+            }
+            i2d_shape_create_polygon(body, def, hexagon, 6);
+            break;
+        }
+    }
+}
+
+inline i2d_world_id mixed_scene(const i2d_world_def& wd) {
+    const i2d_world_id world = i2d_world_create(&wd);
+    if (I2D_IS_NULL(world)) {
+        return world;
+    }
+    const i2d_shape_def ground_material = material(0.6f, 0.0f);
+    const i2d_body_id ground = add_body(world, I2D_BODY_STATIC, i2d_vec2{0, 0});
+    i2d_shape_create_offset_box(ground, &ground_material, 30.0f, 0.5f, i2d_vec2{0, -0.5f}, i2d_make_rot(0));
+    i2d_shape_create_offset_box(ground, &ground_material, 0.5f, 10.0f, i2d_vec2{-30.5f, 10.0f}, i2d_make_rot(0));
+    i2d_shape_create_offset_box(ground, &ground_material, 0.5f, 10.0f, i2d_vec2{30.5f, 10.0f}, i2d_make_rot(0));
+    const i2d_shape_def conveyor = material(0.8f, 0.0f, 0.0f, 1.5f);
+    i2d_shape_create_offset_box(ground, &conveyor, 4.0f, 0.25f, i2d_vec2{-20.0f, 3.0f}, i2d_make_rot(0.1f));
+
+    // A rain of mixed shapes, some bouncy, some rolling, with a little spin.
+    for (int i = 0; i < 160; ++i) {
+        const float x = -18.0f + 0.75f * float(i % 48) + 0.05f * float(i % 7);
+        const float y = 2.0f + 0.9f * float(i / 48);
+        const i2d_body_id body = add_body(world, I2D_BODY_DYNAMIC, i2d_vec2{x, y}, 0.1f * float(i % 11));
+        const i2d_shape_def def = material(0.3f + 0.1f * float(i % 5), (i % 6 == 0) ? 0.7f : 0.0f,
+                                           (i % 9 == 0) ? 0.2f : 0.0f);
+        add_mixed_shape(body, i, &def);
+        i2d_body_set_angular_velocity(body, 0.5f * float(i % 5) - 1.0f);
+    }
+    // A heavy plank with a row of 30 boxes on it: more contacts on one body than colours.
+    const i2d_body_id plank = add_body(world, I2D_BODY_DYNAMIC, i2d_vec2{12.0f, 0.6f});
+    const i2d_shape_def heavy = material(0.6f, 0.0f);
+    i2d_shape_create_box(plank, &heavy, 9.5f, 0.1f);
+    for (int i = 0; i < 30; ++i) {
+        const i2d_body_id box = add_body(world, I2D_BODY_DYNAMIC, i2d_vec2{3.0f + 0.62f * float(i), 0.95f});
+        i2d_shape_create_box(box, &heavy, 0.3f, 0.25f);
+    }
+    // A kinematic platform sweeping under falling rounded boxes.
+    const i2d_body_id platform = add_body(world, I2D_BODY_KINEMATIC, i2d_vec2{-8.0f, 6.0f});
+    i2d_shape_create_box(platform, &heavy, 2.0f, 0.2f);
+    i2d_body_set_linear_velocity(platform, i2d_vec2{1.0f, 0.0f});
+    i2d_body_set_angular_velocity(platform, 0.2f);
+    const i2d_vec2 corners[4] = {{-0.2f, -0.2f}, {0.2f, -0.2f}, {0.2f, 0.2f}, {-0.2f, 0.2f}};
+    i2d_polygon rounded;
+    i2d_make_polygon(corners, 4, 0.05f, &rounded);
+    for (int i = 0; i < 6; ++i) {
+        const i2d_body_id body = add_body(world, I2D_BODY_DYNAMIC, i2d_vec2{-9.5f + 0.6f * float(i), 7.0f});
+        i2d_shape_create_polygon_from(body, &heavy, &rounded);
+    }
+    // A small pile off to the side that falls asleep while the rest moves.
+    for (int i = 0; i < 4; ++i) {
+        const i2d_body_id box = add_body(world, I2D_BODY_DYNAMIC, i2d_vec2{26.0f, 0.5f + float(i)});
+        i2d_shape_create_box(box, &heavy, 0.5f, 0.5f);
+    }
+    return world;
+}
+
+inline i2d_world_id sleeping_bin(const i2d_world_def& wd) {
+    const i2d_world_id world = i2d_world_create(&wd);
+    if (I2D_IS_NULL(world)) {
+        return world;
+    }
+    const i2d_shape_def wall = material(0.6f, 0.0f);
+    const i2d_body_id ground = add_body(world, I2D_BODY_STATIC, i2d_vec2{0, 0});
+    i2d_shape_create_offset_box(ground, &wall, 12.0f, 0.5f, i2d_vec2{0, -0.5f}, i2d_make_rot(0));
+    i2d_shape_create_offset_box(ground, &wall, 0.5f, 15.0f, i2d_vec2{-12.5f, 15.0f}, i2d_make_rot(0));
+    i2d_shape_create_offset_box(ground, &wall, 0.5f, 15.0f, i2d_vec2{12.5f, 15.0f}, i2d_make_rot(0));
+    const i2d_body_id plank = add_body(world, I2D_BODY_DYNAMIC, i2d_vec2{0.0f, 0.2f});
+    const i2d_shape_def heavy = material(0.6f, 0.0f);
+    i2d_shape_create_box(plank, &heavy, 11.5f, 0.2f);
+    for (int i = 0; i < 600; ++i) {
+        const float x = -11.0f + 0.72f * float(i % 30) + 0.04f * float(i % 7);
+        const float y = 1.0f + 0.7f * float(i / 30);
+        const i2d_body_id body = add_body(world, I2D_BODY_DYNAMIC, i2d_vec2{x, y}, 0.13f * float(i % 11));
+        const i2d_shape_def def = material(0.4f + 0.1f * float(i % 4), (i % 7 == 0) ? 0.5f : 0.0f,
+                                           (i % 9 == 0) ? 0.1f : 0.0f);
+        add_mixed_shape(body, i, &def);
+    }
+    return world;
+}
+
+}  // namespace det

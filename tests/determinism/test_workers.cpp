@@ -1,0 +1,228 @@
+// SPDX-License-Identifier: MIT
+// Worker threads change nothing but the time a step takes: a bin of mixed shapes gives
+// the same state hash at every step, and falls asleep at the same step, for every worker
+// count, with the built-in threads and with a job system of the caller's that runs the
+// engine's tasks late, in reverse, shuffled or inline; and in a separate process.
+#include <impulse2d/impulse2d.h>
+
+#include <cinttypes>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <memory>
+#include <string>
+#include <vector>
+
+#if defined(__linux__)
+#include <unistd.h>
+#endif
+
+#include "check.h"
+#include "det_job_system.hpp"
+#include "det_scenes.hpp"
+
+namespace {
+
+using det::JobSystem;
+
+struct WorkerSetup {
+    const char* name;
+    int workers;
+    bool own_jobs;  // the test's job system instead of the built-in threads
+    JobSystem::Order order;
+    int job_threads;
+};
+
+const WorkerSetup reference = {"1 worker", 1, false, JobSystem::Order::fifo, 0};
+const WorkerSetup setups[] = {
+    {"2 built-in", 2, false, JobSystem::Order::fifo, 0},
+    {"3 built-in", 3, false, JobSystem::Order::fifo, 0},
+    {"4 built-in", 4, false, JobSystem::Order::fifo, 0},
+    {"8 built-in", 8, false, JobSystem::Order::fifo, 0},
+    {"2, jobs shuffled on 2 threads", 2, true, JobSystem::Order::shuffled, 2},
+    {"4, jobs in reverse on 1 thread", 4, true, JobSystem::Order::lifo, 1},
+    {"8, jobs shuffled on 3 threads", 8, true, JobSystem::Order::shuffled, 3},
+    {"3, jobs inline", 3, true, JobSystem::Order::inline_now, 0},
+};
+
+struct BinRun {
+    std::vector<uint64_t> hashes;  // every hash_every steps
+    int asleep_at = -1;            // the step after which nothing was awake
+    uint64_t hash_asleep = 0;
+    int tasks_run = 0;             // by the test's job system
+};
+
+constexpr int hash_every = 25;
+
+// Steps the bin `steps` steps, or until it sleeps when until_asleep.
+BinRun run_bin(const WorkerSetup& setup, int steps, bool until_asleep) {
+    BinRun result;
+    std::unique_ptr<JobSystem> jobs;
+    i2d_world_def def = i2d_default_world_def();
+    def.worker_count = setup.workers;
+    if (setup.own_jobs) {
+        jobs = std::make_unique<JobSystem>(setup.job_threads, setup.order);
+        jobs->install(def);
+    }
+    const i2d_world_id world = det::sleeping_bin(def);
+    if (I2D_IS_NULL(world)) {
+        fprintf(stderr, "    %s: %s\n", setup.name, i2d_last_error_message());
+        return result;
+    }
+    for (int s = 1; s <= steps; ++s) {
+        i2d_world_step(world, det::time_step, det::substeps);
+        if (s % hash_every == 0) {
+            result.hashes.push_back(i2d_world_get_state_hash(world));
+        }
+        if (until_asleep && i2d_world_get_counters(world).awake_body_count == 0) {
+            result.asleep_at = s;
+            result.hash_asleep = i2d_world_get_state_hash(world);
+            break;
+        }
+    }
+    i2d_world_destroy(world);
+    result.tasks_run = jobs ? jobs->tasks_run() : 0;
+    return result;
+}
+
+// The first step (a multiple of hash_every) whose hash differs, or -1.
+int first_difference(const BinRun& a, const BinRun& b) {
+    for (std::size_t k = 0; k < a.hashes.size() && k < b.hashes.size(); ++k) {
+        if (a.hashes[k] != b.hashes[k]) {
+            return int(k + 1) * hash_every;
+        }
+    }
+    return a.hashes.size() == b.hashes.size() ? -1 : 0;
+}
+
+void check_setups_agree(int steps, bool until_asleep) {
+    const BinRun expected = run_bin(reference, steps, until_asleep);
+    I2D_REQUIRE(!expected.hashes.empty());
+    if (until_asleep) {
+        fprintf(stderr, "    1 worker: asleep after %d steps, hash %016" PRIx64 "\n", expected.asleep_at,
+                expected.hash_asleep);
+        I2D_REQUIRE(expected.asleep_at > 0);
+    }
+    for (const WorkerSetup& setup : setups) {
+        const BinRun got = run_bin(setup, steps, until_asleep);
+        const int differs = first_difference(got, expected);
+        fprintf(stderr, "    %s: asleep after %d, hash %016" PRIx64 ", first difference %d, job system ran %d tasks\n",
+                setup.name, got.asleep_at, got.hashes.empty() ? 0 : got.hashes.back(), differs, got.tasks_run);
+        I2D_CHECK(differs < 0);
+        I2D_CHECK(got.asleep_at == expected.asleep_at);
+        I2D_CHECK(got.hash_asleep == expected.hash_asleep);
+        // The caller's job system was handed the work (the bin is large enough to share).
+        I2D_CHECK(!setup.own_jobs || got.tasks_run > 0);
+    }
+}
+
+// Threads of this process (Linux); -1 where unknown.
+int thread_count() {
+    FILE* status = std::fopen("/proc/self/status", "r");
+    if (!status) {
+        return -1;
+    }
+    char line[256];
+    int threads = -1;
+    while (std::fgets(line, sizeof line, status)) {
+        if (std::strncmp(line, "Threads:", 8) == 0) {
+            threads = std::atoi(line + 8);
+        }
+    }
+    std::fclose(status);
+    return threads;
+}
+
+}  // namespace
+
+I2D_TEST(det_workers_give_the_same_bits_for_every_count) { check_setups_agree(150, false); }
+
+I2D_TEST(det_workers_long_bin_sleeps_at_the_same_step_with_the_same_bits) { check_setups_agree(3000, true); }
+
+// The hash of a run in this process equals that of the same run in a new process (the
+// test runs itself with I2D_DET_CHILD_WORKERS set, and the child prints its hash).
+I2D_TEST(det_workers_separate_processes_agree) {
+    constexpr int steps = 100;
+    if (const char* child = std::getenv("I2D_DET_CHILD_WORKERS")) {
+        WorkerSetup setup = reference;
+        setup.workers = std::atoi(child);
+        const BinRun run = run_bin(setup, steps, false);
+        std::printf("%016" PRIx64 "\n", run.hashes.empty() ? 0 : run.hashes.back());
+        return;
+    }
+#if defined(__linux__)
+    const BinRun here = run_bin(reference, steps, false);
+    I2D_REQUIRE(!here.hashes.empty());
+    char self[4096] = {0};
+    I2D_REQUIRE(readlink("/proc/self/exe", self, sizeof self - 1) > 0);
+    for (const int workers : {1, 2}) {
+        const std::string command = "I2D_DET_CHILD_WORKERS=" + std::to_string(workers) + " '" + self +
+                                    "' det_workers_separate_processes_agree";
+        FILE* child = popen(command.c_str(), "r");
+        I2D_REQUIRE(child != nullptr);
+        char line[64] = {0};
+        const bool read = std::fgets(line, sizeof line, child) != nullptr;
+        pclose(child);
+        I2D_REQUIRE(read);
+        const uint64_t there = std::strtoull(line, nullptr, 16);
+        fprintf(stderr, "    this process %016" PRIx64 ", a new one with %d workers %016" PRIx64 "\n",
+                here.hashes.back(), workers, there);
+        I2D_CHECK(there == here.hashes.back());
+    }
+#else
+    fprintf(stderr, "    not Linux: skipped\n");
+#endif
+}
+
+// The built-in threads start with the first step large enough to share, and stop when
+// the world is destroyed; a world refused for its worker settings starts none.
+I2D_TEST(det_workers_built_in_threads_start_late_and_stop_with_the_world) {
+    const int before = thread_count();
+    if (before < 0) {
+        fprintf(stderr, "    no /proc/self/status: skipped\n");
+        return;
+    }
+    i2d_world_def def = i2d_default_world_def();
+    def.worker_count = 4;
+    const i2d_world_id world = det::sleeping_bin(def);
+    I2D_REQUIRE(!I2D_IS_NULL(world));
+    I2D_CHECK(i2d_world_get_worker_count(world) == 4);
+    I2D_CHECK(thread_count() == before);
+    i2d_world_step(world, det::time_step, det::substeps);
+    // A sanitizer's runtime may start a thread of its own with the first one.
+    const int during = thread_count();
+    I2D_CHECK(during >= before + 3 && during <= before + 4);
+    i2d_world_destroy(world);
+    I2D_CHECK(thread_count() == during - 3);
+}
+
+I2D_TEST(det_workers_bad_settings_are_refused_and_start_nothing) {
+    const int before = thread_count();
+    JobSystem jobs(1, JobSystem::Order::fifo);
+    const int with_jobs = thread_count();
+    for (const int workers : {0, -1, I2D_MAX_WORKERS + 1, 1 << 30}) {
+        i2d_world_def def = i2d_default_world_def();
+        def.worker_count = workers;
+        I2D_CHECK(I2D_IS_NULL(i2d_world_create(&def)));
+        I2D_CHECK(i2d_last_status() == I2D_ERR_INVALID_ARGUMENT);
+        I2D_CHECK(std::strstr(i2d_last_error_message(), "worker_count") != nullptr);
+    }
+    i2d_world_def half = i2d_default_world_def();
+    half.worker_count = 2;
+    jobs.install(half);
+    half.finish_task = nullptr;
+    I2D_CHECK(I2D_IS_NULL(i2d_world_create(&half)));
+    I2D_CHECK(i2d_last_status() == I2D_ERR_INVALID_ARGUMENT);
+    I2D_CHECK(std::strstr(i2d_last_error_message(), "finish_task") != nullptr);
+    jobs.install(half);
+    half.enqueue_task = nullptr;
+    I2D_CHECK(I2D_IS_NULL(i2d_world_create(&half)));
+    I2D_CHECK(std::strstr(i2d_last_error_message(), "enqueue_task") != nullptr);
+    I2D_CHECK(before < 0 || thread_count() == with_jobs);
+    // The limit itself is accepted.
+    i2d_world_def most = i2d_default_world_def();
+    most.worker_count = I2D_MAX_WORKERS;
+    const i2d_world_id world = i2d_world_create(&most);
+    I2D_CHECK(!I2D_IS_NULL(world));
+    i2d_world_destroy(world);
+}
