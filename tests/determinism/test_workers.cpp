@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Worker threads change nothing but the time a step takes: a bin of mixed shapes gives
-// the same state hash at every step, and falls asleep at the same step, for every worker
-// count, with the built-in threads and with a job system of the caller's that runs the
+// the same state hash at every step, the same events in the same order, and falls asleep
+// at the same step, for every worker count, with the built-in threads and with a job system of the caller's that runs the
 // engine's tasks late, in reverse, shuffled or inline; and in a separate process.
 #include <impulse2d/impulse2d.h>
 
@@ -47,12 +47,49 @@ const WorkerSetup setups[] = {
 
 struct BinRun {
     std::vector<uint64_t> hashes;  // every hash_every steps
+    uint64_t events = 0;           // every step's event arrays, in order
     int asleep_at = -1;            // the step after which nothing was awake
     uint64_t hash_asleep = 0;
     int tasks_run = 0;             // by the test's job system
 };
 
 constexpr int hash_every = 25;
+
+void hash_value(uint64_t& hash, uint64_t value) {
+    for (int byte = 0; byte < 8; ++byte) {
+        hash = (hash ^ ((value >> (8 * byte)) & 0xffu)) * 0x100000001b3ull;  // FNV-1a
+    }
+}
+
+uint64_t float_bits(float f) {
+    uint32_t bits = 0;
+    std::memcpy(&bits, &f, sizeof bits);
+    return bits;
+}
+
+// Shapes and bodies by their tags (det_scenes.hpp): the same in every world.
+uint64_t tag(i2d_shape_id shape) { return uint64_t(std::uintptr_t(i2d_shape_get_user_data(shape))); }
+
+// The step's contact begin and end events and body move events, in their order.
+void hash_step_events(uint64_t& hash, i2d_world_id world) {
+    const i2d_contact_events contacts = i2d_world_get_contact_events(world);
+    hash_value(hash, uint64_t(contacts.begin_count));
+    for (int32_t k = 0; k < contacts.begin_count; ++k) {
+        hash_value(hash, tag(contacts.begin_events[k].shape_a) << 32 | tag(contacts.begin_events[k].shape_b));
+    }
+    hash_value(hash, uint64_t(contacts.end_count));
+    for (int32_t k = 0; k < contacts.end_count; ++k) {
+        hash_value(hash, tag(contacts.end_events[k].shape_a) << 32 | tag(contacts.end_events[k].shape_b));
+    }
+    const i2d_body_events bodies = i2d_world_get_body_events(world);
+    hash_value(hash, uint64_t(bodies.move_count));
+    for (int32_t k = 0; k < bodies.move_count; ++k) {
+        const i2d_body_move_event& e = bodies.move_events[k];
+        hash_value(hash, uint64_t(std::uintptr_t(e.user_data)) << 1 | uint64_t(e.fell_asleep));
+        hash_value(hash, float_bits(e.transform.p.x) << 32 | float_bits(e.transform.p.y));
+        hash_value(hash, float_bits(e.transform.q.c) << 32 | float_bits(e.transform.q.s));
+    }
+}
 
 // Steps the bin `steps` steps, or until it sleeps when until_asleep.
 BinRun run_bin(const WorkerSetup& setup, int steps, bool until_asleep) {
@@ -69,8 +106,10 @@ BinRun run_bin(const WorkerSetup& setup, int steps, bool until_asleep) {
         fprintf(stderr, "    %s: %s\n", setup.name, i2d_last_error_message());
         return result;
     }
+    result.events = 0xcbf29ce484222325ull;  // FNV-1a's offset basis
     for (int s = 1; s <= steps; ++s) {
         i2d_world_step(world, det::time_step, det::substeps);
+        hash_step_events(result.events, world);
         if (s % hash_every == 0) {
             result.hashes.push_back(i2d_world_get_state_hash(world));
         }
@@ -109,6 +148,7 @@ void check_setups_agree(int steps, bool until_asleep) {
         fprintf(stderr, "    %s: asleep after %d, hash %016" PRIx64 ", first difference %d, job system ran %d tasks\n",
                 setup.name, got.asleep_at, got.hashes.empty() ? 0 : got.hashes.back(), differs, got.tasks_run);
         I2D_CHECK(differs < 0);
+        I2D_CHECK(got.events == expected.events);
         I2D_CHECK(got.asleep_at == expected.asleep_at);
         I2D_CHECK(got.hash_asleep == expected.hash_asleep);
         // The caller's job system was handed the work (the bin is large enough to share).
