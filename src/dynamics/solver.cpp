@@ -54,6 +54,7 @@ void Solver::step(float time_step, int32_t substep_count) {
     final_flags_.resize(std::size_t(awake));
     rest_islands_.resize(std::size_t(awake));
     rest_times_.resize(std::size_t(awake));
+    event_slots_.resize(std::size_t(awake));
     color_contacts();
     contact_solver_.lay_out(contact_layout());
     if (links_.settings.enable_sleep) {
@@ -143,6 +144,8 @@ void Solver::build_stages(int32_t substep_count) {
     add_stage(&Solver::store_impulses, contact_solver_.block_count(), min_blocks);
     add_stage(&Solver::store_overflow, contact_solver_.overflow_count() > 0 ? 1 : 0, 1);
     add_stage(&Solver::finalize_bodies, bodies, bodies_per_work_block);
+    add_stage(&Solver::number_move_events, 1, 1);
+    add_stage(&Solver::write_move_events, bodies, bodies_per_work_block);
 }
 
 // One state per awake body in awake order (the shared fixed state is set already).
@@ -342,36 +345,57 @@ void Solver::finalize_body(int32_t k) {
     }
     const bool moved = !(b.transform.p == start.p && b.transform.q.c == start.q.c && b.transform.q.s == start.q.s);
     flags |= moved ? body_moved : 0;
-    b.move_event = null_index;
     final_flags_[std::size_t(k)] = flags;
 }
 
-// On one thread, in awake order: proxies to move, rest times to share with the islands,
-// move events.
+// Each moved body's event gets the next index in awake order.
+void Solver::number_move_events(void* solver, const Stage&, int32_t, int32_t, int32_t) {
+    Solver& self = *static_cast<Solver*>(solver);
+    std::vector<BodyMoveEvent>& moves = self.links_.events.current.body_moves;
+    int32_t next = int32_t(moves.size());
+    for (std::size_t k = 0; k < self.final_flags_.size(); ++k) {
+        const bool moved = (self.final_flags_[k] & body_moved) != 0;
+        self.event_slots_[k] = moved ? next : null_index;
+        next += moved ? 1 : 0;
+    }
+    moves.resize(std::size_t(next));
+}
+
+void Solver::write_move_events(void* solver, const Stage&, int32_t begin, int32_t end, int32_t) {
+    Solver& self = *static_cast<Solver*>(solver);
+    const std::vector<int32_t>& awake = self.links_.islands.awake_bodies();
+    const EventRecorder& events = self.links_.events;
+    BodyMoveEvent* moves = self.links_.events.current.body_moves.data();
+    for (int32_t k = begin; k < end; ++k) {
+        const int32_t slot = self.event_slots_[std::size_t(k)];
+        const int32_t index = awake[std::size_t(k)];
+        Body& b = self.links_.bodies[index];
+        b.move_event = slot;
+        if (slot != null_index) {
+            moves[slot] = {b.transform, events.ids.body_id(index, self.links_.bodies.generation(index)), b.user_data,
+                           false};
+        }
+    }
+}
+
+// On one thread, in awake order: proxies to move, rest times to share with the islands.
 void Solver::finish_bodies() {
     const std::vector<int32_t>& awake = links_.islands.awake_bodies();
     const bool sleep = links_.settings.enable_sleep;
-    EventRecorder& events = links_.events;
     for (std::size_t k = 0; k < awake.size(); ++k) {
         const uint8_t flags = final_flags_[k];
         if (sleep) {
             links_.islands.note_rest_time_in_slot(rest_islands_[k], rest_times_[k]);
         }
-        if (flags == 0) {
+        if ((flags & (proxies_enlarged | kinematic_rest)) == 0) {
             continue;
         }
         const int32_t index = awake[k];
-        Body& b = links_.bodies[index];
         if (flags & proxies_enlarged) {
-            move_enlarged_proxies(b, links_.shapes, links_.broad_phase);
+            move_enlarged_proxies(links_.bodies[index], links_.shapes, links_.broad_phase);
         }
         if (flags & kinematic_rest) {
             share_kinematic_rest(index);
-        }
-        if (flags & body_moved) {
-            b.move_event = int32_t(events.current.body_moves.size());
-            events.current.body_moves.push_back(
-                {b.transform, events.ids.body_id(index, links_.bodies.generation(index)), b.user_data, false});
         }
     }
 }

@@ -16,8 +16,9 @@
 // share: bodies in blocks, each colour's contact blocks, the overflow colour whole on one
 // worker. Within a stage no two items write the same memory (a colour's contacts share
 // no moving body), so any split gives the same bits. What the final pass would write
-// outside its own body (the broadphase, the islands' rest times, the move events) it
-// leaves in per-body slots, which one thread then applies in awake order.
+// outside its own body (the broadphase, the islands' rest times) it leaves in per-body
+// slots, which one thread then applies in awake order; move events are numbered in awake
+// order on one thread and written by all.
 #pragma once
 
 #include <cstdint>
@@ -89,6 +90,8 @@ private:
     static void store_impulses(void* solver, const Stage& stage, int32_t begin, int32_t end, int32_t worker);
     static void store_overflow(void* solver, const Stage& stage, int32_t begin, int32_t end, int32_t worker);
     static void finalize_bodies(void* solver, const Stage& stage, int32_t begin, int32_t end, int32_t worker);
+    static void number_move_events(void* solver, const Stage& stage, int32_t begin, int32_t end, int32_t worker);
+    static void write_move_events(void* solver, const Stage& stage, int32_t begin, int32_t end, int32_t worker);
     void finalize_body(int32_t awake_index);
     void share_kinematic_rest(int32_t body);
 
@@ -118,6 +121,7 @@ private:
     std::vector<uint8_t> final_flags_;
     std::vector<int32_t> rest_islands_;  // the body's island's rest slot (Islands::rest_slot)
     std::vector<float> rest_times_;
+    std::vector<int32_t> event_slots_;  // per awake body: its move event's index, if it moved
 };
 
 }  // namespace i2d
