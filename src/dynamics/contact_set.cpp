@@ -451,24 +451,55 @@ void ContactSet::update_links() {
     }
 }
 
-// A sensor overlap is tested afresh where the step left the bodies. Backwards, because
-// destroying a contact moves the last awake contact into its place.
+// A sensor overlap is tested afresh where the step left the bodies, by the workers; the
+// contacts to destroy or report on are flagged, and one thread then acts on them
+// backwards, because destroying a contact moves the last awake contact into its place.
 void ContactSet::end_step() {
-    for (int32_t k = int32_t(awake_.size()) - 1; k >= 0; --k) {
-        const int32_t index = awake_[std::size_t(k)];
-        Contact& c = contacts_[index];
-        if (c.flags & contact_disjoint) {
-            destroy_contact(index, true);
+    const int32_t count = int32_t(awake_.size());
+    collide_flags_.resize(std::size_t(count));
+    const bool parallel = tasks_.worker_count() > 1 && count >= parallel_min_contacts;
+    Stage stage;
+    stage.fn = &ContactSet::end_range;
+    stage.owner = this;
+    stage.item_count = count;
+    stage.items_per_block = parallel ? items_per_block(count, tasks_.worker_count(), contacts_per_work_block)
+                                     : (count > 0 ? count : 1);
+    stages_.assign(1, stage);
+    runner_.run(tasks_, stages_, parallel);
+    for (int32_t k = count - 1; k >= 0; --k) {
+        const uint8_t flags = collide_flags_[std::size_t(k)];
+        if (flags == 0) {
             continue;
         }
-        if (!is_solid(c)) {
-            const Shape& a = shapes_[c.shape_a];
-            const Shape& b = shapes_[c.shape_b];
-            const Manifold m = without_speculative_points(
-                collide_shapes(a.geometry, bodies_[a.body].transform, b.geometry, bodies_[b.body].transform));
-            c.flags |= m.point_count > 0 ? uint32_t(contact_touching) : 0u;
+        const int32_t index = awake_[std::size_t(k)];
+        if (flags & ends) {
+            destroy_contact(index, true);
+        } else {
+            report_touch_changes(contacts_[index], (contacts_[index].flags & contact_touching) != 0);
         }
-        report_touch_changes(c, (c.flags & contact_touching) != 0);
+    }
+}
+
+void ContactSet::end_range(void* set, const Stage&, int32_t begin, int32_t end, int32_t) {
+    ContactSet& self = *static_cast<ContactSet*>(set);
+    for (int32_t k = begin; k < end; ++k) {
+        Contact& c = self.contacts_[self.awake_[std::size_t(k)]];
+        uint8_t flags = 0;
+        if (c.flags & contact_disjoint) {
+            flags = ends;
+        } else {
+            if (!is_solid(c)) {
+                const Shape& a = self.shapes_[c.shape_a];
+                const Shape& b = self.shapes_[c.shape_b];
+                const Manifold m = without_speculative_points(collide_shapes(
+                    a.geometry, self.bodies_[a.body].transform, b.geometry, self.bodies_[b.body].transform));
+                c.flags |= m.point_count > 0 ? uint32_t(contact_touching) : 0u;
+            }
+            const bool at_start = (c.flags & contact_touching_at_start) != 0;
+            const bool now = (c.flags & contact_touching) != 0;
+            flags = (c.flags & contact_report_events) && at_start != now ? reports : 0;
+        }
+        self.collide_flags_[std::size_t(k)] = flags;
     }
 }
 

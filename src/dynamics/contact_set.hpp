@@ -110,6 +110,7 @@ private:
     uint8_t collide_one(int32_t k, float time_step);
     static void collide_range(void* set, const Stage& stage, int32_t begin, int32_t end, int32_t worker);
     static void query_range(void* set, const Stage& stage, int32_t begin, int32_t end, int32_t worker);
+    static void end_range(void* set, const Stage& stage, int32_t begin, int32_t end, int32_t worker);
     bool may_pair(int32_t shape_a, int32_t shape_b) const;
     void report_touch_changes(const Contact& contact, bool touching_now);
     ShapePairEvent event_of(const Contact& contact) const;
@@ -128,8 +129,10 @@ private:
     std::vector<ShapePairCandidate> new_pairs_;
     std::vector<int32_t> islands_to_wake_;
     std::vector<int32_t> point_changes_;  // contacts that gained or lost all their points
-    // What each awake contact's update found, for the islands (CollideFlags).
+    // Per awake contact, what its update found for the islands (CollideFlags), and at
+    // the end of the step what must happen to it (EndFlags).
     enum CollideFlags : uint8_t { layout_changed = 1, points_changed = 2, wakes_a = 4, wakes_b = 8 };
+    enum EndFlags : uint8_t { ends = 1, reports = 2 };
     std::vector<uint8_t> collide_flags_;
     std::vector<std::vector<ShapePairCandidate>> block_pairs_;  // per block of pair queries
     BroadPhase* querying_ = nullptr;  // while the pair queries run
