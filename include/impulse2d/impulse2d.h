@@ -93,12 +93,14 @@ I2D_API i2d_status i2d_body_set_transform(i2d_body_id body, i2d_vec2 position, i
 /** Velocity of the centre of mass, m/s. */
 I2D_API i2d_vec2 i2d_body_get_linear_velocity(i2d_body_id body);
 /** Finite values only; ignored for static bodies (which never move) but still checked.
- *  Speeds above the world's maximum_linear_speed are clamped at the next step. */
+ *  A speed above the world's maximum_linear_speed is scaled down to it at once (direction
+ *  kept), as are body def velocities and the results of impulses. */
 I2D_API i2d_status i2d_body_set_linear_velocity(i2d_body_id body, i2d_vec2 v);
 /** rad/s, counter-clockwise positive. */
 I2D_API float i2d_body_get_angular_velocity(i2d_body_id body);
 /** Finite values only; ignored for static and fixed-rotation bodies but still checked.
- *  Spins faster than a quarter turn per substep are clamped at the next step. */
+ *  Spins beyond 1e5 rad/s are clamped to it at once (as are body def spins and the
+ *  results of impulses); faster than a quarter turn per substep at the next step. */
 I2D_API i2d_status i2d_body_set_angular_velocity(i2d_body_id body, float w);
 /** kg; 0 for static and kinematic bodies. */
 I2D_API float i2d_body_get_mass(i2d_body_id body);
