@@ -96,7 +96,7 @@ I2D_API i2d_world_id i2d_world_create(const i2d_world_def* def) {
         auto world = std::make_unique<World>(to_core(*def));
         const WorldSlotRef ref = register_world(world.get());
         if (ref.slot < 0) {
-            call.fail(I2D_ERR_CAPACITY, "%d worlds exist already; destroy one first", max_worlds);
+            call.fail(I2D_ERR_CAPACITY, "%d worlds are alive, the most at once; destroy one first", max_worlds);
             return I2D_NULL_WORLD_ID;
         }
         IdFields f;
