@@ -135,6 +135,11 @@ I2D_API i2d_status i2d_world_step(i2d_world_id id, float time_step, int32_t subs
             !call.in_range(time_step, 0.0f, max_time_step, "time_step")) {
             return last_status();
         }
+        if (time_step != 0.0f && time_step < min_time_step) {
+            call.fail(I2D_ERR_INVALID_ARGUMENT, "time_step is %g; it must be 0 (paused) or at least %g s",
+                      static_cast<double>(time_step), static_cast<double>(min_time_step));
+            return last_status();
+        }
         if (substep_count < 1 || substep_count > max_substeps) {
             call.fail(I2D_ERR_INVALID_ARGUMENT, "substep_count is %d; it must be in [1, %d]", substep_count,
                       max_substeps);

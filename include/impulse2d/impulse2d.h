@@ -57,7 +57,7 @@ I2D_API i2d_world_id i2d_world_create(const i2d_world_def* def);
 /** Destroys the world and everything in it; all its ids become stale. */
 I2D_API i2d_status i2d_world_destroy(i2d_world_id world);
 I2D_API bool i2d_world_is_valid(i2d_world_id world);
-/** Advances the world by time_step seconds ([0, 1000]; 0 does nothing), split into
+/** Advances the world by time_step seconds (0, which does nothing, or 1e-6 to 1000), split into
  *  substep_count equal substeps (1 to 1000); each substep finds contacts, resolves
  *  them and integrates. 1/60 s with 4 substeps is a good start. */
 I2D_API i2d_status i2d_world_step(i2d_world_id world, float time_step, int32_t substep_count);

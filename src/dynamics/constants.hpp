@@ -48,6 +48,11 @@ constexpr float max_angular_speed = 1.0e5f;
 /// from float overflow.
 constexpr float max_time_step = 1000.0f;
 
+/// Shortest step other than 0, s. The solver divides by the substep: a denormal step
+/// (found by fuzzing: 1e-45 s) made its rates infinite and every touching body NaN.
+/// A microsecond with the most substeps keeps every rate times speed far from overflow.
+constexpr float min_time_step = 1.0e-6f;
+
 /// Largest number of substeps a caller may ask for.
 constexpr int32_t max_substeps = 1000;
 

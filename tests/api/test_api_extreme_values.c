@@ -233,3 +233,22 @@ I2D_TEST(api_extreme_collide_sane_within_range) {
         }
     }
 }
+
+/* ---- Found by fuzzing ------------------------------------------------------------- */
+
+/* A denormal time step (1e-45 s) was accepted: the solver's rates (substeps / step)
+ * became infinite and a body resting on another turned NaN within the step. Positive
+ * steps below 1e-6 s are refused now and change nothing; 1e-6 s itself is stepped. */
+I2D_TEST(api_extreme_tiny_time_step_refused) {
+    const float tiny[] = {1.4e-45f, 1.1754944e-38f, 1e-30f, 9.9e-7f};
+    for (size_t k = 0; k < sizeof tiny / sizeof tiny[0]; ++k) {
+        bounce_pair p = create_bounce_pair();
+        const i2d_vec2 before = i2d_body_get_position(p.first);
+        I2D_CHECK_STATUS(i2d_world_step(p.world, tiny[k], 4), I2D_ERR_INVALID_ARGUMENT);
+        const i2d_vec2 after = i2d_body_get_position(p.first);
+        I2D_CHECK(before.x == after.x && before.y == after.y);
+        I2D_CHECK_STATUS(i2d_world_step(p.world, 1e-6f, 1000), I2D_OK);
+        I2D_CHECK_STATUS(i2d_world_step(p.world, 0.0f, 4), I2D_OK);
+        check_pair_after_step(&p, "after a refused tiny step");
+    }
+}
