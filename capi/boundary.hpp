@@ -76,7 +76,8 @@ private:
     const char* function_;
 };
 
-/// Runs an entry point's body; a failure to allocate becomes I2D_ERR_OUT_OF_MEMORY.
+/// Runs an entry point's body; a failure to allocate becomes I2D_ERR_OUT_OF_MEMORY, any
+/// other exception (a defect: the core throws nothing else on purpose) I2D_ERR_INTERNAL.
 template <class R, class F>
 R guarded(const char* function, R on_failure, F&& body) {
     Call call(function);
@@ -85,7 +86,7 @@ R guarded(const char* function, R on_failure, F&& body) {
     } catch (const std::bad_alloc&) {
         call.fail(I2D_ERR_OUT_OF_MEMORY, "out of memory");
     } catch (...) {
-        call.fail(I2D_ERR_OUT_OF_MEMORY, "internal error");
+        call.fail(I2D_ERR_INTERNAL, "internal error (an unexpected exception); please report it");
     }
     return on_failure;
 }

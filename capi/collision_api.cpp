@@ -26,7 +26,7 @@ I2D_API i2d_manifold i2d_collide_circles(i2d_circle a, i2d_circle b) {
 
 I2D_API i2d_manifold i2d_collide_aabbs(i2d_aabb a, i2d_aabb b) {
     return guarded("i2d_collide_aabbs", i2d_manifold{}, [&](Call& call) {
-        if (!valid_aabb(call, a, "aabb a") || !valid_aabb(call, b, "aabb b")) {
+        if (!valid_collide_aabb(call, a, "aabb a") || !valid_collide_aabb(call, b, "aabb b")) {
             return i2d_manifold{};
         }
         return to_public(collide_aabbs(capi::to_core(a), capi::to_core(b)));
@@ -35,7 +35,7 @@ I2D_API i2d_manifold i2d_collide_aabbs(i2d_aabb a, i2d_aabb b) {
 
 I2D_API i2d_manifold i2d_collide_aabb_circle(i2d_aabb a, i2d_circle b) {
     return guarded("i2d_collide_aabb_circle", i2d_manifold{}, [&](Call& call) {
-        if (!valid_aabb(call, a, "aabb a") || !valid_circle(call, b, "circle b")) {
+        if (!valid_collide_aabb(call, a, "aabb a") || !valid_circle(call, b, "circle b")) {
             return i2d_manifold{};
         }
         return to_public(collide_aabb_circle(capi::to_core(a), capi::to_core(b.center), b.radius));

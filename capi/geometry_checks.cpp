@@ -1,22 +1,19 @@
 // SPDX-License-Identifier: MIT
-// Checks of shape geometry passed through the C API.
+// Checks of shape geometry passed through the C API. The pure functions' documented
+// range: every coordinate (centres, corners, vertices, transform positions) and radius
+// within max_coordinate (1e9 m), where their products stay far from float overflow;
+// beyond it (around 1e19) they used to return NaN points and zero normals.
 #include "geometry_checks.hpp"
 
 #include <cmath>
 
 #include "collision/collision_constants.hpp"
+#include "dynamics/constants.hpp"
 
 namespace i2d::capi {
 
 bool valid_circle(Call& call, const i2d_circle& c, const char* what) {
-    if (!call.finite(c.center, what) || !call.finite(c.radius, what)) {
-        return false;
-    }
-    if (c.radius < 0.0f) {
-        return call.fail(I2D_ERR_INVALID_ARGUMENT, "%s radius is %g; it must be >= 0", what,
-                         static_cast<double>(c.radius));
-    }
-    return true;
+    return call.coordinate(c.center, what) && valid_radius(call, c.radius, what);
 }
 
 bool valid_aabb(Call& call, const i2d_aabb& a, const char* what) {
@@ -29,6 +26,10 @@ bool valid_aabb(Call& call, const i2d_aabb& a, const char* what) {
     return true;
 }
 
+bool valid_collide_aabb(Call& call, const i2d_aabb& a, const char* what) {
+    return valid_aabb(call, a, what) && call.coordinate(a.min, what) && call.coordinate(a.max, what);
+}
+
 bool valid_radius(Call& call, float radius, const char* what) {
     if (!call.finite(radius, what)) {
         return false;
@@ -36,11 +37,15 @@ bool valid_radius(Call& call, float radius, const char* what) {
     if (radius < 0.0f) {
         return call.fail(I2D_ERR_INVALID_ARGUMENT, "%s radius is %g; it must be >= 0", what, static_cast<double>(radius));
     }
+    if (radius > max_coordinate) {
+        return call.fail(I2D_ERR_INVALID_ARGUMENT, "%s radius is %g; it must be at most %g", what,
+                         static_cast<double>(radius), static_cast<double>(max_coordinate));
+    }
     return true;
 }
 
 bool valid_transform(Call& call, const i2d_transform& xf, const char* what) {
-    if (!call.finite(xf.p, what) || !call.finite(xf.q.c, what) || !call.finite(xf.q.s, what)) {
+    if (!call.coordinate(xf.p, what) || !call.finite(xf.q.c, what) || !call.finite(xf.q.s, what)) {
         return false;
     }
     const float norm_sq = xf.q.c * xf.q.c + xf.q.s * xf.q.s;
@@ -65,12 +70,12 @@ bool valid_core_length(Call& call, i2d_vec2 p1, i2d_vec2 p2, const char* what) {
 }
 
 bool valid_capsule(Call& call, const i2d_capsule* c, const char* what) {
-    return call.not_null(c, what) && call.finite(c->center1, what) && call.finite(c->center2, what) &&
+    return call.not_null(c, what) && call.coordinate(c->center1, what) && call.coordinate(c->center2, what) &&
            valid_radius(call, c->radius, what) && valid_core_length(call, c->center1, c->center2, what);
 }
 
 bool valid_segment(Call& call, const i2d_segment* s, const char* what) {
-    return call.not_null(s, what) && call.finite(s->point1, what) && call.finite(s->point2, what) &&
+    return call.not_null(s, what) && call.coordinate(s->point1, what) && call.coordinate(s->point2, what) &&
            valid_core_length(call, s->point1, s->point2, what);
 }
 
@@ -82,7 +87,7 @@ bool valid_polygon(Call& call, const i2d_polygon* p, const char* what) {
         return call.fail(I2D_ERR_INVALID_ARGUMENT, "%s count is %d; it must be 3 to 8", what, static_cast<int>(p->count));
     }
     for (int32_t i = 0; i < p->count; ++i) {
-        if (!call.finite(p->vertices[i], what) || !call.finite(p->normals[i], what)) {
+        if (!call.coordinate(p->vertices[i], what) || !call.finite(p->normals[i], what)) {
             return false;
         }
         const float len_sq = p->normals[i].x * p->normals[i].x + p->normals[i].y * p->normals[i].y;
@@ -90,7 +95,7 @@ bool valid_polygon(Call& call, const i2d_polygon* p, const char* what) {
             return call.fail(I2D_ERR_INVALID_ARGUMENT, "%s normals[%d] is not unit length", what, static_cast<int>(i));
         }
     }
-    return call.finite(p->centroid, what) && valid_radius(call, p->radius, what);
+    return call.coordinate(p->centroid, what) && valid_radius(call, p->radius, what);
 }
 
 // What a polygon made by i2d_make_polygon or i2d_make_box looks like: counter-clockwise,

@@ -10,6 +10,8 @@ namespace i2d::capi {
 
 bool valid_circle(Call& call, const i2d_circle& c, const char* what);
 bool valid_aabb(Call& call, const i2d_aabb& a, const char* what);
+/// valid_aabb and within the pure functions' range (|coordinate| <= max_coordinate).
+bool valid_collide_aabb(Call& call, const i2d_aabb& a, const char* what);
 bool valid_radius(Call& call, float radius, const char* what);
 bool valid_transform(Call& call, const i2d_transform& xf, const char* what);
 bool valid_circle_ptr(Call& call, const i2d_circle* c, const char* what);

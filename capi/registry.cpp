@@ -21,21 +21,24 @@ int32_t g_next_slot = 0;  // round robin: a freed slot is reused as late as poss
 
 }  // namespace
 
-// A slot whose generation reached the 12-bit limit is retired rather than wrapped, so
-// no id of an old world can ever match again.
+// A slot's generation counts 1..4095 and then starts again at 1 (0 is never used), so a
+// process may create worlds forever. The price of finite id bits: an id of a destroyed
+// world is refused until its slot has been reused 4094 times; the 4095th reuse gives
+// the same bits again. Slots are taken round robin, so with few worlds alive that takes
+// about 256 x 4095 (a million) further worlds; with all but one slot in use, 4095.
 WorldSlotRef register_world(World* world) {
     std::lock_guard<std::mutex> lock(g_mutex);
     for (int32_t k = 0; k < max_worlds; ++k) {
         const int32_t i = (g_next_slot + k) % max_worlds;
         WorldSlot& s = g_slots[i];
-        const uint16_t generation = s.generation.load(std::memory_order_relaxed);
-        if (s.world.load(std::memory_order_relaxed) != nullptr || generation == max_world_generation) {
+        if (s.world.load(std::memory_order_relaxed) != nullptr) {
             continue;
         }
-        s.generation.store(static_cast<uint16_t>(generation + 1), std::memory_order_relaxed);
+        const uint16_t generation = next_world_generation(s.generation.load(std::memory_order_relaxed));
+        s.generation.store(generation, std::memory_order_relaxed);
         s.world.store(world, std::memory_order_release);
         g_next_slot = (i + 1) % max_worlds;
-        return {i, static_cast<uint16_t>(generation + 1)};
+        return {i, generation};
     }
     return {};
 }

@@ -4,6 +4,7 @@
 
 #include <cstdarg>
 #include <cstdio>
+#include <cstring>
 
 namespace i2d::capi {
 
@@ -35,16 +36,22 @@ i2d_status last_status() { return t_status; }
 
 using namespace i2d::capi;
 
+// Read as an integer: C callers can pass any int (139, -1), and switching on an
+// out-of-range value loaded as the C++ enum type is undefined behaviour.
 I2D_API const char* i2d_status_string(i2d_status status) {
-    switch (status) {
+    static_assert(sizeof(i2d_status) == sizeof(int32_t), "enums are 32-bit");
+    int32_t value = 0;
+    std::memcpy(&value, &status, sizeof value);
+    switch (value) {
         case I2D_OK: return "I2D_OK";
         case I2D_ERR_INVALID_ARGUMENT: return "I2D_ERR_INVALID_ARGUMENT";
         case I2D_ERR_INVALID_HANDLE: return "I2D_ERR_INVALID_HANDLE";
         case I2D_ERR_WORLD_LOCKED: return "I2D_ERR_WORLD_LOCKED";
         case I2D_ERR_CAPACITY: return "I2D_ERR_CAPACITY";
         case I2D_ERR_OUT_OF_MEMORY: return "I2D_ERR_OUT_OF_MEMORY";
+        case I2D_ERR_INTERNAL: return "I2D_ERR_INTERNAL";
+        default: return "I2D_UNKNOWN_STATUS";
     }
-    return "I2D_UNKNOWN_STATUS";
 }
 
 // These two report on the previous call, so they leave the status as it is.

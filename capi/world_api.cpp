@@ -122,7 +122,7 @@ I2D_API i2d_world_id i2d_world_create(const i2d_world_def* def) {
         auto world = std::make_unique<World>(to_core(*def));
         const WorldSlotRef ref = register_world(world.get());
         if (ref.slot < 0) {
-            call.fail(I2D_ERR_CAPACITY, "%d worlds exist already; destroy one first", max_worlds);
+            call.fail(I2D_ERR_CAPACITY, "%d worlds are alive, the most at once; destroy one first", max_worlds);
             return I2D_NULL_WORLD_ID;
         }
         IdFields f;
@@ -159,6 +159,11 @@ I2D_API i2d_status i2d_world_step(i2d_world_id id, float time_step, int32_t subs
         WorldRef w;
         if (!call.world(id, w) || !call.unlocked(*w.world) ||
             !call.in_range(time_step, 0.0f, max_time_step, "time_step")) {
+            return last_status();
+        }
+        if (time_step != 0.0f && time_step < min_time_step) {
+            call.fail(I2D_ERR_INVALID_ARGUMENT, "time_step is %g; it must be 0 (paused) or at least %g s",
+                      static_cast<double>(time_step), static_cast<double>(min_time_step));
             return last_status();
         }
         if (substep_count < 1 || substep_count > max_substeps) {

@@ -44,10 +44,12 @@ typedef enum i2d_status {
     I2D_ERR_INVALID_HANDLE,   /**< null, stale or foreign id */
     I2D_ERR_WORLD_LOCKED,     /**< called from inside a callback during a step or query */
     I2D_ERR_CAPACITY,         /**< a documented limit would be exceeded */
-    I2D_ERR_OUT_OF_MEMORY
+    I2D_ERR_OUT_OF_MEMORY,
+    I2D_ERR_INTERNAL          /**< a defect inside the library (an unexpected exception); please report it */
 } i2d_status;
 
-/** A fixed English name for a status, e.g. "I2D_ERR_INVALID_HANDLE". Never NULL. */
+/** A fixed English name for a status, e.g. "I2D_ERR_INVALID_HANDLE". Never NULL: a value
+ *  outside the enumeration (any int a caller passes) gives "I2D_UNKNOWN_STATUS". */
 I2D_API const char* i2d_status_string(i2d_status status);
 /** The status of the last i2d_ call made on this thread. */
 I2D_API i2d_status i2d_last_status(void);

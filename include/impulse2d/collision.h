@@ -28,7 +28,12 @@ typedef struct i2d_manifold {
 
 /* World-space tests. Touching shapes (distance exactly zero) report a contact with
  * penetration 0; separated shapes report point_count 0. Invalid input (NaN, inf, negative
- * radius, min > max) reports point_count 0 and sets I2D_ERR_INVALID_ARGUMENT. */
+ * radius, min > max) reports point_count 0 and sets I2D_ERR_INVALID_ARGUMENT.
+ *
+ * Range of every pure function here (collide, make, mass, ray cast): each coordinate
+ * (centres, corners, vertices, transform positions) and each radius must be within
+ * 1e9 m of zero; input beyond it is refused with I2D_ERR_INVALID_ARGUMENT, since the
+ * products inside would overflow float. Within it, results are finite and normals unit. */
 
 /** Circle against circle. Same centres: normal (1, 0), penetration ra + rb. */
 I2D_API i2d_manifold i2d_collide_circles(i2d_circle a, i2d_circle b);

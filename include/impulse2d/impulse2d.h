@@ -17,7 +17,9 @@
  *   forces and impulses) answer I2D_ERR_WORLD_LOCKED; getters and queries work.
  * - A world is used from one thread at a time; different worlds may be used from
  *   different threads at once.
- * - Limits: 256 worlds alive at once; 16,777,215 bodies and as many shapes per world;
+ * - Limits: 256 worlds alive at once (created and destroyed without limit: an id of a
+ *   destroyed world stays stale until its slot has been reused 4094 times, about a
+ *   million worlds later when few are alive); 16,777,215 bodies and as many shapes per world;
  *   shape sizes from 0.0001 to 100,000 m, and every point of a shape's geometry within
  *   100,000 m of its body's origin; positions within 1e9 m of the world origin. Past
  *   them calls answer I2D_ERR_CAPACITY or I2D_ERR_INVALID_ARGUMENT. */
@@ -55,7 +57,7 @@ I2D_API i2d_world_id i2d_world_create(const i2d_world_def* def);
 /** Destroys the world and everything in it; all its ids become stale. */
 I2D_API i2d_status i2d_world_destroy(i2d_world_id world);
 I2D_API bool i2d_world_is_valid(i2d_world_id world);
-/** Advances the world by time_step seconds ([0, 1000]; 0 does nothing), split into
+/** Advances the world by time_step seconds (0, which does nothing, or 1e-6 to 1000), split into
  *  substep_count equal substeps (1 to 1000); each substep finds contacts, resolves
  *  them and integrates. 1/60 s with 4 substeps is a good start. */
 I2D_API i2d_status i2d_world_step(i2d_world_id world, float time_step, int32_t substep_count);
@@ -95,12 +97,14 @@ I2D_API i2d_status i2d_body_set_transform(i2d_body_id body, i2d_vec2 position, i
 /** Velocity of the centre of mass, m/s. */
 I2D_API i2d_vec2 i2d_body_get_linear_velocity(i2d_body_id body);
 /** Finite values only; ignored for static bodies (which never move) but still checked.
- *  Speeds above the world's maximum_linear_speed are clamped at the next step. */
+ *  A speed above the world's maximum_linear_speed is scaled down to it at once (direction
+ *  kept), as are body def velocities and the results of impulses. */
 I2D_API i2d_status i2d_body_set_linear_velocity(i2d_body_id body, i2d_vec2 v);
 /** rad/s, counter-clockwise positive. */
 I2D_API float i2d_body_get_angular_velocity(i2d_body_id body);
 /** Finite values only; ignored for static and fixed-rotation bodies but still checked.
- *  Spins faster than a quarter turn per substep are clamped at the next step. */
+ *  Spins beyond 1e5 rad/s are clamped to it at once (as are body def spins and the
+ *  results of impulses); faster than a quarter turn per substep at the next step. */
 I2D_API i2d_status i2d_body_set_angular_velocity(i2d_body_id body, float w);
 /** kg; 0 for static and kinematic bodies. */
 I2D_API float i2d_body_get_mass(i2d_body_id body);

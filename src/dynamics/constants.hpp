@@ -38,9 +38,20 @@ constexpr float max_density = 1.0e10f;
 constexpr float max_restitution = 100.0f;
 constexpr float max_speed_limit = 1.0e5f;
 
+/// Fastest spin a body is given, rad/s: set and impulse-changed angular velocities are
+/// clamped to it where they enter. The step's own clamp (a quarter turn per substep) is
+/// far lower at any practical substep; this one keeps w x r and its square finite for
+/// the largest shapes before that clamp runs.
+constexpr float max_angular_speed = 1.0e5f;
+
 /// Longest step, s. Longer steps only lose accuracy, and speed x step must stay far
 /// from float overflow.
 constexpr float max_time_step = 1000.0f;
+
+/// Shortest step other than 0, s. The solver divides by the substep: a denormal step
+/// (found by fuzzing: 1e-45 s) made its rates infinite and every touching body NaN.
+/// A microsecond with the most substeps keeps every rate times speed far from overflow.
+constexpr float min_time_step = 1.0e-6f;
 
 /// Largest number of substeps a caller may ask for.
 constexpr int32_t max_substeps = 1000;

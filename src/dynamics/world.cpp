@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "collision/geometry.hpp"
+#include "dynamics/constants.hpp"
 #include "dynamics/shape_bounds.hpp"
 #include "math/math.hpp"
 
@@ -27,8 +28,8 @@ int32_t World::create_body(const BodyDef& def) {
     Body& b = bodies[index];
     b.type = def.type;
     b.transform = {def.position, def.rotation};
-    b.linear_velocity = def.type == BodyType::static_body ? Vec2{} : def.linear_velocity;
-    b.angular_velocity = def.type == BodyType::static_body ? 0.0f : def.angular_velocity;
+    b.linear_velocity = def.type == BodyType::static_body ? Vec2{} : limited_linear_velocity(def.linear_velocity);
+    b.angular_velocity = def.type == BodyType::static_body ? 0.0f : limited_angular_velocity(def.angular_velocity);
     b.linear_damping = def.linear_damping;
     b.angular_damping = def.angular_damping;
     b.gravity_scale = def.gravity_scale;
@@ -214,6 +215,25 @@ void World::set_transform(int32_t body, const Transform& xf) {
     mark_for_cover(body);
 }
 
+// Velocities enter the world already within its limits: the solver's first use of a
+// velocity (the impact speed it tracks for restitution) squares it before the substep
+// clamp, and a finite 1e20 m/s squared is infinite. The length is taken in double so
+// that no finite float input overflows on the way; the direction is kept.
+Vec2 World::limited_linear_velocity(Vec2 v) const {
+    const double x = v.x, y = v.y;
+    const double speed = std::sqrt(x * x + y * y);
+    const double max_speed = settings.maximum_linear_speed;
+    if (speed <= max_speed) {
+        return v;
+    }
+    const double scale = max_speed / speed;
+    return Vec2{static_cast<float>(x * scale), static_cast<float>(y * scale)};
+}
+
+float World::limited_angular_velocity(float w) const {
+    return w > max_angular_speed ? max_angular_speed : (w < -max_angular_speed ? -max_angular_speed : w);
+}
+
 void World::set_linear_velocity(int32_t body, Vec2 v) {
     Body& b = bodies[body];
     if (b.type == BodyType::static_body) {
@@ -222,7 +242,7 @@ void World::set_linear_velocity(int32_t body, Vec2 v) {
     if (v.x != 0.0f || v.y != 0.0f) {
         wake_body(body);
     }
-    b.linear_velocity = v;
+    b.linear_velocity = limited_linear_velocity(v);
     mark_for_cover(body);
 }
 
@@ -235,7 +255,7 @@ void World::set_angular_velocity(int32_t body, float w) {
     if (w != 0.0f) {
         wake_body(body);
     }
-    b.angular_velocity = w;
+    b.angular_velocity = limited_angular_velocity(w);
 }
 
 // Wakes the body if asked; a body left asleep ignores what it is given.
@@ -271,8 +291,8 @@ bool World::change_velocity(int32_t body, Vec2 dv, float dw, bool wake) {
         return false;
     }
     if (prepare_to_receive(body, wake)) {
-        b.linear_velocity = v;
-        b.angular_velocity = w;
+        b.linear_velocity = limited_linear_velocity(v);
+        b.angular_velocity = limited_angular_velocity(w);
         mark_for_cover(body);
     }
     return true;

@@ -78,6 +78,9 @@ public:
     void set_transform(int32_t body, const Transform& xf);
     void set_linear_velocity(int32_t body, Vec2 v);
     void set_angular_velocity(int32_t body, float w);
+    /// v scaled down to the world's maximum_linear_speed, w clamped to max_angular_speed.
+    Vec2 limited_linear_velocity(Vec2 v) const;
+    float limited_angular_velocity(float w) const;
     // Forces and torques accumulate until the end of the next step; impulses change the
     // velocities at once. Only dynamic bodies respond, and one left asleep (wake false)
     // ignores them (Box2D's rule: forces do not pile up while a body sleeps). Each

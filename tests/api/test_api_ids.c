@@ -428,8 +428,30 @@ I2D_TEST(api_ids_stale_after_world_destroy) {
 
 /* Worlds created and destroyed in a loop, keeping every old id: none may become valid
  * again, even when a new world takes the old one's slot and its bodies and shapes take
- * the same slot indices. */
-enum { RECYCLE_ROUNDS = 40 };
+ * the same slot indices. Slots are taken round robin, so the tests hold every slot but
+ * one with live worlds: each new world then really reuses the last one's slot. */
+enum { RECYCLE_ROUNDS = 40, HELD_WORLDS = 255, SLOT_PERIOD = 4095 };
+
+static void check_capacity_refused_at(int line, const char* what);
+
+static bool hold_all_slots_but_one(i2d_world_id* held) {
+    for (int i = 0; i < HELD_WORLDS; ++i) {
+        i2d_world_def def = i2d_default_world_def();
+        held[i] = i2d_world_create(&def);
+        if (I2D_IS_NULL(held[i])) {
+            return false;
+        }
+    }
+    return true;
+}
+
+static void release_held(i2d_world_id* held) {
+    for (int i = 0; i < HELD_WORLDS; ++i) {
+        if (!I2D_IS_NULL(held[i])) {
+            I2D_CHECK_STATUS(i2d_world_destroy(held[i]), I2D_OK);
+        }
+    }
+}
 
 static void check_round_stale(const scene* old, int round) {
     char ctx[64];
@@ -443,6 +465,8 @@ static void check_round_stale(const scene* old, int round) {
 }
 
 I2D_TEST(api_ids_world_recycle) {
+    static i2d_world_id held[HELD_WORLDS];
+    I2D_REQUIRE(hold_all_slots_but_one(held));
     static scene rounds[RECYCLE_ROUNDS];
     for (int r = 0; r < RECYCLE_ROUNDS; ++r) {
         bool built = scene_create(&rounds[r]);
@@ -462,27 +486,70 @@ I2D_TEST(api_ids_world_recycle) {
     check_world_id_refused(rounds[0].world, "world of round 0");
     check_body_id_refused(rounds[0].body[1], "body of round 0");
     check_shape_id_refused(rounds[0].shape[1], "shape of round 0");
+    release_held(held);
+}
 
-    /* Many more worlds than a 12-bit generation counts: an old id must not come back
-     * when a slot's generation wraps. */
-    enum { KEPT = 64, CYCLES = 5000 };
-    i2d_world_id kept[KEPT];
+/* The slot of a destroyed world, reused as often as its 12-bit generation allows before
+ * it comes round (4094 times): the old world's ids, bodies and shapes included, stay
+ * refused every time. All other slots are held by live worlds, so the next world always
+ * takes that one slot; creation then goes on across several wrap-arounds (no slot is
+ * retired: a process may create worlds forever). */
+static bool create_and_destroy_world(int cycle) {
+    i2d_world_def def = i2d_default_world_def();
+    i2d_world_id w = i2d_world_create(&def);
+    if (I2D_IS_NULL(w) || i2d_world_destroy(w) != I2D_OK) {
+        ++i2d_check_failures;
+        fprintf(stderr, "%s:%d: cycle %d: create or destroy failed: %s\n", __FILE__, __LINE__, cycle,
+                i2d_last_error_message());
+        return false;
+    }
+    return true;
+}
+
+I2D_TEST(api_ids_world_slot_reused_until_wrap) {
+    static i2d_world_id held[HELD_WORLDS];
+    I2D_REQUIRE(hold_all_slots_but_one(held));
+    scene first;
+    I2D_REQUIRE(scene_create(&first));
+    scene_destroy(&first);
     int failures_before = i2d_check_failures;
-    for (int c = 0; c < CYCLES && i2d_check_failures == failures_before; ++c) {
+    for (int c = 1; c < SLOT_PERIOD && i2d_check_failures == failures_before; ++c) {
         i2d_world_def def = i2d_default_world_def();
         i2d_world_id w = i2d_world_create(&def);
-        I2D_CHECK(i2d_world_is_valid(w));
+        I2D_CHECK(!I2D_ID_EQUALS(w, first.world));
+        /* Same slot, as every other one is taken; its bodies take the same indices. */
+        i2d_body_def body_def = i2d_default_body_def();
+        i2d_body_id b = i2d_body_create(w, &body_def);
+        I2D_CHECK(!I2D_ID_EQUALS(b, first.body[0]));
+        check_round_stale(&first, 0);
         I2D_CHECK_STATUS(i2d_world_destroy(w), I2D_OK);
-        if (c < KEPT) {
-            kept[c] = w;
-        }
-        for (int k = 0; k < KEPT && k <= c; ++k) {
-            if (i2d_world_is_valid(kept[k])) {
-                ++i2d_check_failures;
-                fprintf(stderr, "%s:%d: world id of cycle %d is valid again at cycle %d\n", __FILE__, __LINE__, k, c);
-            }
+    }
+    for (int c = 0; c < 3 * SLOT_PERIOD && i2d_check_failures == failures_before; ++c) {
+        create_and_destroy_world(c);
+    }
+    /* The last free slot taken: the next world is refused, with the real reason. */
+    i2d_world_def def = i2d_default_world_def();
+    i2d_world_id last = i2d_world_create(&def);
+    I2D_CHECK(i2d_world_is_valid(last));
+    check_capacity_refused_at(__LINE__, "world 257 after wrap-arounds");
+    I2D_CHECK(strstr(i2d_last_error_message(), "256 worlds are alive") != NULL);
+    I2D_CHECK_STATUS(i2d_world_destroy(last), I2D_OK);
+    release_held(held);
+}
+
+/* A process may create and destroy worlds without limit (reinforcement learning and test
+ * loops do): ten million cycles, ten times what used to exhaust the slots. */
+I2D_TEST(api_ids_world_create_forever) {
+    enum { CYCLES = 10000000 };
+    for (int c = 0; c < CYCLES; ++c) {
+        if (!create_and_destroy_world(c)) {
+            return;
         }
     }
+    i2d_world_def def = i2d_default_world_def();
+    i2d_world_id w = i2d_world_create(&def);
+    I2D_CHECK(i2d_world_is_valid(w));
+    I2D_CHECK_STATUS(i2d_world_destroy(w), I2D_OK);
 }
 
 /* Bodies created and destroyed many times in one world (more than a 16-bit slot

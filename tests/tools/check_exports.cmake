@@ -1,6 +1,9 @@
 # SPDX-License-Identifier: MIT
-# Fails unless every symbol libimpulse2d exports starts with i2d_.
-# Usage: cmake -DLIBRARY=path -DNM=nm -P check_exports.cmake
+# Fails unless every symbol libimpulse2d exports starts with i2d_, the exported names are
+# exactly those of the committed list (an added function must be added to the list, a
+# removed one fails: bindings link by name), and the library carries the expected soname.
+# Usage: cmake -DLIBRARY=path -DNM=nm [-DEXPECTED=exported_symbols.txt]
+#              [-DOBJDUMP=objdump -DSONAME=libimpulse2d.so.0] -P check_exports.cmake
 execute_process(COMMAND ${NM} -D --defined-only ${LIBRARY}
                 OUTPUT_VARIABLE listing RESULT_VARIABLE rc)
 if(NOT rc EQUAL 0)
@@ -18,6 +21,7 @@ foreach(line IN LISTS lines)
     endif()
     if(name MATCHES "^i2d_")
       math(EXPR exported "${exported} + 1")
+      list(APPEND names ${name})
     elseif(NOT name MATCHES "^(_init|_fini|_edata|_end|__bss_start)$")
       list(APPEND leaked ${name})
     endif()
@@ -29,4 +33,31 @@ endif()
 if(exported LESS 40)
   message(FATAL_ERROR "only ${exported} i2d_ symbols exported: the API is missing")
 endif()
-message(STATUS "${exported} symbols exported, all i2d_*")
+
+if(EXPECTED)
+  file(STRINGS ${EXPECTED} expected_names REGEX "^i2d_")
+  set(added ${names})
+  list(REMOVE_ITEM added ${expected_names})
+  set(removed ${expected_names})
+  list(REMOVE_ITEM removed ${names})
+  if(removed)
+    message(FATAL_ERROR "exported functions are missing (removing one breaks every binding): ${removed}")
+  endif()
+  if(added)
+    message(FATAL_ERROR "new exports not in ${EXPECTED}; add them to the list (sorted): ${added}")
+  endif()
+endif()
+
+if(OBJDUMP)
+  execute_process(COMMAND ${OBJDUMP} -p ${LIBRARY} OUTPUT_VARIABLE headers RESULT_VARIABLE rc)
+  if(NOT rc EQUAL 0 OR NOT headers MATCHES "SONAME +([^\n ]+)")
+    message(FATAL_ERROR "no SONAME in ${LIBRARY}")
+  endif()
+  if(NOT CMAKE_MATCH_1 STREQUAL SONAME)
+    message(FATAL_ERROR "SONAME is ${CMAKE_MATCH_1}, expected ${SONAME}")
+  endif()
+  if(NOT SONAME MATCHES "\\.so\\.[0-9]+$")
+    message(FATAL_ERROR "SONAME ${SONAME} carries no major version")
+  endif()
+endif()
+message(STATUS "${exported} symbols exported, all i2d_* and all listed; soname ${SONAME}")

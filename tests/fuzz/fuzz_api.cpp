@@ -1,0 +1,649 @@
+// SPDX-License-Identifier: MIT
+// libFuzzer harness: reads its input as a program of C API calls and runs it.
+//
+// Each instruction is one opcode byte followed by the operands it reads (ids chosen from
+// what the program holds, floats from a table of hostile values or raw bits, sizes and
+// counts of any sign). Ids are kept after their objects die, so stale, foreign (a body's
+// bits passed as a shape) and null ids are used on purpose. Query and ray callbacks call
+// back into the library and try to destroy things. The library must never crash, leak or
+// trip a sanitizer, and a world (into which the API accepts only finite values) must never
+// report a non-finite position or velocity: that aborts with a message.
+//
+// Only the public header is used: the harness is a hostile C API caller.
+#include <impulse2d/impulse2d.h>
+
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+
+#include "fuzz_input.hpp"
+#include "raw_enum_calls.h"
+
+namespace {
+
+constexpr int max_worlds_held = 4;
+constexpr int max_bodies_held = 48;
+constexpr int max_shapes_held = 96;
+
+// What the program holds: live ids and, on purpose, dead ones.
+struct Held {
+    i2d_world_id worlds[max_worlds_held] = {};
+    i2d_body_id bodies[max_bodies_held] = {};
+    i2d_shape_id shapes[max_shapes_held] = {};
+    int world_count = 0, body_count = 0, shape_count = 0;
+    // Every world this input created, to free them all at its end (at most 256 can live).
+    i2d_world_id created[256] = {};
+    int created_count = 0;
+};
+
+Held* g_held = nullptr;
+// FUZZ_TRACE=1 prints each instruction and the bodies before each step: how a finding
+// is read back into a regression test.
+const bool g_trace = std::getenv("FUZZ_TRACE") != nullptr;
+
+void trace_bodies() {
+    for (int i = 0; g_trace && i < g_held->body_count; ++i) {
+        const i2d_body_id b = g_held->bodies[i];
+        if (i2d_body_is_valid(b)) {
+            const i2d_transform xf = i2d_body_get_transform(b);
+            const i2d_vec2 v = i2d_body_get_linear_velocity(b);
+            const i2d_vec2 c = i2d_body_get_world_center_of_mass(b);
+            std::fprintf(stderr,
+                         "  body %d type %d p (%g, %g) q (%g, %g) v (%g, %g) w %g mass %g inertia %g centre (%g, %g) "
+                         "shapes %d\n",
+                         i, int(i2d_body_get_type(b)), xf.p.x, xf.p.y, xf.q.c, xf.q.s, v.x, v.y,
+                         i2d_body_get_angular_velocity(b), i2d_body_get_mass(b), i2d_body_get_rotational_inertia(b),
+                         c.x, c.y, i2d_body_get_shape_count(b));
+            i2d_shape_id shapes[8];
+            const int32_t n = i2d_body_get_shapes(b, shapes, 8);
+            for (int32_t k = 0; k < n && k < 8; ++k) {
+                const i2d_aabb box = i2d_shape_get_aabb(shapes[k]);
+                const i2d_filter f = i2d_shape_get_filter(shapes[k]);
+                std::fprintf(stderr, "    shape type %d sensor %d aabb (%g, %g)-(%g, %g) filter %llx %llx %d\n",
+                             int(i2d_shape_get_type(shapes[k])), int(i2d_shape_is_sensor(shapes[k])), box.min.x,
+                             box.min.y, box.max.x, box.max.y, (unsigned long long)f.category_bits,
+                             (unsigned long long)f.mask_bits, f.group_index);
+            }
+        }
+    }
+}
+
+void fail(const char* what, double a, double b) {
+    std::fprintf(stderr, "fuzz_api: %s (%g, %g)\n", what, a, b);
+    std::abort();
+}
+
+// ---- Picking ids: held ones (live or stale), null, random bits, or another kind's ----
+
+i2d_world_id pick_world(FuzzInput& in) {
+    const uint8_t k = in.byte();
+    if (k < 200 && g_held->world_count > 0) {
+        return g_held->worlds[k % g_held->world_count];
+    }
+    if (k < 230) {
+        return I2D_NULL_WORLD_ID;
+    }
+    if (k < 245 && g_held->body_count > 0) {
+        return i2d_world_id{g_held->bodies[k % g_held->body_count].bits};  // foreign kind
+    }
+    return i2d_world_id{in.u64()};
+}
+
+i2d_body_id pick_body(FuzzInput& in) {
+    const uint8_t k = in.byte();
+    if (k < 210 && g_held->body_count > 0) {
+        return g_held->bodies[k % g_held->body_count];
+    }
+    if (k < 230) {
+        return I2D_NULL_BODY_ID;
+    }
+    if (k < 245 && g_held->shape_count > 0) {
+        return i2d_body_id{g_held->shapes[k % g_held->shape_count].bits};
+    }
+    return i2d_body_id{in.u64()};
+}
+
+i2d_shape_id pick_shape(FuzzInput& in) {
+    const uint8_t k = in.byte();
+    if (k < 210 && g_held->shape_count > 0) {
+        return g_held->shapes[k % g_held->shape_count];
+    }
+    if (k < 230) {
+        return I2D_NULL_SHAPE_ID;
+    }
+    if (k < 245 && g_held->world_count > 0) {
+        return i2d_shape_id{g_held->worlds[k % g_held->world_count].bits};
+    }
+    return i2d_shape_id{in.u64()};
+}
+
+// New ids replace old ones round robin once the table is full: the old stays stale.
+template <class Id>
+void keep(Id* table, int& count, int capacity, Id id, uint8_t where) {
+    if (I2D_IS_NULL(id)) {
+        return;
+    }
+    if (count < capacity) {
+        table[count++] = id;
+    } else {
+        table[where % capacity] = id;
+    }
+}
+
+// ---- The finiteness check ------------------------------------------------------------
+
+bool finite2(i2d_vec2 v) { return std::isfinite(v.x) && std::isfinite(v.y); }
+
+void check_body_finite(i2d_body_id b) {
+    if (!i2d_body_is_valid(b)) {
+        return;
+    }
+    const i2d_transform xf = i2d_body_get_transform(b);
+    const i2d_vec2 v = i2d_body_get_linear_velocity(b);
+    const float w = i2d_body_get_angular_velocity(b);
+    if (!finite2(xf.p) || !std::isfinite(xf.q.c) || !std::isfinite(xf.q.s)) {
+        fail("non-finite body position", xf.p.x, xf.p.y);
+    }
+    if (!finite2(v) || !std::isfinite(w)) {
+        fail("non-finite body velocity", v.x, w);
+    }
+}
+
+void check_all_finite() {
+    for (int i = 0; i < g_held->body_count; ++i) {
+        check_body_finite(g_held->bodies[i]);
+    }
+}
+
+// ---- Definitions: from the default function, then edited; sometimes not initialised ----
+
+i2d_world_def world_def(FuzzInput& in) {
+    i2d_world_def def = i2d_default_world_def();
+    const uint8_t edits = in.byte() % 6;
+    for (uint8_t e = 0; e < edits; ++e) {
+        switch (in.byte() % 12) {
+            case 0: def.gravity = in.vec2(); break;
+            case 1: def.contact_slop = in.real(); break;
+            case 2: def.contact_hertz = in.real(); break;
+            case 3: def.contact_damping_ratio = in.real(); break;
+            case 4: def.contact_push_max_speed = in.real(); break;
+            case 5: def.restitution_threshold = in.real(); break;
+            case 6: def.maximum_linear_speed = in.real(); break;
+            case 7: in.raw_enum(&def.friction_mixing); in.raw_enum(&def.restitution_mixing); break;
+            case 8: def.enable_sleep = in.flag(); def.sleep_speed_threshold = in.real(); break;
+            case 9: def.time_to_sleep = in.real(); def.enable_contact_recycling = in.flag(); break;
+            case 10: in.raw_enum(&def.simd_path); break;
+            default: def.internal_cookie = in.u32(); break;  // an uninitialised def
+        }
+    }
+    return def;
+}
+
+i2d_body_def body_def(FuzzInput& in) {
+    i2d_body_def def = i2d_default_body_def();
+    def.type = static_cast<i2d_body_type>(in.byte() % 3);
+    def.position = in.vec2();
+    const uint8_t edits = in.byte() % 6;
+    for (uint8_t e = 0; e < edits; ++e) {
+        switch (in.byte() % 9) {
+            case 0: def.rotation = i2d_make_rot(in.real()); break;
+            case 1: def.rotation = i2d_rot{in.real(), in.real()}; break;
+            case 2: def.linear_velocity = in.vec2(); break;
+            case 3: def.angular_velocity = in.real(); break;
+            case 4: def.linear_damping = in.real(); def.angular_damping = in.real(); break;
+            case 5: def.gravity_scale = in.real(); break;
+            case 6: def.fixed_rotation = in.flag(); def.is_bullet = in.flag(); def.enable_sleep = in.flag(); break;
+            case 7: in.raw_enum(&def.type); break;
+            default: def.internal_cookie = in.u32(); break;
+        }
+    }
+    return def;
+}
+
+i2d_filter filter(FuzzInput& in) {
+    i2d_filter f = i2d_default_filter();
+    if (in.flag()) {
+        f.category_bits = in.u64();
+        f.mask_bits = in.u64();
+        f.group_index = static_cast<int32_t>(in.u32());
+    }
+    return f;
+}
+
+i2d_shape_def shape_def(FuzzInput& in) {
+    i2d_shape_def def = i2d_default_shape_def();
+    const uint8_t edits = in.byte() % 5;
+    for (uint8_t e = 0; e < edits; ++e) {
+        switch (in.byte() % 7) {
+            case 0: def.density = in.real(); break;
+            case 1: def.friction = in.real(); def.restitution = in.real(); break;
+            case 2: def.rolling_resistance = in.real(); def.tangent_speed = in.real(); break;
+            case 3: def.is_sensor = in.flag(); def.enable_sensor_events = in.flag(); break;
+            case 4: def.enable_contact_events = in.flag(); break;
+            case 5: def.filter = filter(in); break;
+            default: def.internal_cookie = in.u32(); break;
+        }
+    }
+    return def;
+}
+
+// A def pointer: usually the def, sometimes NULL.
+template <class Def>
+const Def* maybe_null(FuzzInput& in, const Def& def) {
+    return in.byte() < 245 ? &def : nullptr;
+}
+
+i2d_polygon polygon(FuzzInput& in) {
+    i2d_vec2 points[10];
+    const int32_t count = in.count(10);
+    for (int32_t i = 0; i < 10; ++i) {
+        points[i] = in.small_vec2();
+    }
+    i2d_polygon p{};
+    if (i2d_make_polygon(points, count, in.small_real(), &p) != I2D_OK || in.byte() > 240) {
+        p = i2d_make_box(in.small_real(), in.small_real());
+    }
+    if (in.byte() > 235) {  // hand-edited: any field may now be wrong
+        p.vertices[in.byte() % I2D_MAX_POLYGON_VERTICES] = in.vec2();
+        p.count = static_cast<int32_t>(in.u32());
+    }
+    return p;
+}
+
+i2d_transform transform(FuzzInput& in) {
+    i2d_transform xf;
+    xf.p = in.vec2();
+    xf.q = in.flag() ? i2d_make_rot(in.real()) : i2d_rot{in.real(), in.real()};
+    return xf;
+}
+
+// ---- Callbacks that call back in -----------------------------------------------------
+
+struct CallbackContext {
+    FuzzInput* in;
+    int calls;
+};
+
+// Inside a query the world is locked: whatever the callback tries must be refused
+// cleanly or answered (getters); it then continues or stops as the input says.
+void call_back_in(CallbackContext& c, i2d_shape_id shape) {
+    FuzzInput& in = *c.in;
+    const i2d_body_id body = i2d_shape_get_body(shape);
+    switch (in.byte() % 8) {
+        case 0: i2d_body_destroy(body); break;
+        case 1: i2d_shape_destroy(shape); break;
+        case 2: i2d_world_destroy(i2d_body_get_world(body)); break;
+        case 3: i2d_world_step(i2d_body_get_world(body), 1.0f / 60.0f, 4); break;
+        case 4: i2d_body_set_linear_velocity(body, in.vec2()); break;
+        case 5: i2d_shape_set_user_data(shape, &c); break;
+        case 6: {
+            i2d_shape_id out[4];
+            i2d_world_overlap_aabb_ids(i2d_body_get_world(body), i2d_shape_get_aabb(shape), i2d_default_query_filter(),
+                                       out, 4);
+            break;
+        }
+        default: check_body_finite(body); break;
+    }
+}
+
+bool overlap_callback(i2d_shape_id shape, void* context) {
+    auto& c = *static_cast<CallbackContext*>(context);
+    ++c.calls;
+    call_back_in(c, shape);
+    return c.in->byte() < 200;
+}
+
+float ray_callback(i2d_shape_id shape, i2d_vec2 point, i2d_vec2 normal, float fraction, void* context) {
+    auto& c = *static_cast<CallbackContext*>(context);
+    ++c.calls;
+    if (!finite2(point) || !finite2(normal) || !(fraction >= 0.0f && fraction <= 1.0f)) {
+        fail("ray callback got a non-finite hit", point.x, fraction);
+    }
+    call_back_in(c, shape);
+    switch (c.in->byte() % 6) {
+        case 0: return -1.0f;
+        case 1: return 0.0f;
+        case 2: return fraction;
+        case 3: return 1.0f;
+        default: return c.in->real();  // NaN, inf, 7, -3: whatever a buggy binding returns
+    }
+}
+
+// ---- Events: every pointer read, every id asked about ---------------------------------
+
+void read_events(i2d_world_id w) {
+    const i2d_contact_events contacts = i2d_world_get_contact_events(w);
+    for (int32_t i = 0; i < contacts.begin_count; ++i) {
+        i2d_shape_is_valid(contacts.begin_events[i].shape_a);
+        i2d_shape_is_valid(contacts.begin_events[i].shape_b);
+    }
+    for (int32_t i = 0; i < contacts.end_count; ++i) {
+        i2d_shape_is_valid(contacts.end_events[i].shape_a);
+    }
+    const i2d_sensor_events sensors = i2d_world_get_sensor_events(w);
+    for (int32_t i = 0; i < sensors.begin_count; ++i) {
+        i2d_shape_is_valid(sensors.begin_events[i].visitor_shape);
+    }
+    for (int32_t i = 0; i < sensors.end_count; ++i) {
+        i2d_shape_is_valid(sensors.end_events[i].sensor_shape);
+    }
+    const i2d_body_events moves = i2d_world_get_body_events(w);
+    for (int32_t i = 0; i < moves.move_count; ++i) {
+        const i2d_transform xf = moves.move_events[i].transform;
+        if (!finite2(xf.p) || !std::isfinite(xf.q.c) || !std::isfinite(xf.q.s)) {
+            fail("non-finite transform in a move event", xf.p.x, xf.p.y);
+        }
+        check_body_finite(moves.move_events[i].body);
+    }
+}
+
+// ---- The instructions ------------------------------------------------------------------
+
+void run_world_call(FuzzInput& in, uint8_t op) {
+    switch (op) {
+        case 0: {
+            const i2d_world_def def = world_def(in);
+            if (g_trace) {
+                std::fprintf(stderr,
+                             "  world def: gravity (%g, %g) slop %g hertz %g damping %g push %g restitution_threshold %g "
+                             "max_speed %g sleep %d %g %g recycling %d\n",
+                             def.gravity.x, def.gravity.y, def.contact_slop, def.contact_hertz,
+                             def.contact_damping_ratio, def.contact_push_max_speed, def.restitution_threshold,
+                             def.maximum_linear_speed, int(def.enable_sleep), def.sleep_speed_threshold,
+                             def.time_to_sleep, int(def.enable_contact_recycling));
+            }
+            const i2d_world_id w = i2d_world_create(maybe_null(in, def));
+            if (!I2D_IS_NULL(w) && g_held->created_count < 256) {
+                g_held->created[g_held->created_count++] = w;
+            }
+            keep(g_held->worlds, g_held->world_count, max_worlds_held, w, in.byte());
+            break;
+        }
+        case 1: i2d_world_destroy(pick_world(in)); break;
+        case 2: {
+            const i2d_world_id w = pick_world(in);
+            const float dt = in.byte() < 200 ? 1.0f / 60.0f : in.real();
+            const int32_t substeps = in.byte() < 200 ? 4 : static_cast<int32_t>(in.u32());
+            trace_bodies();
+            if (i2d_world_step(w, dt, substeps) == I2D_OK) {
+                check_all_finite();
+            }
+            read_events(w);
+            break;
+        }
+        case 3: i2d_world_set_gravity(pick_world(in), in.vec2()); break;
+        case 4: {
+            const i2d_world_id w = pick_world(in);
+            i2d_world_get_gravity(w);
+            i2d_world_get_counters(w);
+            i2d_world_get_profile(w);
+            i2d_world_get_state_hash(w);
+            i2d_world_get_simd_path(w);
+            i2d_world_is_valid(w);
+            break;
+        }
+        case 5: i2d_world_rebuild_static_tree(pick_world(in)); break;
+        default: {
+            int32_t path = 0, status = 0;
+            in.raw_enum(&path);
+            in.raw_enum(&status);
+            fuzz_simd_path_supported(path);
+            if (fuzz_status_string(status) == nullptr) {
+                fail("status string is NULL", 0, 0);
+            }
+            break;
+        }
+    }
+}
+
+void run_body_call(FuzzInput& in, uint8_t op) {
+    switch (op) {
+        case 0: {
+            const i2d_world_id w = pick_world(in);
+            const i2d_body_def def = body_def(in);
+            keep(g_held->bodies, g_held->body_count, max_bodies_held, i2d_body_create(w, maybe_null(in, def)), in.byte());
+            break;
+        }
+        case 1: i2d_body_destroy(pick_body(in)); break;
+        case 2: {
+            const i2d_body_id b = pick_body(in);
+            const i2d_vec2 p = in.vec2();
+            const i2d_rot q = in.flag() ? i2d_make_rot(in.real()) : i2d_rot{in.real(), in.real()};
+            i2d_body_set_transform(b, p, q);
+            break;
+        }
+        case 3: i2d_body_set_linear_velocity(pick_body(in), in.vec2()); break;
+        case 4: i2d_body_set_angular_velocity(pick_body(in), in.real()); break;
+        case 5: i2d_body_apply_force(pick_body(in), in.vec2(), in.vec2(), in.flag()); break;
+        case 6: i2d_body_apply_force_to_center(pick_body(in), in.vec2(), in.flag()); break;
+        case 7: i2d_body_apply_torque(pick_body(in), in.real(), in.flag()); break;
+        case 8: i2d_body_apply_linear_impulse(pick_body(in), in.vec2(), in.vec2(), in.flag()); break;
+        case 9: i2d_body_apply_angular_impulse(pick_body(in), in.real(), in.flag()); break;
+        case 10: i2d_body_set_awake(pick_body(in), in.flag()); break;
+        case 11: i2d_body_set_user_data(pick_body(in), in.flag() ? g_held : nullptr); break;
+        case 12: {
+            const i2d_body_id b = pick_body(in);
+            i2d_shape_id out[8];
+            const int32_t capacity = in.flag() ? in.count(8) : static_cast<int32_t>(in.u32());
+            const bool null_out = in.byte() > 230;
+            i2d_body_get_shapes(b, null_out ? nullptr : out, capacity > 8 && !null_out ? 8 : capacity);
+            break;
+        }
+        default: {
+            const i2d_body_id b = pick_body(in);
+            i2d_body_is_valid(b);
+            i2d_body_get_world(b);
+            i2d_body_get_type(b);
+            i2d_body_get_rotation(b);
+            i2d_body_get_mass(b);
+            i2d_body_get_rotational_inertia(b);
+            i2d_body_get_world_center_of_mass(b);
+            i2d_body_get_local_center_of_mass(b);
+            i2d_body_get_world_point(b, in.vec2());
+            i2d_body_get_local_point(b, in.vec2());
+            i2d_body_get_world_point_velocity(b, in.vec2());
+            i2d_body_is_awake(b);
+            i2d_body_get_user_data(b);
+            i2d_body_get_shape_count(b);
+            check_body_finite(b);
+            break;
+        }
+    }
+}
+
+void run_shape_call(FuzzInput& in, uint8_t op) {
+    switch (op) {
+        case 0: case 1: case 2: case 3: case 4: case 5: {
+            const i2d_body_id b = pick_body(in);
+            const i2d_shape_def def = shape_def(in);
+            const i2d_shape_def* d = maybe_null(in, def);
+            if (g_trace) {
+                std::fprintf(stderr, "  shape def: density %g friction %g restitution %g rolling %g tangent %g\n",
+                             def.density, def.friction, def.restitution, def.rolling_resistance, def.tangent_speed);
+            }
+            i2d_shape_id s = I2D_NULL_SHAPE_ID;
+            if (op == 0) {
+                const i2d_circle c{in.small_vec2(), in.small_real()};
+                s = i2d_shape_create_circle(b, d, in.byte() < 245 ? &c : nullptr);
+            } else if (op == 1) {
+                s = i2d_shape_create_box(b, d, in.small_real(), in.small_real());
+            } else if (op == 2) {
+                const float hw = in.small_real(), hh = in.small_real();
+                const i2d_vec2 center = in.small_vec2();
+                s = i2d_shape_create_offset_box(b, d, hw, hh, center, i2d_make_rot(in.real()));
+            } else if (op == 3) {
+                i2d_vec2 points[10];
+                for (auto& p : points) {
+                    p = in.small_vec2();
+                }
+                const int32_t count = in.flag() ? in.count(10) : static_cast<int32_t>(in.u32());
+                s = i2d_shape_create_polygon(b, d, in.byte() < 245 ? points : nullptr, count > 10 ? 10 : count);
+            } else if (op == 4) {
+                const i2d_polygon p = polygon(in);
+                s = i2d_shape_create_polygon_from(b, d, in.byte() < 245 ? &p : nullptr);
+            } else {
+                const i2d_vec2 c1 = in.small_vec2(), c2 = in.small_vec2();
+                if (g_trace) {
+                    std::fprintf(stderr, "  capsule or segment (%a, %a) (%a, %a)\n", c1.x, c1.y, c2.x, c2.y);
+                }
+                s = in.flag() ? i2d_shape_create_capsule(b, d, c1, c2, in.small_real())
+                              : i2d_shape_create_segment(b, d, c1, c2);
+            }
+            keep(g_held->shapes, g_held->shape_count, max_shapes_held, s, in.byte());
+            break;
+        }
+        case 6: i2d_shape_destroy(pick_shape(in)); break;
+        case 7: i2d_shape_set_friction(pick_shape(in), in.real()); break;
+        case 8: i2d_shape_set_restitution(pick_shape(in), in.real()); break;
+        case 9: i2d_shape_set_filter(pick_shape(in), filter(in)); break;
+        case 10: i2d_shape_set_user_data(pick_shape(in), in.flag() ? g_held : nullptr); break;
+        default: {
+            const i2d_shape_id s = pick_shape(in);
+            i2d_shape_is_valid(s);
+            i2d_shape_get_body(s);
+            i2d_shape_get_type(s);
+            i2d_shape_get_circle(s);
+            i2d_shape_get_polygon(s);
+            i2d_shape_get_capsule(s);
+            i2d_shape_get_segment(s);
+            i2d_shape_get_aabb(s);
+            i2d_shape_get_density(s);
+            i2d_shape_get_friction(s);
+            i2d_shape_get_restitution(s);
+            i2d_shape_get_filter(s);
+            i2d_shape_is_sensor(s);
+            i2d_shape_get_user_data(s);
+            break;
+        }
+    }
+}
+
+i2d_query_filter query_filter(FuzzInput& in) {
+    i2d_query_filter f = i2d_default_query_filter();
+    if (in.flag()) {
+        f.category_bits = in.u64();
+        f.mask_bits = in.u64();
+    }
+    return f;
+}
+
+void run_query_call(FuzzInput& in, uint8_t op) {
+    CallbackContext context{&in, 0};
+    const i2d_world_id w = pick_world(in);
+    const i2d_aabb box{in.vec2(), in.vec2()};
+    switch (op) {
+        case 0:
+            i2d_world_overlap_aabb(w, box, query_filter(in), in.byte() < 245 ? overlap_callback : nullptr, &context);
+            break;
+        case 1:
+            i2d_world_overlap_point(w, in.vec2(), query_filter(in), in.byte() < 245 ? overlap_callback : nullptr,
+                                    &context);
+            break;
+        case 2: {
+            i2d_shape_id out[16];
+            const int32_t capacity = in.flag() ? in.count(16) : static_cast<int32_t>(in.u32());
+            const bool null_out = in.byte() > 230;
+            i2d_world_overlap_aabb_ids(w, box, query_filter(in), null_out ? nullptr : out,
+                                       capacity > 16 && !null_out ? 16 : capacity);
+            break;
+        }
+        case 3: {
+            const i2d_ray_result r = i2d_world_cast_ray_closest(w, in.vec2(), in.vec2(), query_filter(in));
+            if (r.hit && (!finite2(r.point) || !finite2(r.normal))) {
+                fail("non-finite closest ray hit", r.point.x, r.fraction);
+            }
+            break;
+        }
+        default:
+            i2d_world_cast_ray(w, in.vec2(), in.vec2(), query_filter(in), in.byte() < 245 ? ray_callback : nullptr,
+                               &context);
+            break;
+    }
+}
+
+// The world-free functions: any input, never a crash.
+void run_pure_call(FuzzInput& in, uint8_t op) {
+    const i2d_circle circle{in.vec2(), in.real()};
+    const i2d_capsule capsule{in.vec2(), in.vec2(), in.real()};
+    const i2d_segment segment{in.vec2(), in.vec2()};
+    const i2d_polygon poly = polygon(in);
+    const i2d_transform xfa = transform(in), xfb = transform(in);
+    switch (op) {
+        case 0: i2d_collide_circles(circle, i2d_circle{in.vec2(), in.real()}); break;
+        case 1: i2d_collide_aabbs(i2d_aabb{in.vec2(), in.vec2()}, i2d_aabb{in.vec2(), in.vec2()}); break;
+        case 2: i2d_collide_aabb_circle(i2d_aabb{in.vec2(), in.vec2()}, circle); break;
+        case 3: i2d_collide_capsule_circle(&capsule, xfa, &circle, xfb); break;
+        case 4: i2d_collide_segment_circle(&segment, xfa, &circle, xfb); break;
+        case 5: i2d_collide_polygon_circle(&poly, xfa, in.flag() ? &circle : nullptr, xfb); break;
+        case 6: i2d_collide_capsules(&capsule, xfa, &capsule, xfb); break;
+        case 7: i2d_collide_segment_capsule(&segment, xfa, &capsule, xfb); break;
+        case 8: i2d_collide_polygon_capsule(&poly, xfa, &capsule, xfb); break;
+        case 9: i2d_collide_segment_polygon(&segment, xfa, &poly, xfb); break;
+        case 10: i2d_collide_polygons(&poly, xfa, in.flag() ? &poly : nullptr, xfb); break;
+        case 11: i2d_compute_circle_mass(&circle, in.real()); break;
+        case 12: i2d_compute_capsule_mass(&capsule, in.real()); break;
+        case 13: i2d_compute_polygon_mass(in.flag() ? &poly : nullptr, in.real()); break;
+        case 14: i2d_ray_cast_circle(&circle, xfa, in.vec2(), in.vec2()); break;
+        case 15: i2d_ray_cast_capsule(&capsule, xfa, in.vec2(), in.vec2()); break;
+        case 16: i2d_ray_cast_segment(&segment, xfa, in.vec2(), in.vec2()); break;
+        case 17: i2d_ray_cast_polygon(&poly, xfa, in.vec2(), in.vec2()); break;
+        case 18: i2d_make_offset_box(in.real(), in.real(), in.vec2(), i2d_rot{in.real(), in.real()}); break;
+        default: {
+            i2d_rot_get_angle(i2d_rot{in.real(), in.real()});
+            const i2d_rot q = i2d_make_rot(in.real());
+            i2d_version();
+            i2d_last_status();
+            i2d_last_error_message();
+            if (!std::isfinite(q.c) || !std::isfinite(q.s)) {
+                // i2d_make_rot refuses non-finite angles with the identity.
+                fail("i2d_make_rot returned a non-finite rotation", q.c, q.s);
+            }
+            break;
+        }
+    }
+}
+
+void run_program(FuzzInput& in) {
+    int steps_left = 64;  // bounds the run time of one input
+    while (!in.empty()) {
+        const uint8_t op = in.byte();
+        const uint8_t group = op % 6;
+        const uint8_t sub = static_cast<uint8_t>(op / 6);
+        if (g_trace) {
+            std::fprintf(stderr, "last status %s %s\nop group %d sub %d\n", i2d_status_string(i2d_last_status()),
+                         i2d_last_error_message(), group, sub);
+            trace_bodies();
+        }
+        if (group == 0) {
+            if (sub % 7 == 2 && --steps_left < 0) {
+                continue;
+            }
+            run_world_call(in, sub % 7);
+        } else if (group == 1 || group == 2) {
+            run_body_call(in, sub % 14);
+        } else if (group == 3) {
+            run_shape_call(in, sub % 12);
+        } else if (group == 4) {
+            run_query_call(in, sub % 5);
+        } else {
+            run_pure_call(in, sub % 20);
+        }
+    }
+}
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+    Held held;
+    g_held = &held;
+    FuzzInput in(data, size);
+    run_program(in);
+    check_all_finite();
+    for (int i = 0; i < held.created_count; ++i) {
+        i2d_world_destroy(held.created[i]);  // live ones are freed, destroyed ones refused
+    }
+    g_held = nullptr;
+    return 0;
+}
