@@ -37,6 +37,21 @@
 /** The version of the library actually loaded; compare with I2D_VERSION at start-up. */
 I2D_API uint32_t i2d_version(void);
 
+/** The size and alignment, in bytes, of one public struct as the library was compiled. */
+typedef struct i2d_struct_info {
+    const char* name; /**< the struct's C name, e.g. "i2d_body_def" */
+    int32_t size;     /**< sizeof */
+    int32_t align;    /**< alignof */
+} i2d_struct_info;
+
+/** Self-description for bindings: points *out at a static table describing every public
+ *  struct (i2d_vec2 ... i2d_struct_info itself) and returns how many rows it has. A
+ *  binding that declares the structs itself (ctypes, cffi, P/Invoke, ...) compares its
+ *  own sizes and alignments with this table at load time and refuses a library that
+ *  differs, instead of corrupting memory. The table lives as long as the library; out
+ *  may be NULL to ask only for the count. */
+I2D_API int32_t i2d_get_struct_infos(const i2d_struct_info** out);
+
 /** What a call did. Calls that act return it; every call also records it per thread. */
 typedef enum i2d_status {
     I2D_OK = 0,
