@@ -2,10 +2,10 @@
 """Body: a value handle for a rigid body."""
 
 import ctypes as C
-from typing import TYPE_CHECKING, Any, Dict, List, Sequence
+from typing import TYPE_CHECKING, Any, Dict, List, Optional, Sequence
 
 from ._native import apply_settings, check, check_last, lib, pair, rot, vec2
-from ._structs import Circle, Vec2
+from ._structs import Circle, Rot, Vec2
 from .shape import Shape
 from .types import BodyType, Vec
 
@@ -93,9 +93,13 @@ class Body:
     def angle(self, value: float) -> None:
         check(lib.i2d_body_set_transform(self._id, lib.i2d_body_get_position(self._id), rot(value)))
 
-    def set_transform(self, position: Sequence[float], angle: float) -> None:
-        """Teleports the body: origin at position, turned by angle (radians)."""
-        check(lib.i2d_body_set_transform(self._id, vec2(position), rot(angle)))
+    def set_transform(
+        self, position: Sequence[float], angle: float = 0.0, rotation: Optional[Sequence[float]] = None
+    ) -> None:
+        """Teleports the body: origin at position, turned by angle (radians), or by
+        rotation = (cosine, sine) when given (normalised within 1e-3)."""
+        q = Rot(*rotation) if rotation is not None else rot(angle)
+        check(lib.i2d_body_set_transform(self._id, vec2(position), q))
 
     @property
     def linear_velocity(self) -> Vec:

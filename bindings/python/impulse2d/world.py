@@ -2,7 +2,7 @@
 """World: owns everything in it; a context manager that destroys it on exit."""
 
 import ctypes as C
-from typing import Any, Dict, Iterable, List, Optional, Sequence, Tuple, Union
+from typing import Any, Callable, Dict, Iterable, List, Optional, Sequence, Tuple, Union
 
 from ._native import apply_settings, check, check_last, lib, pair, rot, vec2
 from ._structs import AABB, QueryFilter
@@ -202,17 +202,34 @@ class World:
             capacity = total
 
     def overlap_point(
-        self, point: Sequence[float], category_bits: int = _ALL_BITS, mask_bits: int = _ALL_BITS
+        self,
+        point: Sequence[float],
+        category_bits: int = _ALL_BITS,
+        mask_bits: int = _ALL_BITS,
+        visit: Optional[Callable[[Shape], bool]] = None,
     ) -> List[Shape]:
-        """Every shape that contains the point."""
+        """Every shape that contains the point. With visit, each is passed to it as it
+        is found (the world is locked meanwhile: changing it raises WorldLocked) and a
+        False return stops the query; an exception raised by visit stops it and is
+        raised again here."""
         found: List[Shape] = []
+        raised: List[BaseException] = []
 
         def collect(shape_id: int, _context: Any) -> bool:
-            found.append(self._shape(shape_id))
-            return True
+            shape = self._shape(shape_id)
+            found.append(shape)
+            if visit is None:
+                return True
+            try:
+                return visit(shape) is not False
+            except BaseException as error:  # never let Python unwind through C
+                raised.append(error)
+                return False
 
         callback = _OVERLAP_FN(collect)
         check(lib.i2d_world_overlap_point(self._id, vec2(point), _query_filter(category_bits, mask_bits), callback, None))
+        if raised:
+            raise raised[0]
         return found
 
     def cast_ray(
