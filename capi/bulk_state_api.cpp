@@ -6,10 +6,12 @@
 // so a refused call leaves both the caller's arrays and the world as they were. The
 // writes then go through the same World setters as the per-body calls, so waking and
 // the rules for static and fixed-rotation bodies are the same.
+#include <cmath>
 #include <cstdio>
 
 #include "boundary.hpp"
 #include "convert.hpp"
+#include "dynamics/constants.hpp"
 #include "geometry_checks.hpp"
 #include "registry.hpp"
 
@@ -64,7 +66,8 @@ bool valid_bodies(Call& call, i2d_world_id world_id, const i2d_body_id* bodies, 
     return true;
 }
 
-// "<array>[i]" for messages.
+// "<array>[i]" for messages; built only once an element is known to be bad, since
+// formatting it costs far more than checking it.
 struct ElementName {
     char text[48];
     ElementName(const char* array, int32_t i) { std::snprintf(text, sizeof text, "%s[%d]", array, i); }
@@ -72,23 +75,32 @@ struct ElementName {
 
 bool valid_velocities(Call& call, int32_t count, const i2d_vec2* linear, const float* angular) {
     for (int32_t i = 0; linear != nullptr && i < count; ++i) {
-        if (!call.finite(linear[i], ElementName("linear", i).text)) {
-            return false;
+        if (!(std::isfinite(linear[i].x) && std::isfinite(linear[i].y))) {
+            return call.finite(linear[i], ElementName("linear", i).text);
         }
     }
     for (int32_t i = 0; angular != nullptr && i < count; ++i) {
-        if (!call.finite(angular[i], ElementName("angular", i).text)) {
-            return false;
+        if (!std::isfinite(angular[i])) {
+            return call.finite(angular[i], ElementName("angular", i).text);
         }
     }
     return true;
 }
 
+// The per-body rules of i2d_body_set_transform, without formatting anything for a good
+// element: a finite position within range and a rotation close enough to unit length.
+bool plausible_transform(const i2d_transform& xf) {
+    const float length_sq = xf.q.c * xf.q.c + xf.q.s * xf.q.s;
+    return std::isfinite(xf.p.x) && std::isfinite(xf.p.y) && std::fabs(xf.p.x) <= max_coordinate &&
+           std::fabs(xf.p.y) <= max_coordinate && std::isfinite(xf.q.c) && std::isfinite(xf.q.s) &&
+           std::fabs(length_sq - 1.0f) <= rotation_normalization_tolerance;
+}
+
 bool valid_transforms(Call& call, int32_t count, const i2d_transform* in) {
     for (int32_t i = 0; i < count; ++i) {
         Rot unused;
-        if (!call.coordinate(in[i].p, ElementName("transforms", i).text) ||
-            !normalized_rotation(call, in[i].q, ElementName("transforms", i).text, unused)) {
+        if (!plausible_transform(in[i]) && (!call.coordinate(in[i].p, ElementName("transforms", i).text) ||
+                                            !normalized_rotation(call, in[i].q, ElementName("transforms", i).text, unused))) {
             return false;
         }
     }
