@@ -29,7 +29,7 @@
 #define I2D_API I2D_EXTERN_C I2D_EXPORT
 
 #define I2D_VERSION_MAJOR 0
-#define I2D_VERSION_MINOR 1
+#define I2D_VERSION_MINOR 2
 #define I2D_VERSION_PATCH 0
 /** Packed as (major << 16) | (minor << 8) | patch, the same packing as i2d_version(). */
 #define I2D_VERSION ((I2D_VERSION_MAJOR << 16) | (I2D_VERSION_MINOR << 8) | I2D_VERSION_PATCH)
