@@ -7,6 +7,7 @@
 
 #include "boundary.hpp"
 #include "convert.hpp"
+#include "geometry_checks.hpp"
 #include "dynamics/constants.hpp"
 #include "math/math.hpp"
 
@@ -14,22 +15,6 @@ using namespace i2d;
 using namespace i2d::capi;
 
 namespace {
-
-// A caller's rotation must be nearly unit length; it is stored exactly normalised so
-// that rounding in the caller's cos/sin never scales a body.
-bool normalized_rotation(Call& call, i2d_rot q, const char* what, Rot& out) {
-    if (!call.finite(q.c, what) || !call.finite(q.s, what)) {
-        return false;
-    }
-    const float length_sq = q.c * q.c + q.s * q.s;
-    if (!(std::fabs(length_sq - 1.0f) <= rotation_normalization_tolerance)) {
-        return call.fail(I2D_ERR_INVALID_ARGUMENT,
-                         "%s (c=%g, s=%g) is not a unit rotation (c^2 + s^2 = %g); build it with i2d_make_rot", what,
-                         static_cast<double>(q.c), static_cast<double>(q.s), static_cast<double>(length_sq));
-    }
-    out = normalize(capi::to_core(q));
-    return true;
-}
 
 bool validate_body_def(Call& call, const i2d_body_def* def) {
     if (!call.not_null(def, "body def") || !call.cookie(def->internal_cookie, "body_def")) {

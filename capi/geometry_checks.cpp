@@ -8,9 +8,27 @@
 #include <cmath>
 
 #include "collision/collision_constants.hpp"
+#include "convert.hpp"
 #include "dynamics/constants.hpp"
+#include "math/math.hpp"
 
 namespace i2d::capi {
+
+// A caller's rotation must be nearly unit length; it is stored exactly normalised so
+// that rounding in the caller's cos/sin never scales a body.
+bool normalized_rotation(Call& call, i2d_rot q, const char* what, Rot& out) {
+    if (!call.finite(q.c, what) || !call.finite(q.s, what)) {
+        return false;
+    }
+    const float length_sq = q.c * q.c + q.s * q.s;
+    if (!(std::fabs(length_sq - 1.0f) <= rotation_normalization_tolerance)) {
+        return call.fail(I2D_ERR_INVALID_ARGUMENT,
+                         "%s (c=%g, s=%g) is not a unit rotation (c^2 + s^2 = %g); build it with i2d_make_rot", what,
+                         static_cast<double>(q.c), static_cast<double>(q.s), static_cast<double>(length_sq));
+    }
+    out = normalize(capi::to_core(q));
+    return true;
+}
 
 bool valid_circle(Call& call, const i2d_circle& c, const char* what) {
     return call.coordinate(c.center, what) && valid_radius(call, c.radius, what);

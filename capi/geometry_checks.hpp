@@ -8,6 +8,8 @@
 
 namespace i2d::capi {
 
+/// A rotation within 1e-3 of unit length, normalised exactly into out.
+bool normalized_rotation(Call& call, i2d_rot q, const char* what, Rot& out);
 bool valid_circle(Call& call, const i2d_circle& c, const char* what);
 bool valid_aabb(Call& call, const i2d_aabb& a, const char* what);
 /// valid_aabb and within the pure functions' range (|coordinate| <= max_coordinate).

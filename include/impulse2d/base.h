@@ -29,13 +29,28 @@
 #define I2D_API I2D_EXTERN_C I2D_EXPORT
 
 #define I2D_VERSION_MAJOR 0
-#define I2D_VERSION_MINOR 1
+#define I2D_VERSION_MINOR 2
 #define I2D_VERSION_PATCH 0
 /** Packed as (major << 16) | (minor << 8) | patch, the same packing as i2d_version(). */
 #define I2D_VERSION ((I2D_VERSION_MAJOR << 16) | (I2D_VERSION_MINOR << 8) | I2D_VERSION_PATCH)
 
 /** The version of the library actually loaded; compare with I2D_VERSION at start-up. */
 I2D_API uint32_t i2d_version(void);
+
+/** The size and alignment, in bytes, of one public struct as the library was compiled. */
+typedef struct i2d_struct_info {
+    const char* name; /**< the struct's C name, e.g. "i2d_body_def" */
+    int32_t size;     /**< sizeof */
+    int32_t align;    /**< alignof */
+} i2d_struct_info;
+
+/** Self-description for bindings: points *out at a static table describing every public
+ *  struct (i2d_vec2 ... i2d_struct_info itself) and returns how many rows it has. A
+ *  binding that declares the structs itself (ctypes, cffi, P/Invoke, ...) compares its
+ *  own sizes and alignments with this table at load time and refuses a library that
+ *  differs, instead of corrupting memory. The table lives as long as the library; out
+ *  may be NULL to ask only for the count. */
+I2D_API int32_t i2d_get_struct_infos(const i2d_struct_info** out);
 
 /** What a call did. Calls that act return it; every call also records it per thread. */
 typedef enum i2d_status {

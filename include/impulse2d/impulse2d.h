@@ -154,6 +154,37 @@ I2D_API int32_t i2d_body_get_shape_count(i2d_body_id body);
 /** Fills out with up to capacity shape ids; returns how many the body has. */
 I2D_API int32_t i2d_body_get_shapes(i2d_body_id body, i2d_shape_id* out, int32_t capacity);
 
+/* ---- Bulk state: many bodies per call ------------------------------------------- */
+/* For bindings and tools that read or write thousands of bodies per frame: one call
+ * instead of one per body. Every call takes `count` body ids of `world` and arrays of at
+ * least `count` elements; it reads and writes only the first `count` elements. Each id is
+ * checked first: a null, stale or foreign id (of another world) or a wrong kind stops
+ * the call with I2D_ERR_INVALID_HANDLE and a message naming its index ("bodies[7]: ..."),
+ * and a bad value stops it with I2D_ERR_INVALID_ARGUMENT naming the element. A refused
+ * call writes nothing at all: neither the output arrays nor the world. count 0 does
+ * nothing (the pointers may then be NULL); a negative count is refused. */
+
+/** Copies the transforms of bodies[0..count) into out[0..count). */
+I2D_API i2d_status i2d_world_get_body_transforms(i2d_world_id world, const i2d_body_id* bodies, int32_t count,
+                                                 i2d_transform* out);
+/** Copies the velocities of bodies[0..count): linear (m/s, of the centre of mass) into
+ *  linear, angular (rad/s) into angular. Either array may be NULL to skip it. */
+I2D_API i2d_status i2d_world_get_body_velocities(i2d_world_id world, const i2d_body_id* bodies, int32_t count,
+                                                 i2d_vec2* linear, float* angular);
+/** Sets the velocities of bodies[0..count), as i2d_body_set_linear_velocity and
+ *  i2d_body_set_angular_velocity do one by one: finite values only, ignored for static
+ *  (and, for spin, fixed-rotation) bodies but still checked, a non-zero velocity wakes a
+ *  sleeping body. Either array may be NULL to leave that part unchanged. A body listed
+ *  twice gets its last values. Refused inside a query callback (I2D_ERR_WORLD_LOCKED). */
+I2D_API i2d_status i2d_world_set_body_velocities(i2d_world_id world, const i2d_body_id* bodies, int32_t count,
+                                                 const i2d_vec2* linear, const float* angular);
+/** Teleports bodies[0..count) as i2d_body_set_transform does one by one: positions
+ *  within 1e9 m of the origin, rotations normalised within 1e-3 (stored exactly
+ *  normalised); each moved body wakes with what touches it. Refused inside a query
+ *  callback. */
+I2D_API i2d_status i2d_world_set_body_transforms(i2d_world_id world, const i2d_body_id* bodies, int32_t count,
+                                                 const i2d_transform* in);
+
 /* ---- Shapes --------------------------------------------------------------------- */
 
 /** A circle in the body frame. Radius in [0.0001, 100000] m. */

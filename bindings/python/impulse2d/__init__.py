@@ -1,0 +1,88 @@
+# SPDX-License-Identifier: MIT
+"""impulse2d: a 2D rigid-body physics engine, through its C library.
+
+    import impulse2d
+
+    with impulse2d.World(gravity=(0, -10)) as world:
+        ground = world.create_body(impulse2d.BodyType.STATIC, position=(0, -1))
+        ground.create_box(50, 1)
+        ball = world.create_body(position=(0, 4))
+        ball.create_circle(0.5, restitution=0.5)
+        for _ in range(120):
+            world.step(1 / 60, 4)
+        print(ball.position)
+
+Objects: World (owns everything; a context manager), Body and Shape (value handles).
+Errors come back as exceptions carrying the library's message: InvalidArgument,
+InvalidHandle, WorldLocked, CapacityError, OutOfMemory (all Impulse2DError).
+Bulk state (World.transforms, velocities, set_transforms, set_velocities) reads and
+writes many bodies per call through NumPy arrays.
+
+The native library is found through IMPULSE2D_LIBRARY, next to this package, in the
+source tree's build directories or where ``cmake --install`` put it; its struct layouts
+are checked at import, and a mismatched library is refused (LayoutMismatch).
+"""
+
+from ._native import lib as _lib
+from ._library import ENVIRONMENT_VARIABLE, version_string as _version_string
+from .body import Body
+from .errors import (
+    CapacityError,
+    Impulse2DError,
+    InvalidArgument,
+    InvalidHandle,
+    LayoutMismatch,
+    LibraryError,
+    OutOfMemory,
+    WorldLocked,
+)
+from .shape import Shape
+from .types import (
+    BodyMove,
+    BodyType,
+    ContactBegin,
+    ContactEnd,
+    Counters,
+    RayHit,
+    SensorBegin,
+    SensorEnd,
+    ShapeType,
+)
+from .world import World
+
+__version__ = "0.2.0"
+#: The version of the loaded native library, "major.minor.patch".
+library_version: str = _version_string(_lib)
+#: Path of the loaded native library.
+library_path: str = _lib._impulse2d_path
+
+STATIC, KINEMATIC, DYNAMIC = BodyType.STATIC, BodyType.KINEMATIC, BodyType.DYNAMIC
+
+__all__ = [
+    "World",
+    "Body",
+    "Shape",
+    "BodyType",
+    "ShapeType",
+    "STATIC",
+    "KINEMATIC",
+    "DYNAMIC",
+    "ContactBegin",
+    "ContactEnd",
+    "SensorBegin",
+    "SensorEnd",
+    "BodyMove",
+    "RayHit",
+    "Counters",
+    "Impulse2DError",
+    "InvalidArgument",
+    "InvalidHandle",
+    "WorldLocked",
+    "CapacityError",
+    "OutOfMemory",
+    "LibraryError",
+    "LayoutMismatch",
+    "ENVIRONMENT_VARIABLE",
+    "library_version",
+    "library_path",
+]

@@ -1,0 +1,214 @@
+# SPDX-License-Identifier: MIT
+"""Finding, loading and checking libimpulse2d, and declaring the C signatures.
+
+Where the library is looked for, first match wins:
+1. the file named by the environment variable IMPULSE2D_LIBRARY;
+2. next to this package (``pip install`` copies a built library there);
+3. the build directories of the source tree this package sits in (build*/capi/);
+4. where ``cmake --install`` puts it: the system's library search path and the
+   usual prefixes (/usr/local/lib, /usr/lib, ~/.local/lib, ...).
+
+Ids cross the boundary as plain 64-bit integers. An id is a C struct holding one
+uint64_t, which every 64-bit ABI the library supports (x86-64 System V and Windows,
+AArch64) passes and returns exactly like a uint64_t; ctypes handles integers much
+faster than structs. 32-bit platforms return such structs differently, so they are
+refused at load.
+"""
+
+import ctypes as C
+import ctypes.util
+import glob
+import os
+import sys
+from typing import List, Optional
+
+from . import _layout
+from ._structs import (
+    AABB,
+    BodyDef,
+    BodyEvents,
+    Capsule,
+    Circle,
+    ContactEvents,
+    Filter,
+    Polygon,
+    Profile,
+    QueryFilter,
+    RayResult,
+    Rot,
+    Segment,
+    ShapeDef,
+    Transform,
+    Vec2,
+    WorldCounters,
+    WorldDef,
+)
+from .errors import LibraryError
+
+ENVIRONMENT_VARIABLE = "IMPULSE2D_LIBRARY"
+
+_ID = C.c_uint64
+_STATUS = C.c_int32
+_PTR = C.c_void_p  # arrays passed as addresses (NumPy's arr.ctypes.data)
+_OVERLAP_FN = C.CFUNCTYPE(C.c_bool, _ID, C.c_void_p)
+
+SIGNATURES = {
+    "i2d_version": (C.c_uint32, []),
+    "i2d_status_string": (C.c_char_p, [C.c_int32]),
+    "i2d_last_status": (_STATUS, []),
+    "i2d_last_error_message": (C.c_char_p, []),
+    "i2d_default_world_def": (WorldDef, []),
+    "i2d_default_body_def": (BodyDef, []),
+    "i2d_default_shape_def": (ShapeDef, []),
+    "i2d_default_query_filter": (QueryFilter, []),
+    "i2d_default_filter": (Filter, []),
+    "i2d_make_rot": (Rot, [C.c_float]),
+    "i2d_rot_get_angle": (C.c_float, [Rot]),
+    # world
+    "i2d_world_create": (_ID, [C.POINTER(WorldDef)]),
+    "i2d_world_destroy": (_STATUS, [_ID]),
+    "i2d_world_is_valid": (C.c_bool, [_ID]),
+    "i2d_world_step": (_STATUS, [_ID, C.c_float, C.c_int32]),
+    "i2d_world_set_gravity": (_STATUS, [_ID, Vec2]),
+    "i2d_world_get_gravity": (Vec2, [_ID]),
+    "i2d_world_get_counters": (WorldCounters, [_ID]),
+    "i2d_world_get_profile": (Profile, [_ID]),
+    "i2d_world_get_state_hash": (C.c_uint64, [_ID]),
+    "i2d_world_get_contact_events": (ContactEvents, [_ID]),
+    "i2d_world_get_sensor_events": (ContactEvents, [_ID]),
+    "i2d_world_get_body_events": (BodyEvents, [_ID]),
+    "i2d_world_overlap_aabb_ids": (C.c_int32, [_ID, AABB, QueryFilter, _PTR, C.c_int32]),
+    "i2d_world_overlap_point": (_STATUS, [_ID, Vec2, QueryFilter, _OVERLAP_FN, C.c_void_p]),
+    "i2d_world_cast_ray_closest": (RayResult, [_ID, Vec2, Vec2, QueryFilter]),
+    "i2d_world_get_body_transforms": (_STATUS, [_ID, _PTR, C.c_int32, _PTR]),
+    "i2d_world_get_body_velocities": (_STATUS, [_ID, _PTR, C.c_int32, _PTR, _PTR]),
+    "i2d_world_set_body_velocities": (_STATUS, [_ID, _PTR, C.c_int32, _PTR, _PTR]),
+    "i2d_world_set_body_transforms": (_STATUS, [_ID, _PTR, C.c_int32, _PTR]),
+    # bodies
+    "i2d_body_create": (_ID, [_ID, C.POINTER(BodyDef)]),
+    "i2d_body_destroy": (_STATUS, [_ID]),
+    "i2d_body_is_valid": (C.c_bool, [_ID]),
+    "i2d_body_get_world": (_ID, [_ID]),
+    "i2d_body_get_type": (C.c_int32, [_ID]),
+    "i2d_body_get_position": (Vec2, [_ID]),
+    "i2d_body_get_rotation": (Rot, [_ID]),
+    "i2d_body_get_transform": (Transform, [_ID]),
+    "i2d_body_set_transform": (_STATUS, [_ID, Vec2, Rot]),
+    "i2d_body_get_linear_velocity": (Vec2, [_ID]),
+    "i2d_body_set_linear_velocity": (_STATUS, [_ID, Vec2]),
+    "i2d_body_get_angular_velocity": (C.c_float, [_ID]),
+    "i2d_body_set_angular_velocity": (_STATUS, [_ID, C.c_float]),
+    "i2d_body_get_mass": (C.c_float, [_ID]),
+    "i2d_body_get_rotational_inertia": (C.c_float, [_ID]),
+    "i2d_body_get_world_center_of_mass": (Vec2, [_ID]),
+    "i2d_body_apply_force": (_STATUS, [_ID, Vec2, Vec2, C.c_bool]),
+    "i2d_body_apply_force_to_center": (_STATUS, [_ID, Vec2, C.c_bool]),
+    "i2d_body_apply_torque": (_STATUS, [_ID, C.c_float, C.c_bool]),
+    "i2d_body_apply_linear_impulse": (_STATUS, [_ID, Vec2, Vec2, C.c_bool]),
+    "i2d_body_apply_angular_impulse": (_STATUS, [_ID, C.c_float, C.c_bool]),
+    "i2d_body_is_awake": (C.c_bool, [_ID]),
+    "i2d_body_set_awake": (_STATUS, [_ID, C.c_bool]),
+    "i2d_body_get_shape_count": (C.c_int32, [_ID]),
+    "i2d_body_get_shapes": (C.c_int32, [_ID, _PTR, C.c_int32]),
+    # shapes
+    "i2d_shape_create_circle": (_ID, [_ID, C.POINTER(ShapeDef), C.POINTER(Circle)]),
+    "i2d_shape_create_box": (_ID, [_ID, C.POINTER(ShapeDef), C.c_float, C.c_float]),
+    "i2d_shape_create_offset_box": (_ID, [_ID, C.POINTER(ShapeDef), C.c_float, C.c_float, Vec2, Rot]),
+    "i2d_shape_create_polygon": (_ID, [_ID, C.POINTER(ShapeDef), C.POINTER(Vec2), C.c_int32]),
+    "i2d_shape_create_capsule": (_ID, [_ID, C.POINTER(ShapeDef), Vec2, Vec2, C.c_float]),
+    "i2d_shape_create_segment": (_ID, [_ID, C.POINTER(ShapeDef), Vec2, Vec2]),
+    "i2d_shape_destroy": (_STATUS, [_ID]),
+    "i2d_shape_is_valid": (C.c_bool, [_ID]),
+    "i2d_shape_get_body": (_ID, [_ID]),
+    "i2d_shape_get_type": (C.c_int32, [_ID]),
+    "i2d_shape_get_circle": (Circle, [_ID]),
+    "i2d_shape_get_polygon": (Polygon, [_ID]),
+    "i2d_shape_get_capsule": (Capsule, [_ID]),
+    "i2d_shape_get_segment": (Segment, [_ID]),
+    "i2d_shape_get_aabb": (AABB, [_ID]),
+    "i2d_shape_get_density": (C.c_float, [_ID]),
+    "i2d_shape_get_friction": (C.c_float, [_ID]),
+    "i2d_shape_set_friction": (_STATUS, [_ID, C.c_float]),
+    "i2d_shape_get_restitution": (C.c_float, [_ID]),
+    "i2d_shape_set_restitution": (_STATUS, [_ID, C.c_float]),
+    "i2d_shape_get_filter": (Filter, [_ID]),
+    "i2d_shape_set_filter": (_STATUS, [_ID, Filter]),
+    "i2d_shape_is_sensor": (C.c_bool, [_ID]),
+}
+
+_LIBRARY_NAMES = ("libimpulse2d.so", "libimpulse2d.dylib", "impulse2d.dll")
+
+
+def _package_dir() -> str:
+    return os.path.dirname(os.path.abspath(__file__))
+
+
+def candidate_paths() -> List[str]:
+    """Every place the library is looked for, in order (see the module docstring)."""
+    paths: List[str] = []
+    from_env = os.environ.get(ENVIRONMENT_VARIABLE)
+    if from_env:
+        return [from_env]
+    here = _package_dir()
+    paths += [os.path.join(here, name) for name in _LIBRARY_NAMES]
+    # bindings/python/impulse2d -> the repository root, when run from a source tree
+    root = os.path.dirname(os.path.dirname(os.path.dirname(here)))
+    for build in sorted(glob.glob(os.path.join(root, "build*", "capi"))):
+        paths += [os.path.join(build, name) for name in _LIBRARY_NAMES]
+    found = ctypes.util.find_library("impulse2d")
+    if found:
+        paths.append(found)
+    prefixes = [sys.prefix, "/usr/local", "/usr", os.path.expanduser("~/.local")]
+    for prefix in prefixes:
+        for libdir in ("lib", "lib64", "lib/x86_64-linux-gnu", "lib/aarch64-linux-gnu"):
+            paths += [os.path.join(prefix, libdir, name) for name in _LIBRARY_NAMES]
+    return paths
+
+
+def find_library() -> str:
+    """The path of the library to load; LibraryError listing where it looked if none."""
+    paths = candidate_paths()
+    for path in paths:
+        if os.path.sep not in path or os.path.exists(path):
+            return path
+    raise LibraryError(
+        "libimpulse2d was not found. Build it (cmake -S . -B build && cmake --build build), "
+        "then either reinstall this package from bindings/python, or set %s to the library's "
+        "path. Looked in:\n  %s" % (ENVIRONMENT_VARIABLE, "\n  ".join(paths))
+    )
+
+
+def declare(lib: C.CDLL) -> C.CDLL:
+    """Sets restype and argtypes of every function the package calls."""
+    for name, (restype, argtypes) in SIGNATURES.items():
+        fn = getattr(lib, name)
+        fn.restype = restype
+        fn.argtypes = argtypes
+    return lib
+
+
+def version_string(lib: C.CDLL) -> str:
+    lib.i2d_version.restype = C.c_uint32
+    v = lib.i2d_version()
+    return "%d.%d.%d" % (v >> 16, (v >> 8) & 0xFF, v & 0xFF)
+
+
+def load(path: Optional[str] = None, layouts: Optional[_layout.Layouts] = None) -> C.CDLL:
+    """Opens the library, refuses it unless its structs match this package (layouts
+    overrides what the library reports, for tests), and declares its functions."""
+    if C.sizeof(C.c_void_p) != 8:
+        raise LibraryError("impulse2d's Python package needs a 64-bit Python")
+    path = path or find_library()
+    try:
+        lib = C.CDLL(path)
+    except OSError as error:
+        raise LibraryError("cannot load %s: %s" % (path, error)) from error
+    if not hasattr(lib, "i2d_get_struct_infos"):
+        raise LibraryError(
+            "%s (impulse2d %s) is too old for this package: it does not describe its structs "
+            "(i2d_get_struct_infos)" % (path, version_string(lib))
+        )
+    reported = _layout.read_struct_infos(lib) if layouts is None else layouts
+    _layout.check_layouts(reported, path, version_string(lib))
+    lib._impulse2d_path = path
+    return declare(lib)

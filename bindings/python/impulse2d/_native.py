@@ -1,0 +1,69 @@
+# SPDX-License-Identifier: MIT
+"""The loaded library and the helpers every wrapper uses to turn statuses into errors."""
+
+import ctypes as C
+from typing import Any, Dict, Sequence, Tuple
+
+from . import _library
+from ._structs import Filter, Rot, Vec2
+from .errors import error_for
+
+lib = _library.load()
+
+
+def last_error() -> Exception:
+    """The exception for the thread's last status (which must not be I2D_OK)."""
+    return error_for(lib.i2d_last_status(), (lib.i2d_last_error_message() or b"").decode())
+
+
+def check(status: int) -> None:
+    """Raises the exception mapped from a returned status, with the library's message."""
+    if status:
+        raise error_for(status, (lib.i2d_last_error_message() or b"").decode())
+
+
+def check_last() -> None:
+    """Raises if the last call failed: for getters, whose failure value is a zero."""
+    status = lib.i2d_last_status()
+    if status:
+        raise error_for(status, (lib.i2d_last_error_message() or b"").decode())
+
+
+def vec2(value: Sequence[float]) -> Vec2:
+    x, y = value
+    return Vec2(x, y)
+
+
+def rot(angle: float) -> Rot:
+    return lib.i2d_make_rot(angle)
+
+
+def make_filter(value: Any) -> Filter:
+    """A Filter from (category_bits, mask_bits[, group_index]) or a Filter."""
+    if isinstance(value, Filter):
+        return value
+    parts = tuple(value)
+    return Filter(parts[0], parts[1], parts[2] if len(parts) > 2 else 0)
+
+
+def apply_settings(def_struct: C.Structure, settings: Dict[str, Any], kind: str) -> None:
+    """Copies keyword settings into a def's fields of the same name, converting pairs
+    to vectors; unknown names are a TypeError that lists the known ones."""
+    fields = {name: ctype for name, ctype in def_struct._fields_ if name not in ("internal_cookie", "user_data")}
+    for name, value in settings.items():
+        if name not in fields:
+            raise TypeError(
+                "unknown %s setting %r; known settings: %s" % (kind, name, ", ".join(sorted(fields)))
+            )
+        ctype = fields[name]
+        if ctype is Vec2:
+            value = vec2(value)
+        elif ctype is Rot:
+            value = value if isinstance(value, Rot) else rot(value)
+        elif ctype is Filter:
+            value = make_filter(value)
+        setattr(def_struct, name, value)
+
+
+def pair(v: Vec2) -> Tuple[float, float]:
+    return (v.x, v.y)

@@ -1,0 +1,212 @@
+# SPDX-License-Identifier: MIT
+"""ctypes declarations of the public C structs (include/impulse2d/*.h).
+
+Every struct declared here is checked against the loaded library's own size and
+alignment (i2d_get_struct_infos) before any call is made: see _layout.py.
+Ids are passed as plain 64-bit integers (see _library.py), so the id structs are
+declared only to check their layout.
+"""
+
+import ctypes as C
+
+
+class Vec2(C.Structure):
+    _fields_ = [("x", C.c_float), ("y", C.c_float)]
+
+
+class Rot(C.Structure):
+    _fields_ = [("c", C.c_float), ("s", C.c_float)]
+
+
+class Transform(C.Structure):
+    _fields_ = [("p", Vec2), ("q", Rot)]
+
+
+class AABB(C.Structure):
+    _fields_ = [("min", Vec2), ("max", Vec2)]
+
+
+class IdStruct(C.Structure):
+    _fields_ = [("bits", C.c_uint64)]
+
+
+class Filter(C.Structure):
+    _fields_ = [("category_bits", C.c_uint64), ("mask_bits", C.c_uint64), ("group_index", C.c_int32)]
+
+
+class QueryFilter(C.Structure):
+    _fields_ = [("category_bits", C.c_uint64), ("mask_bits", C.c_uint64)]
+
+
+class WorldDef(C.Structure):
+    _fields_ = [
+        ("gravity", Vec2),
+        ("contact_slop", C.c_float),
+        ("contact_hertz", C.c_float),
+        ("contact_damping_ratio", C.c_float),
+        ("contact_push_max_speed", C.c_float),
+        ("restitution_threshold", C.c_float),
+        ("maximum_linear_speed", C.c_float),
+        ("friction_mixing", C.c_int32),
+        ("restitution_mixing", C.c_int32),
+        ("enable_sleep", C.c_bool),
+        ("sleep_speed_threshold", C.c_float),
+        ("time_to_sleep", C.c_float),
+        ("simd_path", C.c_int32),
+        ("enable_contact_recycling", C.c_bool),
+        ("enable_profile", C.c_bool),
+        ("internal_cookie", C.c_uint32),
+    ]
+
+
+class BodyDef(C.Structure):
+    _fields_ = [
+        ("type", C.c_int32),
+        ("position", Vec2),
+        ("rotation", Rot),
+        ("linear_velocity", Vec2),
+        ("angular_velocity", C.c_float),
+        ("linear_damping", C.c_float),
+        ("angular_damping", C.c_float),
+        ("gravity_scale", C.c_float),
+        ("fixed_rotation", C.c_bool),
+        ("enable_sleep", C.c_bool),
+        ("is_bullet", C.c_bool),
+        ("user_data", C.c_void_p),
+        ("internal_cookie", C.c_uint32),
+    ]
+
+
+class ShapeDef(C.Structure):
+    _fields_ = [
+        ("density", C.c_float),
+        ("friction", C.c_float),
+        ("restitution", C.c_float),
+        ("rolling_resistance", C.c_float),
+        ("tangent_speed", C.c_float),
+        ("is_sensor", C.c_bool),
+        ("enable_contact_events", C.c_bool),
+        ("enable_sensor_events", C.c_bool),
+        ("filter", Filter),
+        ("user_data", C.c_void_p),
+        ("internal_cookie", C.c_uint32),
+    ]
+
+
+class WorldCounters(C.Structure):
+    _fields_ = [
+        (name, C.c_int32)
+        for name in (
+            "body_count",
+            "shape_count",
+            "contact_count",
+            "pair_count",
+            "static_tree_height",
+            "kinematic_tree_height",
+            "dynamic_tree_height",
+            "awake_body_count",
+            "sleeping_island_count",
+        )
+    ]
+
+
+class Profile(C.Structure):
+    _fields_ = [
+        (name, C.c_float) for name in ("step", "pairs", "collide", "solve", "update_bounds", "sleep", "events")
+    ]
+
+
+class ShapePair(C.Structure):
+    """i2d_contact_begin_event, i2d_contact_end_event and the sensor events: two ids."""
+
+    _fields_ = [("a", C.c_uint64), ("b", C.c_uint64)]
+
+
+class ContactEvents(C.Structure):
+    _fields_ = [
+        ("begin_events", C.POINTER(ShapePair)),
+        ("begin_count", C.c_int32),
+        ("end_events", C.POINTER(ShapePair)),
+        ("end_count", C.c_int32),
+    ]
+
+
+class BodyMoveEvent(C.Structure):
+    _fields_ = [("transform", Transform), ("body", C.c_uint64), ("user_data", C.c_void_p), ("fell_asleep", C.c_bool)]
+
+
+class BodyEvents(C.Structure):
+    _fields_ = [("move_events", C.POINTER(BodyMoveEvent)), ("move_count", C.c_int32)]
+
+
+class RayResult(C.Structure):
+    _fields_ = [
+        ("shape", C.c_uint64),
+        ("point", Vec2),
+        ("normal", Vec2),
+        ("fraction", C.c_float),
+        ("hit", C.c_bool),
+    ]
+
+
+class Circle(C.Structure):
+    _fields_ = [("center", Vec2), ("radius", C.c_float)]
+
+
+MAX_POLYGON_VERTICES = 8
+
+
+class Polygon(C.Structure):
+    _fields_ = [
+        ("vertices", Vec2 * MAX_POLYGON_VERTICES),
+        ("normals", Vec2 * MAX_POLYGON_VERTICES),
+        ("centroid", Vec2),
+        ("radius", C.c_float),
+        ("count", C.c_int32),
+    ]
+
+
+class Capsule(C.Structure):
+    _fields_ = [("center1", Vec2), ("center2", Vec2), ("radius", C.c_float)]
+
+
+class Segment(C.Structure):
+    _fields_ = [("point1", Vec2), ("point2", Vec2)]
+
+
+class StructInfo(C.Structure):
+    _fields_ = [("name", C.c_char_p), ("size", C.c_int32), ("align", C.c_int32)]
+
+
+# The C name of every struct above, for the layout check. A C struct the binding does
+# not use need not be listed; every one listed must match the library.
+DECLARED = {
+    "i2d_struct_info": StructInfo,
+    "i2d_world_id": IdStruct,
+    "i2d_body_id": IdStruct,
+    "i2d_shape_id": IdStruct,
+    "i2d_vec2": Vec2,
+    "i2d_rot": Rot,
+    "i2d_transform": Transform,
+    "i2d_aabb": AABB,
+    "i2d_filter": Filter,
+    "i2d_query_filter": QueryFilter,
+    "i2d_world_def": WorldDef,
+    "i2d_body_def": BodyDef,
+    "i2d_shape_def": ShapeDef,
+    "i2d_world_counters": WorldCounters,
+    "i2d_profile": Profile,
+    "i2d_contact_begin_event": ShapePair,
+    "i2d_contact_end_event": ShapePair,
+    "i2d_contact_events": ContactEvents,
+    "i2d_sensor_begin_event": ShapePair,
+    "i2d_sensor_end_event": ShapePair,
+    "i2d_sensor_events": ContactEvents,
+    "i2d_body_move_event": BodyMoveEvent,
+    "i2d_body_events": BodyEvents,
+    "i2d_ray_result": RayResult,
+    "i2d_circle": Circle,
+    "i2d_polygon": Polygon,
+    "i2d_capsule": Capsule,
+    "i2d_segment": Segment,
+}

@@ -1,0 +1,326 @@
+# SPDX-License-Identifier: MIT
+"""World: owns everything in it; a context manager that destroys it on exit."""
+
+import ctypes as C
+from typing import Any, Callable, Dict, Iterable, List, Optional, Sequence, Tuple, Union
+
+from ._native import apply_settings, check, check_last, lib, pair, rot, vec2
+from ._structs import AABB, QueryFilter
+from ._library import _OVERLAP_FN
+from .body import Body
+from .shape import Shape
+from .types import (
+    BodyMove,
+    BodyType,
+    ContactBegin,
+    ContactEnd,
+    Counters,
+    RayHit,
+    SensorBegin,
+    SensorEnd,
+    Vec,
+)
+
+try:
+    import numpy as np
+except ImportError:  # pragma: no cover - exercised only without NumPy
+    np = None
+
+BodyList = Union[Sequence[Body], "np.ndarray"]
+
+
+def _numpy() -> Any:
+    if np is None:
+        raise ImportError("the bulk state calls need NumPy (Debian: apt-get install python3-numpy)")
+    return np
+
+
+def _query_filter(category_bits: int, mask_bits: int) -> QueryFilter:
+    return QueryFilter(category_bits, mask_bits)
+
+
+_ALL_BITS = 0xFFFFFFFFFFFFFFFF
+
+
+class World:
+    """A simulated world. Use it as a context manager, or call destroy(); a World that
+    is garbage-collected while alive is destroyed then too.
+
+    >>> with impulse2d.World(gravity=(0, -10)) as world:
+    ...     ball = world.create_body(position=(0, 4))
+    ...     ball.create_circle(0.5)
+    ...     world.step(1 / 60, 4)
+
+    Settings are the C world def's fields (include/impulse2d/types.h), e.g.
+    contact_hertz, restitution_threshold, enable_sleep, time_to_sleep.
+    """
+
+    def __init__(self, gravity: Sequence[float] = (0.0, -10.0), **settings: Any) -> None:
+        self._id = 0
+        world_def = lib.i2d_default_world_def()
+        apply_settings(world_def, dict(settings, gravity=gravity), "world")
+        world_id = lib.i2d_world_create(C.byref(world_def))
+        if not world_id:
+            check_last()
+        self._id = world_id
+        self._user_data: Dict[int, Any] = {}
+
+    # ---- Lifetime ----------------------------------------------------------------------
+
+    def __enter__(self) -> "World":
+        return self
+
+    def __exit__(self, *exc: Any) -> None:
+        self.destroy()
+
+    def __del__(self) -> None:
+        if getattr(self, "_id", 0) and lib is not None:
+            lib.i2d_world_destroy(self._id)
+            self._id = 0
+
+    def destroy(self) -> None:
+        """Destroys the world and everything in it; their handles become invalid.
+        Destroying twice is harmless."""
+        if self._id:
+            world_id, self._id = self._id, 0
+            self._user_data.clear()
+            check(lib.i2d_world_destroy(world_id))
+
+    @property
+    def id(self) -> int:
+        """The world's 64-bit id (i2d_world_id.bits); 0 once destroyed."""
+        return self._id
+
+    @property
+    def is_valid(self) -> bool:
+        return bool(self._id) and bool(lib.i2d_world_is_valid(self._id))
+
+    def __repr__(self) -> str:
+        return "World(0x%016x)" % self._id if self._id else "World(destroyed)"
+
+    # ---- Stepping and settings -----------------------------------------------------------
+
+    def step(self, time_step: float = 1.0 / 60.0, substeps: int = 4) -> None:
+        """Advances the world by time_step seconds in substeps equal substeps."""
+        check(lib.i2d_world_step(self._id, time_step, substeps))
+
+    @property
+    def gravity(self) -> Vec:
+        g = lib.i2d_world_get_gravity(self._id)
+        check_last()
+        return (g.x, g.y)
+
+    @gravity.setter
+    def gravity(self, value: Sequence[float]) -> None:
+        check(lib.i2d_world_set_gravity(self._id, vec2(value)))
+
+    @property
+    def counters(self) -> Counters:
+        c = lib.i2d_world_get_counters(self._id)
+        check_last()
+        return Counters(*(getattr(c, name) for name in Counters._fields))
+
+    @property
+    def state_hash(self) -> int:
+        """64-bit hash of every transform, velocity and contact impulse."""
+        h = lib.i2d_world_get_state_hash(self._id)
+        check_last()
+        return h
+
+    # ---- Bodies ----------------------------------------------------------------------------
+
+    def create_body(
+        self,
+        type: BodyType = BodyType.DYNAMIC,
+        position: Sequence[float] = (0.0, 0.0),
+        angle: float = 0.0,
+        **settings: Any,
+    ) -> Body:
+        """Creates a body (dynamic unless type says otherwise) at position, turned by
+        angle (radians). Settings are the body def's fields: linear_velocity,
+        angular_velocity, linear_damping, angular_damping, gravity_scale,
+        fixed_rotation, enable_sleep, is_bullet."""
+        body_def = lib.i2d_default_body_def()
+        apply_settings(body_def, dict(settings, type=int(type), position=position, rotation=angle), "body")
+        body_id = lib.i2d_body_create(self._id, C.byref(body_def))
+        if not body_id:
+            check_last()
+        return Body(self, body_id)
+
+    # ---- Events ----------------------------------------------------------------------------
+
+    def _shape(self, shape_id: int) -> Shape:
+        return Shape(self, shape_id)
+
+    def contact_events(self) -> Tuple[List[ContactBegin], List[ContactEnd]]:
+        """(begin, end) events of the last step."""
+        e = lib.i2d_world_get_contact_events(self._id)
+        check_last()
+        begin = [ContactBegin(self._shape(e.begin_events[i].a), self._shape(e.begin_events[i].b)) for i in range(e.begin_count)]
+        end = [ContactEnd(self._shape(e.end_events[i].a), self._shape(e.end_events[i].b)) for i in range(e.end_count)]
+        return begin, end
+
+    def sensor_events(self) -> Tuple[List[SensorBegin], List[SensorEnd]]:
+        """(begin, end) sensor events of the last step."""
+        e = lib.i2d_world_get_sensor_events(self._id)
+        check_last()
+        begin = [SensorBegin(self._shape(e.begin_events[i].a), self._shape(e.begin_events[i].b)) for i in range(e.begin_count)]
+        end = [SensorEnd(self._shape(e.end_events[i].a), self._shape(e.end_events[i].b)) for i in range(e.end_count)]
+        return begin, end
+
+    def body_events(self) -> List[BodyMove]:
+        """Every body that moved during the last step."""
+        e = lib.i2d_world_get_body_events(self._id)
+        check_last()
+        moves = []
+        for i in range(e.move_count):
+            m = e.move_events[i]
+            xf = m.transform
+            moves.append(BodyMove(Body(self, m.body), (xf.p.x, xf.p.y), (xf.q.c, xf.q.s), bool(m.fell_asleep)))
+        return moves
+
+    # ---- Queries ---------------------------------------------------------------------------
+
+    def overlap_aabb(
+        self,
+        lower: Sequence[float],
+        upper: Sequence[float],
+        category_bits: int = _ALL_BITS,
+        mask_bits: int = _ALL_BITS,
+    ) -> List[Shape]:
+        """Every shape whose geometry overlaps the box from lower to upper."""
+        box = AABB(vec2(lower), vec2(upper))
+        qf = _query_filter(category_bits, mask_bits)
+        capacity = 64
+        while True:
+            ids = (C.c_uint64 * capacity)()
+            total = lib.i2d_world_overlap_aabb_ids(self._id, box, qf, C.addressof(ids), capacity)
+            if total < 0:
+                check_last()
+            if total <= capacity:
+                return [self._shape(ids[i]) for i in range(total)]
+            capacity = total
+
+    def overlap_point(
+        self,
+        point: Sequence[float],
+        category_bits: int = _ALL_BITS,
+        mask_bits: int = _ALL_BITS,
+        visit: Optional[Callable[[Shape], bool]] = None,
+    ) -> List[Shape]:
+        """Every shape that contains the point. With visit, each is passed to it as it
+        is found (the world is locked meanwhile: changing it raises WorldLocked) and a
+        False return stops the query; an exception raised by visit stops it and is
+        raised again here."""
+        found: List[Shape] = []
+        raised: List[BaseException] = []
+
+        def collect(shape_id: int, _context: Any) -> bool:
+            shape = self._shape(shape_id)
+            found.append(shape)
+            if visit is None:
+                return True
+            try:
+                return visit(shape) is not False
+            except BaseException as error:  # never let Python unwind through C
+                raised.append(error)
+                return False
+
+        callback = _OVERLAP_FN(collect)
+        check(lib.i2d_world_overlap_point(self._id, vec2(point), _query_filter(category_bits, mask_bits), callback, None))
+        if raised:
+            raise raised[0]
+        return found
+
+    def cast_ray(
+        self,
+        origin: Sequence[float],
+        translation: Sequence[float],
+        category_bits: int = _ALL_BITS,
+        mask_bits: int = _ALL_BITS,
+    ) -> Optional[RayHit]:
+        """The first shape along origin + t * translation, t in [0, 1], or None."""
+        r = lib.i2d_world_cast_ray_closest(
+            self._id, vec2(origin), vec2(translation), _query_filter(category_bits, mask_bits)
+        )
+        check_last()
+        if not r.hit:
+            return None
+        return RayHit(self._shape(r.shape), pair(r.point), pair(r.normal), r.fraction)
+
+    # ---- Bulk state: NumPy arrays, one call for many bodies -------------------------------
+
+    def body_ids(self, bodies: BodyList) -> "np.ndarray":
+        """The ids of bodies as a uint64 array. Build it once and pass it to the bulk
+        calls: they then cost nanoseconds per body instead of a Python loop."""
+        numpy = _numpy()
+        if isinstance(bodies, numpy.ndarray):
+            if bodies.dtype != numpy.uint64 or bodies.ndim != 1:
+                raise TypeError("body id arrays must be one-dimensional uint64 (world.body_ids(bodies))")
+            return numpy.ascontiguousarray(bodies)
+        return numpy.fromiter((b._id for b in bodies), dtype=numpy.uint64, count=len(bodies))
+
+    @staticmethod
+    def _output(numpy: Any, out: Optional["np.ndarray"], shape: Tuple[int, ...], name: str) -> "np.ndarray":
+        if out is None:
+            return numpy.empty(shape, dtype=numpy.float32)
+        if out.shape != shape or out.dtype != numpy.float32 or not out.flags.c_contiguous or not out.flags.writeable:
+            raise ValueError("%s must be a writable C-contiguous float32 array of shape %s" % (name, shape))
+        return out
+
+    @staticmethod
+    def _input(numpy: Any, values: Any, shape: Tuple[int, ...], name: str) -> "np.ndarray":
+        array = numpy.ascontiguousarray(values, dtype=numpy.float32)
+        if array.shape != shape:
+            raise ValueError("%s has shape %s; expected %s" % (name, array.shape, shape))
+        return array
+
+    def transforms(self, bodies: BodyList, out: Optional["np.ndarray"] = None) -> "np.ndarray":
+        """The transforms of bodies as an (n, 4) float32 array of rows [x, y, c, s]
+        (origin, cosine and sine of the angle). out, if given, is filled instead."""
+        numpy = _numpy()
+        ids = self.body_ids(bodies)
+        result = self._output(numpy, out, (len(ids), 4), "out")
+        check(lib.i2d_world_get_body_transforms(self._id, ids.ctypes.data, len(ids), result.ctypes.data))
+        return result
+
+    def velocities(
+        self, bodies: BodyList, linear_out: Optional["np.ndarray"] = None, angular_out: Optional["np.ndarray"] = None
+    ) -> Tuple["np.ndarray", "np.ndarray"]:
+        """(linear, angular): an (n, 2) float32 array of m/s and an (n,) float32 array
+        of rad/s."""
+        numpy = _numpy()
+        ids = self.body_ids(bodies)
+        linear = self._output(numpy, linear_out, (len(ids), 2), "linear_out")
+        angular = self._output(numpy, angular_out, (len(ids),), "angular_out")
+        check(
+            lib.i2d_world_get_body_velocities(
+                self._id, ids.ctypes.data, len(ids), linear.ctypes.data, angular.ctypes.data
+            )
+        )
+        return linear, angular
+
+    def set_transforms(self, bodies: BodyList, transforms: Any) -> None:
+        """Teleports bodies to the rows [x, y, c, s] of an (n, 4) array (rotations
+        normalised within 1e-3). All rows are checked before any body moves."""
+        numpy = _numpy()
+        ids = self.body_ids(bodies)
+        array = self._input(numpy, transforms, (len(ids), 4), "transforms")
+        check(lib.i2d_world_set_body_transforms(self._id, ids.ctypes.data, len(ids), array.ctypes.data))
+
+    def set_velocities(self, bodies: BodyList, linear: Any = None, angular: Any = None) -> None:
+        """Sets linear ((n, 2), m/s) and/or angular ((n,), rad/s) velocities, as the
+        per-body setters do (static bodies ignore them, non-zero values wake)."""
+        numpy = _numpy()
+        ids = self.body_ids(bodies)
+        lin = None if linear is None else self._input(numpy, linear, (len(ids), 2), "linear")
+        ang = None if angular is None else self._input(numpy, angular, (len(ids),), "angular")
+        check(
+            lib.i2d_world_set_body_velocities(
+                self._id,
+                ids.ctypes.data,
+                len(ids),
+                None if lin is None else lin.ctypes.data,
+                None if ang is None else ang.ctypes.data,
+            )
+        )

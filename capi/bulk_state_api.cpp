@@ -1,0 +1,182 @@
+// SPDX-License-Identifier: MIT
+// i2d_world_get/set_body_*: the state of many bodies per call, for bindings that would
+// otherwise cross the boundary once per body per frame.
+//
+// Every call checks all of its input before it writes anything (ids first, then values),
+// so a refused call leaves both the caller's arrays and the world as they were. The
+// writes then go through the same World setters as the per-body calls, so waking and
+// the rules for static and fixed-rotation bodies are the same.
+#include <cmath>
+#include <cstdio>
+
+#include "boundary.hpp"
+#include "convert.hpp"
+#include "dynamics/constants.hpp"
+#include "geometry_checks.hpp"
+#include "registry.hpp"
+
+using namespace i2d;
+using namespace i2d::capi;
+
+namespace {
+
+// Names a refused id by its place in the caller's array.
+bool explain_bad_body(Call& call, const WorldRef& w, i2d_body_id id, int32_t position) {
+    if (id.bits == 0) {
+        return call.fail(I2D_ERR_INVALID_HANDLE, "bodies[%d] is the null id", position);
+    }
+    const IdFields f = decode_id(id.bits);
+    if (f.kind != IdKind::body) {
+        return call.fail(I2D_ERR_INVALID_HANDLE, "bodies[%d] (0x%016llx) is not a body id", position,
+                         static_cast<unsigned long long>(id.bits));
+    }
+    if (f.world_slot != w.id.world_slot || f.world_generation != w.id.world_generation) {
+        return find_world(f.world_slot, f.world_generation) == nullptr
+                   ? call.fail(I2D_ERR_INVALID_HANDLE, "bodies[%d]: the body's world was destroyed", position)
+                   : call.fail(I2D_ERR_INVALID_HANDLE, "bodies[%d] belongs to another world", position);
+    }
+    return call.fail(I2D_ERR_INVALID_HANDLE, "bodies[%d] is stale: the body was destroyed", position);
+}
+
+// The body's slot when the id names a live body of this world (the fast path every id
+// of a good call takes: no registry lookup).
+inline int32_t body_slot(const WorldRef& w, i2d_body_id id) {
+    const IdFields f = decode_id(id.bits);
+    const bool ours = id.bits != 0 && f.kind == IdKind::body && f.world_slot == w.id.world_slot &&
+                      f.world_generation == w.id.world_generation && w.world->bodies.is_live(f.index, f.generation);
+    return ours ? f.index : -1;
+}
+
+// The world, a sane count and array, and every id live in that world.
+bool valid_bodies(Call& call, i2d_world_id world_id, const i2d_body_id* bodies, int32_t count, WorldRef& w) {
+    if (!call.world(world_id, w)) {
+        return false;
+    }
+    if (count < 0) {
+        return call.fail(I2D_ERR_INVALID_ARGUMENT, "count is %d; it must be >= 0", count);
+    }
+    if (count > 0 && !call.not_null(bodies, "bodies")) {
+        return false;
+    }
+    for (int32_t i = 0; i < count; ++i) {
+        if (body_slot(w, bodies[i]) < 0) {
+            return explain_bad_body(call, w, bodies[i], i);
+        }
+    }
+    return true;
+}
+
+// "<array>[i]" for messages; built only once an element is known to be bad, since
+// formatting it costs far more than checking it.
+struct ElementName {
+    char text[48];
+    ElementName(const char* array, int32_t i) { std::snprintf(text, sizeof text, "%s[%d]", array, i); }
+};
+
+bool valid_velocities(Call& call, int32_t count, const i2d_vec2* linear, const float* angular) {
+    for (int32_t i = 0; linear != nullptr && i < count; ++i) {
+        if (!(std::isfinite(linear[i].x) && std::isfinite(linear[i].y))) {
+            return call.finite(linear[i], ElementName("linear", i).text);
+        }
+    }
+    for (int32_t i = 0; angular != nullptr && i < count; ++i) {
+        if (!std::isfinite(angular[i])) {
+            return call.finite(angular[i], ElementName("angular", i).text);
+        }
+    }
+    return true;
+}
+
+// The per-body rules of i2d_body_set_transform, without formatting anything for a good
+// element: a finite position within range and a rotation close enough to unit length.
+bool plausible_transform(const i2d_transform& xf) {
+    const float length_sq = xf.q.c * xf.q.c + xf.q.s * xf.q.s;
+    return std::isfinite(xf.p.x) && std::isfinite(xf.p.y) && std::fabs(xf.p.x) <= max_coordinate &&
+           std::fabs(xf.p.y) <= max_coordinate && std::isfinite(xf.q.c) && std::isfinite(xf.q.s) &&
+           std::fabs(length_sq - 1.0f) <= rotation_normalization_tolerance;
+}
+
+bool valid_transforms(Call& call, int32_t count, const i2d_transform* in) {
+    for (int32_t i = 0; i < count; ++i) {
+        Rot unused;
+        if (!plausible_transform(in[i]) && (!call.coordinate(in[i].p, ElementName("transforms", i).text) ||
+                                            !normalized_rotation(call, in[i].q, ElementName("transforms", i).text, unused))) {
+            return false;
+        }
+    }
+    return true;
+}
+
+}  // namespace
+
+I2D_API i2d_status i2d_world_get_body_transforms(i2d_world_id world_id, const i2d_body_id* bodies, int32_t count,
+                                                 i2d_transform* out) {
+    return guarded("i2d_world_get_body_transforms", I2D_ERR_OUT_OF_MEMORY, [&](Call& call) {
+        WorldRef w;
+        if (!valid_bodies(call, world_id, bodies, count, w) || (count > 0 && !call.not_null(out, "out"))) {
+            return last_status();
+        }
+        for (int32_t i = 0; i < count; ++i) {
+            out[i] = to_public(w.world->bodies[body_slot(w, bodies[i])].transform);
+        }
+        return I2D_OK;
+    });
+}
+
+I2D_API i2d_status i2d_world_get_body_velocities(i2d_world_id world_id, const i2d_body_id* bodies, int32_t count,
+                                                 i2d_vec2* linear, float* angular) {
+    return guarded("i2d_world_get_body_velocities", I2D_ERR_OUT_OF_MEMORY, [&](Call& call) {
+        WorldRef w;
+        if (!valid_bodies(call, world_id, bodies, count, w)) {
+            return last_status();
+        }
+        for (int32_t i = 0; i < count; ++i) {
+            const Body& body = w.world->bodies[body_slot(w, bodies[i])];
+            if (linear != nullptr) {
+                linear[i] = to_public(body.linear_velocity);
+            }
+            if (angular != nullptr) {
+                angular[i] = body.angular_velocity;
+            }
+        }
+        return I2D_OK;
+    });
+}
+
+I2D_API i2d_status i2d_world_set_body_velocities(i2d_world_id world_id, const i2d_body_id* bodies, int32_t count,
+                                                 const i2d_vec2* linear, const float* angular) {
+    return guarded("i2d_world_set_body_velocities", I2D_ERR_OUT_OF_MEMORY, [&](Call& call) {
+        WorldRef w;
+        if (!valid_bodies(call, world_id, bodies, count, w) || !call.unlocked(*w.world) ||
+            !valid_velocities(call, count, linear, angular)) {
+            return last_status();
+        }
+        for (int32_t i = 0; i < count; ++i) {
+            const int32_t slot = body_slot(w, bodies[i]);
+            if (linear != nullptr) {
+                w.world->set_linear_velocity(slot, capi::to_core(linear[i]));
+            }
+            if (angular != nullptr) {
+                w.world->set_angular_velocity(slot, angular[i]);
+            }
+        }
+        return I2D_OK;
+    });
+}
+
+I2D_API i2d_status i2d_world_set_body_transforms(i2d_world_id world_id, const i2d_body_id* bodies, int32_t count,
+                                                 const i2d_transform* in) {
+    return guarded("i2d_world_set_body_transforms", I2D_ERR_OUT_OF_MEMORY, [&](Call& call) {
+        WorldRef w;
+        if (!valid_bodies(call, world_id, bodies, count, w) || !call.unlocked(*w.world) ||
+            (count > 0 && !call.not_null(in, "transforms")) || !valid_transforms(call, count, in)) {
+            return last_status();
+        }
+        for (int32_t i = 0; i < count; ++i) {
+            Rot q;
+            normalized_rotation(call, in[i].q, "transforms", q);  // checked above: cannot fail
+            w.world->set_transform(body_slot(w, bodies[i]), Transform{capi::to_core(in[i].p), q});
+        }
+        return I2D_OK;
+    });
+}

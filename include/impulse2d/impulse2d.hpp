@@ -1,0 +1,364 @@
+/* SPDX-License-Identifier: MIT */
+/** @file impulse2d.hpp
+ *  Thin C++17 wrappers over the C API: an owning World (move-only, destroys its world),
+ *  Body and Shape as 8-byte value handles, and errors as the caller prefers.
+ *
+ *  Every call that can fail comes in two forms:
+ *  - without a status argument it throws impulse2d::Error (status and the library's
+ *    message) on failure;
+ *  - with a trailing `impulse2d::Status&` it is noexcept and fills the status instead,
+ *    leaving the world untouched on failure, as the C call does.
+ *
+ *  @code
+ *  impulse2d::World world;                           // gravity (0, -10)
+ *  impulse2d::Body ball = world.create_body(impulse2d::body_def(I2D_BODY_DYNAMIC, {0, 4}));
+ *  ball.create_circle(0.5f);
+ *  for (int i = 0; i < 60; ++i) world.step(1.0f / 60.0f, 4);
+ *  impulse2d::Status status;
+ *  ball.set_linear_velocity({NAN, 0}, status);       // refused: status.message says why
+ *  @endcode
+ *
+ *  Nothing here is compiled into the library: the header uses only the C API, so it
+ *  works with the shared and the static library alike. */
+#ifndef IMPULSE2D_HPP
+#define IMPULSE2D_HPP
+
+#include <cstddef>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "impulse2d.h"
+
+namespace impulse2d {
+
+/** What a failed call reported: the C status and the library's message. */
+struct Status {
+    i2d_status code = I2D_OK;
+    std::string message;
+    bool ok() const noexcept { return code == I2D_OK; }
+    explicit operator bool() const noexcept { return ok(); }
+};
+
+/** Thrown by the throwing forms: what() is the library's message. */
+class Error : public std::runtime_error {
+public:
+    Error(i2d_status status, const std::string& message) : std::runtime_error(message), status_(status) {}
+    i2d_status status() const noexcept { return status_; }
+
+private:
+    i2d_status status_;
+};
+
+namespace detail {
+
+/** The thread's last status as a Status (the message is copied: the C one is overwritten
+ *  by the next call). */
+inline Status last_status() {
+    Status s;
+    s.code = i2d_last_status();
+    if (s.code != I2D_OK) {
+        s.message = i2d_last_error_message();
+    }
+    return s;
+}
+
+inline void throw_if_failed() {
+    const i2d_status code = i2d_last_status();
+    if (code != I2D_OK) {
+        throw Error(code, i2d_last_error_message());
+    }
+}
+
+/** Records the last status into out; never throws but for std::string's allocation. */
+inline void record(Status& out) noexcept {
+    out.code = i2d_last_status();
+    try {
+        out.message = out.code == I2D_OK ? std::string() : std::string(i2d_last_error_message());
+    } catch (...) {
+        out.message.clear();
+    }
+}
+
+}  // namespace detail
+
+/** A body def from i2d_default_body_def() with the usual first choices set. */
+inline i2d_body_def body_def(i2d_body_type type, i2d_vec2 position = {0.0f, 0.0f}, float angle = 0.0f) {
+    i2d_body_def def = i2d_default_body_def();
+    def.type = type;
+    def.position = position;
+    def.rotation = i2d_make_rot(angle);
+    return def;
+}
+
+class Body;
+
+/** A shape of a body: a value handle (copying copies the id). It does not own the shape. */
+class Shape {
+public:
+    Shape() = default;
+    explicit Shape(i2d_shape_id id) noexcept : id_(id) {}
+    i2d_shape_id id() const noexcept { return id_; }
+    bool valid() const noexcept { return i2d_shape_is_valid(id_); }
+    friend bool operator==(Shape a, Shape b) noexcept { return a.id_.bits == b.id_.bits; }
+    friend bool operator!=(Shape a, Shape b) noexcept { return a.id_.bits != b.id_.bits; }
+
+    void destroy() { i2d_shape_destroy(id_); detail::throw_if_failed(); }
+    void destroy(Status& status) noexcept { i2d_shape_destroy(id_); detail::record(status); }
+    inline Body body() const;
+    i2d_shape_type type() const { return checked(i2d_shape_get_type(id_)); }
+    i2d_aabb aabb() const { return checked(i2d_shape_get_aabb(id_)); }
+    float friction() const { return checked(i2d_shape_get_friction(id_)); }
+    void set_friction(float friction) { i2d_shape_set_friction(id_, friction); detail::throw_if_failed(); }
+    void set_friction(float friction, Status& status) noexcept {
+        i2d_shape_set_friction(id_, friction); detail::record(status);
+    }
+    float restitution() const { return checked(i2d_shape_get_restitution(id_)); }
+    void set_restitution(float restitution) { i2d_shape_set_restitution(id_, restitution); detail::throw_if_failed(); }
+    void set_restitution(float restitution, Status& status) noexcept {
+        i2d_shape_set_restitution(id_, restitution); detail::record(status);
+    }
+
+private:
+    template <class T>
+    static T checked(T value) {
+        detail::throw_if_failed();
+        return value;
+    }
+    i2d_shape_id id_{0};
+};
+
+/** A body: a value handle (copying copies the id). It does not own the body; the World
+ *  does, and destroying the world makes every Body of it invalid. */
+class Body {
+public:
+    Body() = default;
+    explicit Body(i2d_body_id id) noexcept : id_(id) {}
+    i2d_body_id id() const noexcept { return id_; }
+    bool valid() const noexcept { return i2d_body_is_valid(id_); }
+    friend bool operator==(Body a, Body b) noexcept { return a.id_.bits == b.id_.bits; }
+    friend bool operator!=(Body a, Body b) noexcept { return a.id_.bits != b.id_.bits; }
+
+    /** Destroys the body and its shapes. */
+    void destroy() { i2d_body_destroy(id_); detail::throw_if_failed(); }
+    void destroy(Status& status) noexcept { i2d_body_destroy(id_); detail::record(status); }
+
+    i2d_body_type type() const { return checked(i2d_body_get_type(id_)); }
+    i2d_vec2 position() const { return checked(i2d_body_get_position(id_)); }
+    i2d_rot rotation() const { return checked(i2d_body_get_rotation(id_)); }
+    float angle() const { return i2d_rot_get_angle(rotation()); }
+    i2d_transform transform() const { return checked(i2d_body_get_transform(id_)); }
+    void set_transform(i2d_vec2 position, float angle) {
+        i2d_body_set_transform(id_, position, i2d_make_rot(angle)); detail::throw_if_failed();
+    }
+    void set_transform(i2d_vec2 position, float angle, Status& status) noexcept {
+        i2d_body_set_transform(id_, position, i2d_make_rot(angle)); detail::record(status);
+    }
+    i2d_vec2 linear_velocity() const { return checked(i2d_body_get_linear_velocity(id_)); }
+    void set_linear_velocity(i2d_vec2 v) { i2d_body_set_linear_velocity(id_, v); detail::throw_if_failed(); }
+    void set_linear_velocity(i2d_vec2 v, Status& status) noexcept {
+        i2d_body_set_linear_velocity(id_, v); detail::record(status);
+    }
+    float angular_velocity() const { return checked(i2d_body_get_angular_velocity(id_)); }
+    void set_angular_velocity(float w) { i2d_body_set_angular_velocity(id_, w); detail::throw_if_failed(); }
+    void set_angular_velocity(float w, Status& status) noexcept {
+        i2d_body_set_angular_velocity(id_, w); detail::record(status);
+    }
+    float mass() const { return checked(i2d_body_get_mass(id_)); }
+    float rotational_inertia() const { return checked(i2d_body_get_rotational_inertia(id_)); }
+    i2d_vec2 world_center_of_mass() const { return checked(i2d_body_get_world_center_of_mass(id_)); }
+    bool awake() const { return checked(i2d_body_is_awake(id_)); }
+    void set_awake(bool awake) { i2d_body_set_awake(id_, awake); detail::throw_if_failed(); }
+
+    /** A force (N) at a world point for the next step. */
+    void apply_force(i2d_vec2 force, i2d_vec2 point, bool wake = true) {
+        i2d_body_apply_force(id_, force, point, wake); detail::throw_if_failed();
+    }
+    void apply_force_to_center(i2d_vec2 force, bool wake = true) {
+        i2d_body_apply_force_to_center(id_, force, wake); detail::throw_if_failed();
+    }
+    void apply_linear_impulse(i2d_vec2 impulse, i2d_vec2 point, bool wake = true) {
+        i2d_body_apply_linear_impulse(id_, impulse, point, wake); detail::throw_if_failed();
+    }
+
+    /** A circle of radius at center (body frame); def defaults to i2d_default_shape_def(). */
+    Shape create_circle(float radius, i2d_vec2 center = {0.0f, 0.0f},
+                        const i2d_shape_def& def = i2d_default_shape_def()) {
+        const i2d_circle circle = {center, radius};
+        return created(i2d_shape_create_circle(id_, &def, &circle));
+    }
+    Shape create_circle(float radius, i2d_vec2 center, const i2d_shape_def& def, Status& status) noexcept {
+        const i2d_circle circle = {center, radius};
+        return recorded(i2d_shape_create_circle(id_, &def, &circle), status);
+    }
+    /** A box of half sizes centred on the body origin. */
+    Shape create_box(float half_width, float half_height, const i2d_shape_def& def = i2d_default_shape_def()) {
+        return created(i2d_shape_create_box(id_, &def, half_width, half_height));
+    }
+    Shape create_box(float half_width, float half_height, const i2d_shape_def& def, Status& status) noexcept {
+        return recorded(i2d_shape_create_box(id_, &def, half_width, half_height), status);
+    }
+    /** The convex hull of 3 to 8 points (body frame). */
+    Shape create_polygon(const std::vector<i2d_vec2>& points, const i2d_shape_def& def = i2d_default_shape_def()) {
+        return created(i2d_shape_create_polygon(id_, &def, points.data(), static_cast<int32_t>(points.size())));
+    }
+    Shape create_capsule(i2d_vec2 center1, i2d_vec2 center2, float radius,
+                         const i2d_shape_def& def = i2d_default_shape_def()) {
+        return created(i2d_shape_create_capsule(id_, &def, center1, center2, radius));
+    }
+    Shape create_segment(i2d_vec2 point1, i2d_vec2 point2, const i2d_shape_def& def = i2d_default_shape_def()) {
+        return created(i2d_shape_create_segment(id_, &def, point1, point2));
+    }
+    std::vector<Shape> shapes() const {
+        const int32_t count = i2d_body_get_shape_count(id_);
+        detail::throw_if_failed();
+        std::vector<i2d_shape_id> ids(static_cast<std::size_t>(count));
+        i2d_body_get_shapes(id_, ids.data(), count);
+        return std::vector<Shape>(ids.begin(), ids.end());
+    }
+
+private:
+    template <class T>
+    static T checked(T value) {
+        detail::throw_if_failed();
+        return value;
+    }
+    static Shape created(i2d_shape_id id) {
+        detail::throw_if_failed();
+        return Shape(id);
+    }
+    static Shape recorded(i2d_shape_id id, Status& status) noexcept {
+        detail::record(status);
+        return Shape(id);
+    }
+    i2d_body_id id_{0};
+};
+
+inline Body Shape::body() const { return Body(checked(i2d_shape_get_body(id_))); }
+
+/** Owns a world: destroys it (and everything in it) when it goes out of scope. Move-only. */
+class World {
+public:
+    /** A world from def (default: i2d_default_world_def()). Throws on a refused def. */
+    explicit World(const i2d_world_def& def = i2d_default_world_def()) : id_(i2d_world_create(&def)) {
+        detail::throw_if_failed();
+    }
+    /** The non-throwing form: check status (the world is null when it failed). */
+    World(const i2d_world_def& def, Status& status) noexcept : id_(i2d_world_create(&def)) { detail::record(status); }
+    ~World() { reset(); }
+    World(const World&) = delete;
+    World& operator=(const World&) = delete;
+    World(World&& other) noexcept : id_(std::exchange(other.id_, i2d_world_id{0})) {}
+    World& operator=(World&& other) noexcept {
+        if (this != &other) {
+            reset();
+            id_ = std::exchange(other.id_, i2d_world_id{0});
+        }
+        return *this;
+    }
+
+    i2d_world_id id() const noexcept { return id_; }
+    bool valid() const noexcept { return i2d_world_is_valid(id_); }
+    /** Destroys the world now; the World becomes null. */
+    void reset() noexcept {
+        if (id_.bits != 0) {
+            i2d_world_destroy(id_);
+            id_ = i2d_world_id{0};
+        }
+    }
+    /** Gives up ownership: the caller must call i2d_world_destroy. */
+    i2d_world_id release() noexcept { return std::exchange(id_, i2d_world_id{0}); }
+
+    void step(float time_step = 1.0f / 60.0f, int32_t substeps = 4) {
+        i2d_world_step(id_, time_step, substeps); detail::throw_if_failed();
+    }
+    void step(float time_step, int32_t substeps, Status& status) noexcept {
+        i2d_world_step(id_, time_step, substeps); detail::record(status);
+    }
+    i2d_vec2 gravity() const { return checked(i2d_world_get_gravity(id_)); }
+    void set_gravity(i2d_vec2 gravity) { i2d_world_set_gravity(id_, gravity); detail::throw_if_failed(); }
+    i2d_world_counters counters() const { return checked(i2d_world_get_counters(id_)); }
+    uint64_t state_hash() const { return checked(i2d_world_get_state_hash(id_)); }
+
+    Body create_body(const i2d_body_def& def = i2d_default_body_def()) {
+        const i2d_body_id id = i2d_body_create(id_, &def);
+        detail::throw_if_failed();
+        return Body(id);
+    }
+    Body create_body(const i2d_body_def& def, Status& status) noexcept {
+        const i2d_body_id id = i2d_body_create(id_, &def);
+        detail::record(status);
+        return Body(id);
+    }
+
+    /** Transforms of many bodies in one call (see i2d_world_get_body_transforms). */
+    std::vector<i2d_transform> transforms(const std::vector<Body>& bodies) const {
+        const std::vector<i2d_body_id> ids = to_ids(bodies);
+        std::vector<i2d_transform> out(ids.size());
+        i2d_world_get_body_transforms(id_, ids.data(), static_cast<int32_t>(ids.size()), out.data());
+        detail::throw_if_failed();
+        return out;
+    }
+    void set_transforms(const std::vector<Body>& bodies, const std::vector<i2d_transform>& transforms) {
+        check_sizes(bodies.size(), transforms.size());
+        const std::vector<i2d_body_id> ids = to_ids(bodies);
+        i2d_world_set_body_transforms(id_, ids.data(), static_cast<int32_t>(ids.size()), transforms.data());
+        detail::throw_if_failed();
+    }
+    void set_velocities(const std::vector<Body>& bodies, const std::vector<i2d_vec2>& linear,
+                        const std::vector<float>& angular) {
+        check_sizes(bodies.size(), linear.size());
+        check_sizes(bodies.size(), angular.size());
+        const std::vector<i2d_body_id> ids = to_ids(bodies);
+        i2d_world_set_body_velocities(id_, ids.data(), static_cast<int32_t>(ids.size()), linear.data(),
+                                      angular.data());
+        detail::throw_if_failed();
+    }
+
+    /** Shapes whose geometry overlaps box. */
+    std::vector<Shape> overlap_aabb(i2d_aabb box, i2d_query_filter filter = i2d_default_query_filter()) const {
+        std::vector<i2d_shape_id> ids(16);
+        for (;;) {
+            const int32_t total = i2d_world_overlap_aabb_ids(id_, box, filter, ids.data(), static_cast<int32_t>(ids.size()));
+            detail::throw_if_failed();
+            if (static_cast<std::size_t>(total) <= ids.size()) {
+                return std::vector<Shape>(ids.begin(), ids.begin() + total);
+            }
+            ids.resize(static_cast<std::size_t>(total));
+        }
+    }
+    i2d_ray_result cast_ray_closest(i2d_vec2 origin, i2d_vec2 translation,
+                                    i2d_query_filter filter = i2d_default_query_filter()) const {
+        return checked(i2d_world_cast_ray_closest(id_, origin, translation, filter));
+    }
+    /** The last step's contact events (arrays owned by the world, valid until the next step). */
+    i2d_contact_events contact_events() const { return checked(i2d_world_get_contact_events(id_)); }
+    i2d_body_events body_events() const { return checked(i2d_world_get_body_events(id_)); }
+
+private:
+    template <class T>
+    static T checked(T value) {
+        detail::throw_if_failed();
+        return value;
+    }
+    static std::vector<i2d_body_id> to_ids(const std::vector<Body>& bodies) {
+        std::vector<i2d_body_id> ids;
+        ids.reserve(bodies.size());
+        for (const Body& b : bodies) {
+            ids.push_back(b.id());
+        }
+        return ids;
+    }
+    static void check_sizes(std::size_t bodies, std::size_t values) {
+        if (bodies != values) {
+            throw Error(I2D_ERR_INVALID_ARGUMENT, "impulse2d::World: " + std::to_string(bodies) + " bodies but " +
+                                                      std::to_string(values) + " values");
+        }
+    }
+    i2d_world_id id_{0};
+};
+
+}  // namespace impulse2d
+
+#endif
