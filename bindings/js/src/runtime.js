@@ -1,0 +1,114 @@
+// SPDX-License-Identifier: MIT
+// The loaded module and what every wrapper needs from it: scratch memory for arguments
+// and results, struct offsets by name, and turning a refused call into an exception.
+import { Impulse2dError } from './errors.js';
+
+// Structs passed by value (i2d_vec2, i2d_rot, i2d_aabb, filters) cross the wasm C ABI
+// as pointers to a copy, and struct results come back through a pointer the caller
+// gives: both live in one scratch block. 64-bit ids cross as BigInt.
+const SCRATCH_BYTES = 1024;
+const RESULT = 0;          // results (up to 256 bytes: i2d_polygon is the largest read)
+const ARG0 = 512;          // by-value arguments, 64 bytes apart
+const ARG_STRIDE = 64;
+
+export class Runtime {
+  constructor(module) {
+    this.m = module;
+    this.scratch = module._malloc(SCRATCH_BYTES);
+    this.layout = readLayout(module);
+    this.defaults = {
+      world: this.readDefault('_i2d_default_world_def', 'i2d_world_def'),
+      body: this.readDefault('_i2d_default_body_def', 'i2d_body_def'),
+      shape: this.readDefault('_i2d_default_shape_def', 'i2d_shape_def'),
+    };
+    this.allFilter = this.m._malloc(this.size('i2d_query_filter'));
+    this.m._i2d_default_query_filter(this.allFilter);
+  }
+
+  size(type) { return this.field(type); }
+
+  field(name) {
+    const value = this.layout.get(name);
+    if (value === undefined) throw new Error(`impulse2d: no layout entry ${name}`);
+    return value;
+  }
+
+  // Views are taken afresh on each use: the heap may have grown (and its old buffer
+  // been detached) during the last call.
+  get f32() { return this.m.HEAPF32; }
+  get i32() { return this.m.HEAP32; }
+  get u32() { return this.m.HEAPU32; }
+  get u8() { return this.m.HEAPU8; }
+  get u64() { return this.m.HEAPU64; }
+
+  result() { return this.scratch + RESULT; }
+  arg(index) { return this.scratch + ARG0 + index * ARG_STRIDE; }
+
+  /** Writes two floats at argument slot `index` and returns its address. */
+  vec2(index, x, y) {
+    const at = this.arg(index);
+    const f = this.f32;
+    f[at >> 2] = x;
+    f[(at >> 2) + 1] = y;
+    return at;
+  }
+
+  /** Writes a rotation (cosine, sine) of `angle` radians at argument slot `index`. */
+  rot(index, angle) {
+    return this.vec2(index, Math.cos(angle), Math.sin(angle));
+  }
+
+  readVec2(at) {
+    const f = this.f32;
+    return { x: f[at >> 2], y: f[(at >> 2) + 1] };
+  }
+
+  readDefault(fn, type) {
+    const bytes = this.size(type);
+    this.m[fn](this.result());
+    return this.u8.slice(this.result(), this.result() + bytes);
+  }
+
+  /** Copies a default def into a fresh block (freed by the caller). */
+  defBlock(which) {
+    const bytes = this.defaults[which];
+    const at = this.m._malloc(bytes.length);
+    this.u8.set(bytes, at);
+    return at;
+  }
+
+  lastError() {
+    const status = this.m._i2d_last_status();
+    const message = this.m.UTF8ToString(this.m._i2d_last_error_message());
+    return new Impulse2dError(status, message);
+  }
+
+  /** Throws the library's error unless status is I2D_OK. */
+  check(status) {
+    if (status !== 0) throw this.lastError();
+  }
+
+  /** Throws unless the last call succeeded (for getters, which return zero on error). */
+  checkLast() {
+    if (this.m._i2d_last_status() !== 0) throw this.lastError();
+  }
+
+  /** Throws the library's error for a null id. */
+  checkId(id) {
+    if (id === 0n) throw this.lastError();
+    return id;
+  }
+}
+
+function readLayout(module) {
+  const out = module._malloc(4);
+  const count = module._i2d_js_struct_layout(out);
+  const table = module.HEAPU32[out >> 2];
+  module._free(out);
+  const layout = new Map();
+  for (let i = 0; i < count; i++) {
+    const entry = table + i * 8;
+    layout.set(module.UTF8ToString(module.HEAPU32[entry >> 2]), module.HEAP32[(entry + 4) >> 2]);
+  }
+  return layout;
+}

@@ -1,0 +1,239 @@
+// SPDX-License-Identifier: MIT
+// A world: stepping, bodies, queries and events over an i2d_world_id.
+import { Body, BODY_TYPES } from './body.js';
+import { vx, vy } from './vectors.js';
+
+export class World {
+  /** @internal Made by Impulse2d.createWorld. */
+  constructor(rt, options = {}) {
+    this.rt = rt;
+    const def = rt.defBlock('world');
+    try {
+      writeWorldDef(rt, def, options);
+      this.id = rt.checkId(rt.m._i2d_world_create(def));
+    } finally {
+      rt.m._free(def);
+    }
+    /** Live bodies by index (the user data their move events carry); slot 0 unused. */
+    this.bodyByIndex = [undefined];
+    this.freeIndices = [];
+    this.shapeById = new Map();
+  }
+
+  isValid() { return this.rt.m._i2d_world_is_valid(this.id) !== 0; }
+
+  /** Advances by timeStep seconds in substeps equal substeps. */
+  step(timeStep = 1 / 60, substeps = 4) {
+    this.rt.check(this.rt.m._i2d_world_step(this.id, timeStep, substeps));
+  }
+
+  get gravity() {
+    const rt = this.rt;
+    rt.m._i2d_world_get_gravity(rt.result(), this.id);
+    rt.checkLast();
+    return rt.readVec2(rt.result());
+  }
+  set gravity(g) {
+    this.rt.check(this.rt.m._i2d_world_set_gravity(this.id, this.rt.vec2(0, vx(g), vy(g))));
+  }
+
+  createBody(options = {}) {
+    const rt = this.rt;
+    const index = this.freeIndices.length > 0 ? this.freeIndices.pop() : this.bodyByIndex.length;
+    const def = rt.defBlock('body');
+    try {
+      writeBodyDef(rt, def, options, index);
+      const body = new Body(this, rt.checkId(rt.m._i2d_body_create(this.id, def)), index);
+      this.bodyByIndex[index] = body;
+      return body;
+    } catch (error) {
+      if (index !== this.bodyByIndex.length) this.freeIndices.push(index);
+      throw error;
+    } finally {
+      rt.m._free(def);
+    }
+  }
+
+  /** Live bodies, in creation order of their indices. */
+  get bodies() { return this.bodyByIndex.filter((b) => b !== undefined); }
+
+  /** {bodyCount, shapeCount, contactCount, awakeBodyCount}. */
+  counters() {
+    const rt = this.rt;
+    const at = rt.result();
+    rt.m._i2d_world_get_counters(at, this.id);
+    rt.checkLast();
+    const i = rt.i32;
+    const read = (name) => i[(at + rt.field(`i2d_world_counters.${name}`)) >> 2];
+    return { bodyCount: read('body_count'), shapeCount: read('shape_count'),
+             contactCount: read('contact_count'), awakeBodyCount: read('awake_body_count') };
+  }
+
+  /** 64-bit hash of every body's state: equal hashes mean equal states. */
+  stateHash() {
+    const hash = this.rt.m._i2d_world_get_state_hash(this.id);
+    this.rt.checkLast();
+    return BigInt.asUintN(64, hash);
+  }
+
+  /** The SIMD path solving contacts: 1 (scalar) in WebAssembly. */
+  simdPath() { return this.rt.m._i2d_world_get_simd_path(this.id); }
+
+  /**
+   * Every body that moved in the last step, read straight from the world's event array
+   * (no copy). Valid until the next step or any call that may grow the module's memory.
+   */
+  bodyMoves() {
+    const rt = this.rt;
+    const at = rt.result();
+    rt.m._i2d_world_get_body_events(at, this.id);
+    rt.checkLast();
+    const events = rt.u32[(at + rt.field('i2d_body_events.move_events')) >> 2];
+    const count = rt.i32[(at + rt.field('i2d_body_events.move_count')) >> 2];
+    return new BodyMoves(this, events, count);
+  }
+
+  /** Contacts begun and ended in the last step: {begin: [[Shape, Shape]], end: [...]}. */
+  contactEvents() {
+    const rt = this.rt;
+    const at = rt.result();
+    rt.m._i2d_world_get_contact_events(at, this.id);
+    rt.checkLast();
+    const word = (name) => rt.u32[(at + rt.field(`i2d_contact_events.${name}`)) >> 2];
+    const pairs = (array, count) => {
+      const ids = new BigUint64Array(rt.u8.buffer, array, count * 2);
+      const out = [];
+      for (let i = 0; i < count; i++) {
+        out.push([this.shapeById.get(ids[2 * i]) ?? ids[2 * i], this.shapeById.get(ids[2 * i + 1]) ?? ids[2 * i + 1]]);
+      }
+      return out;
+    };
+    return { begin: pairs(word('begin_events'), word('begin_count')), end: pairs(word('end_events'), word('end_count')) };
+  }
+
+  /** Shapes whose geometry overlaps the box, every category. */
+  overlapAABB(minX, minY, maxX, maxY) {
+    const rt = this.rt;
+    const box = rt.arg(0);
+    rt.f32.set([minX, minY, maxX, maxY], box >> 2);
+    let capacity = 64;
+    for (;;) {
+      const out = rt.m._malloc(capacity * 8);
+      try {
+        const total = rt.m._i2d_world_overlap_aabb_ids(this.id, box, rt.allFilter, out, capacity);
+        if (total < 0) throw rt.lastError();
+        if (total <= capacity) {
+          return Array.from(new BigUint64Array(rt.u8.buffer, out, total), (id) => this.shapeById.get(id));
+        }
+        capacity = total;
+      } finally {
+        rt.m._free(out);
+      }
+    }
+  }
+
+  /** The first shape along origin + t translation, t in [0, 1]: {shape, point, normal, fraction} or null. */
+  castRayClosest(origin, translation) {
+    const rt = this.rt;
+    const at = rt.result();
+    rt.m._i2d_world_cast_ray_closest(at, this.id, rt.vec2(0, vx(origin), vy(origin)),
+                                     rt.vec2(1, vx(translation), vy(translation)), rt.allFilter);
+    rt.checkLast();
+    if (rt.u8[at + rt.field('i2d_ray_result.hit')] === 0) return null;
+    const id = rt.u64[(at + rt.field('i2d_ray_result.shape')) >> 3];
+    return {
+      shape: this.shapeById.get(id),
+      point: rt.readVec2(at + rt.field('i2d_ray_result.point')),
+      normal: rt.readVec2(at + rt.field('i2d_ray_result.normal')),
+      fraction: rt.f32[(at + rt.field('i2d_ray_result.fraction')) >> 2],
+    };
+  }
+
+  /** Destroys the world and everything in it. */
+  destroy() {
+    this.rt.check(this.rt.m._i2d_world_destroy(this.id));
+    this.bodyByIndex = [undefined];
+    this.freeIndices = [];
+    this.shapeById.clear();
+  }
+
+  /** @internal */
+  rememberShape(shape) { this.shapeById.set(shape.id, shape); }
+  /** @internal */
+  forgetShape(shape) {
+    this.shapeById.delete(shape.id);
+    const list = shape.body.shapes;
+    list.splice(list.indexOf(shape), 1);
+  }
+  /** @internal */
+  forgetBody(body) {
+    for (const shape of body.shapes) this.shapeById.delete(shape.id);
+    this.bodyByIndex[body.index] = undefined;
+    this.freeIndices.push(body.index);
+  }
+}
+
+/** A view of the last step's body move events in the module's memory. */
+export class BodyMoves {
+  constructor(world, address, count) {
+    const rt = world.rt;
+    this.world = world;
+    this.count = count;
+    /** Floats (and words) per event. */
+    this.stride = rt.size('i2d_body_move_event') / 4;
+    const words = this.stride * count;
+    /** Event i's transform is floats[i * stride + 0..3]: x, y, cosine, sine. */
+    this.floats = new Float32Array(rt.u8.buffer, address, words);
+    /** Event i's body index is words[i * stride + userDataWord]. */
+    this.words = new Uint32Array(rt.u8.buffer, address, words);
+    this.transformWord = rt.field('i2d_body_move_event.transform') / 4;
+    this.userDataWord = rt.field('i2d_body_move_event.user_data') / 4;
+    this.asleepByte = rt.field('i2d_body_move_event.fell_asleep');
+    this.bytes = new Uint8Array(rt.u8.buffer, address, words * 4);
+  }
+
+  bodyIndex(i) { return this.words[i * this.stride + this.userDataWord]; }
+  body(i) { return this.world.bodyByIndex[this.bodyIndex(i)]; }
+  x(i) { return this.floats[i * this.stride + this.transformWord]; }
+  y(i) { return this.floats[i * this.stride + this.transformWord + 1]; }
+  angle(i) {
+    const at = i * this.stride + this.transformWord;
+    return Math.atan2(this.floats[at + 3], this.floats[at + 2]);
+  }
+  fellAsleep(i) { return this.bytes[i * this.stride * 4 + this.asleepByte] !== 0; }
+}
+
+function writeWorldDef(rt, def, options) {
+  const f = rt.f32;
+  if (options.gravity !== undefined) {
+    f[(def + rt.field('i2d_world_def.gravity')) >> 2] = vx(options.gravity);
+    f[((def + rt.field('i2d_world_def.gravity')) >> 2) + 1] = vy(options.gravity);
+  }
+  if (options.contactHertz !== undefined) f[(def + rt.field('i2d_world_def.contact_hertz')) >> 2] = options.contactHertz;
+  if (options.restitutionThreshold !== undefined) {
+    f[(def + rt.field('i2d_world_def.restitution_threshold')) >> 2] = options.restitutionThreshold;
+  }
+  if (options.enableSleep !== undefined) rt.u8[def + rt.field('i2d_world_def.enable_sleep')] = options.enableSleep ? 1 : 0;
+}
+
+function writeBodyDef(rt, def, options, index) {
+  const f = rt.f32;
+  const field = (name) => def + rt.field(`i2d_body_def.${name}`);
+  if (options.type !== undefined) {
+    rt.i32[field('type') >> 2] = typeof options.type === 'number' ? options.type : (BODY_TYPES[options.type] ?? -1);
+  }
+  const pair = (name, v) => {
+    f[field(name) >> 2] = vx(v);
+    f[(field(name) >> 2) + 1] = vy(v);
+  };
+  if (options.position !== undefined) pair('position', options.position);
+  if (options.angle !== undefined) pair('rotation', [Math.cos(options.angle), Math.sin(options.angle)]);
+  if (options.linearVelocity !== undefined) pair('linear_velocity', options.linearVelocity);
+  if (options.angularVelocity !== undefined) f[field('angular_velocity') >> 2] = options.angularVelocity;
+  if (options.linearDamping !== undefined) f[field('linear_damping') >> 2] = options.linearDamping;
+  if (options.angularDamping !== undefined) f[field('angular_damping') >> 2] = options.angularDamping;
+  if (options.gravityScale !== undefined) f[field('gravity_scale') >> 2] = options.gravityScale;
+  if (options.fixedRotation !== undefined) rt.u8[field('fixed_rotation')] = options.fixedRotation ? 1 : 0;
+  if (options.enableSleep !== undefined) rt.u8[field('enable_sleep')] = options.enableSleep ? 1 : 0;
+  rt.u32[field('user_data') >> 2] = index;
+}

@@ -1,0 +1,178 @@
+// SPDX-License-Identifier: MIT
+// The scene page: runs a scene live, one world step per animation frame, and exposes
+// window.impulse2dPage for the browser test (scene choice, stepping, state read-back).
+import { loadImpulse2d } from '../../bindings/js/src/index.js';
+import { SCENES } from './scenes.js';
+import { Camera, draw } from './renderer.js';
+
+const TIME_STEP = 1 / 60;
+const SUBSTEPS = 4;
+const DRAG_GAIN = 12;        // 1/s: the held body closes this fraction of the gap per second
+const DRAG_MAX_SPEED = 30;   // m/s
+
+const i2d = await loadImpulse2d();
+const canvas = document.getElementById('view');
+const ctx = canvas.getContext('2d');
+const camera = new Camera(canvas);
+const picker = document.getElementById('scene');
+const readout = document.getElementById('readout');
+const pauseButton = document.getElementById('pause');
+
+const state = {
+  name: null, world: null, scene: null, transforms: new Float32Array(0), starts: null,
+  paused: false, steps: 0, stepMs: [], held: null, pointer: null,
+};
+
+for (const [name, scene] of Object.entries(SCENES)) picker.add(new Option(scene.title, name));
+
+function loadScene(name) {
+  if (state.world) state.world.destroy();
+  const definition = SCENES[name];
+  const world = i2d.createWorld(definition.worldOptions);
+  const scene = definition.build(world);
+  const bodies = world.bodies;
+  const transforms = new Float32Array(4 * (bodies[bodies.length - 1].index + 1));
+  for (const body of bodies) {
+    const t = body.transform();
+    transforms.set([t.x, t.y, t.c, t.s], 4 * body.index);
+    body.userData = { type: body.type, asleep: false, geometries: body.shapes.map((s) => s.geometry()) };
+  }
+  Object.assign(state, { name, world, scene, transforms, starts: transforms.slice(), steps: 0, stepMs: [], held: null });
+  picker.value = name;
+  camera.setView(scene.view);
+}
+
+/** Copies the last step's moved bodies into the page's transforms: one call per frame. */
+function readMoves() {
+  const moves = state.world.bodyMoves();
+  const { floats, stride, transformWord } = moves;
+  for (let i = 0; i < moves.count; i++) {
+    const index = moves.bodyIndex(i);
+    const from = i * stride + transformWord;
+    state.transforms.set(floats.subarray(from, from + 4), 4 * index);
+    state.world.bodyByIndex[index].userData.asleep = moves.fellAsleep(i);
+  }
+}
+
+function dragHeldBody() {
+  const { held, pointer } = state;
+  if (!held || !pointer) return;
+  const p = held.position;
+  let vx = DRAG_GAIN * (pointer.x - p.x);
+  let vy = DRAG_GAIN * (pointer.y - p.y);
+  const speed = Math.hypot(vx, vy);
+  if (speed > DRAG_MAX_SPEED) {
+    vx *= DRAG_MAX_SPEED / speed;
+    vy *= DRAG_MAX_SPEED / speed;
+  }
+  held.setLinearVelocity([vx, vy]);
+  held.angularVelocity *= 0.9;
+}
+
+function step() {
+  dragHeldBody();
+  const start = performance.now();
+  state.world.step(TIME_STEP, SUBSTEPS);
+  state.stepMs.push(performance.now() - start);
+  if (state.stepMs.length > 60) state.stepMs.shift();
+  state.steps++;
+  readMoves();
+}
+
+function msPerStep() {
+  const sorted = [...state.stepMs].sort((a, b) => a - b);
+  return sorted.length ? sorted[sorted.length >> 1] : 0;
+}
+
+function render() {
+  draw(ctx, camera, state.world.bodies, state.transforms, state.held);
+  const counters = state.world.counters();
+  readout.textContent = `${msPerStep().toFixed(2)} ms/step (median of 60) · ${counters.bodyCount} bodies · ` +
+    `${counters.contactCount} contacts · step ${state.steps}${state.paused ? ' · paused' : ''}`;
+}
+
+function frame() {
+  if (!state.paused) step();
+  render();
+  requestAnimationFrame(frame);
+}
+
+function pointerWorld(event) {
+  const rect = canvas.getBoundingClientRect();
+  return camera.toWorld((event.clientX - rect.left) * canvas.width / rect.width,
+                        (event.clientY - rect.top) * canvas.height / rect.height);
+}
+
+canvas.addEventListener('pointerdown', (event) => {
+  const p = pointerWorld(event);
+  const r = 0.01;
+  const shape = state.world.overlapAABB(p.x - r, p.y - r, p.x + r, p.y + r)
+    .find((s) => s && s.body.userData.type === 'dynamic');
+  if (!shape) return;
+  state.held = shape.body;
+  state.held.awake = true;
+  state.pointer = p;
+  canvas.setPointerCapture(event.pointerId);
+});
+canvas.addEventListener('pointermove', (event) => { if (state.held) state.pointer = pointerWorld(event); });
+const release = () => { state.held = null; state.pointer = null; };
+canvas.addEventListener('pointerup', release);
+canvas.addEventListener('pointercancel', release);
+
+picker.addEventListener('change', () => loadScene(picker.value));
+pauseButton.addEventListener('click', () => {
+  state.paused = !state.paused;
+  pauseButton.textContent = state.paused ? 'Run' : 'Pause';
+});
+document.getElementById('step').addEventListener('click', () => { step(); render(); });
+document.getElementById('reset').addEventListener('click', () => loadScene(state.name));
+
+// What the browser test reads back.
+window.impulse2dPage = {
+  scenes: Object.keys(SCENES),
+  loadScene,
+  /** Runs n steps now (as frames would), then draws once. */
+  runSteps(n) {
+    for (let i = 0; i < n; i++) step();
+    render();
+  },
+  state() {
+    const counters = state.world.counters();
+    let moved = 0;
+    let maxMove = 0;
+    for (const body of state.world.bodies) {
+      if (body.userData.type !== 'dynamic') continue;
+      const t = 4 * body.index;
+      const d = Math.hypot(state.transforms[t] - state.starts[t], state.transforms[t + 1] - state.starts[t + 1]);
+      if (d > 0.01) moved++;
+      maxMove = Math.max(maxMove, d);
+    }
+    return { scene: state.name, steps: state.steps, msPerStep: msPerStep(), bodyCount: counters.bodyCount,
+             moved, maxMove, ...SCENES[state.name].check(state.world, state.scene) };
+  },
+  /** A dynamic body near the middle of the scene: {index, x, y} in canvas pixels. */
+  pickDynamicBody() {
+    const dynamic = state.world.bodies.filter((b) => b.userData.type === 'dynamic');
+    const body = dynamic[dynamic.length >> 1];
+    const p = body.position;
+    const px = canvas.width / 2 + camera.scale * (p.x - camera.cx);
+    const py = canvas.height / 2 - camera.scale * (p.y - camera.cy);
+    const rect = canvas.getBoundingClientRect();
+    return { index: body.index, x: rect.left + px * rect.width / canvas.width, y: rect.top + py * rect.height / canvas.height };
+  },
+  bodyPosition(index) { return state.world.bodyByIndex[index].position; },
+  isHolding() { return state.held !== null; },
+  /** Canvas pixels that differ from the background: a blank canvas has none. */
+  paintedPixels() {
+    const data = ctx.getImageData(0, 0, canvas.width, canvas.height).data;
+    let painted = 0;
+    for (let i = 0; i < data.length; i += 4) {
+      if (data[i] !== 0xf8 || data[i + 1] !== 0xfa || data[i + 2] !== 0xfc) painted++;
+    }
+    return painted;
+  },
+};
+
+loadScene('pyramid');
+requestAnimationFrame(frame);
+document.body.dataset.ready = 'true';
