@@ -44,6 +44,21 @@ def test_settings_reach_the_world_def():
         impulse2d.World(contact_hertz=-1.0)
 
 
+def test_worker_threads_give_the_same_state():
+    hashes = []
+    for workers in (1, 2):
+        with impulse2d.World(worker_count=workers) as world:
+            make_pile(world, count=300)
+            for _ in range(30):
+                world.step()
+            hashes.append(world.state_hash)
+    assert hashes[0] == hashes[1]
+    with pytest.raises(impulse2d.InvalidArgument, match="worker_count"):
+        impulse2d.World(worker_count=0)
+    with pytest.raises(TypeError, match="unknown world setting 'enqueue_task'"):
+        impulse2d.World(enqueue_task=None)
+
+
 def test_counters_and_state_hash_follow_the_scene(world):
     make_pile(world, count=10)
     c = world.counters

@@ -49,7 +49,10 @@ def make_filter(value: Any) -> Filter:
 def apply_settings(def_struct: C.Structure, settings: Dict[str, Any], kind: str) -> None:
     """Copies keyword settings into a def's fields of the same name, converting pairs
     to vectors; unknown names are a TypeError that lists the known ones."""
-    fields = {name: ctype for name, ctype in def_struct._fields_ if name not in ("internal_cookie", "user_data")}
+    # A job system of C callbacks is for C and C++ callers; from Python, worker_count
+    # alone starts the library's own threads.
+    hidden = ("internal_cookie", "user_data", "enqueue_task", "finish_task", "user_task_context")
+    fields = {name: ctype for name, ctype in def_struct._fields_ if name not in hidden}
     for name, value in settings.items():
         if name not in fields:
             raise TypeError(

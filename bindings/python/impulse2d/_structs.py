@@ -55,6 +55,10 @@ class WorldDef(C.Structure):
         ("simd_path", C.c_int32),
         ("enable_contact_recycling", C.c_bool),
         ("enable_profile", C.c_bool),
+        ("worker_count", C.c_int32),
+        ("enqueue_task", C.c_void_p),
+        ("finish_task", C.c_void_p),
+        ("user_task_context", C.c_void_p),
         ("internal_cookie", C.c_uint32),
     ]
 

@@ -52,7 +52,8 @@ class World:
     ...     world.step(1 / 60, 4)
 
     Settings are the C world def's fields (include/impulse2d/types.h), e.g.
-    contact_hertz, restitution_threshold, enable_sleep, time_to_sleep.
+    contact_hertz, restitution_threshold, enable_sleep, time_to_sleep, and worker_count
+    (threads that share each step; the results are the same bits for every count).
     """
 
     def __init__(self, gravity: Sequence[float] = (0.0, -10.0), **settings: Any) -> None:
