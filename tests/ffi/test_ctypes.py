@@ -5,7 +5,8 @@
 Usage: test_ctypes.py path/to/libimpulse2d.so
 
 Declares the public structs and the signature of every function it calls, checks the
-library version against include/impulse2d/base.h, builds a small scene, steps it and
+library version against include/impulse2d/base.h and its struct layouts against
+i2d_get_struct_infos, builds a small scene, steps it and
 compares the resting positions with closed form, runs the FFI-friendly queries, and
 checks that errors come back across the boundary as status codes with messages.
 Exits 0 when every check passes; prints "N passed, M failed" last.
@@ -229,6 +230,33 @@ def check_version(lib, script_dir):
           "i2d_version() = 0x%06x, header says %d.%d.%d" % (lib.i2d_version(), major, minor, patch))
 
 
+class StructInfo(C.Structure):
+    _fields_ = [("name", C.c_char_p), ("size", C.c_int32), ("align", C.c_int32)]
+
+
+# The structs this script declares, by their C names.
+DECLARED = {
+    "i2d_vec2": Vec2, "i2d_rot": Rot, "i2d_aabb": AABB, "i2d_world_id": WorldId, "i2d_body_id": BodyId,
+    "i2d_shape_id": ShapeId, "i2d_filter": Filter, "i2d_query_filter": QueryFilter, "i2d_world_def": WorldDef,
+    "i2d_body_def": BodyDef, "i2d_shape_def": ShapeDef, "i2d_circle": Circle,
+    "i2d_manifold_point": ManifoldPoint, "i2d_manifold": Manifold, "i2d_ray_result": RayResult,
+    "i2d_struct_info": StructInfo,
+}
+
+
+def check_struct_layouts(lib):
+    # The hand-copied declarations above must match what the library was compiled with.
+    fn = lib.i2d_get_struct_infos
+    fn.restype = C.c_int32
+    fn.argtypes = [C.POINTER(C.POINTER(StructInfo))]
+    table = C.POINTER(StructInfo)()
+    count = fn(C.byref(table))
+    infos = {table[i].name.decode(): (table[i].size, table[i].align) for i in range(count)}
+    for name, cls in sorted(DECLARED.items()):
+        ours = (C.sizeof(cls), C.alignment(cls))
+        check(infos.get(name) == ours, "%s: library says (size, align) %s, this script %s" % (name, infos.get(name), ours))
+
+
 def check_struct_passing(lib):
     # Structs by value in both directions: two circles overlapping by 0.5 along +x.
     m = lib.i2d_collide_circles(Circle(Vec2(0, 0), 1.0), Circle(Vec2(1.5, 0), 1.0))
@@ -418,6 +446,7 @@ def main():
         return 1
 
     check_version(lib, script_dir)
+    check_struct_layouts(lib)
     check_struct_passing(lib)
     scene = run_scene(lib)
     if scene is not None:
