@@ -172,10 +172,19 @@ I2D_API i2d_status i2d_world_set_body_transforms(i2d_world_id world_id, const i2
             (count > 0 && !call.not_null(in, "transforms")) || !valid_transforms(call, count, in)) {
             return last_status();
         }
-        for (int32_t i = 0; i < count; ++i) {
-            Rot q;
-            normalized_rotation(call, in[i].q, "transforms", q);  // checked above: cannot fail
-            w.world->set_transform(body_slot(w, bodies[i]), Transform{capi::to_core(in[i].p), q});
+        // In chunks on the stack: no allocation, and one broadphase commit per chunk.
+        constexpr int32_t chunk = 256;
+        int32_t slots[chunk];
+        Transform transforms[chunk];
+        for (int32_t first = 0; first < count; first += chunk) {
+            const int32_t n = count - first < chunk ? count - first : chunk;
+            for (int32_t i = 0; i < n; ++i) {
+                Rot q;
+                normalized_rotation(call, in[first + i].q, "transforms", q);  // checked above: cannot fail
+                slots[i] = body_slot(w, bodies[first + i]);
+                transforms[i] = Transform{capi::to_core(in[first + i].p), q};
+            }
+            w.world->set_transforms(slots, transforms, n);
         }
         return I2D_OK;
     });

@@ -204,15 +204,20 @@ void World::mark_for_cover(int32_t body) {
 
 // Moving a body wakes it and whatever touches it (a static floor moved away from under a
 // sleeping pile, say).
-void World::set_transform(int32_t body, const Transform& xf) {
-    wake_body(body);
-    contacts_.visit_contacts(body, [this](int32_t, int32_t other) { wake_body(other); });
-    Body& b = bodies[body];
-    b.transform = xf;
-    b.center = transform_point(xf, b.local_center);
-    update_shape_bounds(b, shapes, broad_phase_, Vec2{}, false);
+void World::set_transform(int32_t body, const Transform& xf) { set_transforms(&body, &xf, 1); }
+
+void World::set_transforms(const int32_t* list, const Transform* transforms, int32_t count) {
+    for (int32_t i = 0; i < count; ++i) {
+        const int32_t body = list[i];
+        wake_body(body);
+        contacts_.visit_contacts(body, [this](int32_t, int32_t other) { wake_body(other); });
+        Body& b = bodies[body];
+        b.transform = transforms[i];
+        b.center = transform_point(transforms[i], b.local_center);
+        update_shape_bounds(b, shapes, broad_phase_, Vec2{}, false);
+        mark_for_cover(body);
+    }
     broad_phase_.commit_moves();
-    mark_for_cover(body);
 }
 
 // Velocities enter the world already within its limits: the solver's first use of a

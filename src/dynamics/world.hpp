@@ -76,6 +76,9 @@ public:
     // touches it too. Velocities of static bodies stay zero; a fixed-rotation body never
     // turns.
     void set_transform(int32_t body, const Transform& xf);
+    /// The same for many bodies, with one broadphase commit at the end: the trees take
+    /// the moved proxies in storage order rather than one at a time.
+    void set_transforms(const int32_t* bodies, const Transform* transforms, int32_t count);
     void set_linear_velocity(int32_t body, Vec2 v);
     void set_angular_velocity(int32_t body, float w);
     /// v scaled down to the world's maximum_linear_speed, w clamped to max_angular_speed.
