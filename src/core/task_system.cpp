@@ -2,6 +2,8 @@
 // TaskSystem: worker 0 on the caller, the rest on the job system or the pool.
 #include "core/task_system.hpp"
 
+#include <exception>
+
 #include "core/thread_pool.hpp"
 
 namespace i2d {
@@ -22,10 +24,25 @@ void TaskSystem::run_worker_task(int32_t start, int32_t end, int32_t, void* task
     }
 }
 
+// Where no threads can be started (a platform without them, such as WebAssembly built
+// without thread support, or a process at its limit) the calling thread does all the
+// work: any subset of workers finishes a run, so the results are the same.
+bool TaskSystem::start_pool() {
+    if (!pool_ && !pool_failed_) {
+        try {
+            pool_ = std::make_unique<ThreadPool>(worker_count_ - 1);
+        } catch (const std::exception&) {
+            pool_failed_ = true;
+        }
+    }
+    return pool_ != nullptr;
+}
+
 void TaskSystem::run_on_workers(void (*work)(int32_t worker, void* context), void* context) {
     const bool use_pool = callbacks_.enqueue == nullptr;
-    if (use_pool && worker_count_ > 1 && !pool_) {
-        pool_ = std::make_unique<ThreadPool>(worker_count_ - 1);
+    if (use_pool && worker_count_ > 1 && !start_pool()) {
+        work(0, context);
+        return;
     }
     for (int32_t w = 1; w < worker_count_; ++w) {
         WorkerTask& task = tasks_[std::size_t(w)];

@@ -57,10 +57,12 @@ private:
         int32_t worker;
     };
     static void run_worker_task(int32_t start, int32_t end, int32_t worker, void* task);
+    bool start_pool();
 
     int32_t worker_count_;
     TaskCallbacks callbacks_;
     std::unique_ptr<ThreadPool> pool_;  // made at the first run without callbacks
+    bool pool_failed_ = false;          // no threads could be started: worker 0 works alone
     std::vector<WorkerTask> tasks_;
     std::vector<void*> handles_;
 };

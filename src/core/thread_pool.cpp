@@ -12,12 +12,19 @@ ThreadPool::ThreadPool(int32_t thread_count) {
     for (int32_t t = 0; t < thread_count; ++t) {
         slots_.push_back(std::make_unique<Slot>());
     }
-    for (int32_t t = 0; t < thread_count; ++t) {
-        threads_.emplace_back([this, t] { serve(t); });
+    try {
+        for (int32_t t = 0; t < thread_count; ++t) {
+            threads_.emplace_back([this, t] { serve(t); });
+        }
+    } catch (...) {
+        stop();  // the threads that did start, before the error reaches the caller
+        throw;
     }
 }
 
-ThreadPool::~ThreadPool() {
+ThreadPool::~ThreadPool() { stop(); }
+
+void ThreadPool::stop() {
     for (const std::unique_ptr<Slot>& slot : slots_) {
         {
             std::lock_guard<std::mutex> lock(slot->mutex);

@@ -22,7 +22,8 @@ class ThreadPool {
 public:
     using Task = void (*)(int32_t start, int32_t end, int32_t worker, void* context);
 
-    /// Starts thread_count threads, which wait for tasks.
+    /// Starts thread_count threads, which wait for tasks; throws (having stopped those it
+    /// started) when the system cannot start one.
     explicit ThreadPool(int32_t thread_count);
     /// Stops and joins the threads; no task may be running.
     ~ThreadPool();
@@ -47,6 +48,7 @@ private:
         std::condition_variable finished;  // the caller waits here for its end
     };
     void serve(int32_t thread);
+    void stop();
 
     std::vector<std::unique_ptr<Slot>> slots_;
     std::vector<std::thread> threads_;
