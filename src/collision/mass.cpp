@@ -42,7 +42,7 @@ Moments triangle_moments(Vec2 p0, Vec2 p1, Vec2 p2) {
 Moments sector_moments(Vec2 p, Vec2 u, float theta, float r) {
     Moments m;
     m.area = 0.5f * theta * r * r;
-    const float offset = theta > 0.0f ? 4.0f * r * std::sin(0.5f * theta) / (3.0f * theta) : 2.0f * r / 3.0f;
+    const float offset = theta > 0.0f ? 4.0f * r * i2d::sin(0.5f * theta) / (3.0f * theta) : 2.0f * r / 3.0f;
     const Vec2 apex_first = (m.area * offset) * u;
     m.first = m.area * p + apex_first;
     m.second = 0.25f * theta * r * r * r * r + 2.0f * dot(p, apex_first) + m.area * dot(p, p);
@@ -82,7 +82,7 @@ MassData polygon_mass(const Polygon& poly, float density) {
             total.add(triangle_moments(v[i], v[i] + offset, v[j] + offset));
             total.add(triangle_moments(v[i], v[j] + offset, v[j]));
             const Vec2 n_prev = poly.normals[i == 0 ? poly.count - 1 : i - 1];
-            const float theta = std::atan2(cross(n_prev, poly.normals[i]), dot(n_prev, poly.normals[i]));
+            const float theta = i2d::atan2(cross(n_prev, poly.normals[i]), dot(n_prev, poly.normals[i]));
             total.add(sector_moments(v[i], normalize(n_prev + poly.normals[i]), theta, r));
         }
     }

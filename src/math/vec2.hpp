@@ -4,6 +4,8 @@
 
 #include <cmath>
 
+#include "math/trig.hpp"
+
 namespace i2d {
 
 struct Vec2 {
@@ -45,8 +47,12 @@ struct Rot {
 /// Cross product of a spin (scalar, about z) with a vector: w x r.
 inline Vec2 cross(float w, Vec2 r) { return {-w * r.y, w * r.x}; }
 
-inline Rot make_rot(float angle) { return {std::cos(angle), std::sin(angle)}; }
-inline float get_angle(Rot q) { return std::atan2(q.s, q.c); }
+/// The engine's own trigonometry (trig.hpp), never libm: the same bits on every build.
+inline Rot make_rot(float angle) {
+    const SinCos sc = sin_cos(angle);
+    return {sc.c, sc.s};
+}
+inline float get_angle(Rot q) { return i2d::atan2(q.s, q.c); }
 inline Rot normalize(Rot q) {
     const float len = std::sqrt(q.c * q.c + q.s * q.s);
     return len > 0.0f ? Rot{q.c / len, q.s / len} : Rot{};

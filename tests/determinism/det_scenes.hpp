@@ -15,7 +15,6 @@
 
 #include <impulse2d/impulse2d.h>
 
-#include <cmath>
 #include <cstdint>
 
 namespace det {
@@ -53,7 +52,9 @@ inline void add_mixed_shape(i2d_body_id body, int kind, const i2d_shape_def* def
         default: {
             i2d_vec2 hexagon[6];
             for (int k = 0; k < 6; ++k) {
-                hexagon[k] = i2d_vec2{0.28f * std::cos(1.0472f * float(k)), 0.28f * std::sin(1.0472f * float(k))};
+                // The engine's trigonometry, not libm's: the scene is the same everywhere.
+                const i2d_rot q = i2d_make_rot(1.0472f * float(k));
+                hexagon[k] = i2d_vec2{0.28f * q.c, 0.28f * q.s};
             }
             i2d_shape_create_polygon(body, def, hexagon, 6);
             break;

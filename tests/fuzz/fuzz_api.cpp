@@ -437,6 +437,9 @@ void run_body_call(FuzzInput& in, uint8_t op) {
             i2d_body_get_world(b);
             i2d_body_get_type(b);
             i2d_body_get_rotation(b);
+            if (!finite2(i2d_body_get_position(b))) {
+                fail("non-finite body position", 0, 0);
+            }
             i2d_body_get_mass(b);
             i2d_body_get_rotational_inertia(b);
             i2d_body_get_world_center_of_mass(b);

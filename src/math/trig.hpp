@@ -1,0 +1,27 @@
+// SPDX-License-Identifier: MIT
+// Sine, cosine and atan2 of the engine's own, so that results never depend on the C
+// library: libm differs between platforms, versions and even compile flags, and a
+// rotation built from a different cos bit gives a different simulation. These use only
+// +, -, *, / and sqrt, which IEEE 754 rounds the same everywhere (contraction to fused
+// multiply-add is off in the build), so every build gives the same bits.
+//
+// Accuracy: within 1 ulp of the float result for |angle| <= 1e5 (tests compare with
+// long double); beyond that the reduction by pi/2 loses bits, but the result is still
+// the same on every platform.
+#pragma once
+
+namespace i2d {
+
+/// sin and cos of one angle (rad), computed together.
+struct SinCos {
+    float s, c;
+};
+SinCos sin_cos(float angle);
+
+inline float sin(float angle) { return sin_cos(angle).s; }
+inline float cos(float angle) { return sin_cos(angle).c; }
+
+/// The angle of (x, y) in [-pi, pi], with IEEE's signed-zero and infinity cases.
+float atan2(float y, float x);
+
+}  // namespace i2d
