@@ -103,6 +103,8 @@ try {
   await page('Runtime.enable');
   await page('Log.enable');
   await page('Page.enable');
+  // The window's size minus its frame is not the viewport: set the viewport itself.
+  await page('Emulation.setDeviceMetricsOverride', { width: 1000, height: 720, deviceScaleFactor: 1, mobile: false });
   await page('Page.navigate', { url: pageUrl });
 
   const evaluate = async (expression) => {

@@ -83,7 +83,8 @@ export class Body {
   readonly angle: number;
   transform(): Transform;
   setTransform(position: Vec2Like, angle?: number): void;
-  linearVelocity: Vec2Like;
+  get linearVelocity(): Vec2;
+  set linearVelocity(v: Vec2Like);
   setLinearVelocity(v: Vec2Like): void;
   angularVelocity: number;
   readonly mass: number;
@@ -127,7 +128,8 @@ export class World {
   readonly bodies: Body[];
   isValid(): boolean;
   step(timeStep?: number, substeps?: number): void;
-  gravity: Vec2Like;
+  get gravity(): Vec2;
+  set gravity(g: Vec2Like);
   createBody(options?: BodyOptions): Body;
   counters(): Counters;
   stateHash(): bigint;

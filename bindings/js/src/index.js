@@ -8,7 +8,8 @@ import { Runtime } from './runtime.js';
 import { World } from './world.js';
 
 export { Impulse2dError } from './errors.js';
-export { World, BodyMoves } from './world.js';
+export { World } from './world.js';
+export { BodyMoves } from './body_moves.js';
 export { Body } from './body.js';
 export { Shape } from './shape.js';
 
