@@ -121,6 +121,9 @@ void Solver::build_stages(int32_t substep_count) {
                                                              fixed_soft.impulse_scale}};
         }
     }
+    if (!stages_changed(substep_count)) {
+        return;  // a steady scene: the same stages over the same counts as last step
+    }
     const int32_t bodies = int32_t(states_.size()) - 1;
     const int32_t min_blocks = (contacts_per_work_block + contact_solver_.kernels().width - 1) /
                                contact_solver_.kernels().width;
@@ -146,6 +149,25 @@ void Solver::build_stages(int32_t substep_count) {
     add_stage(&Solver::finalize_bodies, bodies, bodies_per_work_block);
     add_stage(&Solver::number_move_events, 1, 1);
     add_stage(&Solver::write_move_events, bodies, bodies_per_work_block);
+}
+
+// The stage list depends only on these counts; a small world's step would otherwise
+// spend a tenth of its time building the same list again.
+bool Solver::stages_changed(int32_t substep_count) {
+    stage_key_scratch_.clear();
+    stage_key_scratch_.push_back(substep_count);
+    stage_key_scratch_.push_back(parallel_ ? links_.tasks.worker_count() : 1);
+    stage_key_scratch_.push_back(int32_t(states_.size()));
+    stage_key_scratch_.push_back(contact_solver_.block_count());
+    stage_key_scratch_.push_back(contact_solver_.overflow_count());
+    for (int32_t run = 0; run < contact_solver_.run_count(); ++run) {
+        stage_key_scratch_.push_back(contact_solver_.run_items(run));
+    }
+    if (stage_key_scratch_ == stage_key_) {
+        return false;
+    }
+    stage_key_.swap(stage_key_scratch_);
+    return true;
 }
 
 // One state per awake body in awake order (the shared fixed state is set already).

@@ -71,6 +71,7 @@ public:
 private:
     void color_contacts();
     void build_stages(int32_t substep_count);
+    bool stages_changed(int32_t substep_count);
     void add_stage(Stage::Fn fn, int32_t item_count, int32_t min_items_per_block, int32_t arg0 = 0,
                    int32_t arg1 = 0);
     void add_contact_stages(Stage::Fn fn, int32_t pass);
@@ -114,6 +115,7 @@ private:
     std::vector<SolvePass> passes_;  // per substep: with push-out, then relaxing
     bool bounce_ = false;
     std::vector<Stage> stages_;
+    std::vector<int32_t> stage_key_, stage_key_scratch_;  // what stages_ was built for
     StageRunner runner_;
     bool parallel_ = false;
     // What the final pass leaves per awake body for finish_bodies.
