@@ -71,6 +71,13 @@ function expect(condition, what) {
   if (!condition) failures.push(what);
 }
 
+// A page or browser that hangs fails the test rather than waiting for CTest's timeout.
+const WATCHDOG_SECONDS = 120;
+setTimeout(() => {
+  console.log(`FAIL no result after ${WATCHDOG_SECONDS} s`);
+  process.exit(1);
+}, WATCHDOG_SECONDS * 1000).unref();
+
 const server = await startServer(0);
 const pageUrl = `http://127.0.0.1:${server.address().port}/examples/web/`;
 const profile = mkdtempSync(path.join(os.tmpdir(), 'impulse2d_chromium_'));
@@ -82,6 +89,7 @@ const chromium = spawn(CHROMIUM, [
 ], { stdio: ['ignore', 'ignore', 'pipe', 'pipe', 'pipe'] });
 let chromiumLog = '';
 chromium.stderr.on('data', (d) => { chromiumLog += d; });
+chromium.on('error', (error) => { console.log(`FAIL cannot start ${CHROMIUM}: ${error.message}`); process.exit(1); });
 
 const consoleErrors = [];
 try {

@@ -17,20 +17,20 @@ const TYPES = {
 
 export function startServer(port = 0) {
   const server = http.createServer(async (request, response) => {
-    const url = new URL(request.url, 'http://localhost');
-    let file = path.normalize(path.join(ROOT, decodeURIComponent(url.pathname)));
-    if (file !== ROOT && !file.startsWith(ROOT + path.sep)) {
-      response.writeHead(403).end('outside the repository');
-      return;
-    }
     try {
+      const url = new URL(request.url, 'http://localhost');
+      let file = path.normalize(path.join(ROOT, decodeURIComponent(url.pathname)));
+      if (file !== ROOT && !file.startsWith(ROOT + path.sep)) {
+        response.writeHead(403).end('outside the repository');
+        return;
+      }
       if ((await stat(file)).isDirectory()) file = path.join(file, 'index.html');
       const body = await readFile(file);
       response.writeHead(200, { 'content-type': TYPES[path.extname(file)] ?? 'application/octet-stream',
                                 'cache-control': 'no-store' });
       response.end(body);
     } catch {
-      response.writeHead(404).end('not found');
+      response.writeHead(404).end('not found');  // also a malformed path
     }
   });
   return new Promise((resolve) => server.listen(port, '127.0.0.1', () => resolve(server)));
