@@ -16,6 +16,9 @@ constexpr double half_pi_1 = 1.57079632673412561417e+00;
 constexpr double half_pi_2 = 6.07710050630396597660e-11;
 constexpr double half_pi_3 = 2.02226624879595063154e-21;
 constexpr double two_over_pi = 6.36619772367581382433e-01;
+constexpr double two_pi = 6.28318530717958623200e+00;
+// Below this |k| < 2^20 and k times the first two parts of pi / 2 is exact.
+constexpr double exact_reduction_limit = 1.0e6;
 constexpr double pi = 3.14159265358979311600e+00;
 constexpr double pi_lo = 1.22464679914735317723e-16;  // pi - (double)pi
 constexpr double quarter_pi = 7.85398163397448278999e-01;
@@ -67,7 +70,14 @@ SinCos sin_cos(float angle) {
         const float nan = std::numeric_limits<float>::quiet_NaN();
         return {nan, nan};
     }
-    const double x = angle;
+    double x = angle;
+    if (std::fabs(x) > exact_reduction_limit) {
+        // Far angles first lose whole turns of the double 2 pi (fmod is exact): the
+        // turns are then off by x times 2e-17 rad, but the remainder stays small
+        // enough for the reduction below. Without this, 3e38 reduced to about 1e22
+        // and the series overflowed (found by the fuzzer).
+        x = std::fmod(x, two_pi);
+    }
     const double k = std::floor(x * two_over_pi + 0.5);  // nearest quarter turn
     const double r = ((x - k * half_pi_1) - k * half_pi_2) - k * half_pi_3;
     const double s = sin_series(r), c = cos_series(r);

@@ -252,3 +252,14 @@ I2D_TEST(api_extreme_tiny_time_step_refused) {
         check_pair_after_step(&p, "after a refused tiny step");
     }
 }
+
+/* Found by fuzzing: i2d_make_rot of a huge finite angle returned (inf, -inf). */
+I2D_TEST(api_extreme_make_rot_far_angle) {
+    const float far[] = {3.4028235e38f, -1e30f, 1e9f};
+    for (size_t k = 0; k < sizeof far / sizeof far[0]; ++k) {
+        i2d_rot q = i2d_make_rot(far[k]);
+        I2D_CHECK(i2d_last_status() == I2D_OK);
+        I2D_CHECK(isfinite(q.c) && isfinite(q.s));
+        I2D_CHECK_NEAR(q.c * q.c + q.s * q.s, 1.0, 1e-6);
+    }
+}

@@ -2,7 +2,8 @@
 # SPDX-License-Identifier: MIT
 """Writes the fuzzer's seed corpus: small call programs in fuzz_api.cpp's encoding that
 build scenes worth mutating (a pile on a floor, queries with callbacks, pure functions).
-Run from this directory after changing the encoding: python3 make_seeds.py"""
+Run from this directory after changing the encoding: python3 make_seeds.py
+The corpus also holds the inputs of past findings (finding_*), kept as regressions."""
 import os
 
 
