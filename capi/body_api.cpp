@@ -16,17 +16,22 @@ using namespace i2d::capi;
 
 namespace {
 
-bool validate_body_def(Call& call, const i2d_body_def* def) {
-    if (!call.not_null(def, "body def") || !call.cookie(def->internal_cookie, "body_def")) {
-        return false;
-    }
-    // A C caller can store any integer in the enum; in C++ merely loading an
-    // out-of-range enum value is undefined, so read the raw bytes.
+// A C caller can store any integer in the enum; in C++ merely loading an out-of-range
+// enum value is undefined, so read the raw bytes.
+bool valid_body_type(Call& call, const i2d_body_type* value, const char* what) {
     std::underlying_type_t<i2d_body_type> type = 0;
-    std::memcpy(&type, &def->type, sizeof type);
+    std::memcpy(&type, value, sizeof type);
     if (type != I2D_BODY_STATIC && type != I2D_BODY_KINEMATIC && type != I2D_BODY_DYNAMIC) {
-        return call.fail(I2D_ERR_INVALID_ARGUMENT, "body def: type %lld is not an i2d_body_type",
+        return call.fail(I2D_ERR_INVALID_ARGUMENT, "%s %lld is not an i2d_body_type", what,
                          static_cast<long long>(type));
+    }
+    return true;
+}
+
+bool validate_body_def(Call& call, const i2d_body_def* def) {
+    if (!call.not_null(def, "body def") || !call.cookie(def->internal_cookie, "body_def") ||
+        !valid_body_type(call, &def->type, "body def: type")) {
+        return false;
     }
     Rot rotation;
     if (!call.coordinate(def->position, "body def: position") ||
@@ -106,6 +111,17 @@ I2D_API i2d_body_type i2d_body_get_type(i2d_body_id id) {
     return guarded("i2d_body_get_type", I2D_BODY_STATIC, [&](Call& call) {
         BodyRef b;
         return call.body(id, b) ? static_cast<i2d_body_type>(b.body().type) : I2D_BODY_STATIC;
+    });
+}
+
+I2D_API i2d_status i2d_body_set_type(i2d_body_id id, i2d_body_type type) {
+    return guarded("i2d_body_set_type", I2D_ERR_OUT_OF_MEMORY, [&](Call& call) {
+        BodyRef b;
+        if (!mutable_body(call, id, b) || !valid_body_type(call, &type, "type")) {
+            return last_status();
+        }
+        b.world->set_type(b.index, static_cast<BodyType>(type));
+        return I2D_OK;
     });
 }
 

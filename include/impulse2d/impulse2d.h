@@ -88,6 +88,12 @@ I2D_API i2d_status i2d_body_destroy(i2d_body_id body);
 I2D_API bool i2d_body_is_valid(i2d_body_id body);
 I2D_API i2d_world_id i2d_body_get_world(i2d_body_id body);
 I2D_API i2d_body_type i2d_body_get_type(i2d_body_id body);
+/** Makes the body static, kinematic or dynamic, at any time between steps. Its mass,
+ *  rotational inertia and bounds follow the new type; a body made static stops (its
+ *  velocities become 0) and a kinematic or static one drops its accumulated forces. Its
+ *  contacts end (their end events come with the next step) and the next step finds the
+ *  pairs the new type may have; the body and everything that touched it wake. */
+I2D_API i2d_status i2d_body_set_type(i2d_body_id body, i2d_body_type type);
 /** The body origin in world coordinates, m. */
 I2D_API i2d_vec2 i2d_body_get_position(i2d_body_id body);
 I2D_API i2d_rot i2d_body_get_rotation(i2d_body_id body);

@@ -57,6 +57,41 @@ void World::destroy_body(int32_t body) {
     bodies.free(body);
 }
 
+void World::set_type(int32_t body, BodyType type) {
+    if (bodies[body].type == type) {
+        return;
+    }
+    // What touched it loses a support or meets a new obstacle.
+    wake_body(body);
+    contacts_.visit_contacts(body, [this](int32_t, int32_t other) { wake_body(other); });
+    for (int32_t s = bodies[body].head_shape; s != null_index; s = shapes[s].next_in_body) {
+        contacts_.destroy_contacts_of_shape(s, false);
+        broad_phase_.destroy_proxy(shapes[s].proxy_key);
+    }
+    if (bodies[body].type != BodyType::static_body) {
+        islands_.remove_body(body);
+    }
+    Body& b = bodies[body];
+    b.type = type;
+    b.sleep_time = 0.0f;
+    if (type == BodyType::static_body) {
+        b.linear_velocity = {};
+        b.angular_velocity = 0.0f;
+    }
+    if (type != BodyType::dynamic) {
+        b.force = {};
+        b.torque = 0.0f;
+    }
+    for (int32_t s = b.head_shape; s != null_index; s = shapes[s].next_in_body) {
+        create_proxy(s, true);
+    }
+    update_mass(body);
+    if (type != BodyType::static_body) {
+        islands_.add_body(body);
+        mark_for_cover(body);
+    }
+}
+
 void World::create_proxy(int32_t shape, bool query_now) {
     Shape& s = shapes[shape];
     const BodyType type = bodies[s.body].type;

@@ -76,6 +76,11 @@ public:
     // touches it too. Velocities of static bodies stay zero; a fixed-rotation body never
     // turns.
     void set_transform(int32_t body, const Transform& xf);
+    /// Makes the body static, kinematic or dynamic between steps: its contacts go (the
+    /// next step finds the pairs its new type may have), its shapes' proxies move to the
+    /// new type's tree, its mass follows, a static body stops, and it wakes with what
+    /// touched it.
+    void set_type(int32_t body, BodyType type);
     /// The same for many bodies, with one broadphase commit at the end: the trees take
     /// the moved proxies in storage order rather than one at a time.
     void set_transforms(const int32_t* bodies, const Transform* transforms, int32_t count);

@@ -241,6 +241,17 @@ static void run_setters_refused(const fixture* a, const fixture* b) {
     CHECK_REFUSED("i2d_body_set_awake(static, true)", i2d_body_set_awake(a->body[FIX_GROUND], true),
                   I2D_ERR_INVALID_ARGUMENT);
     CHECK_UNCHANGED("i2d_body_set_awake(static, true)", a, &before);
+    /* A body type outside the enumeration (C code can pass any integer). */
+    {
+        const int bad_types[] = {-1, 3, 7, 1 << 20};
+        for (int i = 0; i < 4; ++i) {
+            i2d_body_type bad;
+            memcpy(&bad, &bad_types[i], sizeof bad);
+            snprintf(what, sizeof what, "i2d_body_set_type(ball, %d)", bad_types[i]);
+            CHECK_REFUSED(what, i2d_body_set_type(a->body[FIX_BALL], bad), I2D_ERR_INVALID_ARGUMENT);
+            CHECK_UNCHANGED(what, a, &before);
+        }
+    }
     check_twins_agree_after_steps(a, b);
 }
 
@@ -768,6 +779,8 @@ static void try_changes_while_locked(const fixture* f, const snapshot* before) {
     CHECK_LOCKED(f, before, i2d_body_apply_angular_impulse(ball, 100.0f, true));
     CHECK_LOCKED(f, before, i2d_body_set_awake(ball, false));
     CHECK_LOCKED(f, before, i2d_body_set_awake(ball, true));
+    CHECK_LOCKED(f, before, i2d_body_set_type(ball, I2D_BODY_STATIC));
+    CHECK_LOCKED(f, before, i2d_body_set_type(f->body[FIX_GROUND], I2D_BODY_DYNAMIC));
     CHECK_LOCKED(f, before, i2d_world_set_gravity(f->world, v2(0.0f, 10.0f)));
     CHECK_LOCKED(f, before, i2d_shape_set_friction(f->shape[FIX_BALL_CIRCLE], 0.1f));
     CHECK_LOCKED(f, before, i2d_shape_set_restitution(f->shape[FIX_BALL_CIRCLE], 0.9f));

@@ -178,6 +178,7 @@ static void check_body_id_refused(i2d_body_id b, const char* ctx) {
     CHECK_HANDLE_REFUSED(ctx, i2d_body_apply_angular_impulse(b, 100.0f, true));
     CHECK_HANDLE_REFUSED(ctx, i2d_body_set_awake(b, false));
     CHECK_HANDLE_REFUSED(ctx, i2d_body_set_awake(b, true));
+    CHECK_HANDLE_REFUSED(ctx, i2d_body_set_type(b, I2D_BODY_DYNAMIC));
     bool awake = i2d_body_is_awake(b);
     CHECK_LAST_HANDLE_REFUSED(ctx, "i2d_body_is_awake");
     CHECK_IN(ctx, !awake);

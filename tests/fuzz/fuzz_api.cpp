@@ -423,6 +423,12 @@ void run_body_call(FuzzInput& in, uint8_t op) {
         case 9: i2d_body_apply_angular_impulse(pick_body(in), in.real(), in.flag()); break;
         case 10: i2d_body_set_awake(pick_body(in), in.flag()); break;
         case 11: i2d_body_set_user_data(pick_body(in), in.flag() ? g_held : nullptr); break;
+        case 13: {
+            // Mostly the three types, now and then any integer a C caller could pass.
+            const int32_t type = in.byte() > 240 ? static_cast<int32_t>(in.u32()) : int32_t(in.byte() % 3);
+            fuzz_body_set_type(pick_body(in).bits, type);
+            break;
+        }
         case 12: {
             const i2d_body_id b = pick_body(in);
             i2d_shape_id out[8];
@@ -625,7 +631,7 @@ void run_program(FuzzInput& in) {
             }
             run_world_call(in, sub % 7);
         } else if (group == 1 || group == 2) {
-            run_body_call(in, sub % 14);
+            run_body_call(in, sub % 15);
         } else if (group == 3) {
             run_shape_call(in, sub % 12);
         } else if (group == 4) {

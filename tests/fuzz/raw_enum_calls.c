@@ -8,3 +8,8 @@
 bool fuzz_simd_path_supported(int32_t path) { return i2d_simd_path_supported((i2d_simd_path)path); }
 
 const char* fuzz_status_string(int32_t status) { return i2d_status_string((i2d_status)status); }
+int32_t fuzz_body_set_type(uint64_t body_bits, int32_t type) {
+    i2d_body_id body;
+    body.bits = body_bits;
+    return (int32_t)i2d_body_set_type(body, (i2d_body_type)type);
+}

@@ -11,6 +11,7 @@ extern "C" {
 #endif
 bool fuzz_simd_path_supported(int32_t path);
 const char* fuzz_status_string(int32_t status);
+int32_t fuzz_body_set_type(uint64_t body_bits, int32_t type);
 #ifdef __cplusplus
 }
 #endif
