@@ -3,8 +3,9 @@
 ``pip install --no-build-isolation bindings/python`` after the README's build gives an
 ``import impulse2d`` that works from anywhere.
 
-The library is taken from IMPULSE2D_LIBRARY if set, else from the newest
-build*/capi/ of this source tree. Without one the package installs alone and finds the
+The library is taken from IMPULSE2D_LIBRARY if set, else from build/capi/ (the README's
+build), else from the newest other build*/capi/ of this source tree. Sanitizer and
+cross builds sit beside it there: name the library when several exist. Without one the package installs alone and finds the
 library at import time (IMPULSE2D_LIBRARY, or where ``cmake --install`` put it).
 """
 
@@ -23,6 +24,10 @@ def built_library():
     from_env = os.environ.get("IMPULSE2D_LIBRARY")
     if from_env:
         return from_env
+    for name in ("libimpulse2d.so", "libimpulse2d.dylib"):
+        readme_build = os.path.join(ROOT, "build", "capi", name)
+        if os.path.exists(readme_build):
+            return readme_build
     candidates = glob.glob(os.path.join(ROOT, "build*", "capi", "libimpulse2d.so")) + glob.glob(
         os.path.join(ROOT, "build*", "capi", "libimpulse2d.dylib")
     )

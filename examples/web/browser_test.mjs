@@ -192,7 +192,13 @@ try {
   chromium.kill();
   await Promise.race([exited, wait(5000)]);
   server.close();
-  rmSync(profile, { recursive: true, force: true, maxRetries: 5, retryDelay: 200 });
+  // Its helper processes can outlive it for a moment and still write there: a profile
+  // left in the temporary directory is reported, not failed.
+  try {
+    rmSync(profile, { recursive: true, force: true, maxRetries: 10, retryDelay: 300 });
+  } catch (error) {
+    console.log(`note: could not remove ${profile} (${error.code}); left for the system to clean`);
+  }
 }
 console.log(failures.length ? `${failures.length} check(s) failed` : 'browser test passed');
 process.exit(failures.length ? 1 : 0);

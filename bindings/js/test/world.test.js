@@ -2,10 +2,15 @@
 // Creating, stepping and destroying worlds and bodies through the wasm module.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
+import { readFileSync } from 'node:fs';
 import { i2d, groundedWorld, stepSeconds } from './fixture.js';
 
+// The package and the library it wraps carry one version.
+const packageVersion = JSON.parse(readFileSync(new URL('../package.json', import.meta.url))).version;
+
 test('the module reports the library version and solves contacts on the scalar path', () => {
-  assert.equal(i2d.version, 0x000100);
+  const [major, minor, patch] = packageVersion.split('.').map(Number);
+  assert.equal(i2d.version, (major << 16) | (minor << 8) | patch);
   const world = i2d.createWorld();
   assert.equal(world.simdPath(), 1);
   world.destroy();
