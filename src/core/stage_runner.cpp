@@ -13,6 +13,17 @@ int32_t items_per_block(int32_t items, int32_t workers, int32_t min_items) {
     return size > min_items ? size : (min_items > 0 ? min_items : 1);
 }
 
+Stage make_stage(Stage::Fn fn, void* owner, int32_t item_count, int32_t workers, bool parallel,
+                 int32_t min_items_per_block) {
+    Stage stage;
+    stage.fn = fn;
+    stage.owner = owner;
+    stage.item_count = item_count;
+    stage.items_per_block = parallel ? items_per_block(item_count, workers, min_items_per_block)
+                                     : (item_count > 0 ? item_count : 1);
+    return stage;
+}
+
 void StageRunner::run(TaskSystem& tasks, const std::vector<Stage>& stages, bool parallel) {
     if (!parallel || tasks.worker_count() == 1) {
         for (const Stage& stage : stages) {

@@ -40,6 +40,10 @@ struct Stage {
 /// one slow worker does not hold a stage up, but no block smaller than min_items.
 int32_t items_per_block(int32_t items, int32_t workers, int32_t min_items);
 
+/// A stage over item_count items: in blocks for `workers` when parallel, else one block.
+Stage make_stage(Stage::Fn fn, void* owner, int32_t item_count, int32_t workers, bool parallel,
+                 int32_t min_items_per_block);
+
 class StageRunner {
 public:
     /// Runs the stages in order on the task system's workers, or inline on the calling

@@ -259,17 +259,12 @@ void ContactSet::query_range(void* set, const Stage& stage, int32_t begin, int32
 void ContactSet::find_new_contacts(BroadPhase& broad_phase) {
     const int32_t queries = broad_phase.begin_pair_queries();
     const bool parallel = tasks_.worker_count() > 1 && queries >= parallel_min_moved_proxies;
-    Stage stage;
-    stage.fn = &ContactSet::query_range;
-    stage.owner = this;
-    stage.item_count = queries;
-    stage.items_per_block = parallel ? items_per_block(queries, tasks_.worker_count(), proxies_per_work_block)
-                                     : (queries > 0 ? queries : 1);
-    const int32_t blocks = stage.block_count();
+    stages_.assign(1, make_stage(&ContactSet::query_range, this, queries, tasks_.worker_count(), parallel,
+                                 proxies_per_work_block));
+    const int32_t blocks = stages_[0].block_count();
     if (int32_t(block_pairs_.size()) < blocks) {
         block_pairs_.resize(std::size_t(blocks));
     }
-    stages_.assign(1, stage);
     querying_ = &broad_phase;
     runner_.run(tasks_, stages_, parallel);
     querying_ = nullptr;
@@ -293,15 +288,7 @@ void ContactSet::collide(float time_step) {
     const int32_t count = int32_t(awake_.size());
     collide_flags_.resize(std::size_t(count));
     time_step_ = time_step;
-    const bool parallel = tasks_.worker_count() > 1 && count >= parallel_min_contacts;
-    Stage stage;
-    stage.fn = &ContactSet::collide_range;
-    stage.owner = this;
-    stage.item_count = count;
-    stage.items_per_block = parallel ? items_per_block(count, tasks_.worker_count(), contacts_per_work_block)
-                                     : (count > 0 ? count : 1);
-    stages_.assign(1, stage);
-    runner_.run(tasks_, stages_, parallel);
+    run_over_awake(&ContactSet::collide_range);
 
     bool layout_change = false;
     for (int32_t k = 0; k < count; ++k) {
@@ -322,6 +309,14 @@ void ContactSet::collide(float time_step) {
         }
     }
     layout_version_ += layout_change ? 1u : 0u;
+}
+
+// One stage over the awake contacts, shared by the workers when there are enough.
+void ContactSet::run_over_awake(Stage::Fn fn) {
+    const int32_t count = int32_t(awake_.size());
+    const bool parallel = tasks_.worker_count() > 1 && count >= parallel_min_contacts;
+    stages_.assign(1, make_stage(fn, this, count, tasks_.worker_count(), parallel, contacts_per_work_block));
+    runner_.run(tasks_, stages_, parallel);
 }
 
 void ContactSet::collide_range(void* set, const Stage&, int32_t begin, int32_t end, int32_t) {
@@ -457,15 +452,7 @@ void ContactSet::update_links() {
 void ContactSet::end_step() {
     const int32_t count = int32_t(awake_.size());
     collide_flags_.resize(std::size_t(count));
-    const bool parallel = tasks_.worker_count() > 1 && count >= parallel_min_contacts;
-    Stage stage;
-    stage.fn = &ContactSet::end_range;
-    stage.owner = this;
-    stage.item_count = count;
-    stage.items_per_block = parallel ? items_per_block(count, tasks_.worker_count(), contacts_per_work_block)
-                                     : (count > 0 ? count : 1);
-    stages_.assign(1, stage);
-    runner_.run(tasks_, stages_, parallel);
+    run_over_awake(&ContactSet::end_range);
     for (int32_t k = count - 1; k >= 0; --k) {
         const uint8_t flags = collide_flags_[std::size_t(k)];
         if (flags == 0) {

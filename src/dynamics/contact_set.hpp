@@ -111,6 +111,7 @@ private:
     static void collide_range(void* set, const Stage& stage, int32_t begin, int32_t end, int32_t worker);
     static void query_range(void* set, const Stage& stage, int32_t begin, int32_t end, int32_t worker);
     static void end_range(void* set, const Stage& stage, int32_t begin, int32_t end, int32_t worker);
+    void run_over_awake(Stage::Fn fn);
     bool may_pair(int32_t shape_a, int32_t shape_b) const;
     void report_touch_changes(const Contact& contact, bool touching_now);
     ShapePairEvent event_of(const Contact& contact) const;

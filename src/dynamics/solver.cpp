@@ -73,12 +73,7 @@ ContactLayout Solver::contact_layout() const {
 }
 
 void Solver::add_stage(Stage::Fn fn, int32_t item_count, int32_t min_items_per_block, int32_t arg0, int32_t arg1) {
-    Stage stage;
-    stage.fn = fn;
-    stage.owner = this;
-    stage.item_count = item_count;
-    stage.items_per_block = parallel_ ? items_per_block(item_count, links_.tasks.worker_count(), min_items_per_block)
-                                      : (item_count > 0 ? item_count : 1);
+    Stage stage = make_stage(fn, this, item_count, links_.tasks.worker_count(), parallel_, min_items_per_block);
     stage.arg0 = arg0;
     stage.arg1 = arg1;
     stages_.push_back(stage);
