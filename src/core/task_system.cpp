@@ -28,6 +28,10 @@ void TaskSystem::run_worker_task(int32_t start, int32_t end, int32_t, void* task
 // without thread support, or a process at its limit) the calling thread does all the
 // work: any subset of workers finishes a run, so the results are the same.
 bool TaskSystem::start_pool() {
+#if defined(__EMSCRIPTEN__) && !defined(__EMSCRIPTEN_PTHREADS__)
+    // WebAssembly built without threads (and without exceptions): trying would abort.
+    pool_failed_ = true;
+#endif
     if (!pool_ && !pool_failed_) {
         try {
             pool_ = std::make_unique<ThreadPool>(worker_count_ - 1);
