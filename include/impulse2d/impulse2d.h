@@ -29,6 +29,7 @@
 #include "base.h"
 #include "collision.h"
 #include "id.h"
+#include "joint.h"
 #include "types.h"
 
 /* ---- Definitions ---------------------------------------------------------------- */

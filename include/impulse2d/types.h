@@ -140,6 +140,11 @@ typedef struct i2d_world_def {
     i2d_finish_task_fn* finish_task;
     /** Passed to enqueue_task and finish_task; default NULL. */
     void* user_task_context;
+    /** Stiffness of the rigid parts of joints, Hz; default 60. Range [0.001, 1e5]. Like
+     *  contact_hertz, capped at a quarter of the substep rate. */
+    float joint_hertz;
+    /** Damping ratio of that stiffness; default 2. Range [0, 1e5]. */
+    float joint_damping_ratio;
     /** Set by i2d_default_world_def(); do not set. */
     uint32_t internal_cookie;
 } i2d_world_def;

@@ -48,6 +48,9 @@ public:
     /// Grows the fat box in place (or the queued box of a pending move) and queues the
     /// proxy for pair finding.
     void enlarge_proxy(int32_t key, const AABB& fat_aabb);
+    /// Queues the proxy for pair finding where it is: a pair it was refused may now be
+    /// wanted (a joint that kept two bodies apart went).
+    void requery_proxy(int32_t key) { buffer_move(key); }
 
     /// Finds new candidate pairs of the queued proxies and clears the queue. Appends each
     /// pair once to `out` (shape_a < shape_b) if `accept(shape_a, shape_b)` says so; the

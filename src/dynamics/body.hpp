@@ -63,6 +63,8 @@ struct alignas(64) Body {
     int32_t head_contact_key = null_index;  // list of contacts, linked through ContactEdge
     int32_t contact_count = 0;
     int32_t island_prev = null_index, island_next = null_index;  // the island's body list
+    int32_t head_joint_key = null_index;  // list of joints, linked through JointEdge
+    int32_t joint_count = 0;
 };
 
 }  // namespace i2d

@@ -13,6 +13,7 @@
 #include "core/reserve.hpp"
 #include "dynamics/constants.hpp"
 #include "dynamics/island.hpp"
+#include "dynamics/joint_set.hpp"
 #include "math/math.hpp"
 
 namespace i2d {
@@ -203,6 +204,18 @@ void ContactSet::destroy_contacts_of_shape(int32_t shape, bool only_filtered_out
     }
 }
 
+void ContactSet::destroy_contacts_between(int32_t body_a, int32_t body_b) {
+    int32_t key = bodies_[body_a].head_contact_key;
+    while (key != null_index) {
+        const Contact& c = contacts_[contact_of_key(key)];
+        const int32_t next = c.edges[edge_of_key(key)].next_key;
+        if (c.edges[edge_of_key(key) ^ 1].body == body_b) {
+            destroy_contact(contact_of_key(key), false);
+        }
+        key = next;
+    }
+}
+
 void ContactSet::mix_materials_of_shape(int32_t shape) {
     visit_contacts(shapes_[shape].body, [&](int32_t contact, int32_t) {
         Contact& c = contacts_[contact];
@@ -245,7 +258,7 @@ bool ContactSet::may_pair(int32_t shape_a, int32_t shape_b) const {
     if (bodies_[a.body].type != BodyType::dynamic && bodies_[b.body].type != BodyType::dynamic) {
         return false;
     }
-    return should_collide(a.filter, b.filter);
+    return should_collide(a.filter, b.filter) && !joints_.keeps_apart(a.body, b.body);
 }
 
 void ContactSet::query_range(void* set, const Stage& stage, int32_t begin, int32_t end, int32_t) {

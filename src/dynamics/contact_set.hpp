@@ -34,12 +34,19 @@
 namespace i2d {
 
 class Islands;
+class JointSet;
 
 class ContactSet {
 public:
-    ContactSet(const WorldDef& settings, Pool<Body>& bodies, const Pool<Shape>& shapes, Islands& islands,
-               EventRecorder& events, TaskSystem& tasks)
-        : settings_(settings), bodies_(bodies), shapes_(shapes), islands_(islands), events_(events), tasks_(tasks) {}
+    ContactSet(const WorldDef& settings, Pool<Body>& bodies, const Pool<Shape>& shapes, const JointSet& joints,
+               Islands& islands, EventRecorder& events, TaskSystem& tasks)
+        : settings_(settings),
+          bodies_(bodies),
+          shapes_(shapes),
+          joints_(joints),
+          islands_(islands),
+          events_(events),
+          tasks_(tasks) {}
 
     Pool<Contact>& pool() { return contacts_; }
     const Pool<Contact>& pool() const { return contacts_; }
@@ -63,6 +70,8 @@ public:
 
     /// Destroys the shape's contacts between steps (all, or those its filter now forbids).
     void destroy_contacts_of_shape(int32_t shape, bool only_filtered_out);
+    /// Called between steps when a joint starts keeping two bodies apart.
+    void destroy_contacts_between(int32_t body_a, int32_t body_b);
     /// The body's centre of mass moved within it (its shapes changed): its manifolds'
     /// anchors are stale and must be made afresh.
     void forget_manifolds(int32_t body);
@@ -119,6 +128,7 @@ private:
     const WorldDef& settings_;
     Pool<Body>& bodies_;
     const Pool<Shape>& shapes_;
+    const JointSet& joints_;
     Islands& islands_;
     EventRecorder& events_;
     TaskSystem& tasks_;

@@ -26,10 +26,16 @@ struct BodyMoveEvent {
     bool fell_asleep;
 };
 
+struct JointEvent {
+    uint64_t joint;
+    void* user_data;
+};
+
 /// Turns a pool slot into the id callers see.
 struct IdEncoder {
     uint64_t (*body)(uint64_t tag, int32_t index, uint16_t generation) = nullptr;
     uint64_t (*shape)(uint64_t tag, int32_t index, uint16_t generation) = nullptr;
+    uint64_t (*joint)(uint64_t tag, int32_t index, uint16_t generation) = nullptr;
     uint64_t tag = 0;
 
     uint64_t body_id(int32_t index, uint16_t generation) const {
@@ -38,16 +44,20 @@ struct IdEncoder {
     uint64_t shape_id(int32_t index, uint16_t generation) const {
         return shape ? shape(tag, index, generation) : (uint64_t(generation) << 32) | uint32_t(index);
     }
+    uint64_t joint_id(int32_t index, uint16_t generation) const {
+        return joint ? joint(tag, index, generation) : (uint64_t(generation) << 32) | uint32_t(index);
+    }
 };
 
 struct WorldEvents {
     std::vector<ShapePairEvent> contact_begin, contact_end;
     std::vector<ShapePairEvent> sensor_begin, sensor_end;
     std::vector<BodyMoveEvent> body_moves;
+    std::vector<JointEvent> joint_events;
 
     void clear() {
         contact_begin.clear(), contact_end.clear(), sensor_begin.clear(), sensor_end.clear();
-        body_moves.clear();
+        body_moves.clear(), joint_events.clear();
     }
 };
 

@@ -8,6 +8,7 @@
 #include "core/dense_list.hpp"
 #include "core/reserve.hpp"
 #include "dynamics/contact_set.hpp"
+#include "dynamics/joint_set.hpp"
 
 namespace i2d {
 
@@ -201,13 +202,15 @@ void Islands::split(int32_t island) {
             const int32_t body = stack_.back();
             stack_.pop_back();
             append_body(piece, body);
-            contacts_.visit_links(body, [&](int32_t other) {
+            const auto follow = [&](int32_t other) {
                 ++links_seen;
                 if (bodies_[other].island == null_index) {
                     bodies_[other].island = piece;
                     stack_.push_back(other);
                 }
-            });
+            };
+            contacts_.visit_links(body, follow);
+            joints_.visit_links(body, follow);
         }
         islands_[piece].link_count = links_seen / 2;  // each link seen from both ends
     }

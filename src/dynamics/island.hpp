@@ -3,8 +3,9 @@
 //
 // Design note: every moving body belongs to an island, a list of bodies threaded through
 // the bodies themselves. A solid contact with points between two dynamic bodies links
-// their islands: they merge at once, the smaller into the larger. A link that goes (the
-// contact separated or was destroyed) only counts against its island, which may now be
+// their islands, and so does a joint between two dynamic bodies: they merge at once,
+// the smaller into the larger. A link that goes (the contact separated, a contact or
+// joint was destroyed) only counts against its island, which may now be
 // in pieces; islands are split lazily, when one wants to sleep, at most one per step
 // (Box2D v3 keeps its islands the same way). A pile that rests costs one search over its
 // bodies when it falls asleep, where this engine used to run a union-find over every
@@ -27,6 +28,7 @@
 namespace i2d {
 
 class ContactSet;
+class JointSet;
 
 struct Island {
     int32_t head_body = null_index, tail_body = null_index;
@@ -38,15 +40,16 @@ struct Island {
 
 class Islands {
 public:
-    Islands(Pool<Body>& bodies, ContactSet& contacts) : bodies_(bodies), contacts_(contacts) {}
+    Islands(Pool<Body>& bodies, ContactSet& contacts, const JointSet& joints)
+        : bodies_(bodies), contacts_(contacts), joints_(joints) {}
 
     /// A new kinematic or dynamic body: an island of its own, awake.
     void add_body(int32_t body);
     /// A body about to be freed, its contacts already destroyed.
     void remove_body(int32_t body);
-    /// A contact began joining two awake dynamic bodies.
+    /// A contact began joining two awake dynamic bodies, or a joint two dynamic bodies.
     void link(int32_t body_a, int32_t body_b);
-    /// A contact that joined this body to another stopped doing so.
+    /// A contact or joint that joined this body to another stopped doing so.
     void unlink(int32_t body);
 
     bool is_awake(int32_t body) const { return bodies_[body].awake_index != null_index; }
@@ -97,6 +100,7 @@ private:
 
     Pool<Body>& bodies_;
     ContactSet& contacts_;
+    const JointSet& joints_;
     Pool<Island> islands_;
     std::vector<int32_t> awake_bodies_;
     std::vector<int32_t> awake_islands_;

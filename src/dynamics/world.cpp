@@ -15,8 +15,9 @@ namespace i2d {
 World::World(const WorldDef& def)
     : settings(def),
       tasks_(def.worker_count, def.tasks),
-      contacts_(settings, bodies, shapes, islands_, events_, tasks_),
-      islands_(bodies, contacts_),
+      joints_(joints, bodies),
+      contacts_(settings, bodies, shapes, joints_, islands_, events_, tasks_),
+      islands_(bodies, contacts_, joints_),
       solver_(SolverLinks{settings, bodies, shapes, contacts_, islands_, broad_phase_, events_, tasks_}),
       profiling_(def.enable_profile) {}
 
@@ -47,6 +48,9 @@ int32_t World::create_body(const BodyDef& def) {
 
 void World::destroy_body(int32_t body) {
     wake_body(body);  // the island it slept in loses a member
+    while (bodies[body].head_joint_key != null_index) {
+        destroy_joint(bodies[body].head_joint_key >> 1);
+    }
     // Shapes first: each takes its contacts (and their end events) with it.
     while (bodies[body].head_shape != null_index) {
         destroy_shape(bodies[body].head_shape);
@@ -68,6 +72,7 @@ void World::set_type(int32_t body, BodyType type) {
         contacts_.destroy_contacts_of_shape(s, false);
         broad_phase_.destroy_proxy(shapes[s].proxy_key);
     }
+    unlink_joints(body);
     if (bodies[body].type != BodyType::static_body) {
         islands_.remove_body(body);
     }
@@ -90,6 +95,7 @@ void World::set_type(int32_t body, BodyType type) {
         islands_.add_body(body);
         mark_for_cover(body);
     }
+    link_joints(body);
 }
 
 void World::create_proxy(int32_t shape, bool query_now) {

@@ -19,6 +19,7 @@
 #include "dynamics/contact_set.hpp"
 #include "dynamics/events.hpp"
 #include "dynamics/island.hpp"
+#include "dynamics/joint_set.hpp"
 #include "dynamics/shape.hpp"
 #include "dynamics/solver.hpp"
 #include "dynamics/world_def.hpp"
@@ -71,6 +72,20 @@ public:
     /// Returns null_index when the shape pool is full.
     int32_t create_shape(int32_t body, const ShapeDef& def, const Geometry& geometry);
     void destroy_shape(int32_t shape);
+
+    // Joints. The def must be valid (two live, different bodies, settings in range: the
+    // C boundary checks). Creating and destroying wake both bodies; a joint that keeps
+    // its bodies from colliding ends their contacts, and destroying it lets them meet
+    // again from the next step. Returns null_index when the joint pool is full.
+    int32_t create_joint(const JointDef& def);
+    void destroy_joint(int32_t joint);
+    /// The joint's settings after a caller changed them in joints[joint].def: wakes both
+    /// bodies and applies a changed collide_connected.
+    void joint_changed(int32_t joint);
+    /// The joint's angle, translation, speed and length as its bodies stand now.
+    JointMeasures measure_joint(int32_t joint) const { return joints_.measure(joint); }
+    /// Joints whose reaction passed a threshold in the last step.
+    const std::vector<JointEvent>& joint_events() const { return events_.current.joint_events; }
 
     // Changing a body. Each wakes what it must: the body, and for a new transform what
     // touches it too. Velocities of static bodies stay zero; a fixed-rotation body never
@@ -144,11 +159,18 @@ public:
     WorldDef settings;
     Pool<Body> bodies;
     Pool<Shape> shapes;
+    /// The joints (joint.hpp); change a def through joint_changed.
+    Pool<Joint> joints;
 
 private:
     friend class QueryLock;
 
     void update_mass(int32_t body);
+    void link_joint(int32_t joint);
+    void unlink_joint(int32_t joint);
+    void link_joints(int32_t body);
+    void unlink_joints(int32_t body);
+    void let_bodies_meet(int32_t body_a, int32_t body_b);
     void create_proxy(int32_t shape, bool query_now);
     void cover_step_ahead(float time_step);
     void mark_for_cover(int32_t body);
@@ -161,6 +183,7 @@ private:
     TaskSystem tasks_;
     BroadPhase broad_phase_;
     EventRecorder events_;
+    JointSet joints_;
     ContactSet contacts_;
     Islands islands_;
     Solver solver_;

@@ -15,6 +15,8 @@ struct WorldDef {
     float contact_hertz = 60.0f;
     float contact_damping_ratio = 10.0f;
     float contact_push_max_speed = 3.0f;
+    float joint_hertz = 60.0f;
+    float joint_damping_ratio = 2.0f;
     float restitution_threshold = 1.0f;
     float maximum_linear_speed = 400.0f;
     MixingRule friction_mixing = MixingRule::geometric_mean;
