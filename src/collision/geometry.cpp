@@ -92,6 +92,21 @@ float extent_from(const Geometry& g, Vec2 local_point) {
     return farthest + c.radius;
 }
 
+float inner_radius(const Geometry& g) {
+    switch (g.type) {
+        case ShapeType::circle: return g.circle.radius;
+        case ShapeType::capsule: return g.capsule.radius;
+        case ShapeType::segment: return 0.0f;
+        default: break;
+    }
+    const Polygon& p = g.polygon;
+    float nearest = FLT_MAX;
+    for (int32_t i = 0; i < p.count; ++i) {
+        nearest = min_of(nearest, dot(p.normals[i], p.vertices[i] - p.centroid));
+    }
+    return max_of(nearest, 0.0f) + p.radius;
+}
+
 float rounding_radius(const Geometry& g) { return world_core(g, Transform{}).radius; }
 
 bool contains_point(const Geometry& g, const Transform& xf, Vec2 p) {
