@@ -18,6 +18,7 @@ World::World(const WorldDef& def)
       contacts_(settings, bodies, shapes, islands_, events_, tasks_),
       islands_(bodies, contacts_),
       solver_(SolverLinks{settings, bodies, shapes, contacts_, islands_, broad_phase_, events_, tasks_}),
+      continuous_(bodies, shapes, broad_phase_, events_),
       profiling_(def.enable_profile) {}
 
 int32_t World::create_body(const BodyDef& def) {
@@ -118,6 +119,7 @@ int32_t World::create_shape(int32_t body, const ShapeDef& def, const Geometry& g
     s.is_sensor = def.is_sensor;
     s.enable_contact_events = def.enable_contact_events;
     s.enable_sensor_events = def.enable_sensor_events;
+    s.enable_hit_events = def.enable_hit_events;
     s.user_data = def.user_data;
 
     Body& b = bodies[body];
@@ -194,9 +196,14 @@ void World::update_mass(int32_t body) {
     }
     // How fast the body's farthest point moves when it spins: a spinning kinematic
     // drum is not resting.
+    b.min_extent = b.head_shape == null_index ? 0.0f : FLT_MAX;
     for (int32_t s = b.head_shape; s != null_index; s = shapes[s].next_in_body) {
         b.max_extent = max_of(b.max_extent, extent_from(shapes[s].geometry, b.local_center));
+        if (!shapes[s].is_sensor) {
+            b.min_extent = min_of(b.min_extent, max_of(inner_radius(shapes[s].geometry), linear_slop));
+        }
     }
+    b.min_extent = b.min_extent == FLT_MAX ? 0.0f : b.min_extent;
     b.center = transform_point(b.transform, b.local_center);
     contacts_.forget_manifolds(body);
 }

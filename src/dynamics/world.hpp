@@ -17,6 +17,7 @@
 #include "core/pool.hpp"
 #include "dynamics/body.hpp"
 #include "dynamics/contact_set.hpp"
+#include "dynamics/continuous.hpp"
 #include "dynamics/events.hpp"
 #include "dynamics/island.hpp"
 #include "dynamics/shape.hpp"
@@ -44,6 +45,7 @@ struct StepProfile {
     float update_bounds = 0.0f;  // tight and fat boxes, tree re-insertions
     float sleep = 0.0f;        // islands and sleep timers
     float events = 0.0f;       // begin/end and body move events
+    float continuous = 0.0f;   // sweeping fast bodies
 };
 
 struct RayResult {
@@ -156,6 +158,7 @@ private:
     bool change_velocity(int32_t body, Vec2 dv, float dw, bool wake);
     bool prepare_to_receive(int32_t body, bool wake);
     void report_falling_asleep(int32_t body);
+    void report_sensor_crossings();
     void validate_body(int32_t body) const;
 
     TaskSystem tasks_;
@@ -164,6 +167,7 @@ private:
     ContactSet contacts_;
     Islands islands_;
     Solver solver_;
+    Continuous continuous_;
     std::vector<int32_t> to_cover_;  // bodies whose boxes must cover the next step afresh
     float last_time_step_ = 0.0f;
     StepProfile profile_;

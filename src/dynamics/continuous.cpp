@@ -1,0 +1,160 @@
+// SPDX-License-Identifier: MIT
+// The continuous collision stage: sweeps, times of impact, moving fast bodies back.
+#include "dynamics/continuous.hpp"
+
+#include "collision/geometry.hpp"
+#include "dynamics/shape_bounds.hpp"
+#include "math/math.hpp"
+
+namespace i2d {
+
+namespace {
+
+/// How close the time of impact must bring the cores, within a quarter slop: the
+/// shapes end up a slop inside each other's rounding, or a slop apart when neither is
+/// rounded (Box2D's target), so that the next step's contact has a point to push on.
+float impact_target(const ShapeProxy& a, const ShapeProxy& b) {
+    return max_of(linear_slop, a.radius + b.radius - linear_slop);
+}
+
+constexpr float impact_tolerance = 0.25f * linear_slop;
+
+/// Radius of the core disc swept when the shape starts the step touching something,
+/// as a share of the shape's inner radius (Box2D's fallback): small enough not to touch
+/// at the start, large enough that the centre cannot slip through a thin wall.
+constexpr float core_disc_share = 0.25f;
+
+// A small disc at the shape's centre: what must never pass through anything.
+ShapeProxy core_disc(const Geometry& g) {
+    ShapeProxy p;
+    p.count = 1;
+    switch (g.type) {
+        case ShapeType::circle: p.points[0] = g.circle.center; break;
+        case ShapeType::capsule: p.points[0] = 0.5f * (g.capsule.center1 + g.capsule.center2); break;
+        case ShapeType::segment: p.points[0] = 0.5f * (g.segment.point1 + g.segment.point2); break;
+        default: p.points[0] = g.polygon.centroid; break;
+    }
+    p.radius = core_disc_share * inner_radius(g);
+    return p;
+}
+
+}  // namespace
+
+void Continuous::run(const std::vector<int32_t>& fast_bodies, float time_step) {
+    crossings_.clear();
+    time_step_ = time_step;
+    // Bullets last, so that they meet the other fast bodies where these were left.
+    for (int32_t pass = 0; pass < 2; ++pass) {
+        const bool bullet_pass = pass == 1;
+        for (const int32_t body : fast_bodies) {
+            if (bodies_[body].is_bullet == bullet_pass) {
+                sweep_body(body, bullet_pass);
+            }
+        }
+    }
+}
+
+// A body the solver moved this step sweeps from its start pose to its pose now; static
+// and sleeping bodies stay where they are.
+Sweep Continuous::sweep_of(int32_t body) const {
+    const Body& b = bodies_[body];
+    if (b.type == BodyType::static_body || b.awake_index == null_index) {
+        return still_sweep(b.transform, b.local_center);
+    }
+    return Sweep{b.local_center, b.center0, b.center, b.rotation0, b.transform.q};
+}
+
+bool Continuous::swept_against(const Body& fast, const Body& other, bool bullet_pass) const {
+    return &fast != &other && (other.type != BodyType::dynamic || bullet_pass);
+}
+
+void Continuous::sweep_body(int32_t body, bool bullet_pass) {
+    const Body& b = bodies_[body];
+    const Sweep sweep = sweep_of(body);
+    const Transform start = sweep_transform(sweep, 0.0f);
+    float first = 1.0f;
+    int32_t first_body = null_index;
+    sensor_candidates_.clear();
+    const int32_t kinds = bullet_pass ? int32_t(ProxyKind::count) : int32_t(ProxyKind::dynamic_proxy);
+    for (int32_t s = b.head_shape; s != null_index; s = shapes_[s].next_in_body) {
+        const Shape& shape = shapes_[s];
+        if (shape.is_sensor) {
+            continue;
+        }
+        const ShapeProxy proxy = make_shape_proxy(shape.geometry);
+        const AABB swept_box = union_of(compute_aabb(shape.geometry, start), shape.aabb);
+        for (int32_t kind = 0; kind < kinds; ++kind) {
+            broad_phase_.tree(ProxyKind(kind)).query(swept_box, [&](int32_t, int32_t other_index) {
+                const Shape& other = shapes_[other_index];
+                const Body& other_body = bodies_[other.body];
+                if (!swept_against(b, other_body, bullet_pass) || !should_collide(shape.filter, other.filter)) {
+                    return true;
+                }
+                const ShapeProxy other_proxy = make_shape_proxy(other.geometry);
+                const Sweep other_sweep = sweep_of(other.body);
+                if (other.is_sensor) {
+                    if (shape.enable_sensor_events) {
+                        const ToiResult r = time_of_impact(other_proxy, other_sweep, proxy, sweep, 1.0f,
+                                                           other_proxy.radius + proxy.radius, impact_tolerance);
+                        if (r.state == ToiState::hit) {
+                            sensor_candidates_.push_back({{other_index, s}, r.fraction});
+                        }
+                    }
+                    return true;
+                }
+                ToiResult r = time_of_impact(other_proxy, other_sweep, proxy, sweep, first,
+                                             impact_target(other_proxy, proxy), impact_tolerance);
+                // Touching at the start: the contact has the pair in hand, unless the
+                // step took the shape's centre through (a spinning ball's contact can
+                // let it sink into a thin wall); sweep the centre alone for that.
+                if (r.state == ToiState::overlapped) {
+                    const ShapeProxy disc = core_disc(shape.geometry);
+                    r = time_of_impact(other_proxy, other_sweep, disc, sweep, first, impact_target(other_proxy, disc),
+                                       impact_tolerance);
+                }
+                if (r.state == ToiState::hit && r.fraction < first) {
+                    first = r.fraction;
+                    first_body = other.body;
+                }
+                return true;
+            });
+        }
+    }
+    for (const SensorCandidate& c : sensor_candidates_) {
+        if (c.fraction <= first) {
+            crossings_.push_back(c.crossing);
+        }
+    }
+    if (first < 1.0f) {
+        const Body& other = bodies_[first_body];
+        // Two bullets meeting head-on both stop where they touch.
+        const bool both_stop = other.is_bullet && other.type == BodyType::dynamic && other.awake_index != null_index;
+        if (both_stop) {
+            move_to(first_body, first, null_index);
+        }
+        move_to(body, first, both_stop ? null_index : first_body);
+    }
+}
+
+// The body goes back to the fraction of its sweep, keeping its velocities: the next
+// step's speculative contact does the rest. What it hit keeps its own motion to the end
+// of the step (a kinematic wall, a body a bullet met): the body rides along with it from
+// the impact, so that the two end the step as they were when they touched, rather than
+// the wall passing the body that waits at the impact point.
+void Continuous::move_to(int32_t body, float fraction, int32_t carrier) {
+    Body& b = bodies_[body];
+    Transform xf = sweep_transform(sweep_of(body), fraction);
+    if (carrier != null_index) {
+        const Sweep carried = sweep_of(carrier);
+        const Transform relative = inv_mul_transforms(sweep_transform(carried, fraction), xf);
+        xf = mul_transforms(sweep_transform(carried, 1.0f), relative);
+    }
+    b.transform = xf;
+    b.center = transform_point(xf, b.local_center);
+    update_shape_bounds(b, shapes_, broad_phase_, time_step_ * b.linear_velocity, true);
+    if (b.move_event != null_index) {
+        events_.current.body_moves[std::size_t(b.move_event)].transform = b.transform;
+    }
+}
+
+}  // namespace i2d
