@@ -29,6 +29,8 @@ I2D_API i2d_world_def i2d_default_world_def(void) {
     def.enqueue_task = nullptr;
     def.finish_task = nullptr;
     def.user_task_context = nullptr;
+    def.enable_continuous = core.enable_continuous;
+    def.hit_event_threshold = core.hit_event_threshold;
     def.internal_cookie = def_cookie;
     return def;
 }
@@ -65,6 +67,7 @@ I2D_API i2d_shape_def i2d_default_shape_def(void) {
     def.is_sensor = core.is_sensor;
     def.enable_contact_events = core.enable_contact_events;
     def.enable_sensor_events = core.enable_sensor_events;
+    def.enable_hit_events = core.enable_hit_events;
     def.filter = to_public(core.filter);
     def.user_data = nullptr;
     def.internal_cookie = def_cookie;

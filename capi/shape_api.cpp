@@ -34,6 +34,7 @@ ShapeDef to_core(const i2d_shape_def& def) {
     core.is_sensor = def.is_sensor;
     core.enable_contact_events = def.enable_contact_events;
     core.enable_sensor_events = def.enable_sensor_events;
+    core.enable_hit_events = def.enable_hit_events;
     core.filter = capi::to_core(def.filter);
     core.user_data = def.user_data;
     return core;

@@ -140,6 +140,17 @@ typedef struct i2d_world_def {
     i2d_finish_task_fn* finish_task;
     /** Passed to enqueue_task and finish_task; default NULL. */
     void* user_task_context;
+    /** Continuous collision; default true. A dynamic body that moves far for its size in
+     *  a step (more than half its thinnest shape's inner radius) is swept from where the
+     *  step began against static and kinematic shapes (along their own motion) and, if
+     *  it would have passed through one, moved back to where it first touched, keeping
+     *  its velocity. Bullets (i2d_body_def.is_bullet) are swept against dynamic bodies
+     *  too, other bullets included. Sensors report fast bodies that crossed them within
+     *  a step (a begin and an end event in the same step). */
+    bool enable_continuous;
+    /** Contact hit events are reported for impacts faster than this, m/s; default 1.
+     *  Range [0, 1e5]. */
+    float hit_event_threshold;
     /** Set by i2d_default_world_def(); do not set. */
     uint32_t internal_cookie;
 } i2d_world_def;
@@ -165,8 +176,9 @@ typedef struct i2d_body_def {
     bool fixed_rotation;
     /** Default true. False keeps this body (and whatever touches it) awake. */
     bool enable_sleep;
-    /** Default false. Continuous collision for fast bodies; not implemented yet in this
-     *  version: it has no effect. */
+    /** Default false. A bullet is a fast dynamic body swept against dynamic bodies too
+     *  (bullets included), not only against static and kinematic ones (see
+     *  i2d_world_def.enable_continuous). Costs more per step: use it for projectiles. */
     bool is_bullet;
     void* user_data;           /**< default NULL; returned by i2d_body_get_user_data */
     /** Set by i2d_default_body_def(); do not set. */
@@ -200,6 +212,10 @@ typedef struct i2d_shape_def {
     bool enable_contact_events;
     /** Default true. Whether sensors report this shape entering and leaving them. */
     bool enable_sensor_events;
+    /** Default false. Contact hit events (i2d_contact_events.hit_events) for impacts of
+     *  this shape faster than the world's hit_event_threshold; either shape of a pair
+     *  may enable them. */
+    bool enable_hit_events;
     i2d_filter filter; /**< default: category 1, collides with everything, group 0 */
     void* user_data;   /**< default NULL */
     /** Set by i2d_default_shape_def(); do not set. */
@@ -230,6 +246,7 @@ typedef struct i2d_profile {
     float update_bounds;  /**< shape bounds and tree re-insertions */
     float sleep;          /**< islands: which bodies fall asleep */
     float events;         /**< contact, sensor and body move events */
+    float continuous;     /**< continuous collision: sweeping fast bodies */
 } i2d_profile;
 
 /* ---- Events: arrays owned by the world, valid until the next step or world change ---- */
@@ -239,11 +256,21 @@ typedef struct i2d_contact_begin_event { i2d_shape_id shape_a, shape_b; } i2d_co
 /** Two shapes stopped touching, or one of them was destroyed while touching. The ids
  *  may be stale by the time you read them. */
 typedef struct i2d_contact_end_event { i2d_shape_id shape_a, shape_b; } i2d_contact_end_event;
+/** Two shapes met faster than the world's hit_event_threshold (one of them enables hit
+ *  events): once per impact, in the step the impact is solved. */
+typedef struct i2d_contact_hit_event {
+    i2d_shape_id shape_a, shape_b;
+    i2d_vec2 point;       /**< world, where the fastest point of the contact met */
+    i2d_vec2 normal;      /**< unit, from shape A to shape B */
+    float approach_speed; /**< m/s, along the normal, at impact (> 0) */
+} i2d_contact_hit_event;
 typedef struct i2d_contact_events {
     const i2d_contact_begin_event* begin_events;
     int32_t begin_count;
     const i2d_contact_end_event* end_events;
     int32_t end_count;
+    const i2d_contact_hit_event* hit_events;
+    int32_t hit_count;
 } i2d_contact_events;
 
 /** A shape (the visitor) started overlapping a sensor shape. */

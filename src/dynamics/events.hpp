@@ -19,6 +19,13 @@ struct ShapePairEvent {
     uint64_t shape_b;
 };
 
+struct ContactHitEvent {
+    uint64_t shape_a, shape_b;
+    Vec2 point;
+    Vec2 normal;
+    float approach_speed;
+};
+
 struct BodyMoveEvent {
     Transform transform;
     uint64_t body;
@@ -44,9 +51,11 @@ struct WorldEvents {
     std::vector<ShapePairEvent> contact_begin, contact_end;
     std::vector<ShapePairEvent> sensor_begin, sensor_end;
     std::vector<BodyMoveEvent> body_moves;
+    std::vector<ContactHitEvent> contact_hits;
 
     void clear() {
         contact_begin.clear(), contact_end.clear(), sensor_begin.clear(), sensor_end.clear();
+        contact_hits.clear();
         body_moves.clear();
     }
 };

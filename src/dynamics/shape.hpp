@@ -29,6 +29,7 @@ struct ShapeDef {
     bool is_sensor = false;
     bool enable_contact_events = true;
     bool enable_sensor_events = true;
+    bool enable_hit_events = false;
     Filter filter;
     void* user_data = nullptr;
 };
@@ -48,6 +49,7 @@ struct Shape {
     bool is_sensor = false;
     bool enable_contact_events = true;
     bool enable_sensor_events = true;
+    bool enable_hit_events = false;
     bool enlarged = false;  // the step gave it a new fat box; its proxy moves at the step's end
     int32_t prev_in_body = null_index, next_in_body = null_index;
     float density = 0.0f;
