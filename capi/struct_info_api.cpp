@@ -28,6 +28,7 @@ const i2d_struct_info struct_infos[] = {
     I2D_STRUCT_INFO(i2d_contact_begin_event),
     I2D_STRUCT_INFO(i2d_contact_end_event),
     I2D_STRUCT_INFO(i2d_contact_events),
+    I2D_STRUCT_INFO(i2d_contact_hit_event),
     I2D_STRUCT_INFO(i2d_sensor_begin_event),
     I2D_STRUCT_INFO(i2d_sensor_end_event),
     I2D_STRUCT_INFO(i2d_sensor_events),

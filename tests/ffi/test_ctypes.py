@@ -74,6 +74,8 @@ class WorldDef(C.Structure):
         ("enqueue_task", C.c_void_p),
         ("finish_task", C.c_void_p),
         ("user_task_context", C.c_void_p),
+        ("enable_continuous", C.c_bool),
+        ("hit_event_threshold", C.c_float),
         ("internal_cookie", C.c_uint32),
     ]
 
@@ -110,6 +112,7 @@ class ShapeDef(C.Structure):
         ("is_sensor", C.c_bool),
         ("enable_contact_events", C.c_bool),
         ("enable_sensor_events", C.c_bool),
+        ("enable_hit_events", C.c_bool),
         ("filter", Filter),
         ("user_data", C.c_void_p),
         ("internal_cookie", C.c_uint32),

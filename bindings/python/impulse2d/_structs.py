@@ -59,6 +59,8 @@ class WorldDef(C.Structure):
         ("enqueue_task", C.c_void_p),
         ("finish_task", C.c_void_p),
         ("user_task_context", C.c_void_p),
+        ("enable_continuous", C.c_bool),
+        ("hit_event_threshold", C.c_float),
         ("internal_cookie", C.c_uint32),
     ]
 
@@ -91,6 +93,7 @@ class ShapeDef(C.Structure):
         ("is_sensor", C.c_bool),
         ("enable_contact_events", C.c_bool),
         ("enable_sensor_events", C.c_bool),
+        ("enable_hit_events", C.c_bool),
         ("filter", Filter),
         ("user_data", C.c_void_p),
         ("internal_cookie", C.c_uint32),
@@ -116,7 +119,7 @@ class WorldCounters(C.Structure):
 
 class Profile(C.Structure):
     _fields_ = [
-        (name, C.c_float) for name in ("step", "pairs", "collide", "solve", "update_bounds", "sleep", "events")
+        (name, C.c_float) for name in ("step", "pairs", "collide", "solve", "update_bounds", "sleep", "events", "continuous")
     ]
 
 
@@ -126,12 +129,33 @@ class ShapePair(C.Structure):
     _fields_ = [("a", C.c_uint64), ("b", C.c_uint64)]
 
 
+class ContactHitEvent(C.Structure):
+    _fields_ = [
+        ("a", C.c_uint64),
+        ("b", C.c_uint64),
+        ("point", Vec2),
+        ("normal", Vec2),
+        ("approach_speed", C.c_float),
+    ]
+
+
+class SensorEvents(C.Structure):
+    _fields_ = [
+        ("begin_events", C.POINTER(ShapePair)),
+        ("begin_count", C.c_int32),
+        ("end_events", C.POINTER(ShapePair)),
+        ("end_count", C.c_int32),
+    ]
+
+
 class ContactEvents(C.Structure):
     _fields_ = [
         ("begin_events", C.POINTER(ShapePair)),
         ("begin_count", C.c_int32),
         ("end_events", C.POINTER(ShapePair)),
         ("end_count", C.c_int32),
+        ("hit_events", C.POINTER(ContactHitEvent)),
+        ("hit_count", C.c_int32),
     ]
 
 
@@ -205,7 +229,8 @@ DECLARED = {
     "i2d_contact_events": ContactEvents,
     "i2d_sensor_begin_event": ShapePair,
     "i2d_sensor_end_event": ShapePair,
-    "i2d_sensor_events": ContactEvents,
+    "i2d_sensor_events": SensorEvents,
+    "i2d_contact_hit_event": ContactHitEvent,
     "i2d_body_move_event": BodyMoveEvent,
     "i2d_body_events": BodyEvents,
     "i2d_ray_result": RayResult,
