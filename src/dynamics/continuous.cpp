@@ -19,13 +19,14 @@ float impact_target(const ShapeProxy& a, const ShapeProxy& b) {
 
 constexpr float impact_tolerance = 0.25f * linear_slop;
 
-/// Radius of the core disc swept when the shape starts the step touching something,
-/// as a share of the shape's inner radius (Box2D's fallback): small enough not to touch
-/// at the start, large enough that the centre cannot slip through a thin wall.
-constexpr float core_disc_share = 0.25f;
+/// How close the shape's centre may come to what it touched at the start of the step,
+/// m: a centre that got this close is stopped there, so that it never passes through.
+constexpr float centre_target = 0.5f * linear_slop;
 
-// A small disc at the shape's centre: what must never pass through anything.
-ShapeProxy core_disc(const Geometry& g) {
+// The shape's centre: what must never pass through anything. A contact may let a shape
+// sink within a step (a paddle turning a third of a radian per step turns its contact
+// normal with it, which the step's fixed normal does not follow), but not its centre.
+ShapeProxy centre_point(const Geometry& g) {
     ShapeProxy p;
     p.count = 1;
     switch (g.type) {
@@ -34,8 +35,25 @@ ShapeProxy core_disc(const Geometry& g) {
         case ShapeType::segment: p.points[0] = 0.5f * (g.segment.point1 + g.segment.point2); break;
         default: p.points[0] = g.polygon.centroid; break;
     }
-    p.radius = core_disc_share * inner_radius(g);
     return p;
+}
+
+// The centre against the other shape's core. A centre that starts the step closer than
+// centre_target (a shape sinking into a turning paddle) may not come closer than half
+// its start distance, so that sinking slows down step by step instead of crossing; one
+// inside the core already is left to the contact.
+ToiResult sweep_centre(const ShapeProxy& other, const Sweep& other_sweep, const ShapeProxy& centre,
+                       const Sweep& sweep, float max_fraction) {
+    const float start = core_distance(transformed(other, sweep_transform(other_sweep, 0.0f)),
+                                      transformed(centre, sweep_transform(sweep, 0.0f)))
+                            .distance -
+                        other.radius;
+    if (!(start > 0.0f)) {
+        return ToiResult{};
+    }
+    const float target = min_of(centre_target, 0.5f * start);
+    const float tolerance = min_of(impact_tolerance, 0.25f * start);
+    return time_of_impact(other, other_sweep, centre, sweep, max_fraction, other.radius + target, tolerance);
 }
 
 }  // namespace
@@ -105,12 +123,10 @@ void Continuous::sweep_body(int32_t body, bool bullet_pass) {
                 ToiResult r = time_of_impact(other_proxy, other_sweep, proxy, sweep, first,
                                              impact_target(other_proxy, proxy), impact_tolerance);
                 // Touching at the start: the contact has the pair in hand, unless the
-                // step took the shape's centre through (a spinning ball's contact can
-                // let it sink into a thin wall); sweep the centre alone for that.
+                // step took the shape's centre through (Box2D sweeps a small disc
+                // instead, which a sinking shape can start inside of).
                 if (r.state == ToiState::overlapped) {
-                    const ShapeProxy disc = core_disc(shape.geometry);
-                    r = time_of_impact(other_proxy, other_sweep, disc, sweep, first, impact_target(other_proxy, disc),
-                                       impact_tolerance);
+                    r = sweep_centre(other_proxy, other_sweep, centre_point(shape.geometry), sweep, first);
                 }
                 if (r.state == ToiState::hit && r.fraction < first) {
                     first = r.fraction;

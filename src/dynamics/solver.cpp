@@ -359,7 +359,8 @@ void Solver::finalize_body(int32_t k) {
     b.force = {};
     b.torque = 0.0f;
     // Fattened for the next step too, assuming the same time step (the world checks).
-    uint8_t flags = refit_shape_bounds(b, links_.shapes, time_step_ * b.linear_velocity, true) ? proxies_enlarged : 0;
+    uint8_t flags = refit_shape_bounds(b, links_.shapes, time_step_ * b.linear_velocity, true,
+                                       turn_reach(b, time_step_)) ? proxies_enlarged : 0;
 
     const WorldDef& settings = links_.settings;
     if (settings.enable_sleep) {

@@ -219,7 +219,7 @@ void World::cover_step_ahead(float time_step) {
     const auto cover = [&](int32_t body) {
         Body& b = bodies[body];
         b.needs_cover = false;
-        update_shape_bounds(b, shapes, broad_phase_, time_step * b.linear_velocity, true);
+        update_shape_bounds(b, shapes, broad_phase_, time_step * b.linear_velocity, true, turn_reach(b, time_step));
     };
     if (same_step) {
         for (const int32_t body : to_cover_) {
@@ -303,6 +303,9 @@ void World::set_angular_velocity(int32_t body, float w) {
         wake_body(body);
     }
     b.angular_velocity = limited_angular_velocity(w);
+    if (b.type == BodyType::kinematic) {
+        mark_for_cover(body);  // its boxes must reach as far as it now turns
+    }
 }
 
 // Wakes the body if asked; a body left asleep ignores what it is given.
