@@ -43,6 +43,7 @@ const i2d_struct_info struct_infos[] = {
     I2D_STRUCT_INFO(i2d_segment),
     I2D_STRUCT_INFO(i2d_mass_data),
     I2D_STRUCT_INFO(i2d_cast_output),
+    I2D_STRUCT_INFO(i2d_shape_proxy),
 };
 
 #undef I2D_STRUCT_INFO

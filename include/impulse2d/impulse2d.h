@@ -286,6 +286,37 @@ typedef float i2d_cast_result_fn(i2d_shape_id shape, i2d_vec2 point, i2d_vec2 no
 I2D_API i2d_status i2d_world_cast_ray(i2d_world_id world, i2d_vec2 origin, i2d_vec2 translation,
                                       i2d_query_filter filter, i2d_cast_result_fn* fn, void* context);
 
+/** Every shape the ray hits, for FFI: fills out with up to capacity results sorted by
+ *  fraction (nearest first; ties in a fixed order) and returns the total number of hits
+ *  (more than capacity when it was too small); -1 on error. out may be NULL when
+ *  capacity is 0. */
+I2D_API int32_t i2d_world_cast_ray_all(i2d_world_id world, i2d_vec2 origin, i2d_vec2 translation,
+                                       i2d_query_filter filter, i2d_ray_result* out, int32_t capacity);
+/** i2d_world_overlap_point without a callback: up to capacity ids, returns the total
+ *  found; -1 on error. */
+I2D_API int32_t i2d_world_overlap_point_ids(i2d_world_id world, i2d_vec2 point, i2d_query_filter filter,
+                                            i2d_shape_id* out, int32_t capacity);
+
+/** Sweeps the proxy (world space, see i2d_make_proxy) along translation and reports each
+ *  shape it would touch to fn: the fraction of the translation at which they first touch
+ *  (to within 1.25 mm), the point on that shape's surface and its outward normal there;
+ *  fn's return value works as for rays. A shape the proxy overlaps at the start is hit at
+ *  fraction 0. Refused (I2D_ERR_INVALID_ARGUMENT): a proxy of count 0 or outside 1..8, NaN
+ *  or infinite values, a zero translation (use i2d_world_overlap_shape) or one longer
+ *  than 1e9 m. Runs with the world locked. */
+I2D_API i2d_status i2d_world_cast_shape(i2d_world_id world, const i2d_shape_proxy* proxy, i2d_vec2 translation,
+                                        i2d_query_filter filter, i2d_cast_result_fn* fn, void* context);
+/** The closest shape the swept proxy touches; .hit false when none. */
+I2D_API i2d_ray_result i2d_world_cast_shape_closest(i2d_world_id world, const i2d_shape_proxy* proxy,
+                                                    i2d_vec2 translation, i2d_query_filter filter);
+/** Calls fn for every shape whose geometry overlaps or touches the proxy (world space). */
+I2D_API i2d_status i2d_world_overlap_shape(i2d_world_id world, const i2d_shape_proxy* proxy, i2d_query_filter filter,
+                                           i2d_overlap_fn* fn, void* context);
+/** i2d_world_overlap_shape without a callback: up to capacity ids, returns the total
+ *  found; -1 on error. */
+I2D_API int32_t i2d_world_overlap_shape_ids(i2d_world_id world, const i2d_shape_proxy* proxy,
+                                            i2d_query_filter filter, i2d_shape_id* out, int32_t capacity);
+
 /* ---- Events --------------------------------------------------------------------- */
 /* The arrays belong to the world and describe the last step. They stay valid until the
  * next i2d_world_step or i2d_world_destroy, whatever else the caller does meanwhile.

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "collision/distance.hpp"
+#include "collision/hull.hpp"
 #include "math/math.hpp"
 
 namespace i2d {
@@ -38,6 +39,44 @@ ShapeProxy make_shape_proxy(const Geometry& g) {
             break;
     }
     return p;
+}
+
+ShapeProxy make_query_proxy(const Vec2* points, int32_t count, float radius) {
+    ShapeProxy p;
+    p.radius = radius;
+    Hull hull;
+    if (count >= 3 && compute_hull(points, count, hull) == HullStatus::ok) {
+        for (int32_t i = 0; i < hull.count; ++i) {
+            p.points[i] = hull.points[i];
+        }
+        p.count = hull.count;
+        return p;
+    }
+    // Degenerate: the two points farthest apart carry the whole set.
+    int32_t best_i = 0, best_j = 0;
+    float best = -1.0f;
+    for (int32_t i = 0; i < count; ++i) {
+        for (int32_t j = i + 1; j < count; ++j) {
+            const float d = distance_squared(points[i], points[j]);
+            if (d > best) {
+                best = d, best_i = i, best_j = j;
+            }
+        }
+    }
+    p.points[0] = points[best_i];
+    p.points[1] = points[best_j];
+    p.count = best > linear_slop * linear_slop ? 2 : 1;
+    return p;
+}
+
+AABB proxy_aabb(const ShapeProxy& proxy) {
+    AABB box{proxy.points[0], proxy.points[0]};
+    for (int32_t i = 1; i < proxy.count; ++i) {
+        box.lower = min(box.lower, proxy.points[i]);
+        box.upper = max(box.upper, proxy.points[i]);
+    }
+    const Vec2 r{proxy.radius, proxy.radius};
+    return {box.lower - r, box.upper + r};
 }
 
 ShapeProxy transformed(const ShapeProxy& proxy, const Transform& xf) {

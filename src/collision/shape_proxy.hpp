@@ -18,6 +18,14 @@ struct ShapeProxy {
 /// The proxy of a shape in its body frame.
 ShapeProxy make_shape_proxy(const Geometry& g);
 
+/// A proxy from 1 to 8 finite points (any order) and a radius >= 0: their convex hull,
+/// counter-clockwise; points that lie along a line (or within linear_slop of one
+/// another) give a segment (or a point).
+ShapeProxy make_query_proxy(const Vec2* points, int32_t count, float radius);
+
+/// The proxy's bounds, radius included.
+AABB proxy_aabb(const ShapeProxy& proxy);
+
 /// The proxy's core points placed by xf.
 ShapeProxy transformed(const ShapeProxy& proxy, const Transform& xf);
 

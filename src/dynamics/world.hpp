@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "broadphase/broad_phase.hpp"
+#include "collision/shape_proxy.hpp"
 #include "core/pool.hpp"
 #include "dynamics/body.hpp"
 #include "dynamics/contact_set.hpp"
@@ -119,6 +120,13 @@ public:
     void overlap_point(Vec2 point, const QueryFilter& filter, ShapeVisitor visit, void* context) const;
     void cast_ray(Vec2 origin, Vec2 translation, const QueryFilter& filter, RayVisitor visit, void* context) const;
     RayResult cast_ray_closest(Vec2 origin, Vec2 translation, const QueryFilter& filter) const;
+    /// A proxy (world space) swept along translation: each shape it would touch, with the
+    /// fraction, the point on the shape and the shape's normal there; visit as for rays.
+    void cast_shape(const ShapeProxy& proxy, Vec2 translation, const QueryFilter& filter, RayVisitor visit,
+                    void* context) const;
+    RayResult cast_shape_closest(const ShapeProxy& proxy, Vec2 translation, const QueryFilter& filter) const;
+    /// Every shape the proxy (world space) overlaps or touches.
+    void overlap_shape(const ShapeProxy& proxy, const QueryFilter& filter, ShapeVisitor visit, void* context) const;
     void rebuild_static_tree() { broad_phase_.tree(ProxyKind::static_proxy).rebuild(); }
 
     /// Installs the C boundary's id encoding for the ids inside events.
