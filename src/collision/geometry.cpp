@@ -40,6 +40,11 @@ Core world_core(const Geometry& g, const Transform& xf) {
             c.points[1] = transform_point(xf, g.segment.point2);
             c.count = 2;
             break;
+        case ShapeType::chain_segment:
+            c.points[0] = transform_point(xf, g.chain_segment.point1);
+            c.points[1] = transform_point(xf, g.chain_segment.point2);
+            c.count = 2;
+            break;
         case ShapeType::polygon:
             for (int32_t i = 0; i < g.polygon.count; ++i) {
                 c.points[i] = transform_point(xf, g.polygon.vertices[i]);
@@ -97,6 +102,7 @@ float inner_radius(const Geometry& g) {
         case ShapeType::circle: return g.circle.radius;
         case ShapeType::capsule: return g.capsule.radius;
         case ShapeType::segment: return 0.0f;
+        case ShapeType::chain_segment: return 0.0f;
         default: break;
     }
     const Polygon& p = g.polygon;
@@ -121,6 +127,7 @@ bool contains_point(const Geometry& g, const Transform& xf, Vec2 p) {
             return distance_squared(q, local) <= g.capsule.radius * g.capsule.radius;
         }
         case ShapeType::segment: return false;  // no area
+        case ShapeType::chain_segment: return false;
         case ShapeType::polygon:
             return polygon_core_distance(g.polygon, inv_transform_point(xf, p)) <= g.polygon.radius;
         case ShapeType::count: break;

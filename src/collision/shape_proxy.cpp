@@ -30,6 +30,11 @@ ShapeProxy make_shape_proxy(const Geometry& g) {
             p.points[1] = g.segment.point2;
             p.count = 2;
             break;
+        case ShapeType::chain_segment:
+            p.points[0] = g.chain_segment.point1;
+            p.points[1] = g.chain_segment.point2;
+            p.count = 2;
+            break;
         default:
             for (int32_t i = 0; i < g.polygon.count; ++i) {
                 p.points[i] = g.polygon.vertices[i];

@@ -87,6 +87,10 @@ constexpr float friction_anchor_share = 1.0f;
 /// have stopped anyway; larger ones let thin bodies tunnel through thin walls.
 constexpr float continuous_safety_factor = 0.5f;
 
+/// Most points a chain may have: a million segments is a large level; more is more
+/// likely a bad count than a level.
+constexpr int32_t max_chain_points = 1000000;
+
 /// Softest contact a world accepts, Hz: below it stacks sink visibly at rest.
 constexpr float min_contact_hertz = 1.0e-3f;
 

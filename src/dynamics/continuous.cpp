@@ -33,6 +33,7 @@ ShapeProxy centre_point(const Geometry& g) {
         case ShapeType::circle: p.points[0] = g.circle.center; break;
         case ShapeType::capsule: p.points[0] = 0.5f * (g.capsule.center1 + g.capsule.center2); break;
         case ShapeType::segment: p.points[0] = 0.5f * (g.segment.point1 + g.segment.point2); break;
+        case ShapeType::chain_segment: p.points[0] = 0.5f * (g.chain_segment.point1 + g.chain_segment.point2); break;
         default: p.points[0] = g.polygon.centroid; break;
     }
     return p;
@@ -54,6 +55,12 @@ ToiResult sweep_centre(const ShapeProxy& other, const Sweep& other_sweep, const 
     const float target = min_of(centre_target, 0.5f * start);
     const float tolerance = min_of(impact_tolerance, 0.25f * start);
     return time_of_impact(other, other_sweep, centre, sweep, max_fraction, other.radius + target, tolerance);
+}
+
+// Whether a point lies behind a chain segment (left of point1 -> point2).
+bool starts_behind(const ChainSegment& segment, const Transform& xf, Vec2 point) {
+    const Vec2 p1 = transform_point(xf, segment.point1), p2 = transform_point(xf, segment.point2);
+    return cross(p2 - p1, point - p1) > 0.0f;
 }
 
 }  // namespace
@@ -108,8 +115,13 @@ void Continuous::sweep_body(int32_t body, bool bullet_pass) {
                 if (!swept_against(b, other_body, bullet_pass) || !should_collide(shape.filter, other.filter)) {
                     return true;
                 }
-                const ShapeProxy other_proxy = make_shape_proxy(other.geometry);
                 const Sweep other_sweep = sweep_of(other.body);
+                if (other.geometry.type == ShapeType::chain_segment &&
+                    starts_behind(other.geometry.chain_segment, sweep_transform(other_sweep, 0.0f),
+                                  transform_point(start, centre_point(shape.geometry).points[0]))) {
+                    return true;  // one-sided: a body coming from behind passes through
+                }
+                const ShapeProxy other_proxy = make_shape_proxy(other.geometry);
                 if (other.is_sensor) {
                     if (shape.enable_sensor_events) {
                         const ToiResult r = time_of_impact(other_proxy, other_sweep, proxy, sweep, 1.0f,

@@ -48,9 +48,15 @@ int32_t World::create_body(const BodyDef& def) {
 
 void World::destroy_body(int32_t body) {
     wake_body(body);  // the island it slept in loses a member
-    // Shapes first: each takes its contacts (and their end events) with it.
+    // Shapes first: each takes its contacts (and their end events) with it; a chain's
+    // segments go with their chain.
     while (bodies[body].head_shape != null_index) {
-        destroy_shape(bodies[body].head_shape);
+        const int32_t shape = bodies[body].head_shape;
+        if (shapes[shape].chain != null_index) {
+            destroy_chain(shapes[shape].chain);
+        } else {
+            destroy_shape(shape);
+        }
     }
     if (bodies[body].type != BodyType::static_body) {
         islands_.remove_body(body);
@@ -102,7 +108,8 @@ void World::create_proxy(int32_t shape, bool query_now) {
     mark_for_cover(s.body);  // the new box is not stretched along the body's motion
 }
 
-int32_t World::create_shape(int32_t body, const ShapeDef& def, const Geometry& geometry) {
+// Links a new shape into its body and the broadphase; the caller updates the mass.
+int32_t World::attach_shape(int32_t body, const ShapeDef& def, const Geometry& geometry) {
     const int32_t index = shapes.allocate();
     if (index == null_index) {
         return null_index;
@@ -132,12 +139,27 @@ int32_t World::create_shape(int32_t body, const ShapeDef& def, const Geometry& g
     s.aabb = compute_aabb(geometry, b.transform);
     // A new static shape may land on resting bodies: let it look for pairs too.
     create_proxy(index, true);
-    update_mass(body);
-    wake_body(body);
+    return index;
+}
+
+int32_t World::create_shape(int32_t body, const ShapeDef& def, const Geometry& geometry) {
+    const int32_t index = attach_shape(body, def, geometry);
+    if (index != null_index) {
+        update_mass(body);
+        wake_body(body);
+    }
     return index;
 }
 
 void World::destroy_shape(int32_t shape) {
+    const int32_t body = shapes[shape].body;
+    detach_shape(shape);
+    update_mass(body);
+}
+
+// Unlinks the shape from its contacts, the broadphase and its body; the caller updates
+// the mass.
+void World::detach_shape(int32_t shape) {
     wake_body(shapes[shape].body);
     contacts_.destroy_contacts_of_shape(shape, false);
     const Shape& s = shapes[shape];
@@ -152,8 +174,58 @@ void World::destroy_shape(int32_t shape) {
         shapes[s.next_in_body].prev_in_body = s.prev_in_body;
     }
     --b.shape_count;
-    const int32_t body = s.body;
     shapes.free(shape);
+}
+
+// Every segment is attached first and the mass (extents) updated once: a chain of n
+// segments costs O(n), not O(n^2).
+int32_t World::create_chain(int32_t body, const ChainDef& def) {
+    const int32_t index = chains.allocate();
+    if (index == null_index) {
+        return null_index;
+    }
+    Chain& chain = chains[index];
+    chain.body = body;
+    chain.is_loop = def.is_loop;
+    chain.user_data = def.user_data;
+    const int32_t segments = chain_segment_count(def.count, def.is_loop);
+    chain.shapes.reserve(std::size_t(segments));
+    for (int32_t i = 0; i < segments; ++i) {
+        const SurfaceMaterial material = def.material_count == 0   ? SurfaceMaterial{}
+                                         : def.material_count == 1 ? def.materials[0]
+                                                                   : def.materials[i];
+        ShapeDef sd;
+        sd.density = 0.0f;
+        sd.friction = material.friction;
+        sd.restitution = material.restitution;
+        sd.rolling_resistance = material.rolling_resistance;
+        sd.tangent_speed = material.tangent_speed;
+        sd.filter = def.filter;
+        sd.enable_sensor_events = def.enable_sensor_events;
+        sd.user_data = def.user_data;
+        Geometry g;
+        g.type = ShapeType::chain_segment;
+        g.chain_segment = chain_segment_geometry(def, i);
+        const int32_t shape = attach_shape(body, sd, g);
+        if (shape == null_index) {
+            destroy_chain(index);  // the shape pool is full: take back what was made
+            return null_index;
+        }
+        shapes[shape].chain = index;
+        chains[index].shapes.push_back(shape);
+    }
+    update_mass(body);
+    wake_body(body);
+    return index;
+}
+
+void World::destroy_chain(int32_t chain) {
+    const int32_t body = chains[chain].body;
+    for (const int32_t shape : chains[chain].shapes) {
+        detach_shape(shape);
+    }
+    chains[chain].shapes.clear();
+    chains.free(chain);
     update_mass(body);
 }
 

@@ -17,6 +17,7 @@
 #include "collision/shape_proxy.hpp"
 #include "core/pool.hpp"
 #include "dynamics/body.hpp"
+#include "dynamics/chain.hpp"
 #include "dynamics/contact_set.hpp"
 #include "dynamics/continuous.hpp"
 #include "dynamics/events.hpp"
@@ -74,6 +75,12 @@ public:
     /// Returns null_index when the shape pool is full.
     int32_t create_shape(int32_t body, const ShapeDef& def, const Geometry& geometry);
     void destroy_shape(int32_t shape);
+    /// Creates the chain's segments as shapes of the body (static or kinematic; the
+    /// caller checked the points). Returns null_index, creating nothing, when a pool is
+    /// full.
+    int32_t create_chain(int32_t body, const ChainDef& def);
+    /// Destroys the chain and its segments.
+    void destroy_chain(int32_t chain);
 
     // Changing a body. Each wakes what it must: the body, and for a new transform what
     // touches it too. Velocities of static bodies stay zero; a fixed-rotation body never
@@ -154,11 +161,14 @@ public:
     WorldDef settings;
     Pool<Body> bodies;
     Pool<Shape> shapes;
+    Pool<Chain> chains;
 
 private:
     friend class QueryLock;
 
     void update_mass(int32_t body);
+    int32_t attach_shape(int32_t body, const ShapeDef& def, const Geometry& geometry);
+    void detach_shape(int32_t shape);
     void create_proxy(int32_t shape, bool query_now);
     void cover_step_ahead(float time_step);
     void mark_for_cover(int32_t body);
