@@ -40,6 +40,12 @@ struct ShapeRef {
     Shape& shape() const { return world->shapes[index]; }
 };
 
+struct ChainRef {
+    World* world = nullptr;
+    int32_t index = -1;
+    IdFields id;
+};
+
 class Call {
 public:
     explicit Call(const char* function) : function_(function) { set_ok(); }
@@ -54,6 +60,7 @@ public:
     bool world(i2d_world_id id, WorldRef& out);
     bool body(i2d_body_id id, BodyRef& out);
     bool shape(i2d_shape_id id, ShapeRef& out);
+    bool chain(i2d_chain_id id, ChainRef& out);
     /// Fails with I2D_ERR_WORLD_LOCKED inside a query callback.
     bool unlocked(const World& world);
 
@@ -95,5 +102,6 @@ R guarded(const char* function, R on_failure, F&& body) {
 i2d_world_id make_world_id(const IdFields& world);
 i2d_body_id make_body_id(const IdFields& world, int32_t index, uint16_t generation);
 i2d_shape_id make_shape_id(const IdFields& world, int32_t index, uint16_t generation);
+i2d_chain_id make_chain_id(const IdFields& world, int32_t index, uint16_t generation);
 
 }  // namespace i2d::capi

@@ -74,6 +74,22 @@ I2D_API i2d_shape_def i2d_default_shape_def(void) {
     return def;
 }
 
+I2D_API i2d_chain_def i2d_default_chain_def(void) {
+    set_ok();
+    const ChainDef core;
+    i2d_chain_def def{};
+    def.points = nullptr;
+    def.count = 0;
+    def.is_loop = core.is_loop;
+    def.materials = nullptr;
+    def.material_count = 0;
+    def.filter = to_public(core.filter);
+    def.enable_sensor_events = core.enable_sensor_events;
+    def.user_data = nullptr;
+    def.internal_cookie = def_cookie;
+    return def;
+}
+
 I2D_API i2d_query_filter i2d_default_query_filter(void) {
     set_ok();
     const QueryFilter core;

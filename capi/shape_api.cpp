@@ -216,6 +216,11 @@ I2D_API i2d_status i2d_shape_destroy(i2d_shape_id id) {
         if (!mutable_shape(call, id, s)) {
             return last_status();
         }
+        if (s.shape().chain != null_index) {
+            return call.fail(I2D_ERR_INVALID_ARGUMENT,
+                             "the shape is a chain segment: destroy its chain (i2d_chain_destroy) instead"),
+                   last_status();
+        }
         s.world->destroy_shape(s.index);
         return I2D_OK;
     });

@@ -246,6 +246,25 @@ I2D_API bool i2d_shape_is_sensor(i2d_shape_id shape);
 I2D_API void* i2d_shape_get_user_data(i2d_shape_id shape);
 I2D_API i2d_status i2d_shape_set_user_data(i2d_shape_id shape, void* user_data);
 
+/* ---- Chains --------------------------------------------------------------------- */
+
+I2D_API i2d_chain_def i2d_default_chain_def(void);
+/** Creates the chain's segments as shapes (I2D_SHAPE_CHAIN_SEGMENT) of a static or
+ *  kinematic body; returns the null id on failure: I2D_ERR_INVALID_ARGUMENT for a def not
+ *  from i2d_default_chain_def, NULL points, too few or too many points, NaN or infinite
+ *  or out-of-range values, consecutive points closer than 0.005 m, a material count that
+ *  is neither 0, 1 nor the segment count, or a dynamic body; I2D_ERR_INVALID_HANDLE for a
+ *  bad body; I2D_ERR_WORLD_LOCKED inside a query callback. Its segments are destroyed
+ *  with it (i2d_shape_destroy refuses them) and with their body. */
+I2D_API i2d_chain_id i2d_chain_create(i2d_body_id body, const i2d_chain_def* def);
+I2D_API i2d_status i2d_chain_destroy(i2d_chain_id chain);
+I2D_API bool i2d_chain_is_valid(i2d_chain_id chain);
+/** The chain's segment shapes in chain order: fills out with up to capacity ids and
+ *  returns the segment count; -1 on error. */
+I2D_API int32_t i2d_chain_get_segments(i2d_chain_id chain, i2d_shape_id* out, int32_t capacity);
+/** The chain a segment shape belongs to; the null id for other shapes. */
+I2D_API i2d_chain_id i2d_shape_get_chain(i2d_shape_id shape);
+
 /* ---- Queries -------------------------------------------------------------------- */
 
 /** Return false to stop the query. Runs on the calling thread with the world locked. */

@@ -23,7 +23,8 @@ typedef enum i2d_shape_type {
     I2D_SHAPE_CIRCLE = 0,
     I2D_SHAPE_CAPSULE, /**< two half discs joined by a rectangle */
     I2D_SHAPE_SEGMENT, /**< a two-sided line segment, no mass */
-    I2D_SHAPE_POLYGON  /**< convex, up to 8 vertices, optionally rounded; boxes are polygons */
+    I2D_SHAPE_POLYGON, /**< convex, up to 8 vertices, optionally rounded; boxes are polygons */
+    I2D_SHAPE_CHAIN_SEGMENT /**< one segment of a chain (i2d_chain_create): one-sided, no mass */
 } i2d_shape_type;
 
 /** Which shapes collide. Two shapes collide when each one's category_bits meet the
@@ -221,6 +222,40 @@ typedef struct i2d_shape_def {
     /** Set by i2d_default_shape_def(); do not set. */
     uint32_t internal_cookie;
 } i2d_shape_def;
+
+/** The material of a chain segment. */
+typedef struct i2d_surface_material {
+    float friction;           /**< as i2d_shape_def.friction; [0, inf) */
+    float restitution;        /**< as i2d_shape_def.restitution; [0, 100] */
+    float rolling_resistance; /**< as i2d_shape_def.rolling_resistance; [0, 1e5] */
+    float tangent_speed;      /**< as i2d_shape_def.tangent_speed, m/s; |speed| <= 1e5 */
+} i2d_surface_material;
+
+/** Chain settings (level geometry). Obtain with i2d_default_chain_def(), then edit.
+ *  Segments are one-sided: a shape collides with a segment from the right of the
+ *  direction from point i to point i + 1 (where its normal points) and passes through it
+ *  from the left. A floor is listed right to left; a closed loop listed clockwise keeps
+ *  bodies inside it. Neighbouring segments know each other, so a box sliding along a
+ *  flat chain never catches on a seam. */
+typedef struct i2d_chain_def {
+    /** The points, copied at creation; within 1e9 m of the origin, consecutive points at
+     *  least 0.005 m apart. Open chains: at least 4, the first and the last being ghost
+     *  points (they shape the ends' contacts but make no segment). Loops: at least 3. At
+     *  most 1000000. Default NULL, 0. */
+    const i2d_vec2* points;
+    int32_t count;
+    /** Default false. A loop joins the last point to the first. */
+    bool is_loop;
+    /** 0 materials: the shape def defaults (friction 0.6, restitution 0); 1: for every
+     *  segment; one per segment (count - 3 open, count closed). Default NULL, 0. */
+    const i2d_surface_material* materials;
+    int32_t material_count;
+    i2d_filter filter;          /**< default: category 1, collides with everything */
+    bool enable_sensor_events;  /**< default true */
+    void* user_data;            /**< default NULL; every segment shape gets it too */
+    /** Set by i2d_default_chain_def(); do not set. */
+    uint32_t internal_cookie;
+} i2d_chain_def;
 
 /** Sizes of a world, for tools and benchmarks. */
 typedef struct i2d_world_counters {
