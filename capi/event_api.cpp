@@ -8,11 +8,14 @@ using namespace i2d;
 using namespace i2d::capi;
 
 // The core's event records are the public structs, byte for byte.
-static_assert(sizeof(ShapePairEvent) == sizeof(i2d_contact_begin_event), "event layout");
+static_assert(sizeof(ContactBeginEvent) == sizeof(i2d_contact_begin_event), "event layout");
+static_assert(offsetof(ContactBeginEvent, manifold) == offsetof(i2d_contact_begin_event, manifold), "event layout");
+static_assert(sizeof(Manifold) == sizeof(i2d_manifold), "event layout");
+static_assert(offsetof(Manifold, points) == offsetof(i2d_manifold, points), "event layout");
 static_assert(sizeof(ShapePairEvent) == sizeof(i2d_contact_end_event), "event layout");
 static_assert(sizeof(ShapePairEvent) == sizeof(i2d_sensor_begin_event), "event layout");
 static_assert(sizeof(ShapePairEvent) == sizeof(i2d_sensor_end_event), "event layout");
-static_assert(offsetof(ShapePairEvent, shape_b) == offsetof(i2d_contact_begin_event, shape_b), "event layout");
+static_assert(offsetof(ContactBeginEvent, shape_b) == offsetof(i2d_contact_begin_event, shape_b), "event layout");
 static_assert(offsetof(ShapePairEvent, shape_b) == offsetof(i2d_sensor_begin_event, visitor_shape), "event layout");
 static_assert(sizeof(BodyMoveEvent) == sizeof(i2d_body_move_event), "event layout");
 static_assert(sizeof(ContactHitEvent) == sizeof(i2d_contact_hit_event), "event layout");

@@ -12,20 +12,6 @@ typedef struct i2d_circle {
     float radius;
 } i2d_circle;
 
-typedef struct i2d_manifold_point {
-    i2d_vec2 point;    /**< world point midway between the two surfaces */
-    float penetration; /**< > 0 overlapping, 0 touching; down to -0.02 m for speculative points */
-    uint32_t id;       /**< feature key, stable from step to step for the same features */
-} i2d_manifold_point;
-
-/** Contact between two shapes. Moving B along normal by the largest penetration (or A
- *  against it) separates them. */
-typedef struct i2d_manifold {
-    i2d_vec2 normal;     /**< unit, points from shape A to shape B */
-    int32_t point_count; /**< 0 = not touching; up to 2 */
-    i2d_manifold_point points[2];
-} i2d_manifold;
-
 /* World-space tests. Touching shapes (distance exactly zero) report a contact with
  * penetration 0; separated shapes report point_count 0. Invalid input (NaN, inf, negative
  * radius, min > max) reports point_count 0 and sets I2D_ERR_INVALID_ARGUMENT.

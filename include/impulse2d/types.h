@@ -284,10 +284,29 @@ typedef struct i2d_profile {
     float continuous;     /**< continuous collision: sweeping fast bodies */
 } i2d_profile;
 
+typedef struct i2d_manifold_point {
+    i2d_vec2 point;    /**< world point midway between the two surfaces */
+    float penetration; /**< > 0 overlapping, 0 touching; down to -0.02 m for speculative points */
+    uint32_t id;       /**< feature key, stable from step to step for the same features */
+} i2d_manifold_point;
+
+/** Contact between two shapes. Moving B along normal by the largest penetration (or A
+ *  against it) separates them. */
+typedef struct i2d_manifold {
+    i2d_vec2 normal;     /**< unit, points from shape A to shape B */
+    int32_t point_count; /**< 0 = not touching; up to 2 */
+    i2d_manifold_point points[2];
+} i2d_manifold;
+
 /* ---- Events: arrays owned by the world, valid until the next step or world change ---- */
 
-/** Two shapes started touching during the last step (both enable contact events). */
-typedef struct i2d_contact_begin_event { i2d_shape_id shape_a, shape_b; } i2d_contact_begin_event;
+/** Two shapes started touching during the last step (both enable contact events), with
+ *  the contact's manifold: its normal (from A to B) and points (world, where they met,
+ *  penetration at the start of the step). */
+typedef struct i2d_contact_begin_event {
+    i2d_shape_id shape_a, shape_b;
+    i2d_manifold manifold;
+} i2d_contact_begin_event;
 /** Two shapes stopped touching, or one of them was destroyed while touching. The ids
  *  may be stale by the time you read them. */
 typedef struct i2d_contact_end_event { i2d_shape_id shape_a, shape_b; } i2d_contact_end_event;

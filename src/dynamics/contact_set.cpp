@@ -134,6 +134,20 @@ ShapePairEvent ContactSet::event_of(const Contact& c) const {
     return sensor_is_b ? ShapePairEvent{b, a} : ShapePairEvent{a, b};
 }
 
+// The contact's manifold as a begin event shows it: world points where A's anchors are.
+Manifold ContactSet::manifold_of(const Contact& c) const {
+    Manifold m;
+    m.normal = c.normal;
+    m.point_count = c.point_count;
+    const Vec2 center_a = bodies_[c.edges[0].body].center;
+    for (int32_t i = 0; i < c.point_count; ++i) {
+        m.points[i].point = center_a + c.points[i].anchor_a;
+        m.points[i].penetration = -c.points[i].separation;
+        m.points[i].id = c.point_ids[i];
+    }
+    return m;
+}
+
 // Events compare the end of the step with its start, so that applying a step's begin
 // events and then its end events always gives the true final state.
 void ContactSet::report_touch_changes(const Contact& c, bool touching_now) {
@@ -144,7 +158,12 @@ void ContactSet::report_touch_changes(const Contact& c, bool touching_now) {
     const bool sensor = (c.flags & contact_sensor) != 0;
     WorldEvents& e = events_.current;
     if (!at_start && touching_now) {
-        (sensor ? e.sensor_begin : e.contact_begin).push_back(event_of(c));
+        if (sensor) {
+            e.sensor_begin.push_back(event_of(c));
+        } else {
+            const ShapePairEvent pair = event_of(c);
+            e.contact_begin.push_back({pair.shape_a, pair.shape_b, manifold_of(c)});
+        }
     }
     if (at_start && !touching_now) {
         (sensor ? e.sensor_end : e.contact_end).push_back(event_of(c));

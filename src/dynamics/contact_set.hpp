@@ -115,6 +115,7 @@ private:
     bool may_pair(int32_t shape_a, int32_t shape_b) const;
     void report_touch_changes(const Contact& contact, bool touching_now);
     void report_hit(const Contact& contact);
+    Manifold manifold_of(const Contact& contact) const;
     ShapePairEvent event_of(const Contact& contact) const;
 
     const WorldDef& settings_;

@@ -17,6 +17,10 @@ struct Hits {
     double speed = 0.0;  // of the last hit
     double normal_y = 0.0;
     double point_y = 0.0;
+    int begins = 0;                // contact begin events
+    int begin_points = 0;          // manifold points of the last one
+    double begin_normal_y = 0.0;   // its normal
+    double begin_point_y = 1e9;    // and its first point
 };
 
 // A ball of radius 0.1 whose bottom starts `height` above the ground (top at y = 0),
@@ -39,6 +43,12 @@ Hits drop_ball(double height, float threshold, bool opt_in) {
     }
     for (int s = 0; s < steps_for(2.0) && scene.step(); ++s) {
         const i2d_contact_events e = i2d_world_get_contact_events(scene.world);
+        for (int k = 0; k < e.begin_count; ++k) {
+            ++hits.begins;
+            hits.begin_points = e.begin_events[k].manifold.point_count;
+            hits.begin_normal_y = e.begin_events[k].manifold.normal.y;
+            hits.begin_point_y = e.begin_events[k].manifold.points[0].point.y;
+        }
         for (int k = 0; k < e.hit_count; ++k) {
             ++hits.count;
             hits.speed = e.hit_events[k].approach_speed;
@@ -62,6 +72,10 @@ I2D_TEST(phys_hit_event_speed_is_free_fall_speed) {
         I2D_CHECK_NEAR(hits.speed, expected, 0.01 * expected);
         I2D_CHECK_NEAR(std::fabs(hits.normal_y), 1.0, 1e-3);  // straight down onto the ground
         I2D_CHECK_NEAR(hits.point_y, 0.0, 0.05);              // where the ball met the ground
+        // The landing's begin event carries the contact's manifold.
+        I2D_CHECK(hits.begins == 1 && hits.begin_points == 1);
+        I2D_CHECK_NEAR(std::fabs(hits.begin_normal_y), 1.0, 1e-3);
+        I2D_CHECK_NEAR(hits.begin_point_y, 0.0, 0.05);
         char what[64];
         snprintf(what, sizeof what, "dropped from %.1f m", h);
         report_case(before, what);

@@ -129,6 +129,20 @@ class ShapePair(C.Structure):
     _fields_ = [("a", C.c_uint64), ("b", C.c_uint64)]
 
 
+class ManifoldPoint(C.Structure):
+    _fields_ = [("point", Vec2), ("penetration", C.c_float), ("id", C.c_uint32)]
+
+
+class Manifold(C.Structure):
+    _fields_ = [("normal", Vec2), ("point_count", C.c_int32), ("points", ManifoldPoint * 2)]
+
+
+class ContactBeginEvent(C.Structure):
+    """i2d_contact_begin_event: the two ids and the contact's manifold."""
+
+    _fields_ = [("a", C.c_uint64), ("b", C.c_uint64), ("manifold", Manifold)]
+
+
 class ContactHitEvent(C.Structure):
     _fields_ = [
         ("a", C.c_uint64),
@@ -150,7 +164,7 @@ class SensorEvents(C.Structure):
 
 class ContactEvents(C.Structure):
     _fields_ = [
-        ("begin_events", C.POINTER(ShapePair)),
+        ("begin_events", C.POINTER(ContactBeginEvent)),
         ("begin_count", C.c_int32),
         ("end_events", C.POINTER(ShapePair)),
         ("end_count", C.c_int32),
@@ -224,7 +238,9 @@ DECLARED = {
     "i2d_shape_def": ShapeDef,
     "i2d_world_counters": WorldCounters,
     "i2d_profile": Profile,
-    "i2d_contact_begin_event": ShapePair,
+    "i2d_contact_begin_event": ContactBeginEvent,
+    "i2d_manifold": Manifold,
+    "i2d_manifold_point": ManifoldPoint,
     "i2d_contact_end_event": ShapePair,
     "i2d_contact_events": ContactEvents,
     "i2d_sensor_begin_event": ShapePair,
