@@ -13,7 +13,7 @@ namespace {
 
 /// Most distance evaluations per time of impact. Each one is safe, so running out
 /// returns a time before the impact: a spinning body may stop a little early, never late.
-constexpr int32_t max_toi_iterations = 32;
+constexpr int32_t max_toi_iterations = 64;
 
 // Farthest core point from the centre of mass: how fast a turn can move the core.
 float core_extent(const ShapeProxy& p, Vec2 local_center) {
@@ -24,8 +24,19 @@ float core_extent(const ShapeProxy& p, Vec2 local_center) {
     return std::sqrt(extent_sq);
 }
 
-// The sweep's whole turn, rad, in [0, pi].
-float sweep_turn(const Sweep& s) { return std::fabs(get_angle(inv_mul_rot(s.q1, s.q2))); }
+/// Turns this close to half a revolution leave the interpolated rotation's speed
+/// unbounded; the bound stops growing there (rad). Steps turn less than this unless
+/// they take several quarter turns in a row.
+constexpr float max_bounded_turn = 3.1f;
+
+// The fastest the sweep's rotation turns, rad per unit of t. The rotation is a normalised
+// linear interpolation: for a whole turn phi it turns fastest half way, at
+// 2 tan(phi / 2) (not phi: a bound of phi would step past impacts of fast spinners).
+float sweep_turn_rate(const Sweep& s) {
+    const float phi = min_of(std::fabs(get_angle(inv_mul_rot(s.q1, s.q2))), max_bounded_turn);
+    const float half = 0.5f * phi;
+    return 2.0f * std::sin(half) / std::cos(half);
+}
 
 }  // namespace
 
@@ -44,8 +55,8 @@ Transform sweep_transform(const Sweep& s, float t) {
 
 ToiResult time_of_impact(const ShapeProxy& a, const Sweep& sweep_a, const ShapeProxy& b, const Sweep& sweep_b,
                          float max_fraction, float target, float tolerance) {
-    const float spin_bound = sweep_turn(sweep_a) * core_extent(a, sweep_a.local_center) +
-                             sweep_turn(sweep_b) * core_extent(b, sweep_b.local_center);
+    const float spin_bound = sweep_turn_rate(sweep_a) * core_extent(a, sweep_a.local_center) +
+                             sweep_turn_rate(sweep_b) * core_extent(b, sweep_b.local_center);
     const Vec2 relative_travel = (sweep_b.c2 - sweep_b.c1) - (sweep_a.c2 - sweep_a.c1);
     ToiResult result;
     float t = 0.0f;
