@@ -96,7 +96,9 @@ bool Continuous::swept_against(const Body& fast, const Body& other, bool bullet_
 void Continuous::sweep_body(int32_t body, bool bullet_pass) {
     const Body& b = bodies_[body];
     const Sweep sweep = sweep_of(body);
-    const Transform start = sweep_transform(sweep, 0.0f);
+    const Transform start{sweep.c1 - rotate(sweep.q1, sweep.local_center), sweep.q1};
+    const bool turned = !(sweep.q1.c == sweep.q2.c && sweep.q1.s == sweep.q2.s);
+    const Vec2 travel = sweep.c2 - sweep.c1;
     float first = 1.0f;
     int32_t first_body = null_index;
     sensor_candidates_.clear();
@@ -107,7 +109,10 @@ void Continuous::sweep_body(int32_t body, bool bullet_pass) {
             continue;
         }
         const ShapeProxy proxy = make_shape_proxy(shape.geometry);
-        const AABB swept_box = union_of(compute_aabb(shape.geometry, start), shape.aabb);
+        // Without a turn the start box is the end box moved back.
+        const AABB start_box = turned ? compute_aabb(shape.geometry, start)
+                                      : AABB{shape.aabb.lower - travel, shape.aabb.upper - travel};
+        const AABB swept_box = union_of(start_box, shape.aabb);
         for (int32_t kind = 0; kind < kinds; ++kind) {
             broad_phase_.tree(ProxyKind(kind)).query(swept_box, [&](int32_t, int32_t other_index) {
                 const Shape& other = shapes_[other_index];
@@ -160,15 +165,17 @@ void Continuous::sweep_body(int32_t body, bool bullet_pass) {
         if (both_stop) {
             move_to(first_body, first, null_index);
         }
-        move_to(body, first, both_stop ? null_index : first_body);
+        move_to(body, first, other.type == BodyType::kinematic ? first_body : null_index);
     }
 }
 
 // The body goes back to the fraction of its sweep, keeping its velocities: the next
-// step's speculative contact does the rest. What it hit keeps its own motion to the end
-// of the step (a kinematic wall, a body a bullet met): the body rides along with it from
-// the impact, so that the two end the step as they were when they touched, rather than
-// the wall passing the body that waits at the impact point.
+// step's speculative contact does the rest. A kinematic body it hit keeps moving to the
+// end of the step, so the body rides along with it from the impact (the carrier): the
+// two end the step as they were when they touched, rather than the wall passing the body
+// that waits at the impact point. A dynamic body it hit is not a carrier: it can be
+// stopped by the contact, and carrying a bullet along with a box that lands would push
+// the bullet into the floor.
 void Continuous::move_to(int32_t body, float fraction, int32_t carrier) {
     Body& b = bodies_[body];
     Transform xf = sweep_transform(sweep_of(body), fraction);
