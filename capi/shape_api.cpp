@@ -303,6 +303,9 @@ I2D_API i2d_segment i2d_shape_get_segment(i2d_shape_id id) {
             return i2d_segment{};
         }
         const Geometry& g = s.shape().geometry;
+        if (g.type == ShapeType::chain_segment) {
+            return i2d_segment{to_public(g.chain_segment.point1), to_public(g.chain_segment.point2)};
+        }
         if (g.type != ShapeType::segment) {
             call.fail(I2D_ERR_INVALID_ARGUMENT, "the shape is not a segment");
             return i2d_segment{};

@@ -231,7 +231,8 @@ I2D_API i2d_circle i2d_shape_get_circle(i2d_shape_id shape);
 I2D_API i2d_polygon i2d_shape_get_polygon(i2d_shape_id shape);
 /** The capsule in the body frame; zero for another kind (I2D_ERR_INVALID_ARGUMENT). */
 I2D_API i2d_capsule i2d_shape_get_capsule(i2d_shape_id shape);
-/** The segment in the body frame; zero for another kind (I2D_ERR_INVALID_ARGUMENT). */
+/** The segment in the body frame (of a segment or a chain segment); zero for another kind
+ *  (I2D_ERR_INVALID_ARGUMENT). */
 I2D_API i2d_segment i2d_shape_get_segment(i2d_shape_id shape);
 /** Tight world-space bounds. */
 I2D_API i2d_aabb i2d_shape_get_aabb(i2d_shape_id shape);
