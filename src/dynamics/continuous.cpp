@@ -95,12 +95,14 @@ bool Continuous::swept_against(const Body& fast, const Body& other, bool bullet_
 
 void Continuous::sweep_body(int32_t body, bool bullet_pass) {
     const Body& b = bodies_[body];
-    const Sweep sweep = sweep_of(body);
-    const Transform start{sweep.c1 - rotate(sweep.q1, sweep.local_center), sweep.q1};
-    const bool turned = !(sweep.q1.c == sweep.q2.c && sweep.q1.s == sweep.q2.s);
-    const Vec2 travel = sweep.c2 - sweep.c1;
-    float first = 1.0f;
-    int32_t first_body = null_index;
+    FastShape fast;
+    fast.body = body;
+    fast.bullet_pass = bullet_pass;
+    fast.sweep = sweep_of(body);
+    fast.start = Transform{fast.sweep.c1 - rotate(fast.sweep.q1, fast.sweep.local_center), fast.sweep.q1};
+    const bool turned = !(fast.sweep.q1.c == fast.sweep.q2.c && fast.sweep.q1.s == fast.sweep.q2.s);
+    const Vec2 travel = fast.sweep.c2 - fast.sweep.c1;
+    Impact first;
     sensor_candidates_.clear();
     const int32_t kinds = bullet_pass ? int32_t(ProxyKind::count) : int32_t(ProxyKind::dynamic_proxy);
     for (int32_t s = b.head_shape; s != null_index; s = shapes_[s].next_in_body) {
@@ -108,64 +110,72 @@ void Continuous::sweep_body(int32_t body, bool bullet_pass) {
         if (shape.is_sensor) {
             continue;
         }
-        const ShapeProxy proxy = make_shape_proxy(shape.geometry);
+        fast.shape = s;
+        fast.proxy = make_shape_proxy(shape.geometry);
         // Without a turn the start box is the end box moved back.
-        const AABB start_box = turned ? compute_aabb(shape.geometry, start)
+        const AABB start_box = turned ? compute_aabb(shape.geometry, fast.start)
                                       : AABB{shape.aabb.lower - travel, shape.aabb.upper - travel};
         const AABB swept_box = union_of(start_box, shape.aabb);
         for (int32_t kind = 0; kind < kinds; ++kind) {
-            broad_phase_.tree(ProxyKind(kind)).query(swept_box, [&](int32_t, int32_t other_index) {
-                const Shape& other = shapes_[other_index];
-                const Body& other_body = bodies_[other.body];
-                if (!swept_against(b, other_body, bullet_pass) || !should_collide(shape.filter, other.filter)) {
-                    return true;
-                }
-                const Sweep other_sweep = sweep_of(other.body);
-                if (other.geometry.type == ShapeType::chain_segment &&
-                    starts_behind(other.geometry.chain_segment, sweep_transform(other_sweep, 0.0f),
-                                  transform_point(start, centre_point(shape.geometry).points[0]))) {
-                    return true;  // one-sided: a body coming from behind passes through
-                }
-                const ShapeProxy other_proxy = make_shape_proxy(other.geometry);
-                if (other.is_sensor) {
-                    if (shape.enable_sensor_events) {
-                        const ToiResult r = time_of_impact(other_proxy, other_sweep, proxy, sweep, 1.0f,
-                                                           other_proxy.radius + proxy.radius, impact_tolerance);
-                        if (r.state == ToiState::hit) {
-                            sensor_candidates_.push_back({{other_index, s}, r.fraction});
-                        }
-                    }
-                    return true;
-                }
-                ToiResult r = time_of_impact(other_proxy, other_sweep, proxy, sweep, first,
-                                             impact_target(other_proxy, proxy), impact_tolerance);
-                // Touching at the start: the contact has the pair in hand, unless the
-                // step took the shape's centre through (Box2D sweeps a small disc
-                // instead, which a sinking shape can start inside of).
-                if (r.state == ToiState::overlapped) {
-                    r = sweep_centre(other_proxy, other_sweep, centre_point(shape.geometry), sweep, first);
-                }
-                if (r.state == ToiState::hit && r.fraction < first) {
-                    first = r.fraction;
-                    first_body = other.body;
-                }
+            broad_phase_.tree(ProxyKind(kind)).query(swept_box, [&](int32_t, int32_t other) {
+                test_candidate(fast, other, first);
                 return true;
             });
         }
     }
     for (const SensorCandidate& c : sensor_candidates_) {
-        if (c.fraction <= first) {
+        if (c.fraction <= first.fraction) {
             crossings_.push_back(c.crossing);
         }
     }
-    if (first < 1.0f) {
-        const Body& other = bodies_[first_body];
+    if (first.fraction < 1.0f) {
+        const Body& other = bodies_[first.body];
         // Two bullets meeting head-on both stop where they touch.
         const bool both_stop = other.is_bullet && other.type == BodyType::dynamic && other.awake_index != null_index;
         if (both_stop) {
-            move_to(first_body, first, null_index);
+            move_to(first.body, first.fraction, null_index);
         }
-        move_to(body, first, other.type == BodyType::kinematic ? first_body : null_index);
+        move_to(body, first.fraction, other.type == BodyType::kinematic ? first.body : null_index);
+    }
+}
+
+// One shape the fast shape's sweep may reach: the earliest impact is kept in `first`;
+// a sensor it crosses is remembered.
+void Continuous::test_candidate(const FastShape& fast, int32_t other_index, Impact& first) {
+    const Shape& shape = shapes_[fast.shape];
+    const Shape& other = shapes_[other_index];
+    if (!swept_against(bodies_[fast.body], bodies_[other.body], fast.bullet_pass) ||
+        !should_collide(shape.filter, other.filter)) {
+        return;
+    }
+    const Sweep other_sweep = sweep_of(other.body);
+    if (other.geometry.type == ShapeType::chain_segment &&
+        starts_behind(other.geometry.chain_segment, sweep_transform(other_sweep, 0.0f),
+                      transform_point(fast.start, centre_point(shape.geometry).points[0]))) {
+        return;  // one-sided: a body coming from behind passes through
+    }
+    const ShapeProxy other_proxy = make_shape_proxy(other.geometry);
+    if (other.is_sensor) {
+        if (shape.enable_sensor_events) {
+            const ToiResult r = time_of_impact(other_proxy, other_sweep, fast.proxy, fast.sweep, 1.0f,
+                                               other_proxy.radius + fast.proxy.radius, impact_tolerance);
+            if (r.state == ToiState::hit) {
+                sensor_candidates_.push_back({{other_index, fast.shape}, r.fraction});
+            }
+        }
+        return;
+    }
+    ToiResult r = time_of_impact(other_proxy, other_sweep, fast.proxy, fast.sweep, first.fraction,
+                                 impact_target(other_proxy, fast.proxy), impact_tolerance);
+    // Touching at the start: the contact has the pair in hand, unless the step took the
+    // shape's centre through (Box2D sweeps a small disc instead, which a sinking shape can
+    // start inside of).
+    if (r.state == ToiState::overlapped) {
+        r = sweep_centre(other_proxy, other_sweep, centre_point(shape.geometry), fast.sweep, first.fraction);
+    }
+    if (r.state == ToiState::hit && r.fraction < first.fraction) {
+        first.fraction = r.fraction;
+        first.body = other.body;
     }
 }
 

@@ -45,7 +45,22 @@ public:
     const std::vector<SensorCrossing>& sensor_crossings() const { return crossings_; }
 
 private:
+    // The shape being swept.
+    struct FastShape {
+        int32_t body = null_index, shape = null_index;
+        bool bullet_pass = false;
+        Sweep sweep;
+        Transform start;  // the body's pose at the start of the step
+        ShapeProxy proxy;
+    };
+    // The earliest impact found so far.
+    struct Impact {
+        float fraction = 1.0f;
+        int32_t body = null_index;
+    };
+
     void sweep_body(int32_t body, bool bullet_pass);
+    void test_candidate(const FastShape& fast, int32_t other_shape, Impact& first);
     Sweep sweep_of(int32_t body) const;
     bool swept_against(const Body& fast, const Body& other, bool bullet_pass) const;
     void move_to(int32_t body, float fraction, int32_t carrier);
