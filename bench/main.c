@@ -41,14 +41,15 @@ typedef enum stage {
     STAGE_BOUNDS,
     STAGE_SLEEP,
     STAGE_EVENTS,
+    STAGE_CONTINUOUS,
     STAGE_STEP,    /* the profile's whole step */
     STAGE_OUTSIDE, /* wall time of hook + i2d_world_step minus the profile's step */
     STAGE_COUNT
 } stage;
 
-static const char* const stage_names[STAGE_COUNT] = {"pairs", "collide", "solve", "update_bounds",
-                                                     "sleep", "events", "step", "outside"};
-#define ENGINE_STAGES 6 /* the first six add up to the profile's step (within timer reads) */
+static const char* const stage_names[STAGE_COUNT] = {"pairs", "collide", "solve",      "update_bounds", "sleep",
+                                                     "events", "continuous", "step", "outside"};
+#define ENGINE_STAGES 7 /* the first seven add up to the profile's step (within timer reads) */
 
 #define STRINGIFY_(x) #x
 #define STRINGIFY(x) STRINGIFY_(x)
@@ -332,6 +333,7 @@ static void add_profile(const i2d_profile* p, double ms, double* stages) {
     stages[STAGE_BOUNDS] += p->update_bounds;
     stages[STAGE_SLEEP] += p->sleep;
     stages[STAGE_EVENTS] += p->events;
+    stages[STAGE_CONTINUOUS] += p->continuous;
     stages[STAGE_STEP] += p->step;
     stages[STAGE_OUTSIDE] += ms - (double)p->step;
 }
@@ -648,7 +650,8 @@ static void print_header(const options* opt) {
     print_sleep_notes(opt);
     if (opt->format == FORMAT_CSV) {
         printf("scene,group,workers,dynamic_bodies,bodies,contacts,pairs,steps,repeats,median_ms,min_ms,p90_ms");
-        printf(",profile_step_ms,pairs_ms,collide_ms,solve_ms,update_bounds_ms,sleep_ms,events_ms,outside_ms");
+        printf(",profile_step_ms,pairs_ms,collide_ms,solve_ms,update_bounds_ms,sleep_ms,events_ms,continuous_ms,"
+               "outside_ms");
         printf(",solve_ns_per_contact_substep,collide_ns_per_pair_step,sanity,verdict,hash");
         printf(",sleep,awake_bodies,sleeping_islands,asleep_after_s\n");
     } else {
@@ -714,10 +717,10 @@ static void print_result(output_format format, int32_t workers, const scene_resu
         printf("%s,%s,%d,%d,%d,%d,%d,%d,%d,%.6f,%.6f,%.6f", s->name, group_name(s->group), (int)workers,
                (int)r->dynamic_bodies, (int)r->bodies, (int)r->contacts, (int)r->pairs, (int)r->steps,
                (int)r->repeats, r->median_ms, r->min_ms, r->p90_ms);
-        printf(",%.6f,%.6f,%.6f,%.6f,%.6f,%.6f,%.6f,%.6f", r->stage_median[STAGE_STEP],
+        printf(",%.6f,%.6f,%.6f,%.6f,%.6f,%.6f,%.6f,%.6f,%.6f", r->stage_median[STAGE_STEP],
                r->stage_median[STAGE_PAIRS], r->stage_median[STAGE_COLLIDE], r->stage_median[STAGE_SOLVE],
                r->stage_median[STAGE_BOUNDS], r->stage_median[STAGE_SLEEP], r->stage_median[STAGE_EVENTS],
-               r->stage_median[STAGE_OUTSIDE]);
+               r->stage_median[STAGE_CONTINUOUS], r->stage_median[STAGE_OUTSIDE]);
         printf(",%.3f,%.3f,\"", solve_ns_per_contact(r), collide_ns_per_pair(r));
         print_sanity_text(&r->sanity, ";");
         printf("\",%s,%016llx", verdict(r), (unsigned long long)r->hash);
@@ -742,8 +745,9 @@ static void print_profile_table(const scene_result* results, int32_t count) {
            "# outside = wall time minus the profile's step (C API boundary, hook); per contact/pair figures use\n"
            "# the final counts and the %d substeps\n",
            BENCH_SUBSTEPS);
-    printf("%-17s %8s %8s %8s %8s %8s %8s %8s %8s  %-13s %14s %14s\n", "scene", "step", "pairs", "collide",
-           "solve", "bounds", "sleep", "events", "outside", "dominant", "solve ns/c/ss", "collide ns/p/st");
+    printf("%-17s %8s %8s %8s %8s %8s %8s %8s %8s %8s  %-13s %14s %14s %6s\n", "scene", "step", "pairs", "collide",
+           "solve", "bounds", "sleep", "events", "ccd", "outside", "dominant", "solve ns/c/ss", "collide ns/p/st",
+           "ccd %");
     for (i = 0; i < count; ++i) {
         const scene_result* r = &results[i];
         double share;
@@ -755,8 +759,11 @@ static void print_profile_table(const scene_result* results, int32_t count) {
             printf(" %8.*f", d, r->stage_median[k]);
         }
         snprintf(dominant, sizeof dominant, "%s %.0f%%", stage_names[top], 100.0 * share);
-        printf(" %8.*f  %-13s %14.1f %14.1f\n", d, r->stage_median[STAGE_OUTSIDE], dominant,
-               solve_ns_per_contact(r), collide_ns_per_pair(r));
+        /* The continuous collision stage's share of the profile's step. */
+        printf(" %8.*f  %-13s %14.1f %14.1f %5.2f%%\n", d, r->stage_median[STAGE_OUTSIDE], dominant,
+               solve_ns_per_contact(r), collide_ns_per_pair(r),
+               r->stage_median[STAGE_STEP] > 0.0 ? 100.0 * r->stage_median[STAGE_CONTINUOUS] / r->stage_median[STAGE_STEP]
+                                                 : 0.0);
     }
 }
 

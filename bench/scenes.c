@@ -627,6 +627,70 @@ static bool sanity_small(const bench_state* state, int32_t steps_run, bench_sani
     return true;
 }
 
+/* ---- fast_bullets: bullets ricocheting in a room of thin walls (extra) ---------------------- */
+
+#define BULLET_COUNT 400
+#define BULLET_BOXES 100
+#define BULLET_RADIUS 0.05f
+#define BULLET_MIN_SPEED 150.0f /* m/s: 2.5 to 5 m per step, 50 to 100 radii */
+#define BULLET_MAX_SPEED 300.0f
+#define BULLET_ROOM_HALF 20.0f
+#define BULLET_WALL_HALF 0.025f /* 5 cm walls: a bullet crosses one in a tenth of a substep */
+
+/* A bouncy bullet (restitution 0.9, no friction) fired in a fixed pseudo-random direction. */
+static bool add_bullet(bench_state* state, i2d_vec2 position, uint32_t seed) {
+    i2d_body_def def = i2d_default_body_def();
+    i2d_shape_def shape = i2d_default_shape_def();
+    i2d_circle circle;
+    float angle = 2.0f * PI_F * (float)(seed % 1000u) / 1000.0f;
+    float speed = BULLET_MIN_SPEED + (BULLET_MAX_SPEED - BULLET_MIN_SPEED) * (float)((seed / 1000u) % 100u) / 100.0f;
+    i2d_body_id body;
+    def.type = I2D_BODY_DYNAMIC;
+    def.position = position;
+    def.linear_velocity = vec2(speed * cosf(angle), speed * sinf(angle));
+    def.is_bullet = true;
+    def.gravity_scale = 0.0f;
+    shape.restitution = 0.9f;
+    shape.friction = 0.0f;
+    circle.center = vec2(0.0f, 0.0f);
+    circle.radius = BULLET_RADIUS;
+    body = i2d_body_create(state->world, &def);
+    if (I2D_IS_NULL(body) || I2D_IS_NULL(i2d_shape_create_circle(body, &shape, &circle))) {
+        return false;
+    }
+    state->bodies[state->body_count] = body;
+    state->start_x[state->body_count] = position.x;
+    state->start_y[state->body_count] = position.y;
+    state->body_count++;
+    return true;
+}
+
+static bool create_fast_bullets(bench_state* state) {
+    const float h = BULLET_ROOM_HALF, t = BULLET_WALL_HALF;
+    uint32_t seed = 12345u;
+    int32_t i;
+    if (!create_world(state, false) || !reserve_bodies(state, BULLET_COUNT + BULLET_BOXES, 0) ||
+        !add_static_box(state, 0.0f, -t, h, t) || !add_static_box(state, 0.0f, 2.0f * h + t, h, t) ||
+        !add_static_box(state, -h - t, h, t, h) || !add_static_box(state, h + t, h, t, h)) {
+        return false;
+    }
+    state->region = aabb(-h, 0.0f, h, 2.0f * h);
+    for (i = 0; i < BULLET_BOXES; ++i) {
+        i2d_vec2 p = vec2(-18.0f + 3.6f * (float)(i % 10), 1.0f + 3.6f * (float)(i / 10));
+        if (!add_dynamic(state, p, false, 0.3f)) {
+            return false;
+        }
+    }
+    for (i = 0; i < BULLET_COUNT; ++i) {
+        i2d_vec2 p = vec2(-19.0f + 1.9f * (float)(i % 20), 2.8f + 1.8f * (float)(i / 20));
+        seed = seed * 1664525u + 1013904223u; /* an LCG: the same scene on every platform */
+        if (!add_bullet(state, p, seed >> 8)) {
+            return false;
+        }
+    }
+    return true;
+}
+
 /* ---- The table ----------------------------------------------------------------------------- */
 
 static const char tumbler_substitution[] =
@@ -650,6 +714,9 @@ const bench_scene bench_scenes[] = {
     {"sleeping_pile", BENCH_GROUP_EXTRA, NULL, 0,
      "10 twenty-row pyramids and 50 columns of 20 boxes (3100 1 m boxes), stepped until all sleep, then timed",
      NULL, BENCH_SLEEP_FIRST, 500, create_sleeping_pile, NULL, sanity_sleeping_pile},
+    {"fast_bullets", BENCH_GROUP_EXTRA, NULL, 0,
+     "400 bullets (r 5 cm, 150-300 m/s, restitution 0.9) and 100 boxes in a 40 m room of 5 cm walls (sleep off)",
+     NULL, BENCH_SLEEP_OFF, 300, create_fast_bullets, NULL, sanity_inside_all},
     {"rain_circles_1k", BENCH_GROUP_SWEEP, "rain_circles", 1000,
      "1000 circles (r 0.25-0.5 m) rain from a grid into an open box (sleep off)", NULL, BENCH_SLEEP_OFF, 500,
      create_rain_1k, NULL, sanity_inside_all},

@@ -16,6 +16,16 @@ using namespace i2d::capi;
 
 namespace {
 
+// Chains are one-sided and massless: a body that holds one stays static or kinematic.
+bool has_chain(const World& world, const Body& body) {
+    for (int32_t s = body.head_shape; s != null_index; s = world.shapes[s].next_in_body) {
+        if (world.shapes[s].chain != null_index) {
+            return true;
+        }
+    }
+    return false;
+}
+
 // A C caller can store any integer in the enum; in C++ merely loading an out-of-range
 // enum value is undefined, so read the raw bytes.
 bool valid_body_type(Call& call, const i2d_body_type* value, const char* what) {
@@ -119,6 +129,11 @@ I2D_API i2d_status i2d_body_set_type(i2d_body_id id, i2d_body_type type) {
         BodyRef b;
         if (!mutable_body(call, id, b) || !valid_body_type(call, &type, "type")) {
             return last_status();
+        }
+        if (type == I2D_BODY_DYNAMIC && has_chain(*b.world, b.body())) {
+            return call.fail(I2D_ERR_INVALID_ARGUMENT,
+                             "the body holds a chain, which cannot be dynamic; destroy the chain first"),
+                   last_status();
         }
         b.world->set_type(b.index, static_cast<BodyType>(type));
         return I2D_OK;

@@ -106,6 +106,17 @@ bool Call::joint(i2d_joint_id id, JointRef& out) {
     return true;
 }
 
+bool Call::chain(i2d_chain_id id, ChainRef& out) {
+    if (!decode(id.bits, IdKind::chain, "chain", out.id, out.world)) {
+        return false;
+    }
+    if (!out.world->chains.is_live(out.id.index, out.id.generation)) {
+        return fail(I2D_ERR_INVALID_HANDLE, "chain id is stale: the chain or its body was destroyed");
+    }
+    out.index = out.id.index;
+    return true;
+}
+
 bool Call::unlocked(const World& world) {
     if (world.is_locked()) {
         return fail(I2D_ERR_WORLD_LOCKED,
@@ -199,6 +210,14 @@ i2d_world_id make_world_id(const IdFields& world) {
 i2d_body_id make_body_id(const IdFields& world, int32_t index, uint16_t generation) {
     IdFields f = world;
     f.kind = IdKind::body;
+    f.index = index;
+    f.generation = generation;
+    return {encode_id(f)};
+}
+
+i2d_chain_id make_chain_id(const IdFields& world, int32_t index, uint16_t generation) {
+    IdFields f = world;
+    f.kind = IdKind::chain;
     f.index = index;
     f.generation = generation;
     return {encode_id(f)};

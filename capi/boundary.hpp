@@ -47,6 +47,12 @@ struct JointRef {
     Joint& joint() const { return world->joints[index]; }
 };
 
+struct ChainRef {
+    World* world = nullptr;
+    int32_t index = -1;
+    IdFields id;
+};
+
 class Call {
 public:
     explicit Call(const char* function) : function_(function) {
@@ -67,6 +73,7 @@ public:
     bool body(i2d_body_id id, BodyRef& out, const char* field);
     bool shape(i2d_shape_id id, ShapeRef& out);
     bool joint(i2d_joint_id id, JointRef& out);
+    bool chain(i2d_chain_id id, ChainRef& out);
     /// Fails with I2D_ERR_WORLD_LOCKED inside a query callback.
     bool unlocked(const World& world);
 
@@ -110,5 +117,6 @@ i2d_world_id make_world_id(const IdFields& world);
 i2d_body_id make_body_id(const IdFields& world, int32_t index, uint16_t generation);
 i2d_shape_id make_shape_id(const IdFields& world, int32_t index, uint16_t generation);
 i2d_joint_id make_joint_id(const IdFields& world, int32_t index, uint16_t generation);
+i2d_chain_id make_chain_id(const IdFields& world, int32_t index, uint16_t generation);
 
 }  // namespace i2d::capi

@@ -32,6 +32,8 @@ I2D_API i2d_world_def i2d_default_world_def(void) {
     def.enqueue_task = nullptr;
     def.finish_task = nullptr;
     def.user_task_context = nullptr;
+    def.enable_continuous = core.enable_continuous;
+    def.hit_event_threshold = core.hit_event_threshold;
     def.internal_cookie = def_cookie;
     return def;
 }
@@ -68,7 +70,24 @@ I2D_API i2d_shape_def i2d_default_shape_def(void) {
     def.is_sensor = core.is_sensor;
     def.enable_contact_events = core.enable_contact_events;
     def.enable_sensor_events = core.enable_sensor_events;
+    def.enable_hit_events = core.enable_hit_events;
     def.filter = to_public(core.filter);
+    def.user_data = nullptr;
+    def.internal_cookie = def_cookie;
+    return def;
+}
+
+I2D_API i2d_chain_def i2d_default_chain_def(void) {
+    set_ok();
+    const ChainDef core;
+    i2d_chain_def def{};
+    def.points = nullptr;
+    def.count = 0;
+    def.is_loop = core.is_loop;
+    def.materials = nullptr;
+    def.material_count = 0;
+    def.filter = to_public(core.filter);
+    def.enable_sensor_events = core.enable_sensor_events;
     def.user_data = nullptr;
     def.internal_cookie = def_cookie;
     return def;

@@ -8,13 +8,21 @@ using namespace i2d;
 using namespace i2d::capi;
 
 // The core's event records are the public structs, byte for byte.
-static_assert(sizeof(ShapePairEvent) == sizeof(i2d_contact_begin_event), "event layout");
+static_assert(sizeof(ContactBeginEvent) == sizeof(i2d_contact_begin_event), "event layout");
+static_assert(offsetof(ContactBeginEvent, manifold) == offsetof(i2d_contact_begin_event, manifold), "event layout");
+static_assert(sizeof(Manifold) == sizeof(i2d_manifold), "event layout");
+static_assert(offsetof(Manifold, points) == offsetof(i2d_manifold, points), "event layout");
 static_assert(sizeof(ShapePairEvent) == sizeof(i2d_contact_end_event), "event layout");
 static_assert(sizeof(ShapePairEvent) == sizeof(i2d_sensor_begin_event), "event layout");
 static_assert(sizeof(ShapePairEvent) == sizeof(i2d_sensor_end_event), "event layout");
-static_assert(offsetof(ShapePairEvent, shape_b) == offsetof(i2d_contact_begin_event, shape_b), "event layout");
+static_assert(offsetof(ContactBeginEvent, shape_b) == offsetof(i2d_contact_begin_event, shape_b), "event layout");
 static_assert(offsetof(ShapePairEvent, shape_b) == offsetof(i2d_sensor_begin_event, visitor_shape), "event layout");
 static_assert(sizeof(BodyMoveEvent) == sizeof(i2d_body_move_event), "event layout");
+static_assert(sizeof(ContactHitEvent) == sizeof(i2d_contact_hit_event), "event layout");
+static_assert(offsetof(ContactHitEvent, point) == offsetof(i2d_contact_hit_event, point), "event layout");
+static_assert(offsetof(ContactHitEvent, normal) == offsetof(i2d_contact_hit_event, normal), "event layout");
+static_assert(offsetof(ContactHitEvent, approach_speed) == offsetof(i2d_contact_hit_event, approach_speed),
+              "event layout");
 static_assert(offsetof(BodyMoveEvent, body) == offsetof(i2d_body_move_event, body), "event layout");
 static_assert(offsetof(BodyMoveEvent, user_data) == offsetof(i2d_body_move_event, user_data), "event layout");
 static_assert(offsetof(BodyMoveEvent, fell_asleep) == offsetof(i2d_body_move_event, fell_asleep), "event layout");
@@ -36,7 +44,8 @@ I2D_API i2d_contact_events i2d_world_get_contact_events(i2d_world_id id) {
         }
         const WorldEvents& e = w.world->events();
         return i2d_contact_events{as_public<i2d_contact_begin_event>(e.contact_begin), int32_t(e.contact_begin.size()),
-                                  as_public<i2d_contact_end_event>(e.contact_end), int32_t(e.contact_end.size())};
+                                  as_public<i2d_contact_end_event>(e.contact_end), int32_t(e.contact_end.size()),
+                                  as_public<i2d_contact_hit_event>(e.contact_hits), int32_t(e.contact_hits.size())};
     });
 }
 

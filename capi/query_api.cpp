@@ -1,5 +1,8 @@
 // SPDX-License-Identifier: MIT
 // i2d_world_overlap_*, i2d_world_cast_ray_closest: queries with exact geometry.
+#include <algorithm>
+#include <vector>
+
 #include "boundary.hpp"
 #include "geometry_checks.hpp"
 #include "convert.hpp"
@@ -140,5 +143,65 @@ I2D_API i2d_ray_result i2d_world_cast_ray_closest(i2d_world_id world, i2d_vec2 o
             out.hit = true;
         }
         return out;
+    });
+}
+
+I2D_API int32_t i2d_world_overlap_point_ids(i2d_world_id world, i2d_vec2 point, i2d_query_filter filter,
+                                            i2d_shape_id* out, int32_t capacity) {
+    return guarded("i2d_world_overlap_point_ids", int32_t(-1), [&](Call& call) -> int32_t {
+        WorldRef w;
+        if (!call.world(world, w) || !call.finite(point, "point")) {
+            return -1;
+        }
+        if (capacity < 0 || (capacity > 0 && out == nullptr)) {
+            call.fail(I2D_ERR_INVALID_ARGUMENT, "out is NULL or capacity (%d) is negative", capacity);
+            return -1;
+        }
+        IdCollector collector{w.world, w.id, out, capacity, 0};
+        w.world->overlap_point(capi::to_core(point), capi::to_core(filter), &IdCollector::visit, &collector);
+        return collector.total;
+    });
+}
+
+namespace {
+
+// Every hit of a ray, unclipped; sorted afterwards.
+struct AllHits {
+    std::vector<RayResult> hits;
+
+    static float visit(int32_t shape, Vec2 point, Vec2 normal, float fraction, void* self) {
+        static_cast<AllHits*>(self)->hits.push_back({shape, point, normal, fraction, true});
+        return 1.0f;
+    }
+};
+
+}  // namespace
+
+I2D_API int32_t i2d_world_cast_ray_all(i2d_world_id world, i2d_vec2 origin, i2d_vec2 translation,
+                                       i2d_query_filter filter, i2d_ray_result* out, int32_t capacity) {
+    return guarded("i2d_world_cast_ray_all", int32_t(-1), [&](Call& call) -> int32_t {
+        WorldRef w;
+        if (!call.world(world, w) || !call.coordinate(origin, "origin") ||
+            !call.coordinate(translation, "translation")) {
+            return -1;
+        }
+        if (capacity < 0 || (capacity > 0 && out == nullptr)) {
+            call.fail(I2D_ERR_INVALID_ARGUMENT, "out is NULL or capacity (%d) is negative", capacity);
+            return -1;
+        }
+        AllHits all;
+        w.world->cast_ray(capi::to_core(origin), capi::to_core(translation), capi::to_core(filter), &AllHits::visit,
+                          &all);
+        // Nearest first; equal fractions in shape order, so the order is the same every run.
+        std::sort(all.hits.begin(), all.hits.end(), [](const RayResult& a, const RayResult& b) {
+            return a.fraction < b.fraction || (a.fraction == b.fraction && a.shape < b.shape);
+        });
+        const int32_t total = int32_t(all.hits.size());
+        for (int32_t i = 0; i < total && i < capacity; ++i) {
+            const RayResult& r = all.hits[std::size_t(i)];
+            out[i] = i2d_ray_result{make_shape_id(w.id, r.shape, w.world->shapes.generation(r.shape)), to_public(r.point),
+                                    to_public(r.normal), r.fraction, true};
+        }
+        return total;
     });
 }

@@ -34,6 +34,7 @@ ShapeDef to_core(const i2d_shape_def& def) {
     core.is_sensor = def.is_sensor;
     core.enable_contact_events = def.enable_contact_events;
     core.enable_sensor_events = def.enable_sensor_events;
+    core.enable_hit_events = def.enable_hit_events;
     core.filter = capi::to_core(def.filter);
     core.user_data = def.user_data;
     return core;
@@ -215,6 +216,11 @@ I2D_API i2d_status i2d_shape_destroy(i2d_shape_id id) {
         if (!mutable_shape(call, id, s)) {
             return last_status();
         }
+        if (s.shape().chain != null_index) {
+            return call.fail(I2D_ERR_INVALID_ARGUMENT,
+                             "the shape is a chain segment: destroy its chain (i2d_chain_destroy) instead"),
+                   last_status();
+        }
         s.world->destroy_shape(s.index);
         return I2D_OK;
     });
@@ -297,6 +303,9 @@ I2D_API i2d_segment i2d_shape_get_segment(i2d_shape_id id) {
             return i2d_segment{};
         }
         const Geometry& g = s.shape().geometry;
+        if (g.type == ShapeType::chain_segment) {
+            return i2d_segment{to_public(g.chain_segment.point1), to_public(g.chain_segment.point2)};
+        }
         if (g.type != ShapeType::segment) {
             call.fail(I2D_ERR_INVALID_ARGUMENT, "the shape is not a segment");
             return i2d_segment{};

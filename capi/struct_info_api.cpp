@@ -14,6 +14,7 @@ const i2d_struct_info struct_infos[] = {
     I2D_STRUCT_INFO(i2d_world_id),
     I2D_STRUCT_INFO(i2d_body_id),
     I2D_STRUCT_INFO(i2d_shape_id),
+    I2D_STRUCT_INFO(i2d_chain_id),
     I2D_STRUCT_INFO(i2d_vec2),
     I2D_STRUCT_INFO(i2d_rot),
     I2D_STRUCT_INFO(i2d_transform),
@@ -23,11 +24,14 @@ const i2d_struct_info struct_infos[] = {
     I2D_STRUCT_INFO(i2d_world_def),
     I2D_STRUCT_INFO(i2d_body_def),
     I2D_STRUCT_INFO(i2d_shape_def),
+    I2D_STRUCT_INFO(i2d_surface_material),
+    I2D_STRUCT_INFO(i2d_chain_def),
     I2D_STRUCT_INFO(i2d_world_counters),
     I2D_STRUCT_INFO(i2d_profile),
     I2D_STRUCT_INFO(i2d_contact_begin_event),
     I2D_STRUCT_INFO(i2d_contact_end_event),
     I2D_STRUCT_INFO(i2d_contact_events),
+    I2D_STRUCT_INFO(i2d_contact_hit_event),
     I2D_STRUCT_INFO(i2d_sensor_begin_event),
     I2D_STRUCT_INFO(i2d_sensor_end_event),
     I2D_STRUCT_INFO(i2d_sensor_events),
@@ -54,6 +58,7 @@ const i2d_struct_info struct_infos[] = {
     I2D_STRUCT_INFO(i2d_filter_joint_def),
     I2D_STRUCT_INFO(i2d_joint_event),
     I2D_STRUCT_INFO(i2d_joint_events),
+    I2D_STRUCT_INFO(i2d_shape_proxy),
 };
 
 #undef I2D_STRUCT_INFO

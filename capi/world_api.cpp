@@ -79,6 +79,7 @@ bool validate_world_def(Call& call, const i2d_world_def* def) {
            valid_mixing_rule(call, &def->restitution_mixing, "world def: restitution_mixing") &&
            call.in_range(def->sleep_speed_threshold, 0.0f, max_speed_limit, "world def: sleep_speed_threshold") &&
            call.in_range(def->time_to_sleep, 0.0f, max_setting, "world def: time_to_sleep") &&
+           call.in_range(def->hit_event_threshold, 0.0f, max_speed_limit, "world def: hit_event_threshold") &&
            valid_simd_path(call, &def->simd_path) && valid_workers(call, *def);
 }
 
@@ -117,6 +118,8 @@ WorldDef to_core(const i2d_world_def& def) {
     core.tasks.enqueue = def.enqueue_task;
     core.tasks.finish = def.finish_task;
     core.tasks.user_context = def.user_task_context;
+    core.enable_continuous = def.enable_continuous;
+    core.hit_event_threshold = def.hit_event_threshold;
     return core;
 }
 
@@ -234,7 +237,7 @@ I2D_API i2d_profile i2d_world_get_profile(i2d_world_id id) {
             return i2d_profile{};
         }
         const StepProfile& p = w.world->profile();
-        return i2d_profile{p.step, p.pairs, p.collide, p.solve, p.update_bounds, p.sleep, p.events};
+        return i2d_profile{p.step, p.pairs, p.collide, p.solve, p.update_bounds, p.sleep, p.events, p.continuous};
     });
 }
 

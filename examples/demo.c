@@ -17,6 +17,11 @@
  * - a capsule rolling down a slope (a static segment) into a catch ramp (a turned static box);
  * - a pyramid of ten boxes;
  * - a triangle, a pentagon, a rounded rectangle and a box dropped tilted, which land flat.
+ * Third, fast bodies and level geometry:
+ * - a rolling landscape built as one chain of 60 one-sided segments, with a box and a ball
+ *   sliding and rolling over its hills (no seam catches them);
+ * - a bullet fired at 300 m/s at a 2 cm wall: continuous collision stops it, where the same
+ *   shot in a world without it (stepped beside, not drawn) passes through.
  * Each part prints what happened beside what closed-form physics predicts. */
 
 /* clock_gettime and CLOCK_MONOTONIC are POSIX, not C99. */
@@ -44,6 +49,19 @@
 #define GROUND_HALF_WIDTH 16.0f
 #define WALL_X 15.5f   /* wall centres; inner faces at +-15 m */
 #define ROW2_Y (-6.5f) /* the bottom floor's ground top; the top floor's is at 0 */
+#define ROW3_Y (-13.0f) /* the chain level's mean height */
+
+#define CHAIN_POINTS 61      /* 60 segments of 0.5 m from x = 15 to x = -15, plus two ghosts */
+#define HILL_HEIGHT 0.8f     /* m: the landscape is ROW3_Y + HILL_HEIGHT cos(HILL_WAVE x) */
+#define HILL_WAVE 0.35f      /* rad/m */
+#define BULLET_SPEED 300.0f  /* m/s: 5 m per step */
+#define BULLET_RADIUS 0.05f
+#define THIN_WALL_X 12.0f
+#define THIN_WALL_HALF 0.01f /* a 2 cm wall */
+#define BULLET_START_X 2.0f
+#define BULLET_HEIGHT 1.2f   /* the wall's half height; the bullet meets the wall's middle */
+#define BULLET_ANGLE 0.25f   /* rad below the horizontal: a glancing shot, which a contact alone
+                                lets through */
 
 #define BALL_COUNT 4
 #define BALL_RADIUS 0.3f
@@ -77,8 +95,8 @@ static const float ball_restitution[BALL_COUNT] = {0.0f, 0.3f, 0.6f, 0.9f};
 #define CAPSULE_HALF_LENGTH 0.1f
 #define CAPSULE_RADIUS 0.35f
 
-#define MAX_BODIES 48
-#define MAX_SHAPES_PER_BODY 4
+#define MAX_BODIES 64
+#define MAX_SHAPES_PER_BODY 64 /* the chain's body holds 60 segments */
 
 static const i2d_vec2 still = {0.0f, 0.0f};
 
@@ -128,6 +146,11 @@ typedef struct demo {
     float capsule_time;           /* when it passed the foot of the slope (0: not yet), s */
     float capsule_distance, capsule_turned;
     float contact_slop;           /* the world's allowed resting penetration, m */
+    i2d_body_id bullet, chain_box, chain_ball;
+    float bullet_max_x;           /* the farthest right the bullet got, m */
+    float control_max_x;          /* the same shot in a world without continuous collision */
+    float chain_box_max_vy;       /* the chain box's fastest vertical speed while on flat ground */
+    float chain_box_start_x;
     double step_seconds;          /* wall time spent in i2d_world_step */
 } demo;
 
@@ -388,6 +411,89 @@ static void build_dropped(demo* d) {
     add_box(add_tracked(d, T_TILTED, row2(5.15f, 1.6f), 30.0f / DEG, still), &def, 0.5f, 0.5f);
 }
 
+static float hill(float x) { return ROW3_Y + HILL_HEIGHT * cosf(HILL_WAVE * x); }
+
+/* The landscape, listed right to left so that the segments' solid side is below them. */
+static void build_chain_ground(i2d_body_id body) {
+    i2d_vec2 points[CHAIN_POINTS + 2];
+    i2d_chain_def def = i2d_default_chain_def();
+    int i;
+    points[0] = vec2(15.5f, hill(15.5f)); /* ghost */
+    for (i = 0; i < CHAIN_POINTS; ++i) {
+        float x = 15.0f - 30.0f * (float)i / (float)(CHAIN_POINTS - 1);
+        points[i + 1] = vec2(x, hill(x));
+    }
+    points[CHAIN_POINTS + 1] = vec2(-15.5f, hill(-15.5f)); /* ghost */
+    def.points = points;
+    def.count = CHAIN_POINTS + 2;
+    if (I2D_IS_NULL(i2d_chain_create(body, &def))) {
+        fail("i2d_chain_create");
+    }
+}
+
+/* The thin wall and a bullet fired at it; the bullet is a circle of 5 cm radius. */
+static i2d_body_id build_wall_and_bullet(i2d_world_id world, demo* d) {
+    i2d_body_def wall_def = i2d_default_body_def(), bullet_def = i2d_default_body_def();
+    i2d_shape_def shape = shape_def(1.0f, FRICTION, 0.0f);
+    i2d_body_id wall, bullet;
+    float y = hill(THIN_WALL_X) + BULLET_HEIGHT;
+    wall_def.position = vec2(THIN_WALL_X, y);
+    bullet_def.type = I2D_BODY_DYNAMIC;
+    bullet_def.position = vec2(BULLET_START_X, y + (THIN_WALL_X - BULLET_START_X) * tanf(BULLET_ANGLE));
+    bullet_def.linear_velocity = vec2(BULLET_SPEED * cosf(BULLET_ANGLE), -BULLET_SPEED * sinf(BULLET_ANGLE));
+    bullet_def.is_bullet = true;
+    wall = i2d_body_create(world, &wall_def);
+    bullet = i2d_body_create(world, &bullet_def);
+    if (I2D_IS_NULL(wall) || I2D_IS_NULL(bullet)) {
+        fail("i2d_body_create");
+    }
+    if (d) { /* drawn with the scene */
+        if (d->body_count + 2 > MAX_BODIES) {
+            fprintf(stderr, "impulse2d_demo: more than %d bodies\n", MAX_BODIES);
+            exit(EXIT_FAILURE);
+        }
+        d->bodies[d->body_count++] = wall;
+        d->bodies[d->body_count++] = bullet;
+    }
+    add_box(wall, &shape, THIN_WALL_HALF, BULLET_HEIGHT);
+    add_circle(bullet, &shape, BULLET_RADIUS);
+    return bullet;
+}
+
+static void build_chain_level(demo* d) {
+    i2d_shape_def slick = shape_def(1.0f, 0.1f, 0.0f);
+    i2d_body_id ground = add_body(d, I2D_BODY_STATIC, vec2(0.0f, 0.0f), 0.0f, still);
+    build_chain_ground(ground);
+    d->chain_box_start_x = -13.0f;
+    d->chain_box = add_body(d, I2D_BODY_DYNAMIC, vec2(d->chain_box_start_x, hill(-13.0f) + 0.6f), 0.0f,
+                            vec2(6.0f, 0.0f));
+    add_box(d->chain_box, &slick, 0.4f, 0.25f);
+    d->chain_ball = add_body(d, I2D_BODY_DYNAMIC, vec2(-5.0f, hill(-5.0f) + 1.0f), 0.0f, vec2(3.0f, 0.0f));
+    add_circle(d->chain_ball, &slick, 0.35f);
+    d->bullet = build_wall_and_bullet(d->world, d);
+    d->bullet_max_x = position(d->bullet).x;
+}
+
+/* The same wall and shot alone in a world without continuous collision. */
+static void run_control_shot(demo* d) {
+    i2d_world_def def = i2d_default_world_def();
+    i2d_world_id world;
+    i2d_body_id bullet;
+    int step;
+    def.enable_continuous = false;
+    world = i2d_world_create(&def);
+    if (I2D_IS_NULL(world)) {
+        fail("i2d_world_create");
+    }
+    bullet = build_wall_and_bullet(world, NULL);
+    d->control_max_x = position(bullet).x;
+    for (step = 0; step < 30; ++step) {
+        check(i2d_world_step(world, TIME_STEP, SUBSTEPS), "i2d_world_step");
+        d->control_max_x = fmaxf(d->control_max_x, position(bullet).x);
+    }
+    check(i2d_world_destroy(world), "i2d_world_destroy");
+}
+
 static void build_scene(demo* d) {
     i2d_world_def def = i2d_default_world_def();
     d->contact_slop = def.contact_slop;
@@ -405,6 +511,7 @@ static void build_scene(demo* d) {
     d->pyramid_top = build_pile(d, PYRAMID_X, ROW2_Y, PYRAMID_ROWS, 1);
     d->pyramid_top_start = position(d->pyramid_top);
     build_dropped(d);
+    build_chain_level(d);
     d->momentum_before = mass(d->t[T_HEAVY].body) * velocity(d->t[T_HEAVY].body).x +
                          mass(d->t[T_LIGHT].body) * velocity(d->t[T_LIGHT].body).x;
     d->heavy_v_before = velocity(d->t[T_HEAVY].body).x;
@@ -502,7 +609,9 @@ static void run(demo* d) {
         follow_rim(d);
         watch_sliders(d);
         watch_turning(d, step);
+        d->bullet_max_x = fmaxf(d->bullet_max_x, position(d->bullet).x);
     }
+    run_control_shot(d);
 }
 
 /* ---- Reporting -------------------------------------------------------------------------- */
@@ -596,6 +705,19 @@ static void report_resting(const demo* d) {
            degrees(transform(d->t[T_TILTED].body).q));
 }
 
+static void report_chain_level(const demo* d) {
+    i2d_vec2 box = position(d->chain_box), ball = position(d->chain_ball);
+    printf("chain level (60 one-sided segments): the box slid from x = %.1f to x = %.2f, %.2f m above the"
+           " ground under it; the ball rolled to x = %.2f, %.2f m above it (its radius: 0.35)\n",
+           (double)d->chain_box_start_x, (double)box.x, (double)(box.y - hill(box.x)), (double)ball.x,
+           (double)(ball.y - hill(ball.x)));
+    printf("bullet at %.0f m/s at a %.0f cm wall (x = %.1f): got to x = %.3f, %s; without continuous collision"
+           " it got to x = %.1f, %s\n",
+           (double)BULLET_SPEED, (double)(200.0f * THIN_WALL_HALF), (double)THIN_WALL_X, (double)d->bullet_max_x,
+           d->bullet_max_x < THIN_WALL_X ? "stopped by the wall" : "THROUGH THE WALL", (double)d->control_max_x,
+           d->control_max_x > THIN_WALL_X ? "through the wall" : "stopped");
+}
+
 static void report(const demo* d) {
     uint32_t v = i2d_version();
     i2d_world_counters counters = i2d_world_get_counters(d->world);
@@ -611,6 +733,7 @@ static void report(const demo* d) {
     report_tipper_and_disc(d);
     report_capsule(d);
     report_resting(d);
+    report_chain_level(d);
     printf("contacts touching at the end: %d (candidate pairs %d)\n", (int)counters.contact_count,
            (int)counters.pair_count);
 }
@@ -624,7 +747,7 @@ typedef struct view {
 
 #define VIEW_MIN_X (-16.5f)
 #define VIEW_MAX_X 16.5f
-#define VIEW_MIN_Y (ROW2_Y - 1.2f)
+#define VIEW_MIN_Y (ROW3_Y - 1.4f)
 #define VIEW_MAX_Y 6.6f
 #define VIEW_SCALE 36.0f /* pixels per metre */
 #define CAPTION_HEIGHT 56.0f
@@ -736,7 +859,7 @@ static void draw_body(FILE* f, const view* v, i2d_body_id body, i2d_transform xf
             draw_capsule(f, v, xf, shapes[i], s);
         } else if (type == I2D_SHAPE_CIRCLE) {
             draw_circle(f, v, xf, shapes[i], s);
-        } else {
+        } else { /* a segment or a chain's segment */
             i2d_segment seg = i2d_shape_get_segment(shapes[i]);
             check_last("i2d_shape_get_segment");
             svg_line(f, v, place(xf, seg.point1), place(xf, seg.point2), s.stroke, 3.0f);
@@ -815,6 +938,11 @@ static void draw_labels(FILE* f, const view* v, const demo* d) {
     draw_text(f, v, row2(PYRAMID_X, (float)PYRAMID_ROWS + 0.35f), "pyramid of %d rows", PYRAMID_ROWS);
     draw_text(f, v, row2(2.8f, 2.65f), "dropped tilted, land flat");
     draw_text(f, v, row2(10.0f, SLOPE_TOP_Y + 1.0f), "capsule rolls down a slope");
+    draw_text(f, v, vec2(-8.0f, ROW3_Y + 2.3f), "a chain of %d one-sided segments: nothing catches on a seam",
+              CHAIN_POINTS - 1);
+    draw_text(f, v, vec2(8.0f, hill(THIN_WALL_X) + 2.0f * BULLET_HEIGHT + 0.9f),
+              "a %.0f m/s bullet stopped by a %.0f cm wall (without continuous collision: x = %.0f m)",
+              (double)BULLET_SPEED, (double)(200.0f * THIN_WALL_HALF), (double)d->control_max_x);
 }
 
 /* One legend entry: a swatch (a square, or a line when the style has no fill) and its text.

@@ -12,20 +12,6 @@ typedef struct i2d_circle {
     float radius;
 } i2d_circle;
 
-typedef struct i2d_manifold_point {
-    i2d_vec2 point;    /**< world point midway between the two surfaces */
-    float penetration; /**< > 0 overlapping, 0 touching; down to -0.02 m for speculative points */
-    uint32_t id;       /**< feature key, stable from step to step for the same features */
-} i2d_manifold_point;
-
-/** Contact between two shapes. Moving B along normal by the largest penetration (or A
- *  against it) separates them. */
-typedef struct i2d_manifold {
-    i2d_vec2 normal;     /**< unit, points from shape A to shape B */
-    int32_t point_count; /**< 0 = not touching; up to 2 */
-    i2d_manifold_point points[2];
-} i2d_manifold;
-
 /* World-space tests. Touching shapes (distance exactly zero) report a contact with
  * penetration 0; separated shapes report point_count 0. Invalid input (NaN, inf, negative
  * radius, min > max) reports point_count 0 and sets I2D_ERR_INVALID_ARGUMENT.
@@ -85,6 +71,21 @@ typedef struct i2d_cast_output {
     float fraction;  /**< of the translation, in [0, 1] */
     bool hit;
 } i2d_cast_output;
+
+/** A convex shape for shape casts and overlap queries: the convex hull of up to 8 points,
+ *  rounded by radius (1 point and a radius: a circle; 2: a capsule; more: a rounded
+ *  polygon). Build it with i2d_make_proxy. */
+typedef struct i2d_shape_proxy {
+    i2d_vec2 points[8];
+    int32_t count;  /**< 1 to 8 */
+    float radius;   /**< m, >= 0 */
+} i2d_shape_proxy;
+
+/** A proxy from 1..8 points (world space for the queries) and a radius in [0, 1e5] m:
+ *  their convex hull, counter-clockwise; points along one line give a segment. NULL
+ *  points, a count outside 1..8, NaN, infinite or out-of-range values give a proxy of
+ *  count 0 (which every query refuses) and I2D_ERR_INVALID_ARGUMENT. */
+I2D_API i2d_shape_proxy i2d_make_proxy(const i2d_vec2* points, int32_t count, float radius);
 
 /** Convex hull of 3..8 points, counter-clockwise, rounded by radius (m, >= 0). Points
  *  closer than 0.005 m are welded and points within 0.005 m of a hull edge's line are

@@ -12,15 +12,18 @@
 typedef struct i2d_world_id { uint64_t bits; } i2d_world_id;
 typedef struct i2d_body_id { uint64_t bits; } i2d_body_id;
 typedef struct i2d_shape_id { uint64_t bits; } i2d_shape_id;
+typedef struct i2d_chain_id { uint64_t bits; } i2d_chain_id;
 
 #ifdef __cplusplus
 #define I2D_NULL_WORLD_ID (i2d_world_id{0})
 #define I2D_NULL_BODY_ID (i2d_body_id{0})
 #define I2D_NULL_SHAPE_ID (i2d_shape_id{0})
+#define I2D_NULL_CHAIN_ID (i2d_chain_id{0})
 #else
 #define I2D_NULL_WORLD_ID ((i2d_world_id){0})
 #define I2D_NULL_BODY_ID ((i2d_body_id){0})
 #define I2D_NULL_SHAPE_ID ((i2d_shape_id){0})
+#define I2D_NULL_CHAIN_ID ((i2d_chain_id){0})
 #endif
 
 #define I2D_IS_NULL(id) ((id).bits == 0)

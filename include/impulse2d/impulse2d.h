@@ -232,7 +232,8 @@ I2D_API i2d_circle i2d_shape_get_circle(i2d_shape_id shape);
 I2D_API i2d_polygon i2d_shape_get_polygon(i2d_shape_id shape);
 /** The capsule in the body frame; zero for another kind (I2D_ERR_INVALID_ARGUMENT). */
 I2D_API i2d_capsule i2d_shape_get_capsule(i2d_shape_id shape);
-/** The segment in the body frame; zero for another kind (I2D_ERR_INVALID_ARGUMENT). */
+/** The segment in the body frame (of a segment or a chain segment); zero for another kind
+ *  (I2D_ERR_INVALID_ARGUMENT). */
 I2D_API i2d_segment i2d_shape_get_segment(i2d_shape_id shape);
 /** Tight world-space bounds. */
 I2D_API i2d_aabb i2d_shape_get_aabb(i2d_shape_id shape);
@@ -246,6 +247,25 @@ I2D_API i2d_status i2d_shape_set_filter(i2d_shape_id shape, i2d_filter filter);
 I2D_API bool i2d_shape_is_sensor(i2d_shape_id shape);
 I2D_API void* i2d_shape_get_user_data(i2d_shape_id shape);
 I2D_API i2d_status i2d_shape_set_user_data(i2d_shape_id shape, void* user_data);
+
+/* ---- Chains --------------------------------------------------------------------- */
+
+I2D_API i2d_chain_def i2d_default_chain_def(void);
+/** Creates the chain's segments as shapes (I2D_SHAPE_CHAIN_SEGMENT) of a static or
+ *  kinematic body; returns the null id on failure: I2D_ERR_INVALID_ARGUMENT for a def not
+ *  from i2d_default_chain_def, NULL points, too few or too many points, NaN or infinite
+ *  or out-of-range values, consecutive points closer than 0.005 m, a material count that
+ *  is neither 0, 1 nor the segment count, or a dynamic body; I2D_ERR_INVALID_HANDLE for a
+ *  bad body; I2D_ERR_WORLD_LOCKED inside a query callback. Its segments are destroyed
+ *  with it (i2d_shape_destroy refuses them) and with their body. */
+I2D_API i2d_chain_id i2d_chain_create(i2d_body_id body, const i2d_chain_def* def);
+I2D_API i2d_status i2d_chain_destroy(i2d_chain_id chain);
+I2D_API bool i2d_chain_is_valid(i2d_chain_id chain);
+/** The chain's segment shapes in chain order: fills out with up to capacity ids and
+ *  returns the segment count; -1 on error. */
+I2D_API int32_t i2d_chain_get_segments(i2d_chain_id chain, i2d_shape_id* out, int32_t capacity);
+/** The chain a segment shape belongs to; the null id for other shapes. */
+I2D_API i2d_chain_id i2d_shape_get_chain(i2d_shape_id shape);
 
 /* ---- Queries -------------------------------------------------------------------- */
 
@@ -286,6 +306,37 @@ typedef float i2d_cast_result_fn(i2d_shape_id shape, i2d_vec2 point, i2d_vec2 no
 /** Casts a ray through the world and reports hits to fn (see i2d_cast_result_fn). */
 I2D_API i2d_status i2d_world_cast_ray(i2d_world_id world, i2d_vec2 origin, i2d_vec2 translation,
                                       i2d_query_filter filter, i2d_cast_result_fn* fn, void* context);
+
+/** Every shape the ray hits, for FFI: fills out with up to capacity results sorted by
+ *  fraction (nearest first; ties in a fixed order) and returns the total number of hits
+ *  (more than capacity when it was too small); -1 on error. out may be NULL when
+ *  capacity is 0. */
+I2D_API int32_t i2d_world_cast_ray_all(i2d_world_id world, i2d_vec2 origin, i2d_vec2 translation,
+                                       i2d_query_filter filter, i2d_ray_result* out, int32_t capacity);
+/** i2d_world_overlap_point without a callback: up to capacity ids, returns the total
+ *  found; -1 on error. */
+I2D_API int32_t i2d_world_overlap_point_ids(i2d_world_id world, i2d_vec2 point, i2d_query_filter filter,
+                                            i2d_shape_id* out, int32_t capacity);
+
+/** Sweeps the proxy (world space, see i2d_make_proxy) along translation and reports each
+ *  shape it would touch to fn: the fraction of the translation at which they first touch
+ *  (to within 1.25 mm), the point on that shape's surface and its outward normal there;
+ *  fn's return value works as for rays. A shape the proxy overlaps at the start is hit at
+ *  fraction 0. Refused (I2D_ERR_INVALID_ARGUMENT): a proxy of count 0 or outside 1..8, NaN
+ *  or infinite values, a zero translation (use i2d_world_overlap_shape) or one longer
+ *  than 1e9 m. Runs with the world locked. */
+I2D_API i2d_status i2d_world_cast_shape(i2d_world_id world, const i2d_shape_proxy* proxy, i2d_vec2 translation,
+                                        i2d_query_filter filter, i2d_cast_result_fn* fn, void* context);
+/** The closest shape the swept proxy touches; .hit false when none. */
+I2D_API i2d_ray_result i2d_world_cast_shape_closest(i2d_world_id world, const i2d_shape_proxy* proxy,
+                                                    i2d_vec2 translation, i2d_query_filter filter);
+/** Calls fn for every shape whose geometry overlaps or touches the proxy (world space). */
+I2D_API i2d_status i2d_world_overlap_shape(i2d_world_id world, const i2d_shape_proxy* proxy, i2d_query_filter filter,
+                                           i2d_overlap_fn* fn, void* context);
+/** i2d_world_overlap_shape without a callback: up to capacity ids, returns the total
+ *  found; -1 on error. */
+I2D_API int32_t i2d_world_overlap_shape_ids(i2d_world_id world, const i2d_shape_proxy* proxy,
+                                            i2d_query_filter filter, i2d_shape_id* out, int32_t capacity);
 
 /* ---- Events --------------------------------------------------------------------- */
 /* The arrays belong to the world and describe the last step. They stay valid until the

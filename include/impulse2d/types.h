@@ -23,7 +23,8 @@ typedef enum i2d_shape_type {
     I2D_SHAPE_CIRCLE = 0,
     I2D_SHAPE_CAPSULE, /**< two half discs joined by a rectangle */
     I2D_SHAPE_SEGMENT, /**< a two-sided line segment, no mass */
-    I2D_SHAPE_POLYGON  /**< convex, up to 8 vertices, optionally rounded; boxes are polygons */
+    I2D_SHAPE_POLYGON, /**< convex, up to 8 vertices, optionally rounded; boxes are polygons */
+    I2D_SHAPE_CHAIN_SEGMENT /**< one segment of a chain (i2d_chain_create): one-sided, no mass */
 } i2d_shape_type;
 
 /** Which shapes collide. Two shapes collide when each one's category_bits meet the
@@ -145,6 +146,17 @@ typedef struct i2d_world_def {
     float joint_hertz;
     /** Damping ratio of that stiffness; default 2. Range [0, 1e5]. */
     float joint_damping_ratio;
+    /** Continuous collision; default true. A dynamic body that moves far for its size in
+     *  a step (more than half its thinnest shape's inner radius) is swept from where the
+     *  step began against static and kinematic shapes (along their own motion) and, if
+     *  it would have passed through one, moved back to where it first touched, keeping
+     *  its velocity. Bullets (i2d_body_def.is_bullet) are swept against dynamic bodies
+     *  too, other bullets included. Sensors report fast bodies that crossed them within
+     *  a step (a begin and an end event in the same step). */
+    bool enable_continuous;
+    /** Contact hit events are reported for impacts faster than this, m/s; default 1.
+     *  Range [0, 1e5]. */
+    float hit_event_threshold;
     /** Set by i2d_default_world_def(); do not set. */
     uint32_t internal_cookie;
 } i2d_world_def;
@@ -170,8 +182,9 @@ typedef struct i2d_body_def {
     bool fixed_rotation;
     /** Default true. False keeps this body (and whatever touches it) awake. */
     bool enable_sleep;
-    /** Default false. Continuous collision for fast bodies; not implemented yet in this
-     *  version: it has no effect. */
+    /** Default false. A bullet is a fast dynamic body swept against dynamic bodies too
+     *  (bullets included), not only against static and kinematic ones (see
+     *  i2d_world_def.enable_continuous). Costs more per step: use it for projectiles. */
     bool is_bullet;
     void* user_data;           /**< default NULL; returned by i2d_body_get_user_data */
     /** Set by i2d_default_body_def(); do not set. */
@@ -205,11 +218,49 @@ typedef struct i2d_shape_def {
     bool enable_contact_events;
     /** Default true. Whether sensors report this shape entering and leaving them. */
     bool enable_sensor_events;
+    /** Default false. Contact hit events (i2d_contact_events.hit_events) for impacts of
+     *  this shape faster than the world's hit_event_threshold; either shape of a pair
+     *  may enable them. */
+    bool enable_hit_events;
     i2d_filter filter; /**< default: category 1, collides with everything, group 0 */
     void* user_data;   /**< default NULL */
     /** Set by i2d_default_shape_def(); do not set. */
     uint32_t internal_cookie;
 } i2d_shape_def;
+
+/** The material of a chain segment. */
+typedef struct i2d_surface_material {
+    float friction;           /**< as i2d_shape_def.friction; [0, inf) */
+    float restitution;        /**< as i2d_shape_def.restitution; [0, 100] */
+    float rolling_resistance; /**< as i2d_shape_def.rolling_resistance; [0, 1e5] */
+    float tangent_speed;      /**< as i2d_shape_def.tangent_speed, m/s; |speed| <= 1e5 */
+} i2d_surface_material;
+
+/** Chain settings (level geometry). Obtain with i2d_default_chain_def(), then edit.
+ *  Segments are one-sided: a shape collides with a segment from the right of the
+ *  direction from point i to point i + 1 (where its normal points) and passes through it
+ *  from the left. A floor is listed right to left; a closed loop listed clockwise keeps
+ *  bodies inside it. Neighbouring segments know each other, so a box sliding along a
+ *  flat chain never catches on a seam. */
+typedef struct i2d_chain_def {
+    /** The points, copied at creation; within 1e9 m of the origin, consecutive points at
+     *  least 0.005 m apart. Open chains: at least 4, the first and the last being ghost
+     *  points (they shape the ends' contacts but make no segment). Loops: at least 3. At
+     *  most 1000000. Default NULL, 0. */
+    const i2d_vec2* points;
+    int32_t count;
+    /** Default false. A loop joins the last point to the first. */
+    bool is_loop;
+    /** 0 materials: the shape def defaults (friction 0.6, restitution 0); 1: for every
+     *  segment; one per segment (count - 3 open, count closed). Default NULL, 0. */
+    const i2d_surface_material* materials;
+    int32_t material_count;
+    i2d_filter filter;          /**< default: category 1, collides with everything */
+    bool enable_sensor_events;  /**< default true */
+    void* user_data;            /**< default NULL; every segment shape gets it too */
+    /** Set by i2d_default_chain_def(); do not set. */
+    uint32_t internal_cookie;
+} i2d_chain_def;
 
 /** Sizes of a world, for tools and benchmarks. */
 typedef struct i2d_world_counters {
@@ -235,20 +286,50 @@ typedef struct i2d_profile {
     float update_bounds;  /**< shape bounds and tree re-insertions */
     float sleep;          /**< islands: which bodies fall asleep */
     float events;         /**< contact, sensor and body move events */
+    float continuous;     /**< continuous collision: sweeping fast bodies */
 } i2d_profile;
+
+typedef struct i2d_manifold_point {
+    i2d_vec2 point;    /**< world point midway between the two surfaces */
+    float penetration; /**< > 0 overlapping, 0 touching; down to -0.02 m for speculative points */
+    uint32_t id;       /**< feature key, stable from step to step for the same features */
+} i2d_manifold_point;
+
+/** Contact between two shapes. Moving B along normal by the largest penetration (or A
+ *  against it) separates them. */
+typedef struct i2d_manifold {
+    i2d_vec2 normal;     /**< unit, points from shape A to shape B */
+    int32_t point_count; /**< 0 = not touching; up to 2 */
+    i2d_manifold_point points[2];
+} i2d_manifold;
 
 /* ---- Events: arrays owned by the world, valid until the next step or world change ---- */
 
-/** Two shapes started touching during the last step (both enable contact events). */
-typedef struct i2d_contact_begin_event { i2d_shape_id shape_a, shape_b; } i2d_contact_begin_event;
+/** Two shapes started touching during the last step (both enable contact events), with
+ *  the contact's manifold: its normal (from A to B) and points (world, where they met,
+ *  penetration at the start of the step). */
+typedef struct i2d_contact_begin_event {
+    i2d_shape_id shape_a, shape_b;
+    i2d_manifold manifold;
+} i2d_contact_begin_event;
 /** Two shapes stopped touching, or one of them was destroyed while touching. The ids
  *  may be stale by the time you read them. */
 typedef struct i2d_contact_end_event { i2d_shape_id shape_a, shape_b; } i2d_contact_end_event;
+/** Two shapes met faster than the world's hit_event_threshold (one of them enables hit
+ *  events): once per impact, in the step the impact is solved. */
+typedef struct i2d_contact_hit_event {
+    i2d_shape_id shape_a, shape_b;
+    i2d_vec2 point;       /**< world, where the fastest point of the contact met */
+    i2d_vec2 normal;      /**< unit, from shape A to shape B */
+    float approach_speed; /**< m/s, along the normal, at impact (> 0) */
+} i2d_contact_hit_event;
 typedef struct i2d_contact_events {
     const i2d_contact_begin_event* begin_events;
     int32_t begin_count;
     const i2d_contact_end_event* end_events;
     int32_t end_count;
+    const i2d_contact_hit_event* hit_events;
+    int32_t hit_count;
 } i2d_contact_events;
 
 /** A shape (the visitor) started overlapping a sensor shape. */

@@ -40,6 +40,11 @@ Core world_core(const Geometry& g, const Transform& xf) {
             c.points[1] = transform_point(xf, g.segment.point2);
             c.count = 2;
             break;
+        case ShapeType::chain_segment:
+            c.points[0] = transform_point(xf, g.chain_segment.point1);
+            c.points[1] = transform_point(xf, g.chain_segment.point2);
+            c.count = 2;
+            break;
         case ShapeType::polygon:
             for (int32_t i = 0; i < g.polygon.count; ++i) {
                 c.points[i] = transform_point(xf, g.polygon.vertices[i]);
@@ -92,6 +97,22 @@ float extent_from(const Geometry& g, Vec2 local_point) {
     return farthest + c.radius;
 }
 
+float inner_radius(const Geometry& g) {
+    switch (g.type) {
+        case ShapeType::circle: return g.circle.radius;
+        case ShapeType::capsule: return g.capsule.radius;
+        case ShapeType::segment: return 0.0f;
+        case ShapeType::chain_segment: return 0.0f;
+        default: break;
+    }
+    const Polygon& p = g.polygon;
+    float nearest = FLT_MAX;
+    for (int32_t i = 0; i < p.count; ++i) {
+        nearest = min_of(nearest, dot(p.normals[i], p.vertices[i] - p.centroid));
+    }
+    return max_of(nearest, 0.0f) + p.radius;
+}
+
 float rounding_radius(const Geometry& g) { return world_core(g, Transform{}).radius; }
 
 bool contains_point(const Geometry& g, const Transform& xf, Vec2 p) {
@@ -106,6 +127,7 @@ bool contains_point(const Geometry& g, const Transform& xf, Vec2 p) {
             return distance_squared(q, local) <= g.capsule.radius * g.capsule.radius;
         }
         case ShapeType::segment: return false;  // no area
+        case ShapeType::chain_segment: return false;
         case ShapeType::polygon:
             return polygon_core_distance(g.polygon, inv_transform_point(xf, p)) <= g.polygon.radius;
         case ShapeType::count: break;

@@ -15,6 +15,10 @@ AABB compute_aabb(const Geometry& g, const Transform& xf);
 
 /// Farthest distance of the shape's points from a point of the body frame, m.
 float extent_from(const Geometry& g, Vec2 local_point);
+/// Smallest distance from the shape's centroid to its surface, m (a circle's radius, a
+/// box's half thickness plus rounding): how far the shape may move in a step before it
+/// could pass through something thin. Segments have none (0).
+float inner_radius(const Geometry& g);
 /// Radius of the shape's rounding (circle and capsule radius, polygon rounding), m:
 /// the lever arm of rolling resistance.
 float rounding_radius(const Geometry& g);

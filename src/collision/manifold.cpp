@@ -324,7 +324,16 @@ Manifold segment_polygon(const Geometry& a, const Transform& xa, const Geometry&
 Manifold polygon_polygon(const Geometry& a, const Transform& xa, const Geometry& b, const Transform& xb, float spec) {
     return collide_polygons(a.polygon, xa, b.polygon, xb, spec);
 }
-// Segments are static geometry: two of them never need a contact.
+Manifold chain_circle(const Geometry& a, const Transform& xa, const Geometry& b, const Transform& xb, float spec) {
+    return collide_chain_segment_circle(a.chain_segment, xa, b.circle, xb, spec);
+}
+Manifold chain_capsule(const Geometry& a, const Transform& xa, const Geometry& b, const Transform& xb, float spec) {
+    return collide_chain_segment_capsule(a.chain_segment, xa, b.capsule, xb, spec);
+}
+Manifold chain_polygon(const Geometry& a, const Transform& xa, const Geometry& b, const Transform& xb, float spec) {
+    return collide_chain_segment_polygon(a.chain_segment, xa, b.polygon, xb, spec);
+}
+// Segments and chains are static geometry: two of them never need a contact.
 Manifold segment_segment(const Geometry&, const Transform&, const Geometry&, const Transform&, float) { return {}; }
 
 struct PairEntry {
@@ -334,13 +343,19 @@ struct PairEntry {
 
 constexpr int32_t kind_count = static_cast<int32_t>(ShapeType::count);
 
-// Row: A's kind, column: B's kind, in the order circle, capsule, segment, polygon. Each
-// pair has one function, registered once as primary and once swapped.
+// Row: A's kind, column: B's kind, in the order circle, capsule, segment, polygon, chain
+// segment. Each pair has one function, registered once as primary and once swapped.
 constexpr PairEntry pair_table[kind_count][kind_count] = {
-    /* circle  */ {{circle_circle, false}, {capsule_circle, true}, {segment_circle, true}, {polygon_circle, true}},
-    /* capsule */ {{capsule_circle, false}, {capsule_capsule, false}, {segment_capsule, true}, {polygon_capsule, true}},
-    /* segment */ {{segment_circle, false}, {segment_capsule, false}, {segment_segment, false}, {segment_polygon, false}},
-    /* polygon */ {{polygon_circle, false}, {polygon_capsule, false}, {segment_polygon, true}, {polygon_polygon, false}},
+    /* circle  */ {{circle_circle, false}, {capsule_circle, true}, {segment_circle, true}, {polygon_circle, true},
+                   {chain_circle, true}},
+    /* capsule */ {{capsule_circle, false}, {capsule_capsule, false}, {segment_capsule, true}, {polygon_capsule, true},
+                   {chain_capsule, true}},
+    /* segment */ {{segment_circle, false}, {segment_capsule, false}, {segment_segment, false}, {segment_polygon, false},
+                   {segment_segment, false}},
+    /* polygon */ {{polygon_circle, false}, {polygon_capsule, false}, {segment_polygon, true}, {polygon_polygon, false},
+                   {chain_polygon, true}},
+    /* chain   */ {{chain_circle, false}, {chain_capsule, false}, {segment_segment, false}, {chain_polygon, false},
+                   {segment_segment, false}},
 };
 
 }  // namespace

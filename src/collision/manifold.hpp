@@ -44,6 +44,15 @@ Manifold collide_segment_polygon(const Segment& a, const Transform& xf_a, const 
 Manifold collide_polygons(const Polygon& a, const Transform& xf_a, const Polygon& b, const Transform& xf_b,
                           float speculative = speculative_distance);
 
+/// Chain segments (manifold_chain.cpp): one-sided, and no contact at a seam with a normal
+/// that the neighbouring segment's face covers.
+Manifold collide_chain_segment_circle(const ChainSegment& a, const Transform& xf_a, const Circle& b,
+                                      const Transform& xf_b, float speculative = speculative_distance);
+Manifold collide_chain_segment_capsule(const ChainSegment& a, const Transform& xf_a, const Capsule& b,
+                                       const Transform& xf_b, float speculative = speculative_distance);
+Manifold collide_chain_segment_polygon(const ChainSegment& a, const Transform& xf_a, const Polygon& b,
+                                       const Transform& xf_b, float speculative = speculative_distance);
+
 /// A pair of shapes of any kinds, through the pair table; the reversed order of a
 /// primary pair is computed as (B, A) with the normal flipped.
 Manifold collide_shapes(const Geometry& a, const Transform& xf_a, const Geometry& b, const Transform& xf_b,

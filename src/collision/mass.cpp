@@ -118,6 +118,7 @@ float area(const Geometry& g) {
             return pi * r * r + 2.0f * r * length(g.capsule.center2 - g.capsule.center1);
         }
         case ShapeType::segment: return 0.0f;
+        case ShapeType::chain_segment: return 0.0f;
         case ShapeType::polygon: return compute_mass(g, 1.0f).mass;
         case ShapeType::count: break;
     }
@@ -136,6 +137,9 @@ MassData compute_mass(const Geometry& g, float density) {
         }
         case ShapeType::capsule: md = capsule_mass(g.capsule, density); break;
         case ShapeType::segment: md.center = lerp(g.segment.point1, g.segment.point2, 0.5f); break;
+        case ShapeType::chain_segment:
+            md.center = lerp(g.chain_segment.point1, g.chain_segment.point2, 0.5f);
+            break;
         case ShapeType::polygon: md = polygon_mass(g.polygon, density); break;
         case ShapeType::count: break;
     }

@@ -134,6 +134,16 @@ LocalHit cast_local(const Geometry& g, const LocalRay& ray) {
             }
             break;
         }
+        case ShapeType::chain_segment: {
+            // One-sided: only a ray coming from the solid side's outside (the right) hits.
+            const ChainSegment& c = g.chain_segment;
+            const Vec2 n = normalize(right_perp(c.point2 - c.point1));
+            float t = 0.0f;
+            if (dot(n, ray.d) < 0.0f && cross_segment(ray, c.point1, c.point2, t)) {
+                out.keep_first(t, n);
+            }
+            break;
+        }
         case ShapeType::polygon:
             if (g.polygon.radius > 0.0f) {
                 cast_rounded(ray, g.polygon.vertices, g.polygon.normals, g.polygon.count, g.polygon.radius, out);

@@ -15,7 +15,7 @@
 namespace i2d {
 
 /// The order matters: pair tables and the public i2d_shape_type follow it.
-enum class ShapeType : uint8_t { circle, capsule, segment, polygon, count };
+enum class ShapeType : uint8_t { circle, capsule, segment, polygon, chain_segment, count };
 
 struct Circle {
     Vec2 center;  // body frame
@@ -32,6 +32,16 @@ struct Capsule {
 /// A two-sided line segment with no thickness and no mass (static geometry).
 struct Segment {
     Vec2 point1, point2;
+};
+
+/// One segment of a chain (chain.hpp): one-sided, solid from the right of point1 ->
+/// point2 (where right_perp points), with the chain's neighbouring points as ghosts so
+/// that contacts at its ends take the neighbours into account and nothing catches on a
+/// seam. No mass.
+struct ChainSegment {
+    Vec2 ghost1;  // the point before point1 in the chain
+    Vec2 point1, point2;
+    Vec2 ghost2;  // the point after point2
 };
 
 /// A convex polygon, counter-clockwise, with outward unit edge normals: normals[i] is the
@@ -53,6 +63,7 @@ struct Geometry {
     Capsule capsule;
     Segment segment;
     Polygon polygon;
+    ChainSegment chain_segment;
 };
 
 struct ManifoldPoint {

@@ -65,6 +65,11 @@ struct alignas(64) Body {
     int32_t island_prev = null_index, island_next = null_index;  // the island's body list
     int32_t head_joint_key = null_index;  // list of joints, linked through JointEdge
     int32_t joint_count = 0;
+    // Continuous collision: the pose the last step started from (set for every awake
+    // body by the solver's final pass) and the smallest shape thickness, m.
+    Vec2 center0;
+    Rot rotation0;
+    float min_extent = 0.0f;
 };
 
 }  // namespace i2d

@@ -81,6 +81,16 @@ constexpr float recycle_min_cos = 0.99985f;
 /// holds it at 2.3-2.7 cm from step 300 to step 4000.
 constexpr float friction_anchor_share = 1.0f;
 
+/// Continuous collision (continuous.hpp): a dynamic body is swept when its fastest point
+/// travels more than this share of its thinnest shape's inner radius in a step (Box2D's
+/// safety factor). Smaller values sweep more bodies that the speculative contacts would
+/// have stopped anyway; larger ones let thin bodies tunnel through thin walls.
+constexpr float continuous_safety_factor = 0.5f;
+
+/// Most points a chain may have: a million segments is a large level; more is more
+/// likely a bad count than a level.
+constexpr int32_t max_chain_points = 1000000;
+
 /// Softest contact a world accepts, Hz: below it stacks sink visibly at rest.
 constexpr float min_contact_hertz = 1.0e-3f;
 

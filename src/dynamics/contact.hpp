@@ -33,6 +33,7 @@ enum ContactFlags : uint32_t {
     contact_moves_a = 1u << 6,            // the solver may move body A (dynamic and awake)
     contact_moves_b = 1u << 7,
     contact_recyclable = 1u << 8,         // the poses below are those the manifold was made at
+    contact_hit_events = 1u << 9,         // either shape enables hit events
 };
 
 /// A contact's link in one of its bodies' contact lists; keys are (contact << 1) | edge.
@@ -77,6 +78,10 @@ struct alignas(64) Contact {
     // Separation minus dot(centre offset + anchor_b - anchor_a, normal) when the manifold
     // was made, m: what recycling adds the bodies' motion to.
     float base_separations[2] = {};
+    // Hit events: the fastest impact the solver pushed against this step, m/s (0: none),
+    // and the point it was at.
+    float hit_speed = 0.0f;
+    int32_t hit_point = 0;
     // The bodies' rotations and B's pose seen from A when the manifold was made.
     Rot made_rotation_a, made_rotation_b;
     Transform made_relative_pose;

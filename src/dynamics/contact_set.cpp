@@ -98,8 +98,9 @@ void ContactSet::create_contact(int32_t shape_a, int32_t shape_b) {
     if (a.is_sensor || b.is_sensor) {
         const Shape& visitor = a.is_sensor ? b : a;
         c.flags = contact_sensor | (visitor.enable_sensor_events ? contact_report_events : 0u);
-    } else if (a.enable_contact_events && b.enable_contact_events) {
-        c.flags = contact_report_events;
+    } else {
+        c.flags = (a.enable_contact_events && b.enable_contact_events ? uint32_t(contact_report_events) : 0u) |
+                  (a.enable_hit_events || b.enable_hit_events ? uint32_t(contact_hit_events) : 0u);
     }
     mix_material(c, a, b);
     const int32_t body_of[2] = {a.body, b.body};
@@ -134,6 +135,20 @@ ShapePairEvent ContactSet::event_of(const Contact& c) const {
     return sensor_is_b ? ShapePairEvent{b, a} : ShapePairEvent{a, b};
 }
 
+// The contact's manifold as a begin event shows it: world points where A's anchors are.
+Manifold ContactSet::manifold_of(const Contact& c) const {
+    Manifold m;
+    m.normal = c.normal;
+    m.point_count = c.point_count;
+    const Vec2 center_a = bodies_[c.edges[0].body].center;
+    for (int32_t i = 0; i < c.point_count; ++i) {
+        m.points[i].point = center_a + c.points[i].anchor_a;
+        m.points[i].penetration = -c.points[i].separation;
+        m.points[i].id = c.point_ids[i];
+    }
+    return m;
+}
+
 // Events compare the end of the step with its start, so that applying a step's begin
 // events and then its end events always gives the true final state.
 void ContactSet::report_touch_changes(const Contact& c, bool touching_now) {
@@ -144,7 +159,12 @@ void ContactSet::report_touch_changes(const Contact& c, bool touching_now) {
     const bool sensor = (c.flags & contact_sensor) != 0;
     WorldEvents& e = events_.current;
     if (!at_start && touching_now) {
-        (sensor ? e.sensor_begin : e.contact_begin).push_back(event_of(c));
+        if (sensor) {
+            e.sensor_begin.push_back(event_of(c));
+        } else {
+            const ShapePairEvent pair = event_of(c);
+            e.contact_begin.push_back({pair.shape_a, pair.shape_b, manifold_of(c)});
+        }
     }
     if (at_start && !touching_now) {
         (sensor ? e.sensor_end : e.contact_end).push_back(event_of(c));
@@ -352,6 +372,7 @@ uint8_t ContactSet::collide_one(int32_t k, float time_step) {
     const bool state_b_changed = set_solver_state(c, 1, bodies_[b.body]);
     const int32_t old_point_count = c.point_count;
     const bool had_points = old_point_count > 0;
+    c.hit_speed = 0.0f;
     if (!overlaps(a.fat_aabb, b.fat_aabb)) {
         c.flags |= contact_disjoint;
         c.point_count = 0;
@@ -472,9 +493,12 @@ void ContactSet::end_step() {
             continue;
         }
         const int32_t index = awake_[std::size_t(k)];
+        if (flags & hits) {
+            report_hit(contacts_[index]);
+        }
         if (flags & ends) {
             destroy_contact(index, true);
-        } else {
+        } else if (flags & reports) {
             report_touch_changes(contacts_[index], (contacts_[index].flags & contact_touching) != 0);
         }
     }
@@ -499,8 +523,15 @@ void ContactSet::end_range(void* set, const Stage&, int32_t begin, int32_t end, 
             const bool now = (c.flags & contact_touching) != 0;
             flags = (c.flags & contact_report_events) && at_start != now ? reports : 0;
         }
+        flags |= c.hit_speed > self.settings_.hit_event_threshold ? hits : 0;
         self.collide_flags_[std::size_t(k)] = flags;
     }
+}
+
+void ContactSet::report_hit(const Contact& c) {
+    const ShapePairEvent pair = event_of(c);
+    const Vec2 point = bodies_[c.edges[0].body].center + c.points[c.hit_point].anchor_a;
+    events_.current.contact_hits.push_back({pair.shape_a, pair.shape_b, point, c.normal, c.hit_speed});
 }
 
 int32_t ContactSet::touching_count() const {

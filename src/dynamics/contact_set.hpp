@@ -123,6 +123,8 @@ private:
     void run_over_awake(Stage::Fn fn);
     bool may_pair(int32_t shape_a, int32_t shape_b) const;
     void report_touch_changes(const Contact& contact, bool touching_now);
+    void report_hit(const Contact& contact);
+    Manifold manifold_of(const Contact& contact) const;
     ShapePairEvent event_of(const Contact& contact) const;
 
     const WorldDef& settings_;
@@ -143,7 +145,7 @@ private:
     // Per awake contact, what its update found for the islands (CollideFlags), and at
     // the end of the step what must happen to it (EndFlags).
     enum CollideFlags : uint8_t { layout_changed = 1, points_changed = 2, wakes_a = 4, wakes_b = 8 };
-    enum EndFlags : uint8_t { ends = 1, reports = 2 };
+    enum EndFlags : uint8_t { ends = 1, reports = 2, hits = 4 };
     std::vector<uint8_t> collide_flags_;
     std::vector<std::vector<ShapePairCandidate>> block_pairs_;  // per block of pair queries
     BroadPhase* querying_ = nullptr;  // while the pair queries run

@@ -275,11 +275,19 @@ void ContactSolver::store_range(const ContactBlock<W>* blocks, const int32_t* co
         const ContactBlock<W>& block = blocks[k / W];
         const int lane = int(k % W);
         Contact& contact = contacts[index];
+        const bool hits = (contact.flags & contact_hit_events) != 0;
         for (int32_t i = 0; i < contact.point_count; ++i) {
             contact.points[i].normal_impulse = block.points[i].normal_impulse[lane];
             contact.points[i].tangent_impulse = block.points[i].tangent_impulse[lane];
             if (final_separation(block, lane, i, states) <= slop) {
                 contact.flags |= contact_touching;
+            }
+            // A point that pushed met at its impact speed (the speed the restitution
+            // pass uses: the free approach speed when the surfaces met).
+            const float approach = -block.points[i].relative_velocity[lane];
+            if (hits && block.points[i].max_normal_impulse[lane] > 0.0f && approach > contact.hit_speed) {
+                contact.hit_speed = approach;
+                contact.hit_point = i;
             }
         }
         contact.rolling_impulse = block.rolling_impulse[lane];

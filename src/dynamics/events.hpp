@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "collision/shapes.hpp"
 #include "math/vec2.hpp"
 
 namespace i2d {
@@ -17,6 +18,18 @@ namespace i2d {
 struct ShapePairEvent {
     uint64_t shape_a;  // contact events: the two shapes; sensor events: sensor, visitor
     uint64_t shape_b;
+};
+
+struct ContactBeginEvent {
+    uint64_t shape_a, shape_b;
+    Manifold manifold;  // world points, penetration at the start of the step
+};
+
+struct ContactHitEvent {
+    uint64_t shape_a, shape_b;
+    Vec2 point;
+    Vec2 normal;
+    float approach_speed;
 };
 
 struct BodyMoveEvent {
@@ -50,13 +63,16 @@ struct IdEncoder {
 };
 
 struct WorldEvents {
-    std::vector<ShapePairEvent> contact_begin, contact_end;
+    std::vector<ContactBeginEvent> contact_begin;
+    std::vector<ShapePairEvent> contact_end;
     std::vector<ShapePairEvent> sensor_begin, sensor_end;
     std::vector<BodyMoveEvent> body_moves;
     std::vector<JointEvent> joint_events;
+    std::vector<ContactHitEvent> contact_hits;
 
     void clear() {
         contact_begin.clear(), contact_end.clear(), sensor_begin.clear(), sensor_end.clear();
+        contact_hits.clear();
         body_moves.clear(), joint_events.clear();
     }
 };

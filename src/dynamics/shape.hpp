@@ -29,6 +29,7 @@ struct ShapeDef {
     bool is_sensor = false;
     bool enable_contact_events = true;
     bool enable_sensor_events = true;
+    bool enable_hit_events = false;
     Filter filter;
     void* user_data = nullptr;
 };
@@ -48,8 +49,10 @@ struct Shape {
     bool is_sensor = false;
     bool enable_contact_events = true;
     bool enable_sensor_events = true;
+    bool enable_hit_events = false;
     bool enlarged = false;  // the step gave it a new fat box; its proxy moves at the step's end
     int32_t prev_in_body = null_index, next_in_body = null_index;
+    int32_t chain = null_index;  // the chain this segment belongs to, if any
     float density = 0.0f;
     Filter filter;
     void* user_data = nullptr;

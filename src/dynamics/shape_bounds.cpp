@@ -15,23 +15,25 @@ ProxyKind proxy_kind_of(BodyType type) {
     }
 }
 
-AABB fatten(const AABB& box, BodyType type, Vec2 displacement) {
+AABB fatten(const AABB& box, BodyType type, Vec2 displacement, float reach) {
     if (type == BodyType::static_body) {
         return box;
     }
-    const Vec2 margin{aabb_margin, aabb_margin};
+    const Vec2 margin{aabb_margin + reach, aabb_margin + reach};
     return {min(box.lower, box.lower + displacement) - margin, max(box.upper, box.upper + displacement) + margin};
 }
 
-bool refit_shape_bounds(const Body& body, Pool<Shape>& shapes, Vec2 displacement, bool ahead) {
+bool refit_shape_bounds(const Body& body, Pool<Shape>& shapes, Vec2 displacement, bool ahead, float reach) {
     bool any = false;
+    const Vec2 turn{reach, reach};
     for (int32_t s = body.head_shape; s != null_index; s = shapes[s].next_in_body) {
         Shape& shape = shapes[s];
         shape.aabb = compute_aabb(shape.geometry, body.transform);
-        const AABB needed = ahead ? union_of(shape.aabb, {shape.aabb.lower + displacement, shape.aabb.upper + displacement})
+        const AABB needed = ahead ? union_of({shape.aabb.lower - turn, shape.aabb.upper + turn},
+                                             {shape.aabb.lower + displacement, shape.aabb.upper + displacement})
                                   : shape.aabb;
         if (!contains(shape.fat_aabb, needed)) {
-            shape.fat_aabb = fatten(shape.aabb, body.type, displacement);
+            shape.fat_aabb = fatten(shape.aabb, body.type, displacement, reach);
             shape.enlarged = true;
             any = true;
         }
@@ -50,8 +52,8 @@ void move_enlarged_proxies(const Body& body, Pool<Shape>& shapes, BroadPhase& br
 }
 
 void update_shape_bounds(const Body& body, Pool<Shape>& shapes, BroadPhase& broad_phase, Vec2 displacement,
-                         bool ahead) {
-    if (refit_shape_bounds(body, shapes, displacement, ahead)) {
+                         bool ahead, float reach) {
+    if (refit_shape_bounds(body, shapes, displacement, ahead, reach)) {
         move_enlarged_proxies(body, shapes, broad_phase);
     }
 }

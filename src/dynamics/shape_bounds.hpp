@@ -8,6 +8,8 @@
 // speculative points to stop at).
 #pragma once
 
+#include <cmath>
+
 #include "broadphase/broad_phase.hpp"
 #include "core/pool.hpp"
 #include "dynamics/body.hpp"
@@ -17,18 +19,28 @@ namespace i2d {
 
 ProxyKind proxy_kind_of(BodyType type);
 
-AABB fatten(const AABB& box, BodyType type, Vec2 displacement);
+/// reach: how far the body's turn can carry the box besides, m (turn_reach).
+AABB fatten(const AABB& box, BodyType type, Vec2 displacement, float reach = 0.0f);
+
+/// How far a kinematic body's turn over a step can carry its shapes, m: their fat boxes
+/// cover it, so that a paddle turning a third of a radian per step has its pairs (and the
+/// continuous stage its candidates) before it sweeps over them. Dynamic bodies leave
+/// their turns to the margin: a contact stops a dynamic body's spin, not a kinematic's.
+inline float turn_reach(const Body& b, float time_step) {
+    return b.type == BodyType::kinematic ? std::fabs(b.angular_velocity) * time_step * b.max_extent : 0.0f;
+}
 
 /// Recomputes the tight boxes of the body's shapes from its transform; a shape whose fat
 /// box no longer holds its tight box, moved by `displacement` as well if ahead is true,
-/// is re-inserted (at the broadphase's next commit) with a new fat box.
+/// is re-inserted (at the broadphase's next commit) with a new fat box. `reach` grows the
+/// box ahead by what the body's turn may add (turn_reach).
 void update_shape_bounds(const Body& body, Pool<Shape>& shapes, BroadPhase& broad_phase, Vec2 displacement,
-                         bool ahead);
+                         bool ahead, float reach = 0.0f);
 
 /// The same in two halves, for workers that may not touch the broadphase: the first
 /// writes only the body's shapes (marking those that need a new proxy box `enlarged`)
 /// and returns whether any does; the second, on one thread, moves their proxies.
-bool refit_shape_bounds(const Body& body, Pool<Shape>& shapes, Vec2 displacement, bool ahead);
+bool refit_shape_bounds(const Body& body, Pool<Shape>& shapes, Vec2 displacement, bool ahead, float reach = 0.0f);
 void move_enlarged_proxies(const Body& body, Pool<Shape>& shapes, BroadPhase& broad_phase);
 
 }  // namespace i2d

@@ -42,6 +42,16 @@ Vec2 free_acceleration(const Body& b, Vec2 gravity) {
     return is_finite(a) ? a : Vec2{};
 }
 
+// Whether the body's fastest point went far relative to its thinnest shape: then it may
+// have passed through something thin, and the continuous stage sweeps it.
+bool is_fast(const Body& b, const BodyState& s, float time_step) {
+    if (b.type != BodyType::dynamic) {
+        return false;
+    }
+    const float travel = length(s.delta_position) + time_step * std::fabs(s.angular_velocity) * b.max_extent;
+    return travel > continuous_safety_factor * b.min_extent;
+}
+
 }  // namespace
 
 void Solver::step(float time_step, int32_t substep_count) {
@@ -466,6 +476,8 @@ void Solver::finalize_body(int32_t k) {
     const Transform start = b.transform;
     b.linear_velocity = s.linear_velocity;
     b.angular_velocity = s.angular_velocity;
+    b.center0 = b.center;
+    b.rotation0 = start.q;
     b.center += s.delta_position;
     if (s.delta_rotation.c != 1.0f || s.delta_rotation.s != 0.0f) {
         b.transform.q = normalize(mul_rot(s.delta_rotation, b.transform.q));
@@ -474,7 +486,8 @@ void Solver::finalize_body(int32_t k) {
     b.force = {};
     b.torque = 0.0f;
     // Fattened for the next step too, assuming the same time step (the world checks).
-    uint8_t flags = refit_shape_bounds(b, links_.shapes, time_step_ * b.linear_velocity, true) ? proxies_enlarged : 0;
+    uint8_t flags = refit_shape_bounds(b, links_.shapes, time_step_ * b.linear_velocity, true,
+                                       turn_reach(b, time_step_)) ? proxies_enlarged : 0;
 
     const WorldDef& settings = links_.settings;
     if (settings.enable_sleep) {
@@ -489,6 +502,7 @@ void Solver::finalize_body(int32_t k) {
     }
     const bool moved = !(b.transform.p == start.p && b.transform.q.c == start.q.c && b.transform.q.s == start.q.s);
     flags |= moved ? body_moved : 0;
+    flags |= settings.enable_continuous && is_fast(b, s, time_step_) ? fast_body : 0;
     final_flags_[std::size_t(k)] = flags;
 }
 
@@ -526,10 +540,14 @@ void Solver::write_move_events(void* solver, const Stage&, int32_t begin, int32_
 void Solver::finish_bodies() {
     const std::vector<int32_t>& awake = links_.islands.awake_bodies();
     const bool sleep = links_.settings.enable_sleep;
+    fast_bodies_.clear();
     for (std::size_t k = 0; k < awake.size(); ++k) {
         const uint8_t flags = final_flags_[k];
         if (sleep) {
             links_.islands.note_rest_time_in_slot(rest_islands_[k], rest_times_[k]);
+        }
+        if (flags & fast_body) {
+            fast_bodies_.push_back(awake[k]);
         }
         if ((flags & (proxies_enlarged | kinematic_rest)) == 0) {
             continue;

@@ -72,6 +72,9 @@ public:
     /// their new poses, with new bounds, rest times and move events; contacts get their
     /// impulses and touching flags.
     void step(float time_step, int32_t substep_count);
+    /// The dynamic bodies the last step moved far for their size, in awake order: the
+    /// continuous stage sweeps them.
+    const std::vector<int32_t>& fast_bodies() const { return fast_bodies_; }
 
 private:
     void color_constraints();
@@ -151,7 +154,8 @@ private:
     StageRunner runner_;
     bool parallel_ = false;
     // What the final pass leaves per awake body for finish_bodies.
-    enum FinalFlags : uint8_t { body_moved = 1, proxies_enlarged = 2, kinematic_rest = 4 };
+    enum FinalFlags : uint8_t { body_moved = 1, proxies_enlarged = 2, kinematic_rest = 4, fast_body = 8 };
+    std::vector<int32_t> fast_bodies_;
     std::vector<uint8_t> final_flags_;
     std::vector<int32_t> rest_islands_;  // the body's island's rest slot (Islands::rest_slot)
     std::vector<float> rest_times_;

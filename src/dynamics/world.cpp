@@ -20,6 +20,7 @@ World::World(const WorldDef& def)
       islands_(bodies, contacts_, joints_),
       solver_(SolverLinks{settings, bodies, shapes, joints, joints_, contacts_, islands_, broad_phase_, events_,
                           tasks_}),
+      continuous_(bodies, shapes, broad_phase_, events_),
       profiling_(def.enable_profile) {}
 
 int32_t World::create_body(const BodyDef& def) {
@@ -52,9 +53,15 @@ void World::destroy_body(int32_t body) {
     while (bodies[body].head_joint_key != null_index) {
         destroy_joint(bodies[body].head_joint_key >> 1);
     }
-    // Shapes first: each takes its contacts (and their end events) with it.
+    // Shapes first: each takes its contacts (and their end events) with it; a chain's
+    // segments go with their chain.
     while (bodies[body].head_shape != null_index) {
-        destroy_shape(bodies[body].head_shape);
+        const int32_t shape = bodies[body].head_shape;
+        if (shapes[shape].chain != null_index) {
+            destroy_chain(shapes[shape].chain);
+        } else {
+            destroy_shape(shape);
+        }
     }
     if (bodies[body].type != BodyType::static_body) {
         islands_.remove_body(body);
@@ -108,7 +115,8 @@ void World::create_proxy(int32_t shape, bool query_now) {
     mark_for_cover(s.body);  // the new box is not stretched along the body's motion
 }
 
-int32_t World::create_shape(int32_t body, const ShapeDef& def, const Geometry& geometry) {
+// Links a new shape into its body and the broadphase; the caller updates the mass.
+int32_t World::attach_shape(int32_t body, const ShapeDef& def, const Geometry& geometry) {
     const int32_t index = shapes.allocate();
     if (index == null_index) {
         return null_index;
@@ -125,6 +133,7 @@ int32_t World::create_shape(int32_t body, const ShapeDef& def, const Geometry& g
     s.is_sensor = def.is_sensor;
     s.enable_contact_events = def.enable_contact_events;
     s.enable_sensor_events = def.enable_sensor_events;
+    s.enable_hit_events = def.enable_hit_events;
     s.user_data = def.user_data;
 
     Body& b = bodies[body];
@@ -137,12 +146,27 @@ int32_t World::create_shape(int32_t body, const ShapeDef& def, const Geometry& g
     s.aabb = compute_aabb(geometry, b.transform);
     // A new static shape may land on resting bodies: let it look for pairs too.
     create_proxy(index, true);
-    update_mass(body);
-    wake_body(body);
+    return index;
+}
+
+int32_t World::create_shape(int32_t body, const ShapeDef& def, const Geometry& geometry) {
+    const int32_t index = attach_shape(body, def, geometry);
+    if (index != null_index) {
+        update_mass(body);
+        wake_body(body);
+    }
     return index;
 }
 
 void World::destroy_shape(int32_t shape) {
+    const int32_t body = shapes[shape].body;
+    detach_shape(shape);
+    update_mass(body);
+}
+
+// Unlinks the shape from its contacts, the broadphase and its body; the caller updates
+// the mass.
+void World::detach_shape(int32_t shape) {
     wake_body(shapes[shape].body);
     contacts_.destroy_contacts_of_shape(shape, false);
     const Shape& s = shapes[shape];
@@ -157,8 +181,58 @@ void World::destroy_shape(int32_t shape) {
         shapes[s.next_in_body].prev_in_body = s.prev_in_body;
     }
     --b.shape_count;
-    const int32_t body = s.body;
     shapes.free(shape);
+}
+
+// Every segment is attached first and the mass (extents) updated once: a chain of n
+// segments costs O(n), not O(n^2).
+int32_t World::create_chain(int32_t body, const ChainDef& def) {
+    const int32_t index = chains.allocate();
+    if (index == null_index) {
+        return null_index;
+    }
+    Chain& chain = chains[index];
+    chain.body = body;
+    chain.is_loop = def.is_loop;
+    chain.user_data = def.user_data;
+    const int32_t segments = chain_segment_count(def.count, def.is_loop);
+    chain.shapes.reserve(std::size_t(segments));
+    for (int32_t i = 0; i < segments; ++i) {
+        const SurfaceMaterial material = def.material_count == 0   ? SurfaceMaterial{}
+                                         : def.material_count == 1 ? def.materials[0]
+                                                                   : def.materials[i];
+        ShapeDef sd;
+        sd.density = 0.0f;
+        sd.friction = material.friction;
+        sd.restitution = material.restitution;
+        sd.rolling_resistance = material.rolling_resistance;
+        sd.tangent_speed = material.tangent_speed;
+        sd.filter = def.filter;
+        sd.enable_sensor_events = def.enable_sensor_events;
+        sd.user_data = def.user_data;
+        Geometry g;
+        g.type = ShapeType::chain_segment;
+        g.chain_segment = chain_segment_geometry(def, i);
+        const int32_t shape = attach_shape(body, sd, g);
+        if (shape == null_index) {
+            destroy_chain(index);  // the shape pool is full: take back what was made
+            return null_index;
+        }
+        shapes[shape].chain = index;
+        chains[index].shapes.push_back(shape);
+    }
+    update_mass(body);
+    wake_body(body);
+    return index;
+}
+
+void World::destroy_chain(int32_t chain) {
+    const int32_t body = chains[chain].body;
+    for (const int32_t shape : chains[chain].shapes) {
+        detach_shape(shape);
+    }
+    chains[chain].shapes.clear();
+    chains.free(chain);
     update_mass(body);
 }
 
@@ -201,9 +275,14 @@ void World::update_mass(int32_t body) {
     }
     // How fast the body's farthest point moves when it spins: a spinning kinematic
     // drum is not resting.
+    b.min_extent = b.head_shape == null_index ? 0.0f : FLT_MAX;
     for (int32_t s = b.head_shape; s != null_index; s = shapes[s].next_in_body) {
         b.max_extent = max_of(b.max_extent, extent_from(shapes[s].geometry, b.local_center));
+        if (!shapes[s].is_sensor) {
+            b.min_extent = min_of(b.min_extent, max_of(inner_radius(shapes[s].geometry), linear_slop));
+        }
     }
+    b.min_extent = b.min_extent == FLT_MAX ? 0.0f : b.min_extent;
     b.center = transform_point(b.transform, b.local_center);
     contacts_.forget_manifolds(body);
 }
@@ -219,7 +298,7 @@ void World::cover_step_ahead(float time_step) {
     const auto cover = [&](int32_t body) {
         Body& b = bodies[body];
         b.needs_cover = false;
-        update_shape_bounds(b, shapes, broad_phase_, time_step * b.linear_velocity, true);
+        update_shape_bounds(b, shapes, broad_phase_, time_step * b.linear_velocity, true, turn_reach(b, time_step));
     };
     if (same_step) {
         for (const int32_t body : to_cover_) {
@@ -303,6 +382,9 @@ void World::set_angular_velocity(int32_t body, float w) {
         wake_body(body);
     }
     b.angular_velocity = limited_angular_velocity(w);
+    if (b.type == BodyType::kinematic) {
+        mark_for_cover(body);  // its boxes must reach as far as it now turns
+    }
 }
 
 // Wakes the body if asked; a body left asleep ignores what it is given.

@@ -14,9 +14,12 @@
 #include <vector>
 
 #include "broadphase/broad_phase.hpp"
+#include "collision/shape_proxy.hpp"
 #include "core/pool.hpp"
 #include "dynamics/body.hpp"
+#include "dynamics/chain.hpp"
 #include "dynamics/contact_set.hpp"
+#include "dynamics/continuous.hpp"
 #include "dynamics/events.hpp"
 #include "dynamics/island.hpp"
 #include "dynamics/joint_set.hpp"
@@ -45,6 +48,7 @@ struct StepProfile {
     float update_bounds = 0.0f;  // tight and fat boxes, tree re-insertions
     float sleep = 0.0f;        // islands and sleep timers
     float events = 0.0f;       // begin/end and body move events
+    float continuous = 0.0f;   // sweeping fast bodies
 };
 
 struct RayResult {
@@ -72,6 +76,12 @@ public:
     /// Returns null_index when the shape pool is full.
     int32_t create_shape(int32_t body, const ShapeDef& def, const Geometry& geometry);
     void destroy_shape(int32_t shape);
+    /// Creates the chain's segments as shapes of the body (static or kinematic; the
+    /// caller checked the points). Returns null_index, creating nothing, when a pool is
+    /// full.
+    int32_t create_chain(int32_t body, const ChainDef& def);
+    /// Destroys the chain and its segments.
+    void destroy_chain(int32_t chain);
 
     // Joints. The def must be valid (two live, different bodies, settings in range: the
     // C boundary checks). Creating and destroying wake both bodies; a joint that keeps
@@ -132,6 +142,13 @@ public:
     void overlap_point(Vec2 point, const QueryFilter& filter, ShapeVisitor visit, void* context) const;
     void cast_ray(Vec2 origin, Vec2 translation, const QueryFilter& filter, RayVisitor visit, void* context) const;
     RayResult cast_ray_closest(Vec2 origin, Vec2 translation, const QueryFilter& filter) const;
+    /// A proxy (world space) swept along translation: each shape it would touch, with the
+    /// fraction, the point on the shape and the shape's normal there; visit as for rays.
+    void cast_shape(const ShapeProxy& proxy, Vec2 translation, const QueryFilter& filter, RayVisitor visit,
+                    void* context) const;
+    RayResult cast_shape_closest(const ShapeProxy& proxy, Vec2 translation, const QueryFilter& filter) const;
+    /// Every shape the proxy (world space) overlaps or touches.
+    void overlap_shape(const ShapeProxy& proxy, const QueryFilter& filter, ShapeVisitor visit, void* context) const;
     void rebuild_static_tree() { broad_phase_.tree(ProxyKind::static_proxy).rebuild(); }
 
     /// Installs the C boundary's id encoding for the ids inside events.
@@ -161,6 +178,7 @@ public:
     Pool<Shape> shapes;
     /// The joints (joint.hpp); change a def through joint_changed.
     Pool<Joint> joints;
+    Pool<Chain> chains;
 
 private:
     friend class QueryLock;
@@ -171,6 +189,8 @@ private:
     void link_joints(int32_t body);
     void unlink_joints(int32_t body);
     void let_bodies_meet(int32_t body_a, int32_t body_b);
+    int32_t attach_shape(int32_t body, const ShapeDef& def, const Geometry& geometry);
+    void detach_shape(int32_t shape);
     void create_proxy(int32_t shape, bool query_now);
     void cover_step_ahead(float time_step);
     void mark_for_cover(int32_t body);
@@ -178,6 +198,7 @@ private:
     bool change_velocity(int32_t body, Vec2 dv, float dw, bool wake);
     bool prepare_to_receive(int32_t body, bool wake);
     void report_falling_asleep(int32_t body);
+    void report_sensor_crossings();
     void validate_body(int32_t body) const;
 
     TaskSystem tasks_;
@@ -187,6 +208,7 @@ private:
     ContactSet contacts_;
     Islands islands_;
     Solver solver_;
+    Continuous continuous_;
     std::vector<int32_t> to_cover_;  // bodies whose boxes must cover the next step afresh
     float last_time_step_ = 0.0f;
     StepProfile profile_;

@@ -29,6 +29,8 @@ struct WorldDef {
     bool enable_profile = false;               // time the step's stages from the first step
     int32_t worker_count = 1;                  // in [1, max_worker_count]
     TaskCallbacks tasks;                       // both null: the built-in pool
+    bool enable_continuous = true;             // sweep fast bodies (continuous.hpp)
+    float hit_event_threshold = 1.0f;          // m/s: slower impacts report no hit event
 };
 
 }  // namespace i2d

@@ -29,10 +29,17 @@ void World::step(float time_step, int32_t substep_count) {
 
     solver_.step(time_step, substep_count);
     profile_.solve += timer.lap_ms();
+    if (settings.enable_continuous) {
+        continuous_.run(solver_.fast_bodies(), time_step);
+    }
+    profile_.continuous += timer.lap_ms();
     broad_phase_.commit_moves();
     profile_.update_bounds += timer.lap_ms();
 
     contacts_.end_step();
+    if (settings.enable_continuous) {
+        report_sensor_crossings();
+    }
     profile_.events += timer.lap_ms();
     if (settings.enable_sleep) {
         islands_.sleep_rested_islands(settings.time_to_sleep, [this](int32_t body) { report_falling_asleep(body); });
@@ -51,6 +58,28 @@ void World::report_falling_asleep(int32_t body) {
         moves.push_back({b.transform, events_.ids.body_id(body, bodies.generation(body)), b.user_data, false});
     }
     moves[std::size_t(b.move_event)].fell_asleep = true;
+}
+
+// A fast body that passed through a sensor within the step neither began nor ended the
+// step in it: the sensor reports the visit as a begin and an end together. Visits the
+// contact saw (touching at either end of the step) were reported already.
+void World::report_sensor_crossings() {
+    for (const SensorCrossing& crossing : continuous_.sensor_crossings()) {
+        bool seen = false;
+        contacts_.visit_contacts(shapes[crossing.visitor_shape].body, [&](int32_t contact, int32_t) {
+            const Contact& c = contacts_.pool()[contact];
+            const bool same = (c.shape_a == crossing.sensor_shape && c.shape_b == crossing.visitor_shape) ||
+                              (c.shape_b == crossing.sensor_shape && c.shape_a == crossing.visitor_shape);
+            seen = seen || (same && (c.flags & (contact_touching | contact_touching_at_start)) != 0);
+        });
+        if (!seen) {
+            const ShapePairEvent e{events_.ids.shape_id(crossing.sensor_shape, shapes.generation(crossing.sensor_shape)),
+                                   events_.ids.shape_id(crossing.visitor_shape,
+                                                        shapes.generation(crossing.visitor_shape))};
+            events_.current.sensor_begin.push_back(e);
+            events_.current.sensor_end.push_back(e);
+        }
+    }
 }
 
 WorldCounters World::counters() const {

@@ -78,6 +78,10 @@ inline Rot mul_rot(Rot q, Rot r) { return {q.c * r.c - q.s * r.s, q.s * r.c + q.
 /// q^T * r: the rotation r seen from the frame q.
 inline Rot inv_mul_rot(Rot q, Rot r) { return {q.c * r.c + q.s * r.s, q.c * r.s - q.s * r.c}; }
 /// A^-1 * B: frame B expressed in frame A.
+/// a then b: b's frame placed by a (b given in a's frame).
+inline Transform mul_transforms(const Transform& a, const Transform& b) {
+    return {rotate(a.q, b.p) + a.p, mul_rot(a.q, b.q)};
+}
 inline Transform inv_mul_transforms(const Transform& a, const Transform& b) {
     return {inv_rotate(a.q, b.p - a.p), inv_mul_rot(a.q, b.q)};
 }

@@ -376,6 +376,7 @@ static const float_field k_world_def_floats[] = {
     {"time_to_sleep", offsetof(i2d_world_def, time_to_sleep)},
     {"joint_hertz", offsetof(i2d_world_def, joint_hertz)},
     {"joint_damping_ratio", offsetof(i2d_world_def, joint_damping_ratio)},
+    {"hit_event_threshold", offsetof(i2d_world_def, hit_event_threshold)},
 };
 
 /* Finite values outside the documented ranges. */
@@ -400,6 +401,8 @@ static const float_field_value k_world_def_out_of_range[] = {
     {"restitution_threshold", offsetof(i2d_world_def, restitution_threshold), -1.0f},
     {"maximum_linear_speed", offsetof(i2d_world_def, maximum_linear_speed), 0.0f},
     {"maximum_linear_speed", offsetof(i2d_world_def, maximum_linear_speed), -1.0f},
+    {"hit_event_threshold", offsetof(i2d_world_def, hit_event_threshold), -0.5f},
+    {"hit_event_threshold", offsetof(i2d_world_def, hit_event_threshold), 2e5f},
 };
 
 /* The edges of the same ranges, which must be accepted. */
@@ -419,6 +422,8 @@ static const float_field_value k_world_def_in_range[] = {
     {"time_to_sleep", offsetof(i2d_world_def, time_to_sleep), 0.0f},
     {"restitution_threshold", offsetof(i2d_world_def, restitution_threshold), 0.0f},
     {"maximum_linear_speed", offsetof(i2d_world_def, maximum_linear_speed), 0.001f},
+    {"hit_event_threshold", offsetof(i2d_world_def, hit_event_threshold), 0.0f},
+    {"hit_event_threshold", offsetof(i2d_world_def, hit_event_threshold), 1e5f},
 };
 
 static void check_world_def_refused_at(int line, const char* what, const i2d_world_def* def) {

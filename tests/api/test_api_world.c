@@ -137,6 +137,8 @@ static void cover_defaults(void) {
     I2D_CHECK(w.enable_sleep);
     I2D_CHECK_NEAR(w.sleep_speed_threshold, 0.05, 1e-9);
     I2D_CHECK(w.time_to_sleep == 0.5f);
+    I2D_CHECK(w.enable_continuous);
+    I2D_CHECK(w.hit_event_threshold == 1.0f);
     I2D_CHECK(w.internal_cookie != 0);
 
     i2d_body_def b = i2d_default_body_def();
@@ -155,7 +157,7 @@ static void cover_defaults(void) {
     I2D_CHECK(s.density == 1.0f);
     I2D_CHECK_NEAR(s.friction, 0.6, 1e-7);
     I2D_CHECK(s.restitution == 0.0f);
-    I2D_CHECK(!s.is_sensor && s.enable_contact_events);
+    I2D_CHECK(!s.is_sensor && s.enable_contact_events && !s.enable_hit_events);
     I2D_CHECK(s.filter.category_bits == 1 && s.filter.mask_bits == UINT64_MAX && s.filter.group_index == 0);
     I2D_CHECK(s.user_data == NULL);
     I2D_CHECK(s.internal_cookie != 0);

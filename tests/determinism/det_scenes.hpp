@@ -15,6 +15,7 @@
 
 #include <impulse2d/impulse2d.h>
 
+#include <cmath>
 #include <cstdint>
 
 namespace det {
@@ -136,6 +137,42 @@ inline i2d_world_id sleeping_bin(const i2d_world_def& wd) {
         def.user_data = reinterpret_cast<void*>(std::intptr_t(i + 1));
         i2d_body_set_user_data(body, def.user_data);
         add_mixed_shape(body, i, &def);
+    }
+    return world;
+}
+
+// Bullets ricocheting in a room of thin walls among boxes, and fast balls that are not
+// bullets: the continuous stage has work every step (both of its passes, bullets against
+// bullets and against boxes), with enough awake bodies that the solver shares its stages.
+inline i2d_world_id bullet_room(const i2d_world_def& wd) {
+    const i2d_world_id world = i2d_world_create(&wd);
+    if (I2D_IS_NULL(world)) {
+        return world;
+    }
+    const i2d_shape_def wall = material(0.0f, 0.0f);
+    const i2d_body_id room = add_body(world, I2D_BODY_STATIC, i2d_vec2{0, 0});
+    i2d_shape_create_offset_box(room, &wall, 10.0f, 0.02f, i2d_vec2{0, -0.02f}, i2d_make_rot(0));
+    i2d_shape_create_offset_box(room, &wall, 10.0f, 0.02f, i2d_vec2{0, 20.02f}, i2d_make_rot(0));
+    i2d_shape_create_offset_box(room, &wall, 0.02f, 10.0f, i2d_vec2{-10.02f, 10.0f}, i2d_make_rot(0));
+    i2d_shape_create_offset_box(room, &wall, 0.02f, 10.0f, i2d_vec2{10.02f, 10.0f}, i2d_make_rot(0));
+    for (int i = 0; i < 300; ++i) {
+        i2d_body_def def = i2d_default_body_def();
+        def.type = I2D_BODY_DYNAMIC;
+        def.position = i2d_vec2{-9.0f + 0.9f * float(i % 20), 1.0f + 1.2f * float(i / 20)};
+        const float angle = 0.61803f * float(i) * 6.2831853f;
+        const float speed = 100.0f + float(i % 7) * 30.0f;
+        def.linear_velocity = i2d_vec2{speed * std::cos(angle), speed * std::sin(angle)};
+        def.is_bullet = i % 3 != 0;
+        def.user_data = reinterpret_cast<void*>(std::intptr_t(i + 1));
+        const i2d_body_id body = i2d_body_create(world, &def);
+        i2d_shape_def shape = material(0.2f, 0.8f);
+        shape.user_data = def.user_data;
+        if (i % 5 == 0) {
+            i2d_shape_create_box(body, &shape, 0.25f, 0.25f);
+        } else {
+            const i2d_circle circle{i2d_vec2{0, 0}, 0.05f};
+            i2d_shape_create_circle(body, &shape, &circle);
+        }
     }
     return world;
 }

@@ -93,8 +93,9 @@ void hash_step_events(uint64_t& hash, i2d_world_id world) {
     }
 }
 
-// Steps the bin `steps` steps, or until it sleeps when until_asleep.
-BinRun run_bin(const WorkerSetup& setup, int steps, bool until_asleep) {
+// Steps the bin (or another scene) `steps` steps, or until it sleeps when until_asleep.
+BinRun run_bin(const WorkerSetup& setup, int steps, bool until_asleep,
+               i2d_world_id (*build)(const i2d_world_def&) = det::sleeping_bin) {
     BinRun result;
     std::unique_ptr<JobSystem> jobs;
     i2d_world_def def = i2d_default_world_def();
@@ -103,7 +104,7 @@ BinRun run_bin(const WorkerSetup& setup, int steps, bool until_asleep) {
         jobs = std::make_unique<JobSystem>(setup.job_threads, setup.order);
         jobs->install(def);
     }
-    const i2d_world_id world = det::sleeping_bin(def);
+    const i2d_world_id world = build(def);
     if (I2D_IS_NULL(world)) {
         fprintf(stderr, "    %s: %s\n", setup.name, i2d_last_error_message());
         return result;
@@ -136,8 +137,9 @@ int first_difference(const BinRun& a, const BinRun& b) {
     return a.hashes.size() == b.hashes.size() ? -1 : 0;
 }
 
-void check_setups_agree(int steps, bool until_asleep) {
-    const BinRun expected = run_bin(reference, steps, until_asleep);
+void check_setups_agree(int steps, bool until_asleep,
+                        i2d_world_id (*build)(const i2d_world_def&) = det::sleeping_bin) {
+    const BinRun expected = run_bin(reference, steps, until_asleep, build);
     I2D_REQUIRE(!expected.hashes.empty());
     if (until_asleep) {
         fprintf(stderr, "    1 worker: asleep after %d steps, hash %016" PRIx64 "\n", expected.asleep_at,
@@ -145,7 +147,7 @@ void check_setups_agree(int steps, bool until_asleep) {
         I2D_REQUIRE(expected.asleep_at > 0);
     }
     for (const WorkerSetup& setup : setups) {
-        const BinRun got = run_bin(setup, steps, until_asleep);
+        const BinRun got = run_bin(setup, steps, until_asleep, build);
         const int differs = first_difference(got, expected);
         fprintf(stderr, "    %s: asleep after %d, hash %016" PRIx64 ", first difference %d, job system ran %d tasks\n",
                 setup.name, got.asleep_at, got.hashes.empty() ? 0 : got.hashes.back(), differs, got.tasks_run);
@@ -192,6 +194,10 @@ int settled_thread_count(int expected) {
 I2D_TEST(det_workers_give_the_same_bits_for_every_count) { check_setups_agree(150, false); }
 
 I2D_TEST(det_workers_long_bin_sleeps_at_the_same_step_with_the_same_bits) { check_setups_agree(3000, true); }
+
+I2D_TEST(det_workers_fast_bullets_give_the_same_bits_for_every_count) {
+    check_setups_agree(120, false, det::bullet_room);
+}
 
 // The hash of a run in this process equals that of the same run in a new process (the
 // test runs itself with I2D_DET_CHILD_WORKERS set, and the child prints its hash).

@@ -76,6 +76,8 @@ class WorldDef(C.Structure):
         ("user_task_context", C.c_void_p),
         ("joint_hertz", C.c_float),
         ("joint_damping_ratio", C.c_float),
+        ("enable_continuous", C.c_bool),
+        ("hit_event_threshold", C.c_float),
         ("internal_cookie", C.c_uint32),
     ]
 
@@ -112,6 +114,7 @@ class ShapeDef(C.Structure):
         ("is_sensor", C.c_bool),
         ("enable_contact_events", C.c_bool),
         ("enable_sensor_events", C.c_bool),
+        ("enable_hit_events", C.c_bool),
         ("filter", Filter),
         ("user_data", C.c_void_p),
         ("internal_cookie", C.c_uint32),

@@ -535,6 +535,40 @@ void run_shape_call(FuzzInput& in, uint8_t op) {
         case 8: i2d_shape_set_restitution(pick_shape(in), in.real()); break;
         case 9: i2d_shape_set_filter(pick_shape(in), filter(in)); break;
         case 10: i2d_shape_set_user_data(pick_shape(in), in.flag() ? g_held : nullptr); break;
+        case 12: {  // a chain on any body, maybe destroyed at once, through a segment or its id
+            i2d_vec2 points[12];
+            for (auto& p : points) {
+                p = in.flag() ? in.small_vec2() : in.vec2();
+            }
+            i2d_surface_material materials[9];
+            for (auto& m : materials) {
+                m = i2d_surface_material{in.real(), in.real(), in.real(), in.real()};
+            }
+            i2d_chain_def def = i2d_default_chain_def();
+            def.points = in.byte() < 245 ? points : nullptr;
+            const int32_t count = in.flag() ? in.count(12) : static_cast<int32_t>(in.u32());
+            def.count = count > 12 ? 12 : count;
+            def.is_loop = in.flag();
+            def.materials = in.byte() < 245 ? materials : nullptr;
+            def.material_count = in.flag() ? in.count(9) : 0;
+            def.filter = filter(in);
+            if (in.byte() > 250) {
+                def.internal_cookie = in.u32();
+            }
+            const i2d_chain_id chain = i2d_chain_create(pick_body(in), &def);
+            i2d_shape_id segments[12];
+            const int32_t n = i2d_chain_get_segments(chain, segments, 12);
+            if (n > 0) {
+                keep(g_held->shapes, g_held->shape_count, max_shapes_held, segments[0], in.byte());
+                i2d_shape_get_chain(segments[0]);
+                i2d_shape_destroy(segments[0]);  // refused: a chain's segment
+            }
+            if (in.flag()) {
+                i2d_chain_destroy(chain);
+            }
+            i2d_chain_is_valid(chain);
+            break;
+        }
         default: {
             const i2d_shape_id s = pick_shape(in);
             i2d_shape_is_valid(s);
@@ -860,6 +894,47 @@ void run_query_call(FuzzInput& in, uint8_t op) {
             }
             break;
         }
+        case 5: {  // shape casts and overlaps with a proxy made from hostile points
+            i2d_vec2 points[9];
+            for (auto& p : points) {
+                p = in.flag() ? in.small_vec2() : in.vec2();
+            }
+            const int32_t count = in.flag() ? in.count(9) : static_cast<int32_t>(in.u32());
+            i2d_shape_proxy proxy = i2d_make_proxy(in.byte() < 245 ? points : nullptr, count > 9 ? 9 : count,
+                                                   in.real());
+            if (in.byte() > 240) {
+                proxy.count = static_cast<int32_t>(in.u32());  // a hand-made proxy, maybe broken
+                proxy.radius = in.real();
+            }
+            if (in.flag()) {
+                const i2d_ray_result r = i2d_world_cast_shape_closest(w, &proxy, in.vec2(), query_filter(in));
+                if (r.hit && (!finite2(r.point) || !finite2(r.normal) || !(r.fraction >= 0.0f && r.fraction <= 1.0f))) {
+                    fail("non-finite closest shape cast", r.point.x, r.fraction);
+                }
+                i2d_world_cast_shape(w, &proxy, in.vec2(), query_filter(in),
+                                     in.byte() < 245 ? ray_callback : nullptr, &context);
+            } else {
+                i2d_shape_id out[16];
+                i2d_world_overlap_shape_ids(w, in.byte() < 245 ? &proxy : nullptr, query_filter(in), out,
+                                            in.count(16));
+                i2d_world_overlap_shape(w, &proxy, query_filter(in), in.byte() < 245 ? overlap_callback : nullptr,
+                                        &context);
+            }
+            break;
+        }
+        case 6: {  // the array variants of rays and points
+            i2d_ray_result hits[16];
+            const int32_t capacity = in.flag() ? in.count(16) : static_cast<int32_t>(in.u32());
+            const bool null_out = in.byte() > 230;
+            i2d_world_cast_ray_all(w, in.vec2(), in.vec2(), query_filter(in), null_out ? nullptr : hits,
+                                   capacity > 16 && !null_out ? 16 : capacity);
+            for (int32_t i = 0; i < (capacity < 16 ? capacity : 16) && !null_out; ++i) {
+                i2d_shape_is_valid(hits[i].shape);
+            }
+            i2d_shape_id ids[16];
+            i2d_world_overlap_point_ids(w, in.vec2(), query_filter(in), ids, in.count(16));
+            break;
+        }
         default:
             i2d_world_cast_ray(w, in.vec2(), in.vec2(), query_filter(in), in.byte() < 245 ? ray_callback : nullptr,
                                &context);
@@ -934,9 +1009,9 @@ void run_program(FuzzInput& in) {
         } else if (group == 1 || group == 2) {
             run_body_call(in, sub % 15);
         } else if (group == 3) {
-            run_shape_call(in, sub % 12);
+            run_shape_call(in, sub % 13);
         } else if (group == 4) {
-            run_query_call(in, sub % 5);
+            run_query_call(in, sub % 7);
         } else {
             run_pure_call(in, sub % 20);
         }

@@ -52,6 +52,9 @@ inline Core core_of(const i2d::Geometry& g, const i2d::Transform& xf) {
         case i2d::ShapeType::segment:
             c.pts = {to_world(xf, g.segment.point1), to_world(xf, g.segment.point2)};
             break;
+        case i2d::ShapeType::chain_segment:
+            c.pts = {to_world(xf, g.chain_segment.point1), to_world(xf, g.chain_segment.point2)};
+            break;
         case i2d::ShapeType::polygon:
             for (int32_t i = 0; i < g.polygon.count; ++i) {
                 c.pts.push_back(to_world(xf, g.polygon.vertices[i]));
@@ -242,6 +245,7 @@ inline i2d::Geometry random_geometry(TestRng& rng, i2d::ShapeType type) {
         case i2d::ShapeType::polygon:
             g.polygon = random_polygon(rng, rng.below(2) == 0 ? 0.0f : rng.uniform(0.02f, 0.4f));
             break;
+        case i2d::ShapeType::chain_segment:  // neighbour-dependent: not a random single shape
         case i2d::ShapeType::count: break;
     }
     return g;

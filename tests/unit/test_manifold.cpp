@@ -181,7 +181,7 @@ I2D_TEST(unit_manifold_box_resting_on_box_has_stable_two_points) {
 I2D_TEST(unit_manifold_every_pair_matches_core_distance) {
     TestRng rng(404);
     Worst worst;
-    const int32_t kinds = static_cast<int32_t>(ShapeType::count);
+    const int32_t kinds = static_cast<int32_t>(ShapeType::chain_segment) /* chains: test_chain_manifold */;
     for (int32_t ka = 0; ka < kinds; ++ka) {
         for (int32_t kb = 0; kb < kinds; ++kb) {
             const ShapeType ta = static_cast<ShapeType>(ka), tb = static_cast<ShapeType>(kb);

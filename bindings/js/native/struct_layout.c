@@ -53,6 +53,7 @@ static const i2d_js_layout_entry k_layout[] = {
     I2D_JS_FIELD(i2d_contact_events, end_events),
     I2D_JS_FIELD(i2d_contact_events, end_count),
     I2D_JS_SIZE(i2d_contact_begin_event),
+    I2D_JS_SIZE(i2d_contact_end_event),
     I2D_JS_SIZE(i2d_ray_result),
     I2D_JS_FIELD(i2d_ray_result, shape),
     I2D_JS_FIELD(i2d_ray_result, point),

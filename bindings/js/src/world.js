@@ -101,15 +101,21 @@ export class World {
     rt.m._i2d_world_get_contact_events(at, this.id);
     rt.checkLast();
     const word = (name) => rt.u32[(at + rt.field(`i2d_contact_events.${name}`)) >> 2];
-    const pairs = (array, count) => {
-      const ids = new BigUint64Array(rt.u8.buffer, array, count * 2);
+    // Each event starts with its two ids; begin events carry a manifold after them.
+    const pairs = (array, count, type) => {
+      const stride = rt.size(type) / 8;
+      const ids = new BigUint64Array(rt.u8.buffer, array, count * stride);
       const out = [];
       for (let i = 0; i < count; i++) {
-        out.push([this.shapeById.get(ids[2 * i]) ?? ids[2 * i], this.shapeById.get(ids[2 * i + 1]) ?? ids[2 * i + 1]]);
+        const a = ids[stride * i], b = ids[stride * i + 1];
+        out.push([this.shapeById.get(a) ?? a, this.shapeById.get(b) ?? b]);
       }
       return out;
     };
-    return { begin: pairs(word('begin_events'), word('begin_count')), end: pairs(word('end_events'), word('end_count')) };
+    return {
+      begin: pairs(word('begin_events'), word('begin_count'), 'i2d_contact_begin_event'),
+      end: pairs(word('end_events'), word('end_count'), 'i2d_contact_end_event'),
+    };
   }
 
   /** Shapes whose geometry overlaps the box, every category. */

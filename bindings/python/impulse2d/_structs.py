@@ -61,6 +61,8 @@ class WorldDef(C.Structure):
         ("user_task_context", C.c_void_p),
         ("joint_hertz", C.c_float),
         ("joint_damping_ratio", C.c_float),
+        ("enable_continuous", C.c_bool),
+        ("hit_event_threshold", C.c_float),
         ("internal_cookie", C.c_uint32),
     ]
 
@@ -93,6 +95,7 @@ class ShapeDef(C.Structure):
         ("is_sensor", C.c_bool),
         ("enable_contact_events", C.c_bool),
         ("enable_sensor_events", C.c_bool),
+        ("enable_hit_events", C.c_bool),
         ("filter", Filter),
         ("user_data", C.c_void_p),
         ("internal_cookie", C.c_uint32),
@@ -118,7 +121,7 @@ class WorldCounters(C.Structure):
 
 class Profile(C.Structure):
     _fields_ = [
-        (name, C.c_float) for name in ("step", "pairs", "collide", "solve", "update_bounds", "sleep", "events")
+        (name, C.c_float) for name in ("step", "pairs", "collide", "solve", "update_bounds", "sleep", "events", "continuous")
     ]
 
 
@@ -128,12 +131,47 @@ class ShapePair(C.Structure):
     _fields_ = [("a", C.c_uint64), ("b", C.c_uint64)]
 
 
-class ContactEvents(C.Structure):
+class ManifoldPoint(C.Structure):
+    _fields_ = [("point", Vec2), ("penetration", C.c_float), ("id", C.c_uint32)]
+
+
+class Manifold(C.Structure):
+    _fields_ = [("normal", Vec2), ("point_count", C.c_int32), ("points", ManifoldPoint * 2)]
+
+
+class ContactBeginEvent(C.Structure):
+    """i2d_contact_begin_event: the two ids and the contact's manifold."""
+
+    _fields_ = [("a", C.c_uint64), ("b", C.c_uint64), ("manifold", Manifold)]
+
+
+class ContactHitEvent(C.Structure):
+    _fields_ = [
+        ("a", C.c_uint64),
+        ("b", C.c_uint64),
+        ("point", Vec2),
+        ("normal", Vec2),
+        ("approach_speed", C.c_float),
+    ]
+
+
+class SensorEvents(C.Structure):
     _fields_ = [
         ("begin_events", C.POINTER(ShapePair)),
         ("begin_count", C.c_int32),
         ("end_events", C.POINTER(ShapePair)),
         ("end_count", C.c_int32),
+    ]
+
+
+class ContactEvents(C.Structure):
+    _fields_ = [
+        ("begin_events", C.POINTER(ContactBeginEvent)),
+        ("begin_count", C.c_int32),
+        ("end_events", C.POINTER(ShapePair)),
+        ("end_count", C.c_int32),
+        ("hit_events", C.POINTER(ContactHitEvent)),
+        ("hit_count", C.c_int32),
     ]
 
 
@@ -277,12 +315,15 @@ DECLARED = {
     "i2d_shape_def": ShapeDef,
     "i2d_world_counters": WorldCounters,
     "i2d_profile": Profile,
-    "i2d_contact_begin_event": ShapePair,
+    "i2d_contact_begin_event": ContactBeginEvent,
+    "i2d_manifold": Manifold,
+    "i2d_manifold_point": ManifoldPoint,
     "i2d_contact_end_event": ShapePair,
     "i2d_contact_events": ContactEvents,
     "i2d_sensor_begin_event": ShapePair,
     "i2d_sensor_end_event": ShapePair,
-    "i2d_sensor_events": ContactEvents,
+    "i2d_sensor_events": SensorEvents,
+    "i2d_contact_hit_event": ContactHitEvent,
     "i2d_body_move_event": BodyMoveEvent,
     "i2d_body_events": BodyEvents,
     "i2d_ray_result": RayResult,

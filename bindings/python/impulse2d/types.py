@@ -26,6 +26,7 @@ class ShapeType(enum.IntEnum):
     CAPSULE = 1
     SEGMENT = 2
     POLYGON = 3
+    CHAIN_SEGMENT = 4  #: one segment of a chain (one-sided, no mass)
 
 
 class ContactBegin(NamedTuple):

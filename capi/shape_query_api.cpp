@@ -1,0 +1,194 @@
+// SPDX-License-Identifier: MIT
+// i2d_make_proxy, i2d_world_cast_shape(_closest), i2d_world_overlap_shape(_ids): queries
+// with a convex proxy, checked at the boundary.
+#include <cmath>
+
+#include "boundary.hpp"
+#include "convert.hpp"
+#include "dynamics/constants.hpp"
+#include "geometry_checks.hpp"
+
+using namespace i2d;
+using namespace i2d::capi;
+
+namespace {
+
+// 1..8 points within the coordinate range and a radius in [0, max_shape_extent].
+bool valid_proxy_input(Call& call, const i2d_vec2* points, int32_t count, float radius, const char* what) {
+    if (!call.not_null(points, what)) {
+        return false;
+    }
+    if (count < 1 || count > max_polygon_vertices) {
+        return call.fail(I2D_ERR_INVALID_ARGUMENT, "%s: count is %d; it must be in [1, %d]", what, int(count),
+                         int(max_polygon_vertices));
+    }
+    for (int32_t i = 0; i < count; ++i) {
+        if (!call.coordinate(points[i], what)) {
+            return false;
+        }
+    }
+    return call.in_range(radius, 0.0f, max_shape_extent, what);
+}
+
+// The caller's proxy, checked and made convex again (a hand-built proxy need not be).
+bool core_proxy(Call& call, const i2d_shape_proxy* proxy, ShapeProxy& out) {
+    if (!call.not_null(proxy, "proxy") || !valid_proxy_input(call, proxy->points, proxy->count, proxy->radius, "proxy")) {
+        return false;
+    }
+    Vec2 points[max_polygon_vertices];
+    for (int32_t i = 0; i < proxy->count; ++i) {
+        points[i] = to_core(proxy->points[i]);
+    }
+    out = make_query_proxy(points, proxy->count, proxy->radius);
+    return true;
+}
+
+// A sweep must go somewhere (a zero one is an overlap query) and stay in range.
+bool valid_translation(Call& call, i2d_vec2 translation) {
+    if (!call.coordinate(translation, "translation")) {
+        return false;
+    }
+    if (translation.x == 0.0f && translation.y == 0.0f) {
+        return call.fail(I2D_ERR_INVALID_ARGUMENT,
+                         "translation is zero: a shape cast must move; use i2d_world_overlap_shape for overlap");
+    }
+    return true;
+}
+
+bool valid_ids_out(Call& call, const i2d_shape_id* out, int32_t capacity) {
+    if (capacity < 0 || (capacity > 0 && out == nullptr)) {
+        return call.fail(I2D_ERR_INVALID_ARGUMENT, "out is NULL or capacity (%d) is negative", int(capacity));
+    }
+    return true;
+}
+
+struct CastAdapter {
+    const World* world;
+    IdFields world_id;
+    i2d_cast_result_fn* fn;
+    void* context;
+
+    static float visit(int32_t shape, Vec2 point, Vec2 normal, float fraction, void* self) {
+        const auto* a = static_cast<const CastAdapter*>(self);
+        return a->fn(make_shape_id(a->world_id, shape, a->world->shapes.generation(shape)), to_public(point),
+                     to_public(normal), fraction, a->context);
+    }
+};
+
+struct OverlapAdapter {
+    const World* world;
+    IdFields world_id;
+    i2d_overlap_fn* fn;
+    void* context;
+
+    static bool visit(int32_t shape, void* self) {
+        const auto* a = static_cast<const OverlapAdapter*>(self);
+        return a->fn(make_shape_id(a->world_id, shape, a->world->shapes.generation(shape)), a->context);
+    }
+};
+
+struct IdFiller {
+    const World* world;
+    IdFields world_id;
+    i2d_shape_id* out;
+    int32_t capacity;
+    int32_t total;
+
+    static bool visit(int32_t shape, void* self) {
+        auto* f = static_cast<IdFiller*>(self);
+        if (f->total < f->capacity) {
+            f->out[f->total] = make_shape_id(f->world_id, shape, f->world->shapes.generation(shape));
+        }
+        ++f->total;
+        return true;
+    }
+};
+
+}  // namespace
+
+I2D_API i2d_shape_proxy i2d_make_proxy(const i2d_vec2* points, int32_t count, float radius) {
+    return guarded("i2d_make_proxy", i2d_shape_proxy{}, [&](Call& call) {
+        if (!valid_proxy_input(call, points, count, radius, "points")) {
+            return i2d_shape_proxy{};
+        }
+        Vec2 core_points[max_polygon_vertices];
+        for (int32_t i = 0; i < count; ++i) {
+            core_points[i] = to_core(points[i]);
+        }
+        const ShapeProxy p = make_query_proxy(core_points, count, radius);
+        i2d_shape_proxy out{};
+        for (int32_t i = 0; i < p.count; ++i) {
+            out.points[i] = to_public(p.points[i]);
+        }
+        out.count = p.count;
+        out.radius = p.radius;
+        return out;
+    });
+}
+
+I2D_API i2d_status i2d_world_cast_shape(i2d_world_id world, const i2d_shape_proxy* proxy, i2d_vec2 translation,
+                                        i2d_query_filter filter, i2d_cast_result_fn* fn, void* context) {
+    return guarded("i2d_world_cast_shape", I2D_ERR_OUT_OF_MEMORY, [&](Call& call) {
+        WorldRef w;
+        ShapeProxy core;
+        if (!call.world(world, w) || !core_proxy(call, proxy, core) || !valid_translation(call, translation) ||
+            !call.not_null(reinterpret_cast<void*>(fn), "fn")) {
+            return last_status();
+        }
+        CastAdapter adapter{w.world, w.id, fn, context};
+        w.world->cast_shape(core, to_core(translation), to_core(filter), &CastAdapter::visit, &adapter);
+        set_ok();  // the callbacks may have made calls of their own
+        return I2D_OK;
+    });
+}
+
+I2D_API i2d_ray_result i2d_world_cast_shape_closest(i2d_world_id world, const i2d_shape_proxy* proxy,
+                                                    i2d_vec2 translation, i2d_query_filter filter) {
+    return guarded("i2d_world_cast_shape_closest", i2d_ray_result{}, [&](Call& call) {
+        WorldRef w;
+        ShapeProxy core;
+        if (!call.world(world, w) || !core_proxy(call, proxy, core) || !valid_translation(call, translation)) {
+            return i2d_ray_result{};
+        }
+        const RayResult r = w.world->cast_shape_closest(core, to_core(translation), to_core(filter));
+        i2d_ray_result out{};
+        if (r.hit) {
+            out.shape = make_shape_id(w.id, r.shape, w.world->shapes.generation(r.shape));
+            out.point = to_public(r.point);
+            out.normal = to_public(r.normal);
+            out.fraction = r.fraction;
+            out.hit = true;
+        }
+        return out;
+    });
+}
+
+I2D_API i2d_status i2d_world_overlap_shape(i2d_world_id world, const i2d_shape_proxy* proxy, i2d_query_filter filter,
+                                           i2d_overlap_fn* fn, void* context) {
+    return guarded("i2d_world_overlap_shape", I2D_ERR_OUT_OF_MEMORY, [&](Call& call) {
+        WorldRef w;
+        ShapeProxy core;
+        if (!call.world(world, w) || !core_proxy(call, proxy, core) ||
+            !call.not_null(reinterpret_cast<void*>(fn), "fn")) {
+            return last_status();
+        }
+        OverlapAdapter adapter{w.world, w.id, fn, context};
+        w.world->overlap_shape(core, to_core(filter), &OverlapAdapter::visit, &adapter);
+        set_ok();
+        return I2D_OK;
+    });
+}
+
+I2D_API int32_t i2d_world_overlap_shape_ids(i2d_world_id world, const i2d_shape_proxy* proxy,
+                                            i2d_query_filter filter, i2d_shape_id* out, int32_t capacity) {
+    return guarded("i2d_world_overlap_shape_ids", int32_t(-1), [&](Call& call) -> int32_t {
+        WorldRef w;
+        ShapeProxy core;
+        if (!call.world(world, w) || !core_proxy(call, proxy, core) || !valid_ids_out(call, out, capacity)) {
+            return -1;
+        }
+        IdFiller filler{w.world, w.id, out, capacity, 0};
+        w.world->overlap_shape(core, to_core(filter), &IdFiller::visit, &filler);
+        return filler.total;
+    });
+}
