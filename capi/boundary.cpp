@@ -28,12 +28,11 @@ const char* describe(float v, char (&buffer)[32]) {
 }  // namespace
 
 bool Call::fail(i2d_status status, const char* format, ...) {
-    char detail[400];
     va_list args;
     va_start(args, format);
-    std::vsnprintf(detail, sizeof detail, format, args);
+    std::vsnprintf(detail_, sizeof detail_, format, args);
     va_end(args);
-    set_error(status, function_, "%s", detail);
+    set_error(status, function_, "%s", detail_);
     return false;
 }
 
@@ -76,12 +75,32 @@ bool Call::body(i2d_body_id id, BodyRef& out) {
     return true;
 }
 
+bool Call::body(i2d_body_id id, BodyRef& out, const char* field) {
+    if (body(id, out)) {
+        return true;
+    }
+    char detail[sizeof detail_];
+    std::snprintf(detail, sizeof detail, "%s", detail_);
+    return fail(last_status(), "%s: %s", field, detail);
+}
+
 bool Call::shape(i2d_shape_id id, ShapeRef& out) {
     if (!decode(id.bits, IdKind::shape, "shape", out.id, out.world)) {
         return false;
     }
     if (!out.world->shapes.is_live(out.id.index, out.id.generation)) {
         return fail(I2D_ERR_INVALID_HANDLE, "shape id is stale: the shape or its body was destroyed");
+    }
+    out.index = out.id.index;
+    return true;
+}
+
+bool Call::joint(i2d_joint_id id, JointRef& out) {
+    if (!decode(id.bits, IdKind::joint, "joint", out.id, out.world)) {
+        return false;
+    }
+    if (!out.world->joints.is_live(out.id.index, out.id.generation)) {
+        return fail(I2D_ERR_INVALID_HANDLE, "joint id is stale: the joint or one of its bodies was destroyed");
     }
     out.index = out.id.index;
     return true;
@@ -188,6 +207,14 @@ i2d_body_id make_body_id(const IdFields& world, int32_t index, uint16_t generati
 i2d_shape_id make_shape_id(const IdFields& world, int32_t index, uint16_t generation) {
     IdFields f = world;
     f.kind = IdKind::shape;
+    f.index = index;
+    f.generation = generation;
+    return {encode_id(f)};
+}
+
+i2d_joint_id make_joint_id(const IdFields& world, int32_t index, uint16_t generation) {
+    IdFields f = world;
+    f.kind = IdKind::joint;
     f.index = index;
     f.generation = generation;
     return {encode_id(f)};

@@ -40,6 +40,13 @@ struct ShapeRef {
     Shape& shape() const { return world->shapes[index]; }
 };
 
+struct JointRef {
+    World* world = nullptr;
+    int32_t index = -1;
+    IdFields id;
+    Joint& joint() const { return world->joints[index]; }
+};
+
 class Call {
 public:
     explicit Call(const char* function) : function_(function) { set_ok(); }
@@ -53,7 +60,10 @@ public:
 
     bool world(i2d_world_id id, WorldRef& out);
     bool body(i2d_body_id id, BodyRef& out);
+    /// The same, with the failure's message naming the field that held the id.
+    bool body(i2d_body_id id, BodyRef& out, const char* field);
     bool shape(i2d_shape_id id, ShapeRef& out);
+    bool joint(i2d_joint_id id, JointRef& out);
     /// Fails with I2D_ERR_WORLD_LOCKED inside a query callback.
     bool unlocked(const World& world);
 
@@ -74,6 +84,7 @@ private:
     bool decode(uint64_t bits, IdKind kind, const char* kind_name, IdFields& fields, World*& world);
 
     const char* function_;
+    char detail_[400] = "";  // the last failure's detail, for body(id, out, field)
 };
 
 /// Runs an entry point's body; a failure to allocate becomes I2D_ERR_OUT_OF_MEMORY, any
@@ -95,5 +106,6 @@ R guarded(const char* function, R on_failure, F&& body) {
 i2d_world_id make_world_id(const IdFields& world);
 i2d_body_id make_body_id(const IdFields& world, int32_t index, uint16_t generation);
 i2d_shape_id make_shape_id(const IdFields& world, int32_t index, uint16_t generation);
+i2d_joint_id make_joint_id(const IdFields& world, int32_t index, uint16_t generation);
 
 }  // namespace i2d::capi

@@ -2,6 +2,7 @@
 // i2d_default_*: every def field's default, and the cookie that marks a def as initialised.
 #include "boundary.hpp"
 #include "convert.hpp"
+#include "joint_rules.hpp"
 
 using namespace i2d;
 using namespace i2d::capi;
@@ -14,6 +15,8 @@ I2D_API i2d_world_def i2d_default_world_def(void) {
     def.contact_slop = core.contact_slop;
     def.contact_hertz = core.contact_hertz;
     def.contact_damping_ratio = core.contact_damping_ratio;
+    def.joint_hertz = core.joint_hertz;
+    def.joint_damping_ratio = core.joint_damping_ratio;
     def.contact_push_max_speed = core.contact_push_max_speed;
     def.restitution_threshold = core.restitution_threshold;
     def.maximum_linear_speed = core.maximum_linear_speed;
@@ -81,3 +84,48 @@ I2D_API i2d_filter i2d_default_filter(void) {
     set_ok();
     return to_public(Filter{});
 }
+
+// Joint defs: the base's and every setting's default is the core's, through the same
+// rules (joint_rules.hpp) that read a setting back.
+namespace {
+
+i2d_joint_base default_joint_base() {
+    const JointDef core;
+    i2d_joint_base base{};
+    base.body_a = I2D_NULL_BODY_ID;
+    base.body_b = I2D_NULL_BODY_ID;
+    base.local_anchor_a = to_public(core.local_anchor_a);
+    base.local_anchor_b = to_public(core.local_anchor_b);
+    base.collide_connected = core.collide_connected;
+    base.force_threshold = core.force_threshold;
+    base.torque_threshold = core.torque_threshold;
+    base.user_data = nullptr;
+    return base;
+}
+
+}  // namespace
+
+#define I2D_DEFAULT_FIELD(kind, field, Rule) def.field = joint_rules::Rule::out(core.kind.field);
+#define I2D_DEFAULT_JOINT_DEF(kind, FIELDS)                        \
+    I2D_API i2d_##kind##_joint_def i2d_default_##kind##_joint_def(void) { \
+        set_ok();                                                  \
+        const JointDef core;                                       \
+        static_cast<void>(core);                                   \
+        i2d_##kind##_joint_def def{};                              \
+        def.base = default_joint_base();                           \
+        FIELDS(I2D_DEFAULT_FIELD)                                  \
+        def.internal_cookie = def_cookie;                          \
+        return def;                                                \
+    }
+
+I2D_DEFAULT_JOINT_DEF(revolute, I2D_REVOLUTE_FIELDS)
+I2D_DEFAULT_JOINT_DEF(prismatic, I2D_PRISMATIC_FIELDS)
+I2D_DEFAULT_JOINT_DEF(distance, I2D_DISTANCE_FIELDS)
+I2D_DEFAULT_JOINT_DEF(weld, I2D_WELD_FIELDS)
+I2D_DEFAULT_JOINT_DEF(wheel, I2D_WHEEL_FIELDS)
+I2D_DEFAULT_JOINT_DEF(motor, I2D_MOTOR_FIELDS)
+I2D_DEFAULT_JOINT_DEF(mouse, I2D_MOUSE_FIELDS)
+I2D_DEFAULT_JOINT_DEF(filter, I2D_FILTER_FIELDS)
+
+#undef I2D_DEFAULT_JOINT_DEF
+#undef I2D_DEFAULT_FIELD

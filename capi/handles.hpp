@@ -13,7 +13,7 @@
 
 namespace i2d::capi {
 
-enum class IdKind : uint8_t { none = 0, world = 1, body = 2, shape = 3 };
+enum class IdKind : uint8_t { none = 0, world = 1, body = 2, shape = 3, joint = 4 };
 
 struct IdFields {
     IdKind kind = IdKind::none;

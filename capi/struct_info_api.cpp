@@ -42,6 +42,18 @@ const i2d_struct_info struct_infos[] = {
     I2D_STRUCT_INFO(i2d_segment),
     I2D_STRUCT_INFO(i2d_mass_data),
     I2D_STRUCT_INFO(i2d_cast_output),
+    I2D_STRUCT_INFO(i2d_joint_id),
+    I2D_STRUCT_INFO(i2d_joint_base),
+    I2D_STRUCT_INFO(i2d_revolute_joint_def),
+    I2D_STRUCT_INFO(i2d_prismatic_joint_def),
+    I2D_STRUCT_INFO(i2d_distance_joint_def),
+    I2D_STRUCT_INFO(i2d_weld_joint_def),
+    I2D_STRUCT_INFO(i2d_wheel_joint_def),
+    I2D_STRUCT_INFO(i2d_motor_joint_def),
+    I2D_STRUCT_INFO(i2d_mouse_joint_def),
+    I2D_STRUCT_INFO(i2d_filter_joint_def),
+    I2D_STRUCT_INFO(i2d_joint_event),
+    I2D_STRUCT_INFO(i2d_joint_events),
 };
 
 #undef I2D_STRUCT_INFO

@@ -70,6 +70,8 @@ bool validate_world_def(Call& call, const i2d_world_def* def) {
            call.in_range(def->contact_slop, 0.0f, 1.0f, "world def: contact_slop") &&
            call.in_range(def->contact_hertz, min_contact_hertz, max_setting, "world def: contact_hertz") &&
            call.in_range(def->contact_damping_ratio, 0.0f, max_setting, "world def: contact_damping_ratio") &&
+           call.in_range(def->joint_hertz, min_contact_hertz, max_setting, "world def: joint_hertz") &&
+           call.in_range(def->joint_damping_ratio, 0.0f, max_setting, "world def: joint_damping_ratio") &&
            call.in_range(def->contact_push_max_speed, 0.0f, max_speed_limit, "world def: contact_push_max_speed") &&
            call.in_range(def->restitution_threshold, 0.0f, max_speed_limit, "world def: restitution_threshold") &&
            call.in_range(def->maximum_linear_speed, 1.0e-6f, max_speed_limit, "world def: maximum_linear_speed") &&
@@ -88,12 +90,18 @@ uint64_t encode_shape(uint64_t world_bits, int32_t index, uint16_t generation) {
     return make_shape_id(decode_id(world_bits), index, generation).bits;
 }
 
+uint64_t encode_joint(uint64_t world_bits, int32_t index, uint16_t generation) {
+    return make_joint_id(decode_id(world_bits), index, generation).bits;
+}
+
 WorldDef to_core(const i2d_world_def& def) {
     WorldDef core;
     core.gravity = capi::to_core(def.gravity);
     core.contact_slop = def.contact_slop;
     core.contact_hertz = def.contact_hertz;
     core.contact_damping_ratio = def.contact_damping_ratio;
+    core.joint_hertz = def.joint_hertz;
+    core.joint_damping_ratio = def.joint_damping_ratio;
     core.contact_push_max_speed = def.contact_push_max_speed;
     core.restitution_threshold = def.restitution_threshold;
     core.maximum_linear_speed = def.maximum_linear_speed;
@@ -129,7 +137,7 @@ I2D_API i2d_world_id i2d_world_create(const i2d_world_def* def) {
         f.world_slot = ref.slot;
         f.world_generation = ref.generation;
         const i2d_world_id id = make_world_id(f);
-        world->set_id_encoder(IdEncoder{encode_body, encode_shape, id.bits});
+        world->set_id_encoder(IdEncoder{encode_body, encode_shape, encode_joint, id.bits});
         world.release();
         return id;
     });

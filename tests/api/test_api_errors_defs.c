@@ -374,6 +374,8 @@ static const float_field k_world_def_floats[] = {
     {"maximum_linear_speed", offsetof(i2d_world_def, maximum_linear_speed)},
     {"sleep_speed_threshold", offsetof(i2d_world_def, sleep_speed_threshold)},
     {"time_to_sleep", offsetof(i2d_world_def, time_to_sleep)},
+    {"joint_hertz", offsetof(i2d_world_def, joint_hertz)},
+    {"joint_damping_ratio", offsetof(i2d_world_def, joint_damping_ratio)},
 };
 
 /* Finite values outside the documented ranges. */
@@ -385,6 +387,11 @@ static const float_field_value k_world_def_out_of_range[] = {
     {"contact_hertz", offsetof(i2d_world_def, contact_hertz), 2e5f},
     {"contact_damping_ratio", offsetof(i2d_world_def, contact_damping_ratio), -0.1f},
     {"contact_damping_ratio", offsetof(i2d_world_def, contact_damping_ratio), 2e5f},
+    {"joint_hertz", offsetof(i2d_world_def, joint_hertz), 0.0f},
+    {"joint_hertz", offsetof(i2d_world_def, joint_hertz), -30.0f},
+    {"joint_hertz", offsetof(i2d_world_def, joint_hertz), 2e5f},
+    {"joint_damping_ratio", offsetof(i2d_world_def, joint_damping_ratio), -0.1f},
+    {"joint_damping_ratio", offsetof(i2d_world_def, joint_damping_ratio), 2e5f},
     {"contact_push_max_speed", offsetof(i2d_world_def, contact_push_max_speed), -1.0f},
     {"contact_push_max_speed", offsetof(i2d_world_def, contact_push_max_speed), 2e5f},
     {"sleep_speed_threshold", offsetof(i2d_world_def, sleep_speed_threshold), -0.01f},
@@ -404,6 +411,9 @@ static const float_field_value k_world_def_in_range[] = {
     {"contact_hertz", offsetof(i2d_world_def, contact_hertz), 0.001f},
     {"contact_hertz", offsetof(i2d_world_def, contact_hertz), 1e5f},
     {"contact_damping_ratio", offsetof(i2d_world_def, contact_damping_ratio), 0.0f},
+    {"joint_hertz", offsetof(i2d_world_def, joint_hertz), 0.001f},
+    {"joint_hertz", offsetof(i2d_world_def, joint_hertz), 1e5f},
+    {"joint_damping_ratio", offsetof(i2d_world_def, joint_damping_ratio), 0.0f},
     {"contact_push_max_speed", offsetof(i2d_world_def, contact_push_max_speed), 0.0f},
     {"sleep_speed_threshold", offsetof(i2d_world_def, sleep_speed_threshold), 0.0f},
     {"time_to_sleep", offsetof(i2d_world_def, time_to_sleep), 0.0f},

@@ -74,6 +74,8 @@ class WorldDef(C.Structure):
         ("enqueue_task", C.c_void_p),
         ("finish_task", C.c_void_p),
         ("user_task_context", C.c_void_p),
+        ("joint_hertz", C.c_float),
+        ("joint_damping_ratio", C.c_float),
         ("internal_cookie", C.c_uint32),
     ]
 

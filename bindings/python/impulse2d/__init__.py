@@ -12,7 +12,8 @@
             world.step(1 / 60, 4)
         print(ball.position)
 
-Objects: World (owns everything; a context manager), Body and Shape (value handles).
+Objects: World (owns everything; a context manager), Body, Shape and Joint (value
+handles; World.create_joint joins two bodies).
 Errors come back as exceptions carrying the library's message: InvalidArgument,
 InvalidHandle, WorldLocked, CapacityError, OutOfMemory (all Impulse2DError).
 Bulk state (World.transforms, velocities, set_transforms, set_velocities) reads and
@@ -36,6 +37,7 @@ from .errors import (
     OutOfMemory,
     WorldLocked,
 )
+from .joint import Joint
 from .shape import Shape
 from .types import (
     BodyMove,
@@ -62,6 +64,7 @@ __all__ = [
     "World",
     "Body",
     "Shape",
+    "Joint",
     "BodyType",
     "ShapeType",
     "STATIC",

@@ -59,6 +59,8 @@ class WorldDef(C.Structure):
         ("enqueue_task", C.c_void_p),
         ("finish_task", C.c_void_p),
         ("user_task_context", C.c_void_p),
+        ("joint_hertz", C.c_float),
+        ("joint_damping_ratio", C.c_float),
         ("internal_cookie", C.c_uint32),
     ]
 
@@ -178,6 +180,81 @@ class Segment(C.Structure):
     _fields_ = [("point1", Vec2), ("point2", Vec2)]
 
 
+class JointBase(C.Structure):
+    """The first member of every joint def (i2d_joint_base); ids as plain integers."""
+
+    _fields_ = [
+        ("body_a", C.c_uint64),
+        ("body_b", C.c_uint64),
+        ("local_anchor_a", Vec2),
+        ("local_anchor_b", Vec2),
+        ("collide_connected", C.c_bool),
+        ("force_threshold", C.c_float),
+        ("torque_threshold", C.c_float),
+        ("user_data", C.c_void_p),
+    ]
+
+
+def _joint_def(name, fields):
+    """A joint def: the base, the kind's fields (C.c_float unless given), the cookie."""
+    spelled = [(f, C.c_float) if isinstance(f, str) else f for f in fields]
+    return type(name, (C.Structure,), {"_fields_": [("base", JointBase)] + spelled + [("internal_cookie", C.c_uint32)]})
+
+
+_flag = C.c_bool
+
+RevoluteJointDef = _joint_def(
+    "RevoluteJointDef",
+    ["reference_angle", ("enable_limit", _flag), "lower_angle", "upper_angle", ("enable_motor", _flag),
+     "motor_speed", "max_motor_torque", ("enable_spring", _flag), "hertz", "damping_ratio", "target_angle"],
+)
+PrismaticJointDef = _joint_def(
+    "PrismaticJointDef",
+    [("local_axis_a", Vec2), "reference_angle", ("enable_limit", _flag), "lower_translation", "upper_translation",
+     ("enable_motor", _flag), "motor_speed", "max_motor_force", ("enable_spring", _flag), "hertz", "damping_ratio",
+     "target_translation"],
+)
+DistanceJointDef = _joint_def(
+    "DistanceJointDef",
+    ["length", ("enable_limit", _flag), "min_length", "max_length", ("enable_spring", _flag), "hertz",
+     "damping_ratio", ("enable_motor", _flag), "motor_speed", "max_motor_force"],
+)
+WeldJointDef = _joint_def(
+    "WeldJointDef", ["reference_angle", "linear_hertz", "angular_hertz", "linear_damping_ratio", "angular_damping_ratio"]
+)
+WheelJointDef = _joint_def(
+    "WheelJointDef",
+    [("local_axis_a", Vec2), ("enable_spring", _flag), "hertz", "damping_ratio", ("enable_limit", _flag),
+     "lower_translation", "upper_translation", ("enable_motor", _flag), "motor_speed", "max_motor_torque"],
+)
+MotorJointDef = _joint_def(
+    "MotorJointDef", [("linear_offset", Vec2), "angular_offset", "max_force", "max_torque", "correction_factor"]
+)
+MouseJointDef = _joint_def("MouseJointDef", [("target", Vec2), "hertz", "damping_ratio", "max_force"])
+FilterJointDef = _joint_def("FilterJointDef", [])
+
+
+class JointEvent(C.Structure):
+    _fields_ = [("joint", C.c_uint64), ("user_data", C.c_void_p)]
+
+
+class JointEvents(C.Structure):
+    _fields_ = [("events", C.POINTER(JointEvent)), ("count", C.c_int32)]
+
+
+# Joint kind name -> its def struct, in i2d_joint_type order.
+JOINT_DEFS = {
+    "distance": DistanceJointDef,
+    "filter": FilterJointDef,
+    "motor": MotorJointDef,
+    "mouse": MouseJointDef,
+    "prismatic": PrismaticJointDef,
+    "revolute": RevoluteJointDef,
+    "weld": WeldJointDef,
+    "wheel": WheelJointDef,
+}
+
+
 class StructInfo(C.Structure):
     _fields_ = [("name", C.c_char_p), ("size", C.c_int32), ("align", C.c_int32)]
 
@@ -213,4 +290,9 @@ DECLARED = {
     "i2d_polygon": Polygon,
     "i2d_capsule": Capsule,
     "i2d_segment": Segment,
+    "i2d_joint_id": IdStruct,
+    "i2d_joint_base": JointBase,
+    "i2d_joint_event": JointEvent,
+    "i2d_joint_events": JointEvents,
 }
+DECLARED.update({"i2d_%s_joint_def" % kind: cls for kind, cls in JOINT_DEFS.items()})

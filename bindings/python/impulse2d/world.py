@@ -7,7 +7,9 @@ from typing import Any, Callable, Dict, Iterable, List, Optional, Sequence, Tupl
 from ._native import apply_settings, check, check_last, lib, pair, rot, vec2
 from ._structs import AABB, QueryFilter
 from ._library import _OVERLAP_FN
+from . import joint as _joint
 from .body import Body
+from .joint import Joint
 from .shape import Shape
 from .types import (
     BodyMove,
@@ -147,6 +149,23 @@ class World:
         if not body_id:
             check_last()
         return Body(self, body_id)
+
+    # ---- Joints ----------------------------------------------------------------------------
+
+    def create_joint(self, kind: str, body_a: Body, body_b: Body, **settings: Any) -> Joint:
+        """Creates a joint of kind "revolute", "prismatic", "distance", "weld", "wheel",
+        "motor", "mouse" or "filter" between two bodies of this world. Settings are the
+        kind's C def fields (include/impulse2d/joint.h) and the shared local_anchor_a,
+        local_anchor_b, collide_connected, force_threshold and torque_threshold."""
+        return _joint.create(self, kind, body_a, body_b, dict(settings))
+
+    def joint_events(self) -> List[Joint]:
+        """The joints whose reaction force or torque passed its threshold in the last step."""
+        return list(_joint.joint_events(self))
+
+    @property
+    def joint_count(self) -> int:
+        return _joint.joint_count(self)
 
     # ---- Events ----------------------------------------------------------------------------
 
