@@ -19,10 +19,12 @@ file(SIZE ${SVG} size)
 file(READ ${SVG} text)
 # The scene draws 5 circles (4 balls, a disc), about 35 polygons (boxes, walls, ledge, ramp,
 # triangle, pentagon, and dashed start outlines), 2 rounded shapes as <path> (a capsule and a
-# rounded polygon) and 8 polylines (4 ball paths, 3 centres, the disc's rim point).
+# rounded polygon) and 8 polylines (4 ball paths, 3 centres, the disc's rim point). The joint
+# floor adds 36 circles (the car's 2 wheels, the bump, 33 joint dots), 23 polygons (20 planks,
+# 2 posts, the chassis; its floor's 3 boxes) and 13 paths (the ragdoll's 11 capsules and 2 feet).
 set(counts "")
 set(too_few FALSE)
-foreach(kind_min IN ITEMS "circle:5" "polygon:30" "path:2" "polyline:8")
+foreach(kind_min IN ITEMS "circle:41" "polygon:56" "path:15" "polyline:8")
   string(REPLACE ":" ";" kind_min "${kind_min}")
   list(GET kind_min 0 kind)
   list(GET kind_min 1 minimum)
@@ -31,6 +33,13 @@ foreach(kind_min IN ITEMS "circle:5" "polygon:30" "path:2" "polyline:8")
   string(APPEND counts " ${count} <${kind}>")
   if(count LESS minimum)
     set(too_few TRUE)
+  endif()
+endforeach()
+# The joint floor's parts are labelled.
+foreach(label IN ITEMS "chain bridge" "car on wheel joints")
+  if(NOT text MATCHES "${label}")
+    set(too_few TRUE)
+    string(APPEND counts " (no \"${label}\" label)")
   endif()
 endforeach()
 if(size LESS 10000 OR NOT text MATCHES "<svg " OR NOT text MATCHES "</svg>[ \n]*$" OR too_few)
