@@ -35,8 +35,8 @@ struct JointEvent {
 struct IdEncoder {
     uint64_t (*body)(uint64_t tag, int32_t index, uint16_t generation) = nullptr;
     uint64_t (*shape)(uint64_t tag, int32_t index, uint16_t generation) = nullptr;
-    uint64_t (*joint)(uint64_t tag, int32_t index, uint16_t generation) = nullptr;
     uint64_t tag = 0;
+    uint64_t (*joint)(uint64_t tag, int32_t index, uint16_t generation) = nullptr;
 
     uint64_t body_id(int32_t index, uint16_t generation) const {
         return body ? body(tag, index, generation) : (uint64_t(generation) << 32) | uint32_t(index);

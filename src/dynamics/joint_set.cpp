@@ -2,6 +2,7 @@
 // JointSet: edges, gathering, the collision filter, measures.
 #include "dynamics/joint_set.hpp"
 
+#include "core/assert.hpp"
 #include "math/math.hpp"
 
 namespace i2d {
@@ -137,6 +138,43 @@ JointMeasures JointSet::measure(int32_t joint) const {
         m.speed = dot(cross(a.angular_velocity, axis), separation) + dot(axis, vb - va);
     }
     return m;
+}
+
+// Every body's list holds exactly its joints' edges, and a joint links islands exactly
+// when it should: between two dynamic bodies, which then share an island.
+void JointSet::validate() const {
+#if defined(I2D_VALIDATE)
+    int32_t edges_seen = 0;
+    for (int32_t i = 0; i < bodies_.capacity(); ++i) {
+        if (!bodies_.is_live(i)) {
+            continue;
+        }
+        int32_t count = 0, prev_key = null_index;
+        for (int32_t key = bodies_[i].head_joint_key; key != null_index;) {
+            const JointEdge& edge = joints_[key >> 1].edges[key & 1];
+            I2D_ASSERT(joints_.is_live(key >> 1) && edge.body == i && edge.prev_key == prev_key);
+            I2D_ASSERT(count <= bodies_[i].joint_count);  // no cycle
+            prev_key = key;
+            key = edge.next_key;
+            ++count;
+        }
+        I2D_ASSERT(count == bodies_[i].joint_count);
+        edges_seen += count;
+    }
+    I2D_ASSERT(edges_seen == 2 * joints_.count());
+    for (int32_t j = 0; j < joints_.capacity(); ++j) {
+        if (!joints_.is_live(j)) {
+            continue;
+        }
+        const Joint& joint = joints_[j];
+        const Body& a = bodies_[joint.def.body_a];
+        const Body& b = bodies_[joint.def.body_b];
+        const bool should_link =
+            links_islands(joint) && a.type == BodyType::dynamic && b.type == BodyType::dynamic;
+        I2D_ASSERT(joint.island_link == should_link);
+        I2D_ASSERT(!should_link || a.island == b.island);
+    }
+#endif
 }
 
 }  // namespace i2d

@@ -68,6 +68,9 @@ public:
 
     int32_t count() const { return joints_.count(); }
 
+    /// Aborts on a broken list or island link; does nothing unless built with I2D_VALIDATE.
+    void validate() const;
+
 private:
     void link_edge(int32_t joint, int32_t side);
     void unlink_edge(int32_t joint, int32_t side);

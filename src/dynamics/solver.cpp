@@ -2,6 +2,7 @@
 // The soft step: gather, colour, substep, write back.
 #include "dynamics/solver.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "dynamics/constants.hpp"
@@ -55,14 +56,17 @@ void Solver::step(float time_step, int32_t substep_count) {
     rest_islands_.resize(std::size_t(awake));
     rest_times_.resize(std::size_t(awake));
     event_slots_.resize(std::size_t(awake));
-    color_contacts();
+    color_constraints();
     contact_solver_.lay_out(contact_layout());
+    joint_solver_.lay_out(ordered_joints_.data(), int32_t(ordered_joints_.size()));
+    lay_out_color_runs();
     if (links_.settings.enable_sleep) {
         links_.islands.begin_rest_times();
     }
     parallel_ = links_.tasks.worker_count() > 1 && awake >= parallel_min_bodies;
     build_stages(substep_count);
     runner_.run(links_.tasks, stages_, parallel_);
+    joint_solver_.report_breaking(links_.joints, links_.events.ids, links_.events.current.joint_events);
     finish_bodies();
 }
 
@@ -79,13 +83,50 @@ void Solver::add_stage(Stage::Fn fn, int32_t item_count, int32_t min_items_per_b
     stages_.push_back(stage);
 }
 
-// One stage per colour, in solve order; the overflow colour whole, on one worker.
-void Solver::add_contact_stages(Stage::Fn fn, int32_t pass) {
+// One stage per colour, in solve order, over its joints and then its contacts; the
+// overflow colour whole, on one worker. Restitution passes leave the joints out.
+void Solver::add_color_stages(Stage::Fn fn, int32_t pass, bool with_joints) {
     const int32_t min_blocks = (contacts_per_work_block + contact_solver_.kernels().width - 1) /
                                contact_solver_.kernels().width;
-    for (int32_t run = 0; run < contact_solver_.run_count(); ++run) {
-        const int32_t items = contact_solver_.run_items(run);
-        add_stage(fn, items, contact_solver_.run_is_sequential(run) ? items : min_blocks, run, pass);
+    for (int32_t run = 0; run < int32_t(color_runs_.size()); ++run) {
+        const ColorRun& r = color_runs_[std::size_t(run)];
+        const int32_t joints = with_joints ? r.joint_count : 0;
+        const int32_t items = joints + r.contact_items;
+        if (items == 0) {
+            continue;
+        }
+        const int32_t min_items = r.sequential ? items : (r.contact_items > 0 ? min_blocks : joints_per_work_block);
+        add_stage(fn, items, min_items, run, pass);
+    }
+}
+
+Solver::RunSplit Solver::split_run(int32_t run, int32_t begin, int32_t end) const {
+    const ColorRun& r = color_runs_[std::size_t(run)];
+    const int32_t joints = r.joint_count;
+    return {r.joint_begin + std::min(begin, joints), r.joint_begin + std::min(end, joints),
+            std::max(begin, joints) - joints, std::max(end, joints) - joints};
+}
+
+// The colours that have joints or contacts, in solve order: the contact solver's runs
+// are its colours that have contacts, in the same order, its overflow run last.
+void Solver::lay_out_color_runs() {
+    color_runs_.clear();
+    int32_t contact_run = 0;
+    for (int32_t color = 0; color < ConstraintColors::count; ++color) {
+        const int32_t joints = joint_color_starts_[std::size_t(color) + 1] - joint_color_starts_[std::size_t(color)];
+        const int32_t contacts = color_starts_[std::size_t(color) + 1] - color_starts_[std::size_t(color)];
+        if (joints == 0 && contacts == 0) {
+            continue;
+        }
+        ColorRun r;
+        r.joint_begin = joint_color_starts_[std::size_t(color)];
+        r.joint_count = joints;
+        r.sequential = color == ConstraintColors::overflow;
+        if (contacts > 0) {
+            r.contact_run = contact_run++;
+            r.contact_items = contact_solver_.run_items(r.contact_run);
+        }
+        color_runs_.push_back(r);
     }
 }
 
@@ -116,6 +157,8 @@ void Solver::build_stages(int32_t substep_count) {
                                                              fixed_soft.impulse_scale}};
         }
     }
+    const float joint_hertz = min_of(s.joint_hertz, 0.25f / h);
+    joint_solver_.set_step(JointStep{h, inv_h, make_softness(joint_hertz, s.joint_damping_ratio, h)});
     if (!stages_changed(substep_count)) {
         return;  // a steady scene: the same stages over the same counts as last step
     }
@@ -124,23 +167,26 @@ void Solver::build_stages(int32_t substep_count) {
                                contact_solver_.kernels().width;
     stages_.clear();
     add_stage(&Solver::gather_bodies, bodies, bodies_per_work_block);
+    add_stage(&Solver::prepare_joints, joint_solver_.count(), joints_per_work_block);
     add_stage(&Solver::pack_contacts, contact_solver_.block_count(), min_blocks);
     add_stage(&Solver::pack_overflow, contact_solver_.overflow_count(), contacts_per_work_block);
     for (int32_t i = 0; i < substep_count; ++i) {
         add_stage(&Solver::integrate_velocities, bodies, bodies_per_work_block);
-        add_contact_stages(&Solver::warm_start, 0);
-        add_contact_stages(&Solver::solve, 2 * i);
+        add_color_stages(&Solver::warm_start, 0, true);
+        add_color_stages(&Solver::solve, 2 * i, true);
         add_stage(&Solver::integrate_positions, bodies, bodies_per_work_block);
-        add_contact_stages(&Solver::solve, 2 * i + 1);
+        add_color_stages(&Solver::solve, 2 * i + 1, true);
     }
-    add_contact_stages(&Solver::solve, 2 * substep_count - 1);
+    add_color_stages(&Solver::solve, 2 * substep_count - 1, true);
+
     add_stage(&Solver::check_bounce, 1, 1);
     constexpr int32_t restitution_iterations = 4;
     for (int32_t iteration = 0; iteration < restitution_iterations; ++iteration) {
-        add_contact_stages(&Solver::restitution, 0);
+        add_color_stages(&Solver::restitution, 0, false);
     }
     add_stage(&Solver::store_impulses, contact_solver_.block_count(), min_blocks);
     add_stage(&Solver::store_overflow, contact_solver_.overflow_count() > 0 ? 1 : 0, 1);
+    add_stage(&Solver::store_joints, joint_solver_.count(), joints_per_work_block);
     add_stage(&Solver::finalize_bodies, bodies, bodies_per_work_block);
     add_stage(&Solver::number_move_events, 1, 1);
     add_stage(&Solver::write_move_events, bodies, bodies_per_work_block);
@@ -155,8 +201,10 @@ bool Solver::stages_changed(int32_t substep_count) {
     stage_key_scratch_.push_back(int32_t(states_.size()));
     stage_key_scratch_.push_back(contact_solver_.block_count());
     stage_key_scratch_.push_back(contact_solver_.overflow_count());
-    for (int32_t run = 0; run < contact_solver_.run_count(); ++run) {
-        stage_key_scratch_.push_back(contact_solver_.run_items(run));
+    stage_key_scratch_.push_back(joint_solver_.count());
+    for (const ColorRun& r : color_runs_) {
+        stage_key_scratch_.push_back(r.joint_count);
+        stage_key_scratch_.push_back(r.contact_items);
     }
     if (stage_key_scratch_ == stage_key_) {
         return false;
@@ -187,6 +235,16 @@ void Solver::gather_bodies(void* solver, const Stage&, int32_t begin, int32_t en
     }
 }
 
+void Solver::prepare_joints(void* solver, const Stage&, int32_t begin, int32_t end, int32_t) {
+    Solver& self = *static_cast<Solver*>(solver);
+    self.joint_solver_.prepare(self.links_.joints, self.links_.bodies, int32_t(self.states_.size()) - 1, begin, end);
+}
+
+void Solver::store_joints(void* solver, const Stage&, int32_t begin, int32_t end, int32_t) {
+    Solver& self = *static_cast<Solver*>(solver);
+    self.joint_solver_.store(self.links_.joints, self.states_.data(), begin, end);
+}
+
 void Solver::pack_contacts(void* solver, const Stage&, int32_t begin, int32_t end, int32_t) {
     Solver& self = *static_cast<Solver*>(solver);
     self.contact_solver_.pack_blocks(self.contact_layout(), begin, end);
@@ -199,12 +257,23 @@ void Solver::pack_overflow(void* solver, const Stage&, int32_t begin, int32_t en
 
 void Solver::warm_start(void* solver, const Stage& stage, int32_t begin, int32_t end, int32_t) {
     Solver& self = *static_cast<Solver*>(solver);
-    self.contact_solver_.warm_start(stage.arg0, begin, end, self.states_.data());
+    const RunSplit split = self.split_run(stage.arg0, begin, end);
+    self.joint_solver_.warm_start(split.joint_begin, split.joint_end, self.states_.data());
+    if (split.contact_begin < split.contact_end) {
+        const int32_t run = self.color_runs_[std::size_t(stage.arg0)].contact_run;
+        self.contact_solver_.warm_start(run, split.contact_begin, split.contact_end, self.states_.data());
+    }
 }
 
 void Solver::solve(void* solver, const Stage& stage, int32_t begin, int32_t end, int32_t) {
     Solver& self = *static_cast<Solver*>(solver);
-    self.contact_solver_.solve(stage.arg0, begin, end, self.states_.data(), self.passes_[std::size_t(stage.arg1)]);
+    const SolvePass& pass = self.passes_[std::size_t(stage.arg1)];
+    const RunSplit split = self.split_run(stage.arg0, begin, end);
+    self.joint_solver_.solve(split.joint_begin, split.joint_end, self.states_.data(), pass.use_bias);
+    if (split.contact_begin < split.contact_end) {
+        const int32_t run = self.color_runs_[std::size_t(stage.arg0)].contact_run;
+        self.contact_solver_.solve(run, split.contact_begin, split.contact_end, self.states_.data(), pass);
+    }
 }
 
 void Solver::check_bounce(void* solver, const Stage&, int32_t, int32_t, int32_t) {
@@ -216,7 +285,8 @@ void Solver::check_bounce(void* solver, const Stage&, int32_t, int32_t, int32_t)
 void Solver::restitution(void* solver, const Stage& stage, int32_t begin, int32_t end, int32_t) {
     Solver& self = *static_cast<Solver*>(solver);
     if (self.bounce_) {
-        self.contact_solver_.apply_restitution(stage.arg0, begin, end, self.states_.data(),
+        const int32_t run = self.color_runs_[std::size_t(stage.arg0)].contact_run;
+        self.contact_solver_.apply_restitution(run, begin, end, self.states_.data(),
                                                self.links_.settings.restitution_threshold);
     }
 }
@@ -233,6 +303,71 @@ void Solver::store_overflow(void* solver, const Stage&, int32_t, int32_t, int32_
                                         self.links_.settings.contact_slop);
 }
 
+// Joints and contacts share one colouring, so that a colour's joints and contacts are
+// independent of one another too; kept while nothing it depends on changed.
+void Solver::color_constraints() {
+    links_.joint_set.gather_awake(links_.islands.awake_bodies(), awake_joints_);
+    const bool joints_differ = joints_changed();
+    const uint64_t version = links_.contacts.layout_version();
+    const int32_t awake_bodies = int32_t(links_.islands.awake_bodies().size());
+    if (colored_ && version == colored_version_ && awake_bodies == colored_body_count_ && !joints_differ) {
+        return;  // nothing the colours depend on changed: a resting pile keeps them
+    }
+    colored_ = true;
+    colored_version_ = version;
+    colored_body_count_ = awake_bodies;
+    colored_joint_key_.swap(joint_key_);
+    colors_.reset(awake_bodies);
+    color_joints();
+    color_contacts();
+}
+
+// What a joint's colour depends on: which joint, and the states it moves (-1: none).
+bool Solver::joints_changed() {
+    joint_key_.clear();
+    for (const int32_t joint : awake_joints_) {
+        const JointDef& d = links_.joints[joint].def;
+        const Body& a = links_.bodies[d.body_a];
+        const Body& b = links_.bodies[d.body_b];
+        const bool a_moves = d.type != JointType::mouse && a.type == BodyType::dynamic;
+        const bool b_moves = b.type == BodyType::dynamic;
+        joint_key_.push_back(joint);
+        joint_key_.push_back(a_moves ? a.awake_index : null_index);
+        joint_key_.push_back(b_moves ? b.awake_index : null_index);
+    }
+    return joint_key_ != colored_joint_key_;
+}
+
+// The joints' colours, before the contacts take theirs, laid out colour by colour in
+// gathering order. A joint that moves no body (both sides fixed) is not solved.
+void Solver::color_joints() {
+    const std::vector<int32_t>& key = colored_joint_key_;
+    const std::size_t count = key.size() / 3;
+    joint_colors_.resize(count);
+    joint_color_starts_.assign(ConstraintColors::count + 1, 0);
+    for (std::size_t k = 0; k < count; ++k) {
+        const int32_t a = key[3 * k + 1], b = key[3 * k + 2];
+        int32_t color = -1;
+        if (a != null_index || b != null_index) {
+            color = colors_.assign(a != null_index ? a : ConstraintColors::null_state,
+                                   b != null_index ? b : ConstraintColors::null_state);
+            ++joint_color_starts_[std::size_t(color) + 1];
+        }
+        joint_colors_[k] = int8_t(color);
+    }
+    for (int32_t color = 0; color < ConstraintColors::count; ++color) {
+        joint_color_starts_[std::size_t(color) + 1] += joint_color_starts_[std::size_t(color)];
+    }
+    ordered_joints_.resize(std::size_t(joint_color_starts_[ConstraintColors::count]));
+    scratch_starts_.assign(joint_color_starts_.begin(), joint_color_starts_.end() - 1);
+    for (std::size_t k = 0; k < count; ++k) {
+        const int32_t color = joint_colors_[k];
+        if (color >= 0) {
+            ordered_joints_[std::size_t(scratch_starts_[std::size_t(color)]++)] = key[3 * k];
+        }
+    }
+}
+
 // A colour for every awake contact the solver will see, then the contacts laid out
 // colour by colour (a counting sort that keeps awake order), the order they are solved
 // in. Within a colour, whose contacts are independent, two-point contacts come first,
@@ -240,17 +375,8 @@ void Solver::store_overflow(void* solver, const Stage&, int32_t, int32_t, int32_
 // overflow colour is solved in sequence and keeps awake order. A body the contact
 // cannot move (static, kinematic, asleep) takes no colour slot.
 void Solver::color_contacts() {
-    const uint64_t version = links_.contacts.layout_version();
-    const int32_t awake_bodies = int32_t(links_.islands.awake_bodies().size());
-    if (colored_ && version == colored_version_ && awake_bodies == colored_body_count_) {
-        return;  // nothing the colours depend on changed: a resting pile keeps them
-    }
-    colored_ = true;
-    colored_version_ = version;
-    colored_body_count_ = awake_bodies;
     const std::vector<int32_t>& awake = links_.contacts.awake();
     const Pool<Contact>& contacts = links_.contacts.pool();
-    colors_.reset(awake_bodies);
     contact_colors_.resize(awake.size());
     color_starts_.assign(ConstraintColors::count + 1, 0);
     for (std::size_t k = 0; k < awake.size(); ++k) {
@@ -417,8 +543,8 @@ void Solver::finish_bodies() {
     }
 }
 
-// A moving kinematic body keeps what it touches awake: the islands it touches rest no
-// longer than it does.
+// A moving kinematic body keeps what it touches or holds by a joint awake: those islands
+// rest no longer than it does.
 void Solver::share_kinematic_rest(int32_t body) {
     const float rest = links_.bodies[body].sleep_time;
     const Pool<Contact>& contacts = links_.contacts.pool();
@@ -427,6 +553,12 @@ void Solver::share_kinematic_rest(int32_t body) {
         const Body& o = links_.bodies[other];
         if ((c.flags & contact_sensor) == 0 && c.point_count > 0 && o.type == BodyType::dynamic &&
             o.awake_index != null_index) {
+            links_.islands.note_rest_time(other, rest);
+        }
+    });
+    links_.joint_set.visit_joints(body, [&](int32_t, int32_t other) {
+        const Body& o = links_.bodies[other];
+        if (o.type == BodyType::dynamic && o.awake_index != null_index) {
             links_.islands.note_rest_time(other, rest);
         }
     });

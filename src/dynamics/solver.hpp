@@ -1,13 +1,14 @@
 // SPDX-License-Identifier: MIT
-// Solver: the soft step over the awake bodies and their contacts, from gathering the
-// bodies' states to writing them back.
+// Solver: the soft step over the awake bodies, their joints and their contacts, from
+// gathering the bodies' states to writing them back.
 //
 // Design note: the substeps touch only dense arrays the solver owns, indexed by a body's
 // place in the awake list: the states (velocities and motion since the step began) and
 // the motions (what integration needs), plus one shared "fixed" state at the end that
-// stands in for every static or sleeping body. Contacts become constraints laid out
-// colour by colour (constraint_colors.hpp), the order they are solved in, and kept
-// while nothing they depend on changes. The stage loop is Box2D v3's: per substep
+// stands in for every static or sleeping body. Joints and contacts are coloured together
+// (constraint_colors.hpp, joints first), laid out colour by colour, the order they are
+// solved in, and kept while nothing they depend on changes; within a colour the joints
+// come before the contacts, and a colour's stage covers both. The stage loop is Box2D v3's: per substep
 // integrate velocities, warm start, solve with push-out, integrate positions, relax;
 // then one more relax, restitution, impulses back to the contacts, and the bodies' final
 // pose, bounds, rest time and move event in one pass over them.
@@ -33,6 +34,8 @@
 #include "dynamics/constraint_colors.hpp"
 #include "dynamics/contact_solver.hpp"
 #include "dynamics/events.hpp"
+#include "dynamics/joint_set.hpp"
+#include "dynamics/joint_solver.hpp"
 #include "dynamics/shape.hpp"
 #include "dynamics/simd_path.hpp"
 #include "dynamics/world_def.hpp"
@@ -47,6 +50,8 @@ struct SolverLinks {
     const WorldDef& settings;
     Pool<Body>& bodies;
     Pool<Shape>& shapes;
+    Pool<Joint>& joints;
+    const JointSet& joint_set;
     ContactSet& contacts;
     Islands& islands;
     BroadPhase& broad_phase;
@@ -69,17 +74,28 @@ public:
     void step(float time_step, int32_t substep_count);
 
 private:
+    void color_constraints();
+    bool joints_changed();
+    void color_joints();
     void color_contacts();
+    void lay_out_color_runs();
     void build_stages(int32_t substep_count);
     bool stages_changed(int32_t substep_count);
     void add_stage(Stage::Fn fn, int32_t item_count, int32_t min_items_per_block, int32_t arg0 = 0,
                    int32_t arg1 = 0);
-    void add_contact_stages(Stage::Fn fn, int32_t pass);
+    void add_color_stages(Stage::Fn fn, int32_t pass, bool with_joints);
     ContactLayout contact_layout() const;
     void finish_bodies();
+    // Items [begin, end) of a colour run: its joints first, then its contact items.
+    struct RunSplit {
+        int32_t joint_begin, joint_end, contact_begin, contact_end;
+    };
+    RunSplit split_run(int32_t run, int32_t begin, int32_t end) const;
 
     // The stages; `begin` and `end` index the stage's items.
     static void gather_bodies(void* solver, const Stage& stage, int32_t begin, int32_t end, int32_t worker);
+    static void prepare_joints(void* solver, const Stage& stage, int32_t begin, int32_t end, int32_t worker);
+    static void store_joints(void* solver, const Stage& stage, int32_t begin, int32_t end, int32_t worker);
     static void pack_contacts(void* solver, const Stage& stage, int32_t begin, int32_t end, int32_t worker);
     static void pack_overflow(void* solver, const Stage& stage, int32_t begin, int32_t end, int32_t worker);
     static void integrate_velocities(void* solver, const Stage& stage, int32_t begin, int32_t end, int32_t worker);
@@ -99,7 +115,23 @@ private:
     SolverLinks links_;
     SimdPath simd_path_;
     ContactSolver contact_solver_;
+    JointSolver joint_solver_;
     ConstraintColors colors_;
+    // The joints to solve this step, and per joint what its colour depends on (index and
+    // the two states it moves, or -1), as last coloured.
+    std::vector<int32_t> awake_joints_;
+    std::vector<int32_t> joint_key_, colored_joint_key_;
+    std::vector<int8_t> joint_colors_;  // per awake joint, or -1 when it moves nothing
+    std::vector<int32_t> joint_color_starts_;  // per colour: its first slot in ordered_joints_
+    std::vector<int32_t> ordered_joints_;
+    // Per colour that has joints or contacts, in solve order, the overflow colour last.
+    struct ColorRun {
+        int32_t joint_begin = 0, joint_count = 0;  // in ordered_joints_
+        int32_t contact_run = -1;                  // the contact solver's run, or -1
+        int32_t contact_items = 0;
+        bool sequential = false;
+    };
+    std::vector<ColorRun> color_runs_;
     std::vector<int8_t> contact_colors_;  // per awake contact, or -1 when it is not solved
     std::vector<int32_t> color_starts_;   // per colour: its first slot in ordered_contacts_
     std::vector<int32_t> ordered_contacts_;  // the contacts to solve, colour by colour

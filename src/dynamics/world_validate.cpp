@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// World::validate: cross-checks bodies, shapes, contacts, islands and their links
+// World::validate: cross-checks bodies, shapes, contacts, joints, islands and their links
 // (I2D_VALIDATE).
 #include <cmath>
 
@@ -63,6 +63,7 @@ void World::validate() const {
         I2D_ASSERT(broad_phase_.tree(proxy_kind(s.proxy_key)).user_value(proxy_id(s.proxy_key)) == i);
     }
     contacts_.validate();
+    joints_.validate();
     islands_.validate();
     for (int32_t k = 0; k < int32_t(ProxyKind::count); ++k) {
         broad_phase_.tree(ProxyKind(k)).validate();

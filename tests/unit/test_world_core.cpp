@@ -4,37 +4,13 @@
 #include <cmath>
 
 #include "check.h"
-#include "collision/hull.hpp"
-#include "dynamics/world.hpp"
+#include "world_fixture.hpp"
 
 using namespace i2d;
 
-namespace {
-
-int32_t add_body(World& world, BodyType type, Vec2 position) {
-    BodyDef def;
-    def.type = type;
-    def.position = position;
-    return world.create_body(def);
-}
-
-int32_t add_box(World& world, int32_t body, float hx, float hy, float density = 1.0f) {
-    Geometry g;
-    g.type = ShapeType::polygon;
-    g.polygon = i2d::make_box(hx, hy);
-    ShapeDef def;
-    def.density = density;
-    return world.create_shape(body, def, g);
-}
-
-int32_t add_circle(World& world, int32_t body, Vec2 center, float radius) {
-    Geometry g;
-    g.type = ShapeType::circle;
-    g.circle = {center, radius};
-    return world.create_shape(body, ShapeDef{}, g);
-}
-
-}  // namespace
+using unit::add_body;
+using unit::add_box;
+using unit::add_circle;
 
 I2D_TEST(unit_world_mass_and_center_follow_shapes) {
     World world{WorldDef{}};

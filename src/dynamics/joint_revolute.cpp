@@ -1,0 +1,53 @@
+// SPDX-License-Identifier: MIT
+// Revolute joint: the anchors held together (a rigid 2D point row), plus a spring toward
+// a target angle, a motor and a limit on the relative angle (one angular row each).
+#include "dynamics/joint_constraint.hpp"
+
+namespace i2d {
+
+void prepare_revolute(JointConstraint& c, const JointStep& step) {
+    const RevoluteSettings& s = c.def->revolute;
+    c.axial_mass = inverse_or_zero(c.inv_inertia_a + c.inv_inertia_b);
+    c.spring = s.enable_spring ? make_softness(s.hertz, s.damping_ratio, step.h) : Softness{};
+}
+
+void warm_start_revolute(const JointConstraint& c, JointBodies& j) {
+    const JointImpulses& p = c.impulses;
+    const Vec2 ra = rotate(j.dqa, c.anchor_a), rb = rotate(j.dqb, c.anchor_b);
+    apply_linear(c, j, ra, rb, p.linear);
+    apply_angular(c, j, p.spring + p.motor + p.lower - p.upper);
+}
+
+void solve_revolute(JointConstraint& c, JointBodies& j, const JointStep& step, bool use_bias) {
+    const RevoluteSettings& s = c.def->revolute;
+    JointImpulses& p = c.impulses;
+    const bool turns = c.axial_mass > 0.0f;
+    if (s.enable_spring && s.hertz > 0.0f && turns) {
+        const float error = unwind_angle(current_angle(c, j) - s.target_angle);
+        apply_angular(c, j, spring_impulse(error, j.wb - j.wa, c.axial_mass, c.spring, p.spring));
+    }
+    if (s.enable_motor && turns) {
+        const float max_impulse = step.h * s.max_motor_torque;
+        apply_angular(c, j, motor_impulse(j.wb - j.wa, s.motor_speed, c.axial_mass, max_impulse, p.motor));
+    }
+    if (s.enable_limit && turns) {
+        const float angle = current_angle(c, j);
+        apply_angular(c, j, limit_impulse(angle - s.lower_angle, j.wb - j.wa, c.axial_mass, p.lower, step, use_bias));
+        apply_angular(c, j, -limit_impulse(s.upper_angle - angle, j.wa - j.wb, c.axial_mass, p.upper, step, use_bias));
+    }
+    // The point row last: it is the one that must hold.
+    const Vec2 ra = rotate(j.dqa, c.anchor_a), rb = rotate(j.dqb, c.anchor_b);
+    Vec2 bias;
+    float mass_scale = 1.0f, impulse_scale = 0.0f;
+    if (use_bias) {
+        bias = step.rigid.bias_rate * current_separation(c, j, ra, rb);
+        mass_scale = step.rigid.mass_scale;
+        impulse_scale = step.rigid.impulse_scale;
+    }
+    const Vec2 b = solve22(point_mass_matrix(c, ra, rb), relative_velocity(j, ra, rb) + bias);
+    const Vec2 impulse = -mass_scale * b - impulse_scale * p.linear;
+    p.linear += impulse;
+    apply_linear(c, j, ra, rb, impulse);
+}
+
+}  // namespace i2d

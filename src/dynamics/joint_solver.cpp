@@ -1,0 +1,144 @@
+// SPDX-License-Identifier: MIT
+// JointSolver: the common part of preparing a joint, and the dispatch to its kind.
+#include "dynamics/joint_solver.hpp"
+
+#include "math/math.hpp"
+
+namespace i2d {
+
+namespace {
+
+// Where a kind's anchors sit and what angle counts as zero. The motor joint aims B's
+// origin at its offset point of A; the mouse joint's A plays no part.
+struct JointFrame {
+    Vec2 local_anchor_a, local_anchor_b;
+    float reference_angle = 0.0f;
+};
+
+JointFrame frame_of(const JointDef& d) {
+    switch (d.type) {
+        case JointType::revolute: return {d.local_anchor_a, d.local_anchor_b, d.revolute.reference_angle};
+        case JointType::prismatic: return {d.local_anchor_a, d.local_anchor_b, d.prismatic.reference_angle};
+        case JointType::weld: return {d.local_anchor_a, d.local_anchor_b, d.weld.reference_angle};
+        case JointType::motor: return {d.motor.linear_offset, Vec2{}, d.motor.angular_offset};
+        default: return {d.local_anchor_a, d.local_anchor_b, 0.0f};
+    }
+}
+
+// A side the joint can move: a dynamic body that is awake.
+bool can_move(const Body& b) { return b.type == BodyType::dynamic && b.awake_index != null_index; }
+
+}  // namespace
+
+void JointSolver::lay_out(const int32_t* ordered, int32_t count) {
+    constraints_.resize(std::size_t(count));
+    for (int32_t k = 0; k < count; ++k) {
+        constraints_[std::size_t(k)].joint = ordered[k];
+    }
+}
+
+void JointSolver::prepare_one(JointConstraint& c, const Joint& joint, const Pool<Body>& bodies,
+                              int32_t fixed_state) const {
+    const JointDef& d = joint.def;
+    const Body& a = bodies[d.body_a];
+    const Body& b = bodies[d.body_b];
+    const bool mouse = d.type == JointType::mouse;
+    c.def = &d;
+    c.moves_a = !mouse && can_move(a);
+    c.moves_b = can_move(b);
+    // Kinematic bodies are read from their own state (they move); static and sleeping
+    // ones, and the mouse joint's A, from the fixed one.
+    c.state_a = !mouse && a.awake_index != null_index ? a.awake_index : fixed_state;
+    c.state_b = b.awake_index != null_index ? b.awake_index : fixed_state;
+    c.inv_mass_a = c.moves_a ? a.inv_mass : 0.0f;
+    c.inv_inertia_a = c.moves_a ? a.inv_inertia : 0.0f;
+    c.inv_mass_b = c.moves_b ? b.inv_mass : 0.0f;
+    c.inv_inertia_b = c.moves_b ? b.inv_inertia : 0.0f;
+    const JointFrame f = frame_of(d);
+    c.anchor_a = mouse ? Vec2{} : rotate(a.transform.q, f.local_anchor_a - a.local_center);
+    c.anchor_b = rotate(b.transform.q, f.local_anchor_b - b.local_center);
+    c.delta_center = b.center - (mouse ? d.mouse.target : a.center);
+    c.delta_angle = unwind_angle(get_angle(inv_mul_rot(a.transform.q, b.transform.q)) - f.reference_angle);
+    const Vec2 local_axis = d.type == JointType::prismatic ? d.prismatic.local_axis_a : d.wheel.local_axis_a;
+    c.axis = rotate(a.transform.q, local_axis);
+    c.impulses = joint.impulses;
+    switch (d.type) {
+        case JointType::revolute: prepare_revolute(c, step_); break;
+        case JointType::prismatic: prepare_prismatic(c, step_); break;
+        case JointType::distance: prepare_distance(c, step_); break;
+        case JointType::weld: prepare_weld(c, step_); break;
+        case JointType::wheel: prepare_wheel(c, step_); break;
+        case JointType::motor: prepare_motor(c, step_); break;
+        case JointType::mouse: prepare_mouse(c, step_); break;
+        default: break;
+    }
+}
+
+void JointSolver::prepare(const Pool<Joint>& joints, const Pool<Body>& bodies, int32_t fixed_state, int32_t begin,
+                          int32_t end) {
+    for (int32_t k = begin; k < end; ++k) {
+        JointConstraint& c = constraints_[std::size_t(k)];
+        prepare_one(c, joints[c.joint], bodies, fixed_state);
+    }
+}
+
+void JointSolver::warm_start(int32_t begin, int32_t end, BodyState* states) {
+    for (int32_t k = begin; k < end; ++k) {
+        const JointConstraint& c = constraints_[std::size_t(k)];
+        JointBodies j = load_bodies(c, states);
+        switch (c.def->type) {
+            case JointType::revolute: warm_start_revolute(c, j); break;
+            case JointType::prismatic: warm_start_prismatic(c, j); break;
+            case JointType::distance: warm_start_distance(c, j); break;
+            case JointType::weld: warm_start_weld(c, j); break;
+            case JointType::wheel: warm_start_wheel(c, j); break;
+            case JointType::motor: warm_start_motor(c, j); break;
+            case JointType::mouse: warm_start_mouse(c, j); break;
+            default: break;
+        }
+        store_bodies(c, j, states);
+    }
+}
+
+void JointSolver::solve(int32_t begin, int32_t end, BodyState* states, bool use_bias) {
+    for (int32_t k = begin; k < end; ++k) {
+        JointConstraint& c = constraints_[std::size_t(k)];
+        JointBodies j = load_bodies(c, states);
+        switch (c.def->type) {
+            case JointType::revolute: solve_revolute(c, j, step_, use_bias); break;
+            case JointType::prismatic: solve_prismatic(c, j, step_, use_bias); break;
+            case JointType::distance: solve_distance(c, j, step_, use_bias); break;
+            case JointType::weld: solve_weld(c, j, step_, use_bias); break;
+            case JointType::wheel: solve_wheel(c, j, step_, use_bias); break;
+            case JointType::motor: solve_motor(c, j, step_, use_bias); break;
+            case JointType::mouse: solve_mouse(c, j, step_, use_bias); break;
+            default: break;
+        }
+        store_bodies(c, j, states);
+    }
+}
+
+void JointSolver::store(Pool<Joint>& joints, const BodyState* states, int32_t begin, int32_t end) const {
+    for (int32_t k = begin; k < end; ++k) {
+        const JointConstraint& c = constraints_[std::size_t(k)];
+        Joint& joint = joints[c.joint];
+        joint.impulses = c.impulses;
+        const JointReaction r = joint_reaction(c, load_bodies(c, states), step_.inv_h);
+        joint.reaction_force = r.force;
+        joint.reaction_torque = r.torque;
+        joint.motor_output = r.motor;
+    }
+}
+
+void JointSolver::report_breaking(const Pool<Joint>& joints, const IdEncoder& ids,
+                                  std::vector<JointEvent>& out) const {
+    for (const JointConstraint& c : constraints_) {
+        const Joint& joint = joints[c.joint];
+        const JointDef& d = joint.def;
+        if (length(joint.reaction_force) > d.force_threshold || std::fabs(joint.reaction_torque) > d.torque_threshold) {
+            out.push_back({ids.joint_id(c.joint, joints.generation(c.joint)), d.user_data});
+        }
+    }
+}
+
+}  // namespace i2d

@@ -1,0 +1,48 @@
+// SPDX-License-Identifier: MIT
+// JointSolver: the step's joints, laid out in the colours' order, and the solver passes
+// over ranges of them (prepare, warm start, solve, store).
+//
+// Design note: like the contact solver, its work comes in ranges that workers share
+// (stage_runner.hpp): the joints of one colour share no body the solver moves, so any
+// split of a colour's range gives the same bits; the overflow colour's joints are done
+// in order on one worker. Each joint is a JointConstraint (joint_constraint.hpp), solved
+// by its kind's functions through a switch.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "core/pool.hpp"
+#include "dynamics/body.hpp"
+#include "dynamics/body_state.hpp"
+#include "dynamics/events.hpp"
+#include "dynamics/joint.hpp"
+#include "dynamics/joint_constraint.hpp"
+
+namespace i2d {
+
+class JointSolver {
+public:
+    /// Takes the joints to solve, in solve order (one thread).
+    void lay_out(const int32_t* ordered, int32_t count);
+    int32_t count() const { return int32_t(constraints_.size()); }
+    void set_step(const JointStep& step) { step_ = step; }
+
+    /// Anchors, masses, softness and last step's impulses of joints [begin, end).
+    void prepare(const Pool<Joint>& joints, const Pool<Body>& bodies, int32_t fixed_state, int32_t begin,
+                 int32_t end);
+    void warm_start(int32_t begin, int32_t end, BodyState* states);
+    void solve(int32_t begin, int32_t end, BodyState* states, bool use_bias);
+    /// Impulses back to the joints, and their reactions over the last substep.
+    void store(Pool<Joint>& joints, const BodyState* states, int32_t begin, int32_t end) const;
+    /// Joints whose reaction passed a threshold, in solve order (one thread).
+    void report_breaking(const Pool<Joint>& joints, const IdEncoder& ids, std::vector<JointEvent>& out) const;
+
+private:
+    void prepare_one(JointConstraint& c, const Joint& joint, const Pool<Body>& bodies, int32_t fixed_state) const;
+
+    std::vector<JointConstraint> constraints_;
+    JointStep step_;
+};
+
+}  // namespace i2d
