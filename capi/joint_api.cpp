@@ -78,7 +78,7 @@ bool check_base(Call& call, const i2d_joint_base& base, const char* def_name, Jo
 
 // Per kind: every field checked by its rule, then stored; then the cross-field checks.
 #define I2D_CHECK_FIELD(kind, field, Rule) \
-    &&joint_rules::Rule::check(call, def.field, #kind " joint def: " #field)
+    &&joint_rules::Rule::check(call, def.field, #kind "_joint_def: " #field)
 #define I2D_STORE_FIELD(kind, field, Rule) core.kind.field = joint_rules::Rule::store(def.field);
 #define I2D_JOINT_DEF_CHECK(kind, FIELDS)                                                        \
     bool check_settings(Call& call, const i2d_##kind##_joint_def& def, JointDef& core) {         \
@@ -88,7 +88,7 @@ bool check_base(Call& call, const i2d_joint_base& base, const char* def_name, Jo
             return false;                                                                        \
         }                                                                                        \
         FIELDS(I2D_STORE_FIELD)                                                                  \
-        return ordered_bounds(call, core, #kind " joint def: ");                                 \
+        return ordered_bounds(call, core, #kind "_joint_def: ");                                 \
     }
 
 I2D_JOINT_DEF_CHECK(revolute, I2D_REVOLUTE_FIELDS)

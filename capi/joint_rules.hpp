@@ -194,7 +194,7 @@ struct Axis : Point {
 #define I2D_FILTER_FIELDS(X)
 
 /// The checks that span two fields of a kind's settings (already stored): a lower bound
-/// not above its upper one. `prefix` starts the message ("revolute joint def: " or "").
+/// not above its upper one. `prefix` starts the message ("revolute_joint_def: " or "").
 inline bool ordered_bounds(Call& call, const JointDef& def, const char* prefix) {
     auto ordered = [&](float lower, float upper, const char* lower_name, const char* upper_name) {
         return lower <= upper ? true

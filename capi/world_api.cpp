@@ -137,7 +137,13 @@ I2D_API i2d_world_id i2d_world_create(const i2d_world_def* def) {
         f.world_slot = ref.slot;
         f.world_generation = ref.generation;
         const i2d_world_id id = make_world_id(f);
-        world->set_id_encoder(IdEncoder{encode_body, encode_shape, encode_joint, id.bits});
+        // Named members: the encoder's member order is the core's to change.
+        IdEncoder ids;
+        ids.body = encode_body;
+        ids.shape = encode_shape;
+        ids.joint = encode_joint;
+        ids.tag = id.bits;
+        world->set_id_encoder(ids);
         world.release();
         return id;
     });

@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 /** @file impulse2d.hpp
  *  Thin C++17 wrappers over the C API: an owning World (move-only, destroys its world),
- *  Body and Shape as 8-byte value handles, and errors as the caller prefers.
+ *  Body, Shape and Joint as 8-byte value handles, and errors as the caller prefers.
  *
  *  Every call that can fail comes in two forms:
  *  - without a status argument it throws impulse2d::Error (status and the library's
@@ -237,6 +237,64 @@ private:
 
 inline Body Shape::body() const { return Body(checked(i2d_shape_get_body(id_))); }
 
+/** A joint: a value handle (copying copies the id). It does not own the joint; destroying
+ *  either body, or the world, makes it invalid. Every kind's settings go through get and
+ *  set with the C accessor, which keeps one wrapper for all 130 of them:
+ *  @code
+ *  hinge.set(i2d_revolute_joint_set_motor_speed, 2.0f);
+ *  float speed = hinge.get(i2d_revolute_joint_get_motor_speed);
+ *  @endcode */
+class Joint {
+public:
+    Joint() = default;
+    explicit Joint(i2d_joint_id id) noexcept : id_(id) {}
+    i2d_joint_id id() const noexcept { return id_; }
+    bool valid() const noexcept { return i2d_joint_is_valid(id_); }
+    friend bool operator==(Joint a, Joint b) noexcept { return a.id_.bits == b.id_.bits; }
+    friend bool operator!=(Joint a, Joint b) noexcept { return a.id_.bits != b.id_.bits; }
+
+    /** Destroys the joint; its bodies wake and may collide again. */
+    void destroy() { i2d_joint_destroy(id_); detail::throw_if_failed(); }
+    void destroy(Status& status) noexcept { i2d_joint_destroy(id_); detail::record(status); }
+
+    i2d_joint_type type() const { return get(i2d_joint_get_type); }
+    Body body_a() const { return Body(get(i2d_joint_get_body_a)); }
+    Body body_b() const { return Body(get(i2d_joint_get_body_b)); }
+    /** The force (N) and torque (N m) on body B over the last step. */
+    i2d_vec2 reaction_force() const { return get(i2d_joint_get_reaction_force); }
+    float reaction_torque() const { return get(i2d_joint_get_reaction_torque); }
+    void* user_data() const { return get(i2d_joint_get_user_data); }
+    void set_user_data(void* user_data) { set(i2d_joint_set_user_data, user_data); }
+    void wake_bodies() { i2d_joint_wake_bodies(id_); detail::throw_if_failed(); }
+
+    /** Any getter of joint.h, e.g. get(i2d_wheel_joint_get_hertz). */
+    template <class T>
+    T get(T (*getter)(i2d_joint_id)) const {
+        const T value = getter(id_);
+        detail::throw_if_failed();
+        return value;
+    }
+    /** Any setter of joint.h, e.g. set(i2d_joint_set_collide_connected, true). */
+    template <class T, class V>
+    void set(i2d_status (*setter)(i2d_joint_id, T), V value) {
+        setter(id_, static_cast<T>(value));
+        detail::throw_if_failed();
+    }
+    template <class T, class V>
+    void set(i2d_status (*setter)(i2d_joint_id, T), V value, Status& status) noexcept {
+        setter(id_, static_cast<T>(value));
+        detail::record(status);
+    }
+    /** Both bounds at once: i2d_revolute_joint_set_limits, ..._set_length_range. */
+    void set(i2d_status (*setter)(i2d_joint_id, float, float), float lower, float upper) {
+        setter(id_, lower, upper);
+        detail::throw_if_failed();
+    }
+
+private:
+    i2d_joint_id id_{0};
+};
+
 /** Owns a world: destroys it (and everything in it) when it goes out of scope. Move-only. */
 class World {
 public:
@@ -292,6 +350,24 @@ public:
         return Body(id);
     }
 
+    /** A joint of the def's kind (any i2d_<kind>_joint_def) between its two bodies. */
+    template <class Def>
+    Joint create_joint(const Def& def) {
+        const i2d_joint_id id = create_joint_id(id_, def);
+        detail::throw_if_failed();
+        return Joint(id);
+    }
+    /** The non-throwing form: a null Joint when refused. */
+    template <class Def>
+    Joint create_joint(const Def& def, Status& status) noexcept {
+        const i2d_joint_id id = create_joint_id(id_, def);
+        detail::record(status);
+        return Joint(id);
+    }
+    int32_t joint_count() const { return checked(i2d_world_get_joint_count(id_)); }
+    /** Joints whose reaction passed a threshold in the last step (valid until the next step). */
+    i2d_joint_events joint_events() const { return checked(i2d_world_get_joint_events(id_)); }
+
     /** Transforms of many bodies in one call (see i2d_world_get_body_transforms). */
     std::vector<i2d_transform> transforms(const std::vector<Body>& bodies) const {
         const std::vector<i2d_body_id> ids = to_ids(bodies);
@@ -341,6 +417,31 @@ private:
     static T checked(T value) {
         detail::throw_if_failed();
         return value;
+    }
+    // One create per kind, chosen by the def's type.
+    static i2d_joint_id create_joint_id(i2d_world_id w, const i2d_revolute_joint_def& d) noexcept {
+        return i2d_joint_create_revolute(w, &d);
+    }
+    static i2d_joint_id create_joint_id(i2d_world_id w, const i2d_prismatic_joint_def& d) noexcept {
+        return i2d_joint_create_prismatic(w, &d);
+    }
+    static i2d_joint_id create_joint_id(i2d_world_id w, const i2d_distance_joint_def& d) noexcept {
+        return i2d_joint_create_distance(w, &d);
+    }
+    static i2d_joint_id create_joint_id(i2d_world_id w, const i2d_weld_joint_def& d) noexcept {
+        return i2d_joint_create_weld(w, &d);
+    }
+    static i2d_joint_id create_joint_id(i2d_world_id w, const i2d_wheel_joint_def& d) noexcept {
+        return i2d_joint_create_wheel(w, &d);
+    }
+    static i2d_joint_id create_joint_id(i2d_world_id w, const i2d_motor_joint_def& d) noexcept {
+        return i2d_joint_create_motor(w, &d);
+    }
+    static i2d_joint_id create_joint_id(i2d_world_id w, const i2d_mouse_joint_def& d) noexcept {
+        return i2d_joint_create_mouse(w, &d);
+    }
+    static i2d_joint_id create_joint_id(i2d_world_id w, const i2d_filter_joint_def& d) noexcept {
+        return i2d_joint_create_filter(w, &d);
     }
     static std::vector<i2d_body_id> to_ids(const std::vector<Body>& bodies) {
         std::vector<i2d_body_id> ids;

@@ -142,3 +142,56 @@ I2D_TEST(cpp_errors_as_status_when_asked) {
     impulse2d::World null_world(bad, status);
     I2D_CHECK(status.code == I2D_ERR_INVALID_ARGUMENT && !null_world.valid());
 }
+
+I2D_TEST(cpp_joints) {
+    static_assert(sizeof(impulse2d::Joint) == sizeof(i2d_joint_id), "a Joint is the 8-byte id");
+    impulse2d::World world;
+    impulse2d::Body ground = make_ground(world);
+    impulse2d::Body box = world.create_body(impulse2d::body_def(I2D_BODY_DYNAMIC, {0.0f, 3.0f}));
+    box.create_box(0.5f, 0.5f);
+
+    i2d_revolute_joint_def def = i2d_default_revolute_joint_def();
+    def.base.body_a = ground.id();
+    def.base.body_b = box.id();
+    def.base.local_anchor_a = {0.0f, 4.0f};
+    def.base.local_anchor_b = {0.0f, 1.0f};
+    impulse2d::Joint hinge = world.create_joint(def);
+    I2D_CHECK(hinge.valid() && hinge.type() == I2D_JOINT_REVOLUTE && world.joint_count() == 1);
+    I2D_CHECK(hinge.body_a() == ground && hinge.body_b() == box);
+    hinge.set(i2d_revolute_joint_set_motor_speed, 2.0f);
+    hinge.set(i2d_revolute_joint_set_enable_motor, true);
+    hinge.set(i2d_revolute_joint_set_limits, -0.5f, 0.5f);
+    I2D_CHECK(hinge.get(i2d_revolute_joint_get_motor_speed) == 2.0f);
+    I2D_CHECK(hinge.get(i2d_revolute_joint_get_enable_motor));
+    I2D_CHECK(hinge.get(i2d_revolute_joint_get_upper_angle) == 0.5f);
+    int marker = 0;
+    hinge.set_user_data(&marker);
+    I2D_CHECK(hinge.user_data() == &marker);
+
+    // Both error styles.
+    bool threw = false;
+    try {
+        hinge.set(i2d_revolute_joint_set_hertz, -1.0f);
+    } catch (const impulse2d::Error& e) {
+        threw = e.status() == I2D_ERR_INVALID_ARGUMENT && message_has(e.what(), "hertz");
+    }
+    I2D_CHECK(threw);
+    threw = false;
+    try {
+        (void)hinge.get(i2d_distance_joint_get_length);
+    } catch (const impulse2d::Error& e) {
+        threw = e.status() == I2D_ERR_INVALID_ARGUMENT;
+    }
+    I2D_CHECK(threw);
+    impulse2d::Status status;
+    def.base.body_b = ground.id();
+    impulse2d::Joint refused = world.create_joint(def, status);
+    I2D_CHECK(!status.ok() && message_has(status.message, "same body") && !refused.valid());
+    hinge.set(i2d_revolute_joint_set_max_motor_torque, -1.0f, status);
+    I2D_CHECK(status.code == I2D_ERR_INVALID_ARGUMENT);
+
+    world.step();
+    I2D_CHECK(world.joint_events().count == 0);
+    box.destroy();
+    I2D_CHECK(!hinge.valid() && world.joint_count() == 0);
+}

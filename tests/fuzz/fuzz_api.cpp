@@ -5,14 +5,17 @@
 // what the program holds, floats from a table of hostile values or raw bits, sizes and
 // counts of any sign). Ids are kept after their objects die, so stale, foreign (a body's
 // bits passed as a shape) and null ids are used on purpose. Query and ray callbacks call
-// back into the library and try to destroy things. The library must never crash, leak or
-// trip a sanitizer, and a world (into which the API accepts only finite values) must never
-// report a non-finite position or velocity: that aborts with a message.
+// back into the library and try to destroy things. Joints are made between any held
+// bodies (of any world, live or dead) with hostile settings, then changed, read and
+// broken. The library must never crash, leak or trip a sanitizer, and a world (into
+// which the API accepts only finite values) must never report a non-finite position,
+// velocity or joint measure: that aborts with a message.
 //
 // Only the public header is used: the harness is a hostile C API caller.
 #include <impulse2d/impulse2d.h>
 
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
@@ -26,13 +29,15 @@ namespace {
 constexpr int max_worlds_held = 4;
 constexpr int max_bodies_held = 48;
 constexpr int max_shapes_held = 96;
+constexpr int max_joints_held = 32;
 
 // What the program holds: live ids and, on purpose, dead ones.
 struct Held {
     i2d_world_id worlds[max_worlds_held] = {};
     i2d_body_id bodies[max_bodies_held] = {};
     i2d_shape_id shapes[max_shapes_held] = {};
-    int world_count = 0, body_count = 0, shape_count = 0;
+    i2d_joint_id joints[max_joints_held] = {};
+    int world_count = 0, body_count = 0, shape_count = 0, joint_count = 0;
     // Every world this input created, to free them all at its end (at most 256 can live).
     i2d_world_id created[256] = {};
     int created_count = 0;
@@ -259,6 +264,20 @@ i2d_transform transform(FuzzInput& in) {
     return xf;
 }
 
+i2d_joint_id pick_joint(FuzzInput& in) {
+    const uint8_t k = in.byte();
+    if (k < 210 && g_held->joint_count > 0) {
+        return g_held->joints[k % g_held->joint_count];
+    }
+    if (k < 230) {
+        return I2D_NULL_JOINT_ID;
+    }
+    if (k < 245 && g_held->body_count > 0) {
+        return i2d_joint_id{g_held->bodies[k % g_held->body_count].bits};  // foreign kind
+    }
+    return i2d_joint_id{in.u64()};
+}
+
 // ---- Callbacks that call back in -----------------------------------------------------
 
 struct CallbackContext {
@@ -284,7 +303,15 @@ void call_back_in(CallbackContext& c, i2d_shape_id shape) {
                                        out, 4);
             break;
         }
-        default: check_body_finite(body); break;
+        default:
+            check_body_finite(body);
+            if (g_held->joint_count > 0) {  // refused inside the query: the world is locked
+                const i2d_joint_id j = g_held->joints[c.calls % g_held->joint_count];
+                i2d_joint_set_collide_connected(j, true);
+                i2d_joint_destroy(j);
+                i2d_joint_set_user_data(j, &c);
+            }
+            break;
     }
 }
 
@@ -538,6 +565,250 @@ i2d_query_filter query_filter(FuzzInput& in) {
     return f;
 }
 
+// ---- Joints --------------------------------------------------------------------------
+
+// Any kind's def, with the shared base first (so at the union's address).
+union AnyJointDef {
+    i2d_distance_joint_def distance;
+    i2d_filter_joint_def filter;
+    i2d_motor_joint_def motor;
+    i2d_mouse_joint_def mouse;
+    i2d_prismatic_joint_def prismatic;
+    i2d_revolute_joint_def revolute;
+    i2d_weld_joint_def weld;
+    i2d_wheel_joint_def wheel;
+};
+
+constexpr int joint_kind_count = 8;
+
+// Where each kind's float settings are, so that a def's floats can be set to anything
+// (its bools are set only to true or false: a C caller cannot store more in a bool).
+struct JointFloat {
+    int kind;
+    size_t offset;
+};
+
+#define I2D_JOINT_FLOAT(KIND, type, field) JointFloat{int(KIND), offsetof(type, field)}
+const JointFloat joint_floats[] = {
+    I2D_JOINT_FLOAT(I2D_JOINT_DISTANCE, i2d_distance_joint_def, length),
+    I2D_JOINT_FLOAT(I2D_JOINT_DISTANCE, i2d_distance_joint_def, min_length),
+    I2D_JOINT_FLOAT(I2D_JOINT_DISTANCE, i2d_distance_joint_def, max_length),
+    I2D_JOINT_FLOAT(I2D_JOINT_DISTANCE, i2d_distance_joint_def, hertz),
+    I2D_JOINT_FLOAT(I2D_JOINT_DISTANCE, i2d_distance_joint_def, damping_ratio),
+    I2D_JOINT_FLOAT(I2D_JOINT_DISTANCE, i2d_distance_joint_def, motor_speed),
+    I2D_JOINT_FLOAT(I2D_JOINT_DISTANCE, i2d_distance_joint_def, max_motor_force),
+    I2D_JOINT_FLOAT(I2D_JOINT_MOTOR, i2d_motor_joint_def, linear_offset.x),
+    I2D_JOINT_FLOAT(I2D_JOINT_MOTOR, i2d_motor_joint_def, angular_offset),
+    I2D_JOINT_FLOAT(I2D_JOINT_MOTOR, i2d_motor_joint_def, max_force),
+    I2D_JOINT_FLOAT(I2D_JOINT_MOTOR, i2d_motor_joint_def, max_torque),
+    I2D_JOINT_FLOAT(I2D_JOINT_MOTOR, i2d_motor_joint_def, correction_factor),
+    I2D_JOINT_FLOAT(I2D_JOINT_MOUSE, i2d_mouse_joint_def, target.y),
+    I2D_JOINT_FLOAT(I2D_JOINT_MOUSE, i2d_mouse_joint_def, hertz),
+    I2D_JOINT_FLOAT(I2D_JOINT_MOUSE, i2d_mouse_joint_def, damping_ratio),
+    I2D_JOINT_FLOAT(I2D_JOINT_MOUSE, i2d_mouse_joint_def, max_force),
+    I2D_JOINT_FLOAT(I2D_JOINT_PRISMATIC, i2d_prismatic_joint_def, local_axis_a.x),
+    I2D_JOINT_FLOAT(I2D_JOINT_PRISMATIC, i2d_prismatic_joint_def, reference_angle),
+    I2D_JOINT_FLOAT(I2D_JOINT_PRISMATIC, i2d_prismatic_joint_def, lower_translation),
+    I2D_JOINT_FLOAT(I2D_JOINT_PRISMATIC, i2d_prismatic_joint_def, upper_translation),
+    I2D_JOINT_FLOAT(I2D_JOINT_PRISMATIC, i2d_prismatic_joint_def, motor_speed),
+    I2D_JOINT_FLOAT(I2D_JOINT_PRISMATIC, i2d_prismatic_joint_def, max_motor_force),
+    I2D_JOINT_FLOAT(I2D_JOINT_PRISMATIC, i2d_prismatic_joint_def, hertz),
+    I2D_JOINT_FLOAT(I2D_JOINT_PRISMATIC, i2d_prismatic_joint_def, target_translation),
+    I2D_JOINT_FLOAT(I2D_JOINT_REVOLUTE, i2d_revolute_joint_def, reference_angle),
+    I2D_JOINT_FLOAT(I2D_JOINT_REVOLUTE, i2d_revolute_joint_def, lower_angle),
+    I2D_JOINT_FLOAT(I2D_JOINT_REVOLUTE, i2d_revolute_joint_def, upper_angle),
+    I2D_JOINT_FLOAT(I2D_JOINT_REVOLUTE, i2d_revolute_joint_def, motor_speed),
+    I2D_JOINT_FLOAT(I2D_JOINT_REVOLUTE, i2d_revolute_joint_def, max_motor_torque),
+    I2D_JOINT_FLOAT(I2D_JOINT_REVOLUTE, i2d_revolute_joint_def, hertz),
+    I2D_JOINT_FLOAT(I2D_JOINT_REVOLUTE, i2d_revolute_joint_def, damping_ratio),
+    I2D_JOINT_FLOAT(I2D_JOINT_REVOLUTE, i2d_revolute_joint_def, target_angle),
+    I2D_JOINT_FLOAT(I2D_JOINT_WELD, i2d_weld_joint_def, reference_angle),
+    I2D_JOINT_FLOAT(I2D_JOINT_WELD, i2d_weld_joint_def, linear_hertz),
+    I2D_JOINT_FLOAT(I2D_JOINT_WELD, i2d_weld_joint_def, angular_hertz),
+    I2D_JOINT_FLOAT(I2D_JOINT_WELD, i2d_weld_joint_def, linear_damping_ratio),
+    I2D_JOINT_FLOAT(I2D_JOINT_WELD, i2d_weld_joint_def, angular_damping_ratio),
+    I2D_JOINT_FLOAT(I2D_JOINT_WHEEL, i2d_wheel_joint_def, local_axis_a.y),
+    I2D_JOINT_FLOAT(I2D_JOINT_WHEEL, i2d_wheel_joint_def, hertz),
+    I2D_JOINT_FLOAT(I2D_JOINT_WHEEL, i2d_wheel_joint_def, damping_ratio),
+    I2D_JOINT_FLOAT(I2D_JOINT_WHEEL, i2d_wheel_joint_def, lower_translation),
+    I2D_JOINT_FLOAT(I2D_JOINT_WHEEL, i2d_wheel_joint_def, upper_translation),
+    I2D_JOINT_FLOAT(I2D_JOINT_WHEEL, i2d_wheel_joint_def, motor_speed),
+    I2D_JOINT_FLOAT(I2D_JOINT_WHEEL, i2d_wheel_joint_def, max_motor_torque),
+};
+#undef I2D_JOINT_FLOAT
+constexpr int joint_float_count = int(sizeof joint_floats / sizeof joint_floats[0]);
+
+// The settings' setters, each taking a real.
+using JointFloatSetter = i2d_status (*)(i2d_joint_id, float);
+const JointFloatSetter joint_float_setters[] = {
+    i2d_joint_set_force_threshold,          i2d_joint_set_torque_threshold,
+    i2d_revolute_joint_set_reference_angle, i2d_revolute_joint_set_lower_angle,
+    i2d_revolute_joint_set_upper_angle,     i2d_revolute_joint_set_motor_speed,
+    i2d_revolute_joint_set_max_motor_torque, i2d_revolute_joint_set_hertz,
+    i2d_revolute_joint_set_damping_ratio,   i2d_revolute_joint_set_target_angle,
+    i2d_prismatic_joint_set_lower_translation, i2d_prismatic_joint_set_upper_translation,
+    i2d_prismatic_joint_set_motor_speed,    i2d_prismatic_joint_set_max_motor_force,
+    i2d_prismatic_joint_set_hertz,          i2d_prismatic_joint_set_target_translation,
+    i2d_distance_joint_set_length,          i2d_distance_joint_set_min_length,
+    i2d_distance_joint_set_max_length,      i2d_distance_joint_set_hertz,
+    i2d_distance_joint_set_motor_speed,     i2d_distance_joint_set_max_motor_force,
+    i2d_weld_joint_set_linear_hertz,        i2d_weld_joint_set_angular_hertz,
+    i2d_weld_joint_set_angular_damping_ratio, i2d_wheel_joint_set_hertz,
+    i2d_wheel_joint_set_lower_translation,  i2d_wheel_joint_set_motor_speed,
+    i2d_wheel_joint_set_max_motor_torque,   i2d_motor_joint_set_angular_offset,
+    i2d_motor_joint_set_max_force,          i2d_motor_joint_set_correction_factor,
+    i2d_mouse_joint_set_hertz,              i2d_mouse_joint_set_max_force,
+};
+using JointFlagSetter = i2d_status (*)(i2d_joint_id, bool);
+const JointFlagSetter joint_flag_setters[] = {
+    i2d_joint_set_collide_connected,      i2d_revolute_joint_set_enable_limit, i2d_revolute_joint_set_enable_motor,
+    i2d_revolute_joint_set_enable_spring, i2d_prismatic_joint_set_enable_limit, i2d_prismatic_joint_set_enable_motor,
+    i2d_prismatic_joint_set_enable_spring, i2d_distance_joint_set_enable_limit, i2d_distance_joint_set_enable_spring,
+    i2d_distance_joint_set_enable_motor,  i2d_wheel_joint_set_enable_spring,   i2d_wheel_joint_set_enable_limit,
+    i2d_wheel_joint_set_enable_motor,
+};
+using JointVecSetter = i2d_status (*)(i2d_joint_id, i2d_vec2);
+const JointVecSetter joint_vec_setters[] = {
+    i2d_joint_set_local_anchor_a,        i2d_joint_set_local_anchor_b, i2d_prismatic_joint_set_local_axis_a,
+    i2d_wheel_joint_set_local_axis_a,    i2d_motor_joint_set_linear_offset, i2d_mouse_joint_set_target,
+};
+using JointRangeSetter = i2d_status (*)(i2d_joint_id, float, float);
+const JointRangeSetter joint_range_setters[] = {
+    i2d_revolute_joint_set_limits, i2d_prismatic_joint_set_limits, i2d_wheel_joint_set_limits,
+    i2d_distance_joint_set_length_range,
+};
+
+template <class T, size_t N>
+constexpr int count_of(const T (&)[N]) {
+    return int(N);
+}
+
+i2d_joint_id create_joint(FuzzInput& in) {
+    const i2d_world_id w = pick_world(in);
+    const int kind = in.byte() % joint_kind_count;
+    AnyJointDef def;
+    std::memset(&def, 0, sizeof def);
+    uint32_t* cookie = nullptr;
+    switch (kind) {
+        case I2D_JOINT_DISTANCE: def.distance = i2d_default_distance_joint_def(); cookie = &def.distance.internal_cookie; break;
+        case I2D_JOINT_FILTER: def.filter = i2d_default_filter_joint_def(); cookie = &def.filter.internal_cookie; break;
+        case I2D_JOINT_MOTOR: def.motor = i2d_default_motor_joint_def(); cookie = &def.motor.internal_cookie; break;
+        case I2D_JOINT_MOUSE: def.mouse = i2d_default_mouse_joint_def(); cookie = &def.mouse.internal_cookie; break;
+        case I2D_JOINT_PRISMATIC: def.prismatic = i2d_default_prismatic_joint_def(); cookie = &def.prismatic.internal_cookie; break;
+        case I2D_JOINT_REVOLUTE: def.revolute = i2d_default_revolute_joint_def(); cookie = &def.revolute.internal_cookie; break;
+        case I2D_JOINT_WELD: def.weld = i2d_default_weld_joint_def(); cookie = &def.weld.internal_cookie; break;
+        default: def.wheel = i2d_default_wheel_joint_def(); cookie = &def.wheel.internal_cookie; break;
+    }
+    i2d_joint_base& base = def.revolute.base;
+    base.body_a = pick_body(in);
+    base.body_b = pick_body(in);
+    for (int edits = in.count(4); edits > 0; --edits) {
+        switch (in.byte() % 6) {
+            case 0: base.local_anchor_a = in.small_vec2(); base.local_anchor_b = in.small_vec2(); break;
+            case 1: base.collide_connected = in.flag(); break;
+            case 2: base.force_threshold = in.real(); base.torque_threshold = in.real(); break;
+            case 3: *cookie = in.u32(); break;
+            default: {
+                const JointFloat& f = joint_floats[in.byte() % joint_float_count];
+                if (f.kind == kind) {
+                    const float v = in.real();
+                    std::memcpy(reinterpret_cast<char*>(&def) + f.offset, &v, sizeof v);
+                }
+                break;
+            }
+        }
+    }
+    const bool null_def = in.byte() >= 245;
+    switch (kind) {
+        case I2D_JOINT_DISTANCE: return i2d_joint_create_distance(w, null_def ? nullptr : &def.distance);
+        case I2D_JOINT_FILTER: return i2d_joint_create_filter(w, null_def ? nullptr : &def.filter);
+        case I2D_JOINT_MOTOR: return i2d_joint_create_motor(w, null_def ? nullptr : &def.motor);
+        case I2D_JOINT_MOUSE: return i2d_joint_create_mouse(w, null_def ? nullptr : &def.mouse);
+        case I2D_JOINT_PRISMATIC: return i2d_joint_create_prismatic(w, null_def ? nullptr : &def.prismatic);
+        case I2D_JOINT_REVOLUTE: return i2d_joint_create_revolute(w, null_def ? nullptr : &def.revolute);
+        case I2D_JOINT_WELD: return i2d_joint_create_weld(w, null_def ? nullptr : &def.weld);
+        default: return i2d_joint_create_wheel(w, null_def ? nullptr : &def.wheel);
+    }
+}
+
+// Reads what a joint reports; on a live joint of a world of finite bodies every number
+// must be finite.
+void read_joint(i2d_joint_id j) {
+    const bool live = i2d_joint_is_valid(j);
+    i2d_joint_get_type(j);
+    i2d_joint_get_world(j);
+    i2d_joint_get_body_a(j);
+    i2d_joint_get_body_b(j);
+    i2d_joint_get_local_anchor_a(j);
+    i2d_joint_get_user_data(j);
+    const i2d_vec2 force = i2d_joint_get_reaction_force(j);
+    const float measures[] = {
+        i2d_joint_get_reaction_torque(j),         i2d_revolute_joint_get_angle(j),
+        i2d_revolute_joint_get_motor_torque(j),   i2d_prismatic_joint_get_translation(j),
+        i2d_prismatic_joint_get_speed(j),         i2d_prismatic_joint_get_motor_force(j),
+        i2d_distance_joint_get_current_length(j), i2d_distance_joint_get_motor_force(j),
+        i2d_wheel_joint_get_translation(j),       i2d_wheel_joint_get_motor_torque(j),
+    };
+    if (!live) {
+        return;
+    }
+    if (!finite2(force)) {
+        fail("non-finite joint reaction force", force.x, force.y);
+    }
+    for (float m : measures) {
+        if (!std::isfinite(m)) {
+            fail("non-finite joint measure", m, 0);
+        }
+    }
+}
+
+void run_joint_call(FuzzInput& in, uint8_t op) {
+    switch (op) {
+        case 0: case 1: {
+            const i2d_joint_id j = create_joint(in);
+            keep(g_held->joints, g_held->joint_count, max_joints_held, j, in.byte());
+            break;
+        }
+        case 2: i2d_joint_destroy(pick_joint(in)); break;
+        case 3: case 4: {
+            const i2d_joint_id j = pick_joint(in);
+            joint_float_setters[in.byte() % count_of(joint_float_setters)](j, in.real());
+            break;
+        }
+        case 5: {
+            const i2d_joint_id j = pick_joint(in);
+            joint_flag_setters[in.byte() % count_of(joint_flag_setters)](j, in.flag());
+            break;
+        }
+        case 6: {
+            const i2d_joint_id j = pick_joint(in);
+            joint_vec_setters[in.byte() % count_of(joint_vec_setters)](j, in.vec2());
+            break;
+        }
+        case 7: {
+            const i2d_joint_id j = pick_joint(in);
+            const float lower = in.real();
+            joint_range_setters[in.byte() % count_of(joint_range_setters)](j, lower, in.real());
+            break;
+        }
+        case 8: i2d_joint_set_user_data(pick_joint(in), in.flag() ? g_held : nullptr); break;
+        case 9: i2d_joint_wake_bodies(pick_joint(in)); break;
+        case 10: {
+            const i2d_world_id w = pick_world(in);
+            const i2d_joint_events events = i2d_world_get_joint_events(w);
+            i2d_world_get_joint_count(w);
+            for (int32_t i = 0; i < events.count; ++i) {
+                read_joint(events.events[i].joint);  // a breakable joint's listing
+                if (in.flag()) {
+                    i2d_joint_destroy(events.events[i].joint);
+                }
+            }
+            break;
+        }
+        default: read_joint(pick_joint(in)); break;
+    }
+}
+
 void run_query_call(FuzzInput& in, uint8_t op) {
     CallbackContext context{&in, 0};
     const i2d_world_id w = pick_world(in);
@@ -614,6 +885,10 @@ void run_pure_call(FuzzInput& in, uint8_t op) {
     }
 }
 
+// Joint calls take the body group's second alias from this sub on (opcodes 2 + 6 * 30
+// and up; 13 calls), so that earlier programs keep their meaning but for those opcodes.
+constexpr uint8_t joint_sub_first = 30;
+
 void run_program(FuzzInput& in) {
     int steps_left = 64;  // bounds the run time of one input
     while (!in.empty()) {
@@ -630,6 +905,8 @@ void run_program(FuzzInput& in) {
                 continue;
             }
             run_world_call(in, sub % 7);
+        } else if (group == 2 && sub >= joint_sub_first) {
+            run_joint_call(in, static_cast<uint8_t>(sub - joint_sub_first));
         } else if (group == 1 || group == 2) {
             run_body_call(in, sub % 15);
         } else if (group == 3) {

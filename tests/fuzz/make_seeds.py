@@ -57,10 +57,33 @@ def pile():
     return p
 
 
+def joint_op(k):
+    """Joint call k: the body group's second alias from sub 30 on (fuzz_api.cpp)."""
+    return 2 + 6 * (30 + k)
+
+
+def joint(kind, body_a, body_b, anchors=None):
+    # op, world, kind (i2d_joint_type), bodies, edits, def not null, table slot
+    if anchors is None:
+        return [joint_op(0), 0, kind, body_a, body_b, 0, 0, 0]
+    (ax, ay), (bx, by) = anchors
+    return [joint_op(0), 0, kind, body_a, body_b, 1, 0] + small(ax) + small(ay) + small(bx) + small(by) + [0, 0]
+
+
+def joints():
+    # revolute to the floor, a distance rope, a weld and a wheel down the pile
+    p = joint(5, 0, 1, ((-1, 0.5), (0, 0))) + joint(0, 1, 2) + joint(6, 2, 3) + joint(7, 3, 4)
+    p += [joint_op(3), 0, 5] + small(1.5)   # revolute motor speed
+    p += [joint_op(5), 0, 2, 1]              # revolute motor on
+    p += [joint_op(3), 0, 6] + small(1.9)   # max motor torque
+    return p
+
+
 seeds = {
     "pile_steps": pile() + step(30),
     "pile_queries": pile() + step(10) + overlap_query() + ray_query() + step(5),
     "pile_destroy": pile() + step(5) + [7, 2] + step(5) + [1 + 6 * 1, 3] + step(5),
+    "pile_joints": pile() + joints() + step(20) + [joint_op(10), 0, 0] + [joint_op(11), 0] + [joint_op(2), 1] + step(10),
     "pure_calls": [5 + 6 * k for k in range(20)] * 2,
 }
 here = os.path.dirname(os.path.abspath(__file__))
