@@ -7,10 +7,29 @@ endif()
 
 # A picture left over from an earlier run must not make this pass.
 file(REMOVE ${SVG})
-execute_process(COMMAND ${DEMO} ${SVG} RESULT_VARIABLE rc)
+execute_process(COMMAND ${DEMO} ${SVG} RESULT_VARIABLE rc OUTPUT_VARIABLE report)
+message(STATUS "${report}")
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "the demo exited with ${rc}")
 endif()
+
+# The joints held: no joint of the bridge or the ragdoll came 5 cm apart (a torn joint shows
+# metres), and the car rolls at its motors' speed w r within 5 %.
+if(NOT report MATCHES "during the run: ([0-9.]+) mm")
+  message(FATAL_ERROR "the demo's report has no joint gap line")
+endif()
+set(gap ${CMAKE_MATCH_1})
+if(NOT gap LESS 50)
+  message(FATAL_ERROR "a joint of the bridge or the ragdoll came ${gap} mm apart (allowed: under 50)")
+endif()
+if(NOT report MATCHES "m/s, ([0-9.]+) % of the motors' w r")
+  message(FATAL_ERROR "the demo's report has no car speed line")
+endif()
+set(share ${CMAKE_MATCH_1})
+if(share LESS 95 OR share GREATER 105)
+  message(FATAL_ERROR "the car rolls at ${share} % of its motors' w r (expected 95 to 105)")
+endif()
+
 if(NOT EXISTS ${SVG})
   message(FATAL_ERROR "the demo exited 0 but wrote no ${SVG}")
 endif()

@@ -108,7 +108,7 @@ static const float ball_restitution[BALL_COUNT] = {0.0f, 0.3f, 0.6f, 0.9f};
 #define WHEEL_SPEED 6.0f       /* rad/s, clockwise: the car drives right */
 #define WHEEL_TORQUE 5.0f      /* N m per wheel */
 #define BUMP_X 5.0f
-#define BUMP_RADIUS 0.6f
+#define BUMP_RADIUS 0.5f      /* buried in the 1 m thick ground but for its top */
 #define BUMP_HEIGHT 0.15f      /* how far the bump (a static disc) stands out of the ground */
 
 #define MAX_BODIES 96
@@ -554,10 +554,10 @@ static void build_scene(demo* d) {
     d->pyramid_top = build_pile(d, PYRAMID_X, ROW2_Y, PYRAMID_ROWS, 1);
     d->pyramid_top_start = position(d->pyramid_top);
     build_dropped(d);
-    build_floor(d, ROW3_Y, 3.0f);
     build_bridge(d);
     build_ragdoll(d);
     build_car(d);
+    build_floor(d, ROW3_Y, 3.0f); /* after the bump, so that the ground is drawn over its buried part */
     d->momentum_before = mass(d->t[T_HEAVY].body) * velocity(d->t[T_HEAVY].body).x +
                          mass(d->t[T_LIGHT].body) * velocity(d->t[T_LIGHT].body).x;
     d->heavy_v_before = velocity(d->t[T_HEAVY].body).x;
@@ -795,9 +795,10 @@ static void report_joints(const demo* d) {
     printf("  widest joint gap (anchors apart) in the bridge and the ragdoll during the run: %.2f mm\n",
            1000.0f * d->widest_gap);
     /* Rolling without slipping at the motor's speed: v = w r. */
-    printf("car on wheel joints (%.1f kg chassis, %.2f kg wheels, %.0f Hz springs): drove %.2f m, now %.3f m/s"
-           " (motor w r = %.3f m/s);\n",
-           m, m_wheel, SUSPENSION_HERTZ, driven, velocity(d->chassis).x, WHEEL_SPEED * WHEEL_RADIUS);
+    printf("car on wheel joints (%.1f kg chassis, %.2f kg wheels, %.0f Hz springs): drove %.2f m, now %.3f m/s,"
+           " %.1f %% of the motors' w r = %.3f m/s;\n",
+           m, m_wheel, SUSPENSION_HERTZ, driven, velocity(d->chassis).x,
+           100.0f * velocity(d->chassis).x / (WHEEL_SPEED * WHEEL_RADIUS), WHEEL_SPEED * WHEEL_RADIUS);
     printf("  suspension travel now %.1f and %.1f mm, at most %.1f mm over the %.2f m bump\n", 1000.0f * travel[0],
            1000.0f * travel[1], 1000.0f * d->most_compressed, BUMP_HEIGHT);
 }
@@ -834,7 +835,7 @@ typedef struct view {
 #define VIEW_MIN_Y (ROW3_Y - 1.2f)
 #define VIEW_MAX_Y 6.6f
 #define VIEW_SCALE 36.0f /* pixels per metre */
-#define CAPTION_HEIGHT 56.0f
+#define CAPTION_HEIGHT 74.0f
 
 static float px(const view* v, float x) { return (x - v->min_x) * v->scale; }
 static float py(const view* v, float y) { return (v->max_y - y) * v->scale; }
@@ -1075,8 +1076,9 @@ static void draw_legend(FILE* f, float top) {
     legend_entry(f, x, y, rim, "path of a rim point");
     fprintf(f, "<text x=\"10\" y=\"%.1f\">impulse2d demo: the state after %.1f s (%d steps of 1/60 s, %d substeps"
                " each); y up, 1 m = %.0f px. Top: bodies that only move; middle: bodies that turn"
-               " (a circle's line is a radius); bottom: bodies held by joints (dots).</text>\n",
+               " (a circle's line is a radius);</text>\n",
             y + 22.0f, (double)STEP_COUNT * TIME_STEP, STEP_COUNT, SUBSTEPS, VIEW_SCALE);
+    fprintf(f, "<text x=\"10\" y=\"%.1f\">bottom: bodies held by joints, a dot at each joint.</text>\n", y + 40.0f);
 }
 
 static void write_svg(const demo* d, const char* path) {
