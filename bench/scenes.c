@@ -481,8 +481,11 @@ static bool sanity_tumbler(const bench_state* state, int32_t steps_run, bench_sa
 /* Seven discs of the top row (columns 47..53) are static: the net hangs from them. */
 #define JOINT_GRID_ANCHORS_FROM (JOINT_GRID_N / 2 - 3)
 #define JOINT_GRID_ANCHORS_TO (JOINT_GRID_N / 2 + 3)
-/* A joint whose anchors are this far apart (of its 1 m link) no longer holds the net together. */
-#define JOINT_GRID_MAX_GAP 0.25
+/* A joint whose anchors are a link length apart no longer holds the net together. Soft joints
+ * under the hanging net's 5000 kg stretch a lot near the anchors: the widest gap measured 0.61 m
+ * after 100 steps and 0.42 m after 500 in Box2D v3 (617d32a, the same scene rebuilt on its API),
+ * 0.59 and 0.40 in impulse2d (2026-11-24). */
+#define JOINT_GRID_MAX_GAP 1.0
 
 /* Disc (column k, row i) of radius 0.4, density 1, at (k, -i); the discs never collide with one
  * another (category 2, mask all but 2), so the scene is joints only. Each disc is joined by a
@@ -546,8 +549,8 @@ static bool create_joint_grid(bench_state* state) {
     return ok;
 }
 
-/* The net holds: no joint's anchors further apart than a quarter of a link (NaN fails), with the
- * widest and mean gaps as the figures, and how far the lowest disc hangs. */
+/* The net holds: no joint's anchors a link length apart (NaN fails), with the widest and mean gaps
+ * as the figures, and how far the lowest disc hangs (it starts at y = -99). */
 static bool sanity_joint_grid(const bench_state* state, int32_t steps_run, bench_sanity* out) {
     double widest, mean, lowest = 0.0;
     int32_t i;
@@ -673,7 +676,10 @@ static bool create_spinner(bench_state* state) {
 }
 
 /* Every body still inside the drum (centre within its radius), and the blade turning at its
- * motor's speed about its pivot. */
+ * motor's speed about its pivot. Box2D v3 keeps all 6076 inside for the 500 steps (its one-sided
+ * chain and continuous collision); impulse2d, with two-sided segments and no continuous collision
+ * yet, lost 19 in the first 100 steps (2026-11-24): bodies squeezed between the blade's tip
+ * (100 m/s) and the drum pass through it. */
 static bool sanity_spinner(const bench_state* state, int32_t steps_run, bench_sanity* out) {
     i2d_vec2 blade = i2d_body_get_position(state->mover);
     float spin = i2d_body_get_angular_velocity(state->mover);
