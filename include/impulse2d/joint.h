@@ -63,7 +63,7 @@ typedef struct i2d_revolute_joint_def {
     float motor_speed;          /**< rad/s */
     float max_motor_torque;     /**< N m, >= 0 */
     bool enable_spring;         /**< default false: a spring toward target_angle */
-    float hertz, damping_ratio; /**< >= 0 */
+    float hertz, damping_ratio; /**< Hz and ratio, range [0, 1e5]; default 0 */
     float target_angle;         /**< rad */
     uint32_t internal_cookie;
 } i2d_revolute_joint_def;
@@ -74,12 +74,12 @@ typedef struct i2d_prismatic_joint_def {
     i2d_vec2 local_axis_a;      /**< default (1, 0); normalised, must not be zero */
     float reference_angle;
     bool enable_limit;
-    float lower_translation, upper_translation;  /**< m, lower <= upper */
+    float lower_translation, upper_translation;  /**< m, finite, lower <= upper */
     bool enable_motor;
     float motor_speed;          /**< m/s */
     float max_motor_force;      /**< N, >= 0 */
     bool enable_spring;
-    float hertz, damping_ratio;
+    float hertz, damping_ratio; /**< range [0, 1e5] */
     float target_translation;   /**< m */
     uint32_t internal_cookie;
 } i2d_prismatic_joint_def;
@@ -90,9 +90,11 @@ typedef struct i2d_distance_joint_def {
     i2d_joint_base base;
     float length;               /**< rest length, m; default 1; range [0.005, 1e5] */
     bool enable_limit;
-    float min_length, max_length;  /**< m, 0 <= min <= max; default 0 and 1e5 */
+    /** m, 0 <= min <= max (FLT_MAX: no maximum); default 0 and 1e5. Clamped to
+     *  [0.005, 1e5] when stored, so a getter reads 0.005 for a minimum of 0. */
+    float min_length, max_length;
     bool enable_spring;         /**< default false: a rigid rod */
-    float hertz, damping_ratio;
+    float hertz, damping_ratio; /**< range [0, 1e5] */
     bool enable_motor;
     float motor_speed;          /**< m/s, positive lengthens */
     float max_motor_force;      /**< N, >= 0 */
@@ -103,8 +105,8 @@ typedef struct i2d_distance_joint_def {
 typedef struct i2d_weld_joint_def {
     i2d_joint_base base;
     float reference_angle;
-    float linear_hertz, angular_hertz;               /**< >= 0; default 0 */
-    float linear_damping_ratio, angular_damping_ratio;  /**< >= 0; default 1 */
+    float linear_hertz, angular_hertz;               /**< range [0, 1e5]; default 0 */
+    float linear_damping_ratio, angular_damping_ratio;  /**< range [0, 1e5]; default 1 */
     uint32_t internal_cookie;
 } i2d_weld_joint_def;
 
@@ -112,14 +114,14 @@ typedef struct i2d_weld_joint_def {
  *  (the chassis), free to turn, with a motor on the turning. */
 typedef struct i2d_wheel_joint_def {
     i2d_joint_base base;
-    i2d_vec2 local_axis_a;      /**< default (0, 1) */
+    i2d_vec2 local_axis_a;      /**< default (0, 1); normalised, must not be zero */
     bool enable_spring;         /**< default true */
-    float hertz, damping_ratio; /**< default 1 Hz and 0.7 */
+    float hertz, damping_ratio; /**< default 1 Hz and 0.7; range [0, 1e5] */
     bool enable_limit;
-    float lower_translation, upper_translation;
+    float lower_translation, upper_translation;  /**< m, finite, lower <= upper */
     bool enable_motor;
     float motor_speed;          /**< rad/s */
-    float max_motor_torque;     /**< N m */
+    float max_motor_torque;     /**< N m, >= 0 */
     uint32_t internal_cookie;
 } i2d_wheel_joint_def;
 
@@ -127,7 +129,7 @@ typedef struct i2d_wheel_joint_def {
  *  with at most max_force and max_torque. */
 typedef struct i2d_motor_joint_def {
     i2d_joint_base base;
-    i2d_vec2 linear_offset;     /**< m */
+    i2d_vec2 linear_offset;     /**< m, within 1e9 */
     float angular_offset;       /**< rad */
     float max_force;            /**< N, default 1 */
     float max_torque;           /**< N m, default 1 */
@@ -137,12 +139,12 @@ typedef struct i2d_motor_joint_def {
 
 /** Pulls B's anchor (base.local_anchor_b) toward a world point with a damped spring of
  *  at most max_force. body_a is any body of the world (often a static one); it is not
- *  moved. */
+ *  moved. body_b must be dynamic. */
 typedef struct i2d_mouse_joint_def {
     i2d_joint_base base;
-    i2d_vec2 target;            /**< m, world */
-    float hertz;                /**< default 4 */
-    float damping_ratio;        /**< default 1 */
+    i2d_vec2 target;            /**< m, world, within 1e9 */
+    float hertz;                /**< default 4; range [0, 1e5] */
+    float damping_ratio;        /**< default 1; range [0, 1e5] */
     float max_force;            /**< N, default 1000 */
     uint32_t internal_cookie;
 } i2d_mouse_joint_def;
@@ -162,8 +164,10 @@ I2D_API i2d_motor_joint_def i2d_default_motor_joint_def(void);
 I2D_API i2d_mouse_joint_def i2d_default_mouse_joint_def(void);
 I2D_API i2d_filter_joint_def i2d_default_filter_joint_def(void);
 
-/** Null id and a status on a bad def: same body twice, bodies of two worlds, no dynamic
- *  body, a stale body id, NaN or inf anywhere, a value out of range. */
+/** Null id and a status on a bad def: a NULL def or one not from its default function,
+ *  same body twice, bodies of two worlds (or not of `world`), no dynamic body, a stale
+ *  body id, NaN or inf anywhere, a value out of range; I2D_ERR_WORLD_LOCKED inside a
+ *  callback. */
 I2D_API i2d_joint_id i2d_joint_create_revolute(i2d_world_id world, const i2d_revolute_joint_def* def);
 I2D_API i2d_joint_id i2d_joint_create_prismatic(i2d_world_id world, const i2d_prismatic_joint_def* def);
 I2D_API i2d_joint_id i2d_joint_create_distance(i2d_world_id world, const i2d_distance_joint_def* def);
@@ -211,7 +215,8 @@ I2D_API i2d_status i2d_revolute_joint_set_reference_angle(i2d_joint_id joint, fl
 I2D_API bool i2d_revolute_joint_get_enable_limit(i2d_joint_id joint);
 I2D_API i2d_status i2d_revolute_joint_set_enable_limit(i2d_joint_id joint, bool enable);
 I2D_API float i2d_revolute_joint_get_lower_angle(i2d_joint_id joint);
-/** Refused when it would pass the upper angle. */
+/** Refused when it would pass the upper angle (and the upper setter the lower one; the
+ *  same for every kind's single-bound setters). */
 I2D_API i2d_status i2d_revolute_joint_set_lower_angle(i2d_joint_id joint, float angle);
 I2D_API float i2d_revolute_joint_get_upper_angle(i2d_joint_id joint);
 I2D_API i2d_status i2d_revolute_joint_set_upper_angle(i2d_joint_id joint, float angle);
