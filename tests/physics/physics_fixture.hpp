@@ -132,6 +132,9 @@ public:
         return true;
     }
 
+    /** The world's downward pull, m/s^2 (10 by default). */
+    double gravity() const { return -double(i2d_world_get_gravity(world).y); }
+
     /** One step of time_step with `substeps` substeps; false (and a message) on failure. */
     bool step() {
         i2d_status s = i2d_world_step(world, time_step, substeps);

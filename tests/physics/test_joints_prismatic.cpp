@@ -18,8 +18,6 @@ using namespace phys;
 constexpr double incline = pi / 6.0;  // rad, 30 degrees
 const i2d_vec2 rail_top{0.0f, 10.0f};
 
-double gravity(const Scene& s) { return -double(i2d_world_get_gravity(s.world).y); }
-
 // The rail's axis, pointing down the slope: translation grows as the box slides down.
 i2d_vec2 down_slope() { return i2d_vec2{float(std::cos(incline)), float(-std::sin(incline))}; }
 
@@ -50,7 +48,7 @@ I2D_TEST(phys_joint_prismatic_slides_down_a_frictionless_incline_at_g_sin_theta)
     I2D_REQUIRE(!I2D_IS_NULL(in.box) && !I2D_IS_NULL(in.joint));
     const int steps = steps_for(1.0);
     I2D_REQUIRE(s.step(steps));
-    const double t = steps * double(time_step), a = gravity(s) * std::sin(incline);
+    const double t = steps * double(time_step), a = s.gravity() * std::sin(incline);
     const double v = i2d_prismatic_joint_get_speed(in.joint), d = i2d_prismatic_joint_get_translation(in.joint);
     // The body's own velocity, projected on the slope, must say the same as the joint.
     const i2d_vec2 vb = velocity(in.box), axis = down_slope();
@@ -87,7 +85,7 @@ I2D_TEST(phys_joint_prismatic_limit_stops_the_box_within_1mm) {
     const double rest = i2d_prismatic_joint_get_translation(in.joint);
     // Speed is sampled after each step: the fastest sample is the last before the box reaches
     // the limit, a t at the last whole step before t = sqrt(2 d / a).
-    const double a = gravity(s) * std::sin(incline);
+    const double a = s.gravity() * std::sin(incline);
     const double expected_speed = a * double(time_step) * std::floor(std::sqrt(2.0 * upper / a) / double(time_step));
     fprintf(stderr, "    limit %.3f m: furthest %.5f m (%+.3f mm), at rest %.5f m (%+.3f mm); fastest %.3f m/s "
             "(a t at the last step before the limit: %.3f)\n",
@@ -107,7 +105,7 @@ I2D_TEST(phys_joint_prismatic_motor_reaches_its_speed_within_its_max_force) {
     constexpr double force_factor = 1.5;   // max force over the slope's pull
     constexpr float speed_up_slope = 2.0f;  // m/s
     Scene s;
-    const double g = gravity(s);
+    const double g = s.gravity();
     const double mass = box_mass(0.5, 0.5, 1.0);
     const float max_force = float(force_factor * mass * g * std::sin(incline));
     const Incline in = make_incline(s, [&](i2d_prismatic_joint_def& def) {

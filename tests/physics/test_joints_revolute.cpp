@@ -18,8 +18,6 @@ constexpr float pendulum_length = 1.0f;  // m, pivot to the bob's centre
 constexpr float bob_radius = 0.05f;      // m: nearly a point mass
 const i2d_vec2 pivot{0.0f, 10.0f};
 
-double gravity(const Scene& s) { return -double(i2d_world_get_gravity(s.world).y); }
-
 struct Pendulum {
     i2d_body_id bob;
     i2d_joint_id joint;
@@ -55,7 +53,7 @@ I2D_TEST(phys_joint_pendulum_small_angle_period_is_2pi_sqrt_l_over_g) {
     Scene s;
     const Pendulum p = make_pendulum(s, amplitude);
     I2D_REQUIRE(!I2D_IS_NULL(p.bob) && !I2D_IS_NULL(p.joint));
-    const double g = gravity(s);
+    const double g = s.gravity();
     Oscillation swing;
     double worst_length_error = 0.0;
     for (int k = 1; k <= steps_for(duration); ++k) {
@@ -85,7 +83,7 @@ I2D_TEST(phys_joint_pendulum_keeps_its_energy_within_2_percent_over_60s) {
     Scene s;
     const Pendulum p = make_pendulum(s, amplitude);
     I2D_REQUIRE(!I2D_IS_NULL(p.bob) && !I2D_IS_NULL(p.joint));
-    const double g = gravity(s), m = i2d_body_get_mass(p.bob);
+    const double g = s.gravity(), m = i2d_body_get_mass(p.bob);
     // Energy measured from the lowest point the bob can reach.
     auto energy = [&] {
         return kinetic_energy(p.bob) + m * g * (double(position(p.bob).y) - (double(pivot.y) - pendulum_length));
@@ -111,7 +109,7 @@ I2D_TEST(phys_joint_hanging_pendulum_reaction_force_is_its_weight) {
     const Pendulum p = make_pendulum(s, 0.0);
     I2D_REQUIRE(!I2D_IS_NULL(p.bob) && !I2D_IS_NULL(p.joint));
     I2D_REQUIRE(s.step(steps_for(1.0)));
-    const double weight = double(i2d_body_get_mass(p.bob)) * gravity(s);
+    const double weight = double(i2d_body_get_mass(p.bob)) * s.gravity();
     const i2d_vec2 f = i2d_joint_get_reaction_force(p.joint);
     fprintf(stderr, "    reaction (%.5f, %.5f) N, weight %.5f N (%+.3f %%), torque %.2e N m\n", f.x, f.y, weight,
             100.0 * (double(f.y) / weight - 1.0), double(i2d_joint_get_reaction_torque(p.joint)));

@@ -16,8 +16,6 @@ namespace {
 
 using namespace phys;
 
-double gravity(const Scene& s) { return -double(i2d_world_get_gravity(s.world).y); }
-
 // Two 1 m boxes resting on the ground 3 m apart.
 struct Pair {
     i2d_body_id a, b;
@@ -203,7 +201,7 @@ i2d_world_def no_sleep_def() {
 // first lets its weight fall freely (g t^2 / 2 in the next half second).
 I2D_TEST(phys_joint_breakable_force_event_fires_above_the_threshold_and_not_below) {
     Scene s(no_sleep_def());
-    const double g = gravity(s);
+    const double g = s.gravity();
     i2d_joint_id joints[2];
     i2d_body_id weights[2];
     const double factors[2] = {0.9, 1.1};
@@ -250,7 +248,7 @@ I2D_TEST(phys_joint_breakable_force_event_fires_above_the_threshold_and_not_belo
 // a torque threshold of 0.9 of that lists the joint, 1.1 never does.
 I2D_TEST(phys_joint_breakable_torque_event_fires_above_the_threshold_and_not_below) {
     Scene s(no_sleep_def());
-    const double g = gravity(s);
+    const double g = s.gravity();
     i2d_joint_id joints[2];
     const double factors[2] = {0.9, 1.1};
     constexpr float half_length = 0.5f;
