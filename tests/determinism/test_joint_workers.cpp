@@ -18,7 +18,7 @@ namespace {
 constexpr int hash_every = 10;
 
 // The world's state hash every hash_every steps, and the awake bodies at the end.
-std::vector<uint64_t> run_heap(int workers, bool own_jobs, int steps, int32_t* awake_at_end) {
+std::vector<uint64_t> run_heap(int workers, bool own_jobs, int steps, int32_t* awake_at_end, int* tasks_run = nullptr) {
     std::vector<uint64_t> hashes;
     std::unique_ptr<det::JobSystem> jobs;
     i2d_world_def def = i2d_default_world_def();
@@ -40,6 +40,9 @@ std::vector<uint64_t> run_heap(int workers, bool own_jobs, int steps, int32_t* a
     }
     *awake_at_end = i2d_world_get_counters(world).awake_body_count;
     i2d_world_destroy(world);
+    if (tasks_run != nullptr) {
+        *tasks_run = jobs ? jobs->tasks_run() : 0;
+    }
     return hashes;
 }
 
@@ -47,7 +50,8 @@ void check_workers(int steps) {
     int32_t awake_one = 0, awake_two = 0, awake_jobs = 0;
     const std::vector<uint64_t> one = run_heap(1, false, steps, &awake_one);
     const std::vector<uint64_t> two = run_heap(2, false, steps, &awake_two);
-    const std::vector<uint64_t> jobs = run_heap(2, true, steps, &awake_jobs);
+    int tasks = 0;
+    const std::vector<uint64_t> jobs = run_heap(2, true, steps, &awake_jobs, &tasks);
     I2D_REQUIRE(!one.empty());
     int first_two = -1, first_jobs = -1;
     for (size_t k = 0; k < one.size(); ++k) {
@@ -59,11 +63,14 @@ void check_workers(int steps) {
         }
     }
     fprintf(stderr, "    %d steps: hash %016" PRIx64 " with 1 worker (%d awake at the end); first difference: "
-            "2 workers %d, 2 on shuffled jobs %d (-1: none)\n",
-            steps, one.back(), int(awake_one), first_two, first_jobs);
+            "2 workers %d, 2 on shuffled jobs %d (-1: none); the job system ran %d tasks\n",
+            steps, one.back(), int(awake_one), first_two, first_jobs, tasks);
     I2D_CHECK(first_two < 0 && two.size() == one.size());
     I2D_CHECK(first_jobs < 0 && jobs.size() == one.size());
     I2D_CHECK(awake_two == awake_one && awake_jobs == awake_one);
+    // The heap is large enough that the step shared its work: the comparison is not of two
+    // single-threaded runs.
+    I2D_CHECK(tasks > 0);
 }
 
 }  // namespace
