@@ -49,7 +49,10 @@ struct JointRef {
 
 class Call {
 public:
-    explicit Call(const char* function) : function_(function) { set_ok(); }
+    explicit Call(const char* function) : function_(function) {
+        detail_[0] = '\0';  // not the whole buffer: every entry point makes a Call
+        set_ok();
+    }
 
     /// Records the failure; always returns false so that checks read `if (!ok) return`.
     bool fail(i2d_status status, const char* format, ...)
@@ -84,7 +87,7 @@ private:
     bool decode(uint64_t bits, IdKind kind, const char* kind_name, IdFields& fields, World*& world);
 
     const char* function_;
-    char detail_[400] = "";  // the last failure's detail, for body(id, out, field)
+    char detail_[400];  // the last failure's detail, for body(id, out, field)
 };
 
 /// Runs an entry point's body; a failure to allocate becomes I2D_ERR_OUT_OF_MEMORY, any

@@ -11,6 +11,7 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "api_test_support.h"
 #include "check.h"
 
 /* ---- Fixture ---------------------------------------------------------------------- */
@@ -19,6 +20,9 @@
 
 static const char* const k_kind_names[KIND_COUNT] = {"distance", "filter",   "motor", "mouse",
                                                      "prismatic", "revolute", "weld",  "wheel"};
+
+/* Mismatch reports per test (api_test_support.h): a broken rule shows without a flood. */
+static const int k_report_budget = 20;
 
 /* Distinct user data, so that a value read back is known to be the one given. */
 static int k_marker;
@@ -214,6 +218,7 @@ static bool default_base_ok(const i2d_joint_base* base) {
 }
 
 I2D_TEST(api_joint_defaults) {
+    g_reports_left = k_report_budget;
     const i2d_world_def world = i2d_default_world_def();
     I2D_CHECK(world.joint_hertz == 60.0f && world.joint_damping_ratio == 2.0f);
 
@@ -266,6 +271,7 @@ I2D_TEST(api_joint_defaults) {
 /* ---- Creation ------------------------------------------------------------------------- */
 
 I2D_TEST(api_joint_create_every_kind) {
+    g_reports_left = k_report_budget;
     fixture f = make_fixture();
     i2d_joint_id joints[KIND_COUNT];
     for (int k = 0; k < KIND_COUNT; ++k) {
@@ -308,6 +314,7 @@ I2D_TEST(api_joint_create_every_kind) {
 }
 
 I2D_TEST(api_joint_create_wakes_bodies) {
+    g_reports_left = k_report_budget;
     fixture f = make_fixture();
     settle(&f);
     I2D_REQUIRE(!i2d_body_is_awake(f.a) && !i2d_body_is_awake(f.b));
@@ -327,6 +334,7 @@ I2D_TEST(api_joint_create_wakes_bodies) {
 
 /* Refusals every kind shares: the def, its bodies, its base. */
 I2D_TEST(api_joint_create_refusals_common) {
+    g_reports_left = k_report_budget;
     fixture f = make_fixture();
     for (int k = 0; k < KIND_COUNT; ++k) {
         const i2d_joint_type kind = (i2d_joint_type)k;
@@ -527,6 +535,7 @@ static const def_value k_def_in_range[] = {
 static void set_def_float(any_def* d, size_t offset, float value) { memcpy((char*)d + offset, &value, sizeof value); }
 
 I2D_TEST(api_joint_create_refusals_settings) {
+    g_reports_left = k_report_budget;
     fixture f = make_fixture();
     const float bad_values[] = {NAN, INFINITY, -INFINITY};
     for (size_t i = 0; i < sizeof k_def_floats / sizeof k_def_floats[0]; ++i) {
@@ -572,7 +581,7 @@ I2D_TEST(api_joint_create_refusals_settings) {
         set_def_float(&d, row->offset, row->value);
         if (create_any(f.world, row->kind, &d).bits == 0) {
             ++i2d_check_failures;
-            fprintf(stderr, "%s: %s joint with %s = %g refused: %s\n", __FILE__, k_kind_names[row->kind], row->name,
+            report("%s joint with %s = %g refused: %s", k_kind_names[row->kind], row->name,
                     (double)row->value, i2d_last_error_message());
         }
     }
@@ -582,6 +591,7 @@ I2D_TEST(api_joint_create_refusals_settings) {
 /* What a def becomes: axes at unit length, a distance joint's range clamped into the
  * lengths it can hold. */
 I2D_TEST(api_joint_create_normalises) {
+    g_reports_left = k_report_budget;
     fixture f = make_fixture();
     any_def d = default_def(I2D_JOINT_PRISMATIC, f.a, f.b);
     d.prismatic.local_axis_a = v2(3.0f, 4.0f);
@@ -715,6 +725,7 @@ static const vec2_setting k_vec2_settings[] = {
 #define COUNT_OF(array) (sizeof(array) / sizeof((array)[0]))
 
 I2D_TEST(api_joint_settings_round_trip) {
+    g_reports_left = k_report_budget;
     fixture f = make_fixture();
     i2d_joint_id joints[KIND_COUNT];
     for (int k = 0; k < KIND_COUNT; ++k) {
@@ -727,9 +738,9 @@ I2D_TEST(api_joint_settings_round_trip) {
         const float read = s->get(joints[s->kind]);
         if (status != I2D_OK || read != s->good || !i2d_body_is_awake(f.a) || !i2d_body_is_awake(f.b)) {
             ++i2d_check_failures;
-            fprintf(stderr, "%s: %s %s: set %g gave %s, read %g, bodies awake %d%d\n", __FILE__,
-                    k_kind_names[s->kind], s->name, (double)s->good, i2d_status_string(status), (double)read,
-                    i2d_body_is_awake(f.a), i2d_body_is_awake(f.b));
+            report("%s %s: set %g gave %s, read %g, bodies awake %d%d", k_kind_names[s->kind], s->name,
+                   (double)s->good, i2d_status_string(status), (double)read, i2d_body_is_awake(f.a),
+                   i2d_body_is_awake(f.b));
         }
     }
     for (size_t i = 0; i < COUNT_OF(k_bool_settings); ++i) {
@@ -739,7 +750,7 @@ I2D_TEST(api_joint_settings_round_trip) {
         const i2d_status status = s->set(joints[s->kind], flipped);
         if (status != I2D_OK || s->get(joints[s->kind]) != flipped || !i2d_body_is_awake(f.a)) {
             ++i2d_check_failures;
-            fprintf(stderr, "%s: %s %s did not flip (%s)\n", __FILE__, k_kind_names[s->kind], s->name,
+            report("%s %s did not flip (%s)", k_kind_names[s->kind], s->name,
                     i2d_status_string(status));
         }
     }
@@ -750,7 +761,7 @@ I2D_TEST(api_joint_settings_round_trip) {
         const i2d_vec2 read = s->get(joints[s->kind]);
         if (status != I2D_OK || read.x != s->expected.x || read.y != s->expected.y || !i2d_body_is_awake(f.a)) {
             ++i2d_check_failures;
-            fprintf(stderr, "%s: %s %s: read (%g, %g), status %s\n", __FILE__, k_kind_names[s->kind], s->name,
+            report("%s %s: read (%g, %g), status %s", k_kind_names[s->kind], s->name,
                     (double)read.x, (double)read.y, i2d_status_string(status));
         }
     }
@@ -788,6 +799,7 @@ I2D_TEST(api_joint_settings_round_trip) {
 }
 
 I2D_TEST(api_joint_setter_refusals) {
+    g_reports_left = k_report_budget;
     fixture f = make_fixture();
     i2d_joint_id joints[KIND_COUNT];
     for (int k = 0; k < KIND_COUNT; ++k) {
@@ -871,6 +883,7 @@ I2D_TEST(api_joint_setter_refusals) {
 
 /* Getters of one kind on a joint of another: zero and INVALID_ARGUMENT; setters refused. */
 I2D_TEST(api_joint_wrong_kind) {
+    g_reports_left = k_report_budget;
     fixture f = make_fixture();
     i2d_joint_id joints[KIND_COUNT];
     for (int k = 0; k < KIND_COUNT; ++k) {
@@ -885,7 +898,7 @@ I2D_TEST(api_joint_wrong_kind) {
             const float read = s->get(joints[k]);
             if (read != 0.0f || i2d_last_status() != I2D_ERR_INVALID_ARGUMENT) {
                 ++i2d_check_failures;
-                fprintf(stderr, "%s: %s getter %s on a %s joint: %g, %s\n", __FILE__, k_kind_names[s->kind], s->name,
+                report("%s getter %s on a %s joint: %g, %s", k_kind_names[s->kind], s->name,
                         k_kind_names[k], (double)read, i2d_status_string(i2d_last_status()));
             }
             CHECK_REFUSED(&f, I2D_ERR_INVALID_ARGUMENT, k_kind_names[k], s->set(joints[k], s->good));
@@ -939,11 +952,12 @@ static void check_joint_id_refused(const fixture* f, i2d_joint_id j, const char*
                       i2d_last_status() == I2D_ERR_INVALID_HANDLE;
     if (!zero) {
         ++i2d_check_failures;
-        fprintf(stderr, "%s: %s joint id: a getter answered or did not record INVALID_HANDLE\n", __FILE__, what);
+        report("%s joint id: a getter answered or did not record INVALID_HANDLE", what);
     }
 }
 
 I2D_TEST(api_joint_ids_go_stale) {
+    g_reports_left = k_report_budget;
     fixture f = make_fixture();
     check_joint_id_refused(&f, I2D_NULL_JOINT_ID, "null");
     i2d_joint_id as_joint;
@@ -1013,6 +1027,7 @@ static bool probe_locked(i2d_shape_id shape, void* context) {
 }
 
 I2D_TEST(api_joint_world_locked) {
+    g_reports_left = k_report_budget;
     fixture f = make_fixture();
     locked_probe probe;
     memset(&probe, 0, sizeof probe);
@@ -1040,6 +1055,7 @@ I2D_TEST(api_joint_world_locked) {
 /* ---- Measures ------------------------------------------------------------------------ */
 
 I2D_TEST(api_joint_measures) {
+    g_reports_left = k_report_budget;
     fixture f = make_fixture(); /* a at (0, 4), b at (3, 4) */
     any_def d = default_def(I2D_JOINT_DISTANCE, f.a, f.b);
     base_of(&d)->local_anchor_a = v2(0.0f, 0.5f);
@@ -1073,6 +1089,7 @@ I2D_TEST(api_joint_measures) {
  * below its weight (10 N): every step lists it, with its public id and user data; a twin
  * with the default threshold never is. */
 I2D_TEST(api_joint_events_threshold) {
+    g_reports_left = k_report_budget;
     i2d_world_def world_def = i2d_default_world_def();
     const i2d_world_id world = i2d_world_create(&world_def);
     const i2d_body_id anchor = make_body(world, I2D_BODY_STATIC, 0.0f, 10.0f);

@@ -690,14 +690,38 @@ i2d_joint_id create_joint(FuzzInput& in) {
     std::memset(&def, 0, sizeof def);
     uint32_t* cookie = nullptr;
     switch (kind) {
-        case I2D_JOINT_DISTANCE: def.distance = i2d_default_distance_joint_def(); cookie = &def.distance.internal_cookie; break;
-        case I2D_JOINT_FILTER: def.filter = i2d_default_filter_joint_def(); cookie = &def.filter.internal_cookie; break;
-        case I2D_JOINT_MOTOR: def.motor = i2d_default_motor_joint_def(); cookie = &def.motor.internal_cookie; break;
-        case I2D_JOINT_MOUSE: def.mouse = i2d_default_mouse_joint_def(); cookie = &def.mouse.internal_cookie; break;
-        case I2D_JOINT_PRISMATIC: def.prismatic = i2d_default_prismatic_joint_def(); cookie = &def.prismatic.internal_cookie; break;
-        case I2D_JOINT_REVOLUTE: def.revolute = i2d_default_revolute_joint_def(); cookie = &def.revolute.internal_cookie; break;
-        case I2D_JOINT_WELD: def.weld = i2d_default_weld_joint_def(); cookie = &def.weld.internal_cookie; break;
-        default: def.wheel = i2d_default_wheel_joint_def(); cookie = &def.wheel.internal_cookie; break;
+        case I2D_JOINT_DISTANCE:
+            def.distance = i2d_default_distance_joint_def();
+            cookie = &def.distance.internal_cookie;
+            break;
+        case I2D_JOINT_FILTER:
+            def.filter = i2d_default_filter_joint_def();
+            cookie = &def.filter.internal_cookie;
+            break;
+        case I2D_JOINT_MOTOR:
+            def.motor = i2d_default_motor_joint_def();
+            cookie = &def.motor.internal_cookie;
+            break;
+        case I2D_JOINT_MOUSE:
+            def.mouse = i2d_default_mouse_joint_def();
+            cookie = &def.mouse.internal_cookie;
+            break;
+        case I2D_JOINT_PRISMATIC:
+            def.prismatic = i2d_default_prismatic_joint_def();
+            cookie = &def.prismatic.internal_cookie;
+            break;
+        case I2D_JOINT_REVOLUTE:
+            def.revolute = i2d_default_revolute_joint_def();
+            cookie = &def.revolute.internal_cookie;
+            break;
+        case I2D_JOINT_WELD:
+            def.weld = i2d_default_weld_joint_def();
+            cookie = &def.weld.internal_cookie;
+            break;
+        default:
+            def.wheel = i2d_default_wheel_joint_def();
+            cookie = &def.wheel.internal_cookie;
+            break;
     }
     i2d_joint_base& base = def.revolute.base;
     base.body_a = pick_body(in);

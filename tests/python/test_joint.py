@@ -66,3 +66,18 @@ def test_world_def_joint_settings():
         assert world.is_valid
     with pytest.raises(impulse2d.InvalidArgument, match="joint_hertz"):
         impulse2d.World(joint_hertz=-1.0)
+
+
+def test_breakable_joint_is_listed(world):
+    anchor = world.create_body(impulse2d.STATIC, position=(0.0, 10.0))
+    box = world.create_body(position=(0.0, 8.0))
+    box.create_box(0.5, 0.5)  # 1 kg: 10 N of weight
+    hinge = world.create_joint("revolute", anchor, box, local_anchor_a=(0.0, -1.0), local_anchor_b=(0.0, 1.0),
+                               force_threshold=1.0)
+    for _ in range(10):
+        world.step(1 / 60, 4)
+    assert world.joint_events() == [hinge]
+    assert math.isclose(hinge.reaction_force[1], 10.0, rel_tol=0.05)
+    hinge.destroy()
+    world.step(1 / 60, 4)
+    assert world.joint_events() == [] and world.joint_count == 0
