@@ -477,6 +477,7 @@ static bool sanity_tumbler(const bench_state* state, int32_t steps_run, bench_sa
 
 #define JOINT_GRID_N 100
 #define JOINT_GRID_RADIUS 0.4f
+#define JOINT_GRID_HALF_PITCH 0.5f /* discs 1 m apart, joined halfway */
 #define JOINT_GRID_CATEGORY 2u /* the discs' own category, which their mask leaves out */
 /* Seven discs of the top row (columns 47..53) are static: the net hangs from them. */
 #define JOINT_GRID_ANCHORS_FROM (JOINT_GRID_N / 2 - 3)
@@ -528,8 +529,8 @@ static bool create_joint_grid(bench_state* state) {
                 i2d_revolute_joint_def def = i2d_default_revolute_joint_def();
                 def.base.body_a = grid[index - 1];
                 def.base.body_b = body;
-                def.base.local_anchor_a = vec2(0.0f, -0.5f);
-                def.base.local_anchor_b = vec2(0.0f, 0.5f);
+                def.base.local_anchor_a = vec2(0.0f, -JOINT_GRID_HALF_PITCH);
+                def.base.local_anchor_b = vec2(0.0f, JOINT_GRID_HALF_PITCH);
                 ok = keep_joint(state, i2d_joint_create_revolute(state->world, &def));
             }
             /* Box2D also joins the seven static discs to one another; impulse2d refuses a joint with no
@@ -538,8 +539,8 @@ static bool create_joint_grid(bench_state* state) {
                 i2d_revolute_joint_def def = i2d_default_revolute_joint_def();
                 def.base.body_a = grid[index - n];
                 def.base.body_b = body;
-                def.base.local_anchor_a = vec2(0.5f, 0.0f);
-                def.base.local_anchor_b = vec2(-0.5f, 0.0f);
+                def.base.local_anchor_a = vec2(JOINT_GRID_HALF_PITCH, 0.0f);
+                def.base.local_anchor_b = vec2(-JOINT_GRID_HALF_PITCH, 0.0f);
                 ok = keep_joint(state, i2d_joint_create_revolute(state->world, &def));
             }
             grid[index] = body;
@@ -582,6 +583,17 @@ static bool sanity_joint_grid(const bench_state* state, int32_t steps_run, bench
 #define SPINNER_PIVOT_Y 12.0f
 #define SPINNER_SPEED 5.0f      /* rad/s */
 #define SPINNER_BODIES (2 * 3038)
+#define SPINNER_FRICTION 0.1f     /* drum and load */
+#define SPINNER_BLADE_HALF_WIDTH 0.4f
+#define SPINNER_BLADE_HALF_LENGTH 20.0f
+#define SPINNER_BLADE_ROUNDING 0.2f
+#define SPINNER_LOAD_DENSITY 0.25f
+#define SPINNER_LOAD_RESTITUTION 0.1f
+#define SPINNER_LOAD_SIZE 0.35f   /* the circles' radius and the squares' half extent */
+#define SPINNER_CAPSULE_HALF 0.25f /* the capsules' half length and radius */
+#define SPINNER_GRID_HALF_WIDTH 23.0f
+#define SPINNER_GRID_BOTTOM 2.0f
+#define SPINNER_GRID_PITCH 0.5f
 /* The blade's motor has unlimited torque, so the bodies barely slow it: its speed within 1 % (Box2D v3
  * keeps it between 4.960 and 5.002 rad/s over the 500 steps; impulse2d read 4.895 at step 20 and
  * 4.99 at step 100, 2026-11-24). */
@@ -597,7 +609,6 @@ static bool sanity_joint_grid(const bench_state* state, int32_t steps_run, bench
  * grid from (-23, 2) with 0.5 m pitch, 92 to a row. 500 steps, sleep on (the blade keeps them
  * awake). */
 static bool create_spinner(bench_state* state) {
-    static const i2d_vec2 square_corners[4] = {{-0.4f, -20.0f}, {0.4f, -20.0f}, {0.4f, 20.0f}, {-0.4f, 20.0f}};
     i2d_shape_def drum_def = i2d_default_shape_def(), blade_def = i2d_default_shape_def();
     i2d_shape_def load_def = i2d_default_shape_def();
     i2d_revolute_joint_def joint_def;
@@ -605,8 +616,9 @@ static bool create_spinner(bench_state* state) {
     i2d_body_def body_def = i2d_default_body_def();
     i2d_body_id ground;
     i2d_vec2 points[SPINNER_POINTS];
+    i2d_vec2 blade_corners[4];
     i2d_circle circle;
-    float x = -23.0f, y = 2.0f;
+    float x = -SPINNER_GRID_HALF_WIDTH, y = SPINNER_GRID_BOTTOM;
     int32_t i;
     if (!create_world(state, true) || !reserve_bodies(state, SPINNER_BODIES, 0)) {
         return false;
@@ -620,7 +632,7 @@ static bool create_spinner(bench_state* state) {
         i2d_rot q = i2d_make_rot(-2.0f * PI_F * (float)i / (float)SPINNER_POINTS);
         points[i] = vec2(SPINNER_DRUM_RADIUS * q.c, SPINNER_DRUM_Y + SPINNER_DRUM_RADIUS * q.s);
     }
-    drum_def.friction = 0.1f;
+    drum_def.friction = SPINNER_FRICTION;
     for (i = 0; i < SPINNER_POINTS; ++i) {
         if (I2D_IS_NULL(i2d_shape_create_segment(ground, &drum_def, points[i], points[(i + 1) % SPINNER_POINTS]))) {
             return false;
@@ -632,7 +644,11 @@ static bool create_spinner(bench_state* state) {
     state->mover_start = body_def.position;
     state->mover = i2d_body_create(state->world, &body_def);
     blade_def.friction = 0.0f;
-    if (I2D_IS_NULL(state->mover) || i2d_make_polygon(square_corners, 4, 0.2f, &blade) != I2D_OK ||
+    blade_corners[0] = vec2(-SPINNER_BLADE_HALF_WIDTH, -SPINNER_BLADE_HALF_LENGTH);
+    blade_corners[1] = vec2(SPINNER_BLADE_HALF_WIDTH, -SPINNER_BLADE_HALF_LENGTH);
+    blade_corners[2] = vec2(SPINNER_BLADE_HALF_WIDTH, SPINNER_BLADE_HALF_LENGTH);
+    blade_corners[3] = vec2(-SPINNER_BLADE_HALF_WIDTH, SPINNER_BLADE_HALF_LENGTH);
+    if (I2D_IS_NULL(state->mover) || i2d_make_polygon(blade_corners, 4, SPINNER_BLADE_ROUNDING, &blade) != I2D_OK ||
         I2D_IS_NULL(i2d_shape_create_polygon_from(state->mover, &blade_def, &blade))) {
         return false;
     }
@@ -643,11 +659,11 @@ static bool create_spinner(bench_state* state) {
     if (I2D_IS_NULL(i2d_joint_create_revolute(state->world, &joint_def))) {
         return false;
     }
-    load_def.density = 0.25f;
-    load_def.friction = 0.1f;
-    load_def.restitution = 0.1f;
+    load_def.density = SPINNER_LOAD_DENSITY;
+    load_def.friction = SPINNER_FRICTION;
+    load_def.restitution = SPINNER_LOAD_RESTITUTION;
     circle.center = vec2(0.0f, 0.0f);
-    circle.radius = 0.35f;
+    circle.radius = SPINNER_LOAD_SIZE;
     for (i = 0; i < SPINNER_BODIES; ++i) {
         i2d_body_id body = create_body(state->world, I2D_BODY_DYNAMIC, vec2(x, y));
         i2d_shape_id shape;
@@ -655,11 +671,12 @@ static bool create_spinner(bench_state* state) {
             return false;
         }
         if (i % 3 == 0) {
-            shape = i2d_shape_create_capsule(body, &load_def, vec2(-0.25f, 0.0f), vec2(0.25f, 0.0f), 0.25f);
+            shape = i2d_shape_create_capsule(body, &load_def, vec2(-SPINNER_CAPSULE_HALF, 0.0f),
+                                             vec2(SPINNER_CAPSULE_HALF, 0.0f), SPINNER_CAPSULE_HALF);
         } else if (i % 3 == 1) {
             shape = i2d_shape_create_circle(body, &load_def, &circle);
         } else {
-            shape = i2d_shape_create_box(body, &load_def, 0.35f, 0.35f);
+            shape = i2d_shape_create_box(body, &load_def, SPINNER_LOAD_SIZE, SPINNER_LOAD_SIZE);
         }
         if (I2D_IS_NULL(shape)) {
             return false;
@@ -668,10 +685,10 @@ static bool create_spinner(bench_state* state) {
         state->start_x[state->body_count] = x;
         state->start_y[state->body_count] = y;
         state->body_count++;
-        x += 0.5f;
-        if (x >= 23.0f) {
-            x = -23.0f;
-            y += 0.5f;
+        x += SPINNER_GRID_PITCH;
+        if (x >= SPINNER_GRID_HALF_WIDTH) {
+            x = -SPINNER_GRID_HALF_WIDTH;
+            y += SPINNER_GRID_PITCH;
         }
     }
     return true;
