@@ -26,6 +26,8 @@ namespace i2d {
 struct JointStep {
     float h = 0.0f, inv_h = 0.0f;  // the substep and its inverse
     Softness rigid;                // the rigid rows: the world's joint_hertz and damping ratio
+    float max_speed = 0.0f;        // m/s and rad/s: the limits no joint may push a body past
+    float max_spin = 0.0f;
 };
 
 struct JointConstraint {

@@ -2,6 +2,8 @@
 // JointSolver: the common part of preparing a joint, and the dispatch to its kind.
 #include "dynamics/joint_solver.hpp"
 
+#include <cmath>
+
 #include "math/math.hpp"
 
 namespace i2d {
@@ -23,6 +25,15 @@ JointFrame frame_of(const JointDef& d) {
         case JointType::motor: return {d.motor.linear_offset, Vec2{}, d.motor.angular_offset};
         default: return {d.local_anchor_a, d.local_anchor_b, 0.0f};
     }
+}
+
+// Whether the joint left both bodies within the world's speed limits (NaN fails). A
+// joint fighting another on one body (two that cannot both hold) can otherwise drive
+// the velocities and its impulses up without end within a few substeps.
+bool within_limits(const JointBodies& j, const JointStep& step) {
+    const float v2 = step.max_speed * step.max_speed;
+    return length_squared(j.va) <= v2 && length_squared(j.vb) <= v2 && std::fabs(j.wa) <= step.max_spin &&
+           std::fabs(j.wb) <= step.max_spin;
 }
 
 // A side the joint can move: a dynamic body that is awake.
@@ -82,10 +93,12 @@ void JointSolver::prepare(const Pool<Joint>& joints, const Pool<Body>& bodies, i
     }
 }
 
+// A joint whose impulses would break the speed limits gives them up and starts over.
 void JointSolver::warm_start(int32_t begin, int32_t end, BodyState* states) {
     for (int32_t k = begin; k < end; ++k) {
-        const JointConstraint& c = constraints_[std::size_t(k)];
-        JointBodies j = load_bodies(c, states);
+        JointConstraint& c = constraints_[std::size_t(k)];
+        const JointBodies before = load_bodies(c, states);
+        JointBodies j = before;
         switch (c.def->type) {
             case JointType::revolute: warm_start_revolute(c, j); break;
             case JointType::prismatic: warm_start_prismatic(c, j); break;
@@ -96,6 +109,10 @@ void JointSolver::warm_start(int32_t begin, int32_t end, BodyState* states) {
             case JointType::mouse: warm_start_mouse(c, j); break;
             default: break;
         }
+        if (!within_limits(j, step_)) {
+            j = before;
+            c.impulses = {};
+        }
         store_bodies(c, j, states);
     }
 }
@@ -103,7 +120,8 @@ void JointSolver::warm_start(int32_t begin, int32_t end, BodyState* states) {
 void JointSolver::solve(int32_t begin, int32_t end, BodyState* states, bool use_bias) {
     for (int32_t k = begin; k < end; ++k) {
         JointConstraint& c = constraints_[std::size_t(k)];
-        JointBodies j = load_bodies(c, states);
+        const JointBodies before = load_bodies(c, states);
+        JointBodies j = before;
         switch (c.def->type) {
             case JointType::revolute: solve_revolute(c, j, step_, use_bias); break;
             case JointType::prismatic: solve_prismatic(c, j, step_, use_bias); break;
@@ -113,6 +131,10 @@ void JointSolver::solve(int32_t begin, int32_t end, BodyState* states, bool use_
             case JointType::motor: solve_motor(c, j, step_, use_bias); break;
             case JointType::mouse: solve_mouse(c, j, step_, use_bias); break;
             default: break;
+        }
+        if (!within_limits(j, step_)) {
+            j = before;
+            c.impulses = {};
         }
         store_bodies(c, j, states);
     }

@@ -1,8 +1,11 @@
 // SPDX-License-Identifier: MIT
 // Joints in the core world: their lists on the bodies, the collision filter they impose,
 // the islands they join, and what creating, destroying and changing them does.
+#include <cmath>
+
 #include "check.h"
 #include "world_fixture.hpp"
+#include "math/math.hpp"
 
 using namespace i2d;
 using unit::add_body;
@@ -136,4 +139,32 @@ I2D_TEST(unit_joint_gathered_once_from_the_first_awake_body) {
     joints.gather_awake(awake, gathered);
     I2D_CHECK(gathered.size() == 2);
     I2D_CHECK((gathered[0] == held && gathered[1] == link) || (gathered[0] == link && gathered[1] == held));
+}
+
+// Found by the API fuzzer: a wheel and a prismatic joint on one box and the ground ask
+// for what no pose gives; the two pushed the box's spin past any bound within a step
+// and the world filled with NaN. Now each gives up what it cannot hold.
+I2D_TEST(unit_joints_that_cannot_both_hold_leave_the_world_finite) {
+    World world{WorldDef{}};
+    const int32_t ground = add_body(world, BodyType::static_body, {0.0f, -1.0f});
+    const int32_t box = add_body(world, BodyType::dynamic, {-1.0f, -3.86f});
+    add_box(world, box, 0.25f, 0.25f);
+    JointDef wheel;
+    wheel.type = JointType::wheel;
+    wheel.body_a = box;
+    wheel.body_b = ground;
+    world.create_joint(wheel);
+    JointDef prismatic;
+    prismatic.type = JointType::prismatic;
+    prismatic.body_a = ground;
+    prismatic.body_b = box;
+    prismatic.local_anchor_a = {-1.0f, 0.5f};
+    prismatic.local_anchor_b = {-4.0f, -3.25f};
+    world.create_joint(prismatic);
+    for (int32_t i = 0; i < 600; ++i) {
+        world.step(time_step, substeps);
+        const Body& b = world.bodies[box];
+        I2D_CHECK(is_finite(b.center) && is_finite(b.linear_velocity) && std::isfinite(b.angular_velocity));
+    }
+    world.validate();
 }
