@@ -10,6 +10,10 @@ namespace i2d {
 
 namespace {
 
+// How far past the speed limits a joint's pass may leave a body before it counts as
+// running away.
+constexpr float runaway_factor = 16.0f;
+
 // Where a kind's anchors sit and what angle counts as zero. The motor joint aims B's
 // origin at its offset point of A; the mouse joint's A plays no part.
 struct JointFrame {
@@ -27,13 +31,15 @@ JointFrame frame_of(const JointDef& d) {
     }
 }
 
-// Whether the joint left both bodies within the world's speed limits (NaN fails). A
-// joint fighting another on one body (two that cannot both hold) can otherwise drive
-// the velocities and its impulses up without end within a few substeps.
+// Whether the joint left both bodies short of running away (NaN fails). A joint
+// fighting another on one body (two that cannot both hold) drives the velocities and
+// its impulses up without end, doubling within a few passes; a sound joint may pass the
+// speed limits for a pass (integration brings the body back under them) but never by
+// this much, and stopping it there would tear ragdolls landing fast.
 bool within_limits(const JointBodies& j, const JointStep& step) {
-    const float v2 = step.max_speed * step.max_speed;
-    return length_squared(j.va) <= v2 && length_squared(j.vb) <= v2 && std::fabs(j.wa) <= step.max_spin &&
-           std::fabs(j.wb) <= step.max_spin;
+    const float v = runaway_factor * step.max_speed, w = runaway_factor * step.max_spin;
+    return length_squared(j.va) <= v * v && length_squared(j.vb) <= v * v && std::fabs(j.wa) <= w &&
+           std::fabs(j.wb) <= w;
 }
 
 // A side the joint can move: a dynamic body that is awake.
