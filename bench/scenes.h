@@ -33,8 +33,14 @@ typedef struct bench_state {
     int32_t* marks;          /* indices into bodies of the bodies the sanity check follows */
     int32_t mark_count;      /* (the top box of each pyramid) */
     i2d_aabb region;         /* where every dynamic body must stay (the sanity check) */
-    i2d_body_id mover;       /* a kinematic body (platform, drum); null when none */
+    i2d_body_id mover;       /* a driven body (the small scene's kinematic platform, the tumbler's
+                                drum, the spinner's blade); null when none */
     i2d_vec2 mover_start;
+    i2d_joint_id* joints;    /* joints the sanity check measures (joint_grid, rain); may be NULL */
+    int32_t joint_count;
+    int32_t joint_capacity;
+    void* scene_data;        /* what a scene's hook keeps between steps (rain's columns); freed with
+                                the state */
     bool sleep_enabled;      /* the world's enable_sleep, as create set it */
     /* Untimed steps before the timed ones: 1 (the first step), or, in a scene that waits for
      * sleep, every step until no body was awake. Set by the runner. */
@@ -94,7 +100,8 @@ typedef struct bench_scene {
 extern const bench_scene bench_scenes[];
 extern const int32_t bench_scene_count;
 
-/* The scenes of scenes.md that are not built yet, and why. */
+/* The scenes of scenes.md that are not built yet, and why (none since joints came; the table keeps
+ * the place for the next scene that cannot run). */
 typedef struct bench_missing_scene {
     const char* name;
     const char* reason;

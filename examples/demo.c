@@ -17,7 +17,13 @@
  * - a capsule rolling down a slope (a static segment) into a catch ramp (a turned static box);
  * - a pyramid of ten boxes;
  * - a triangle, a pentagon, a rounded rectangle and a box dropped tilted, which land flat.
- * Third, fast bodies and level geometry:
+ * Third floor, bodies held by joints:
+ * - a chain bridge of 20 planks on revolute joints, hung between two posts with some slack;
+ * - a ragdoll (bench/ragdoll.c: the benchmark's, 11 capsules on 10 revolute joints with limits,
+ *   springs and joint friction) dropped onto the bridge;
+ * - a car whose wheels hang from its chassis on wheel joints (sprung suspension, motors on the
+ *   wheels), driving over a bump.
+ * Fourth floor, fast bodies and level geometry:
  * - a rolling landscape built as one chain of 60 one-sided segments, with a box and a ball
  *   sliding and rolling over its hills (no seam catches them);
  * - a bullet fired at 300 m/s at a 2 cm wall: continuous collision stops it, where the same
@@ -28,6 +34,8 @@
 #define _POSIX_C_SOURCE 199309L
 
 #include <impulse2d/impulse2d.h>
+
+#include "ragdoll.h" /* bench/ragdoll.c: the benchmark's ragdoll */
 
 #include <math.h>
 #include <stdarg.h>
@@ -48,11 +56,13 @@
 
 #define GROUND_HALF_WIDTH 16.0f
 #define WALL_X 15.5f   /* wall centres; inner faces at +-15 m */
-#define ROW2_Y (-6.5f) /* the bottom floor's ground top; the top floor's is at 0 */
-#define ROW3_Y (-13.0f) /* the chain level's mean height */
+#define ROW2_Y (-6.5f) /* the second floor's ground top; the top floor's is at 0 */
+#define ROW3_Y (-14.0f) /* the joint floor's ground top: low enough that the dropped ragdoll's head
+                           stays under the second floor's ground */
+#define ROW4_Y (-19.5f) /* the chain level's mean height, below the joint floor's ground */
 
 #define CHAIN_POINTS 61      /* 60 segments of 0.5 m from x = 15 to x = -15, plus two ghosts */
-#define HILL_HEIGHT 0.8f     /* m: the landscape is ROW3_Y + HILL_HEIGHT cos(HILL_WAVE x) */
+#define HILL_HEIGHT 0.8f     /* m: the landscape is ROW4_Y + HILL_HEIGHT cos(HILL_WAVE x) */
 #define HILL_WAVE 0.35f      /* rad/m */
 #define BULLET_SPEED 300.0f  /* m/s: 5 m per step */
 #define BULLET_RADIUS 0.05f
@@ -95,7 +105,31 @@ static const float ball_restitution[BALL_COUNT] = {0.0f, 0.3f, 0.6f, 0.9f};
 #define CAPSULE_HALF_LENGTH 0.1f
 #define CAPSULE_RADIUS 0.35f
 
-#define MAX_BODIES 64
+/* Third floor: x as on the others, heights above its own ground (see row3()). */
+#define BRIDGE_PLANKS 20
+#define PLANK_HALF_LENGTH 0.25f
+#define PLANK_HALF_THICKNESS 0.06f
+#define PLANK_DENSITY 4.0f
+#define BRIDGE_LEFT_X (-13.0f) /* the left post's top corner, where the bridge hangs from */
+#define BRIDGE_TOP 2.5f        /* the posts' height */
+#define BRIDGE_DIP 1.0f        /* built as a V whose middle is this far below its ends: slack */
+#define POST_HALF_WIDTH 0.25f
+#define RAGDOLL_FEET 4.0f      /* the ragdoll's feet start this high, above the bridge's middle */
+#define CAR_X 0.5f
+#define CAR_HALF_WIDTH 1.0f
+#define CAR_HALF_HEIGHT 0.2f
+#define WHEEL_RADIUS 0.35f
+#define AXLE_X 0.7f            /* the wheels' distance from the chassis centre, each side */
+#define AXLE_DROP 0.4f         /* and below it */
+#define SUSPENSION_HERTZ 5.0f
+#define SUSPENSION_DAMPING 0.7f
+#define WHEEL_SPEED 6.0f       /* rad/s, clockwise: the car drives right */
+#define WHEEL_TORQUE 5.0f      /* N m per wheel */
+#define BUMP_X 5.0f
+#define BUMP_RADIUS 0.5f      /* buried in the 1 m thick ground but for its top */
+#define BUMP_HEIGHT 0.15f      /* how far the bump (a static disc) stands out of the ground */
+
+#define MAX_BODIES 96
 #define MAX_SHAPES_PER_BODY 64 /* the chain's body holds 60 segments */
 
 static const i2d_vec2 still = {0.0f, 0.0f};
@@ -146,6 +180,17 @@ typedef struct demo {
     float capsule_time;           /* when it passed the foot of the slope (0: not yet), s */
     float capsule_distance, capsule_turned;
     float contact_slop;           /* the world's allowed resting penetration, m */
+    /* Third floor. */
+    bench_ragdoll ragdoll;
+    i2d_body_id planks[BRIDGE_PLANKS];
+    i2d_joint_id bridge_joints[BRIDGE_PLANKS + 1];
+    float bridge_middle_start;    /* height of the bridge's middle joint above its ground, m */
+    float widest_gap;             /* the widest any joint's anchors came apart during the run, m */
+    i2d_body_id chassis, wheels[2];
+    i2d_joint_id suspension[2];
+    float chassis_start_x;
+    float most_compressed;        /* the suspension's largest travel during the run, m */
+    /* Fourth floor. */
     i2d_body_id bullet, chain_box, chain_ball;
     float bullet_max_x;           /* the farthest right the bullet got, m */
     float control_max_x;          /* the same shot in a world without continuous collision */
@@ -182,13 +227,23 @@ static void check_shape(i2d_shape_id shape, const char* what) {
     }
 }
 
+static i2d_joint_id check_joint(i2d_joint_id joint, const char* what) {
+    if (I2D_IS_NULL(joint)) {
+        fail(what);
+    }
+    return joint;
+}
+
 static i2d_vec2 vec2(float x, float y) {
     i2d_vec2 v = {x, y};
     return v;
 }
 
-/* A point of the bottom floor, given relative to its ground. */
+/* A point of the second floor, given relative to its ground. */
 static i2d_vec2 row2(float x, float y) { return vec2(x, ROW2_Y + y); }
+
+/* A point of the third floor, given relative to its ground. */
+static i2d_vec2 row3(float x, float y) { return vec2(x, ROW3_Y + y); }
 
 static i2d_vec2 rotate(i2d_rot q, i2d_vec2 v) { return vec2(q.c * v.x - q.s * v.y, q.s * v.x + q.c * v.y); }
 
@@ -411,7 +466,102 @@ static void build_dropped(demo* d) {
     add_box(add_tracked(d, T_TILTED, row2(5.15f, 1.6f), 30.0f / DEG, still), &def, 0.5f, 0.5f);
 }
 
-static float hill(float x) { return ROW3_Y + HILL_HEIGHT * cosf(HILL_WAVE * x); }
+/* A revolute joint between a and b at a world point (each body's anchor is that point). */
+static i2d_joint_id revolute_at(demo* d, i2d_body_id a, i2d_body_id b, i2d_vec2 at) {
+    i2d_revolute_joint_def def = i2d_default_revolute_joint_def();
+    def.base.body_a = a;
+    def.base.body_b = b;
+    def.base.local_anchor_a = i2d_body_get_local_point(a, at);
+    def.base.local_anchor_b = i2d_body_get_local_point(b, at);
+    check_last("i2d_body_get_local_point");
+    return check_joint(i2d_joint_create_revolute(d->world, &def), "i2d_joint_create_revolute");
+}
+
+/* Two posts and 20 planks between them, built as a V (each half a straight line from a post's
+ * top corner down to the middle), so that the chain starts slack and sags into its own curve.
+ * Joint k joins plank k - 1 (or the left post) to plank k (or the right post) at point k. */
+static void build_bridge(demo* d) {
+    i2d_shape_def def = i2d_default_shape_def();
+    float half_length = (float)(BRIDGE_PLANKS / 2) * 2.0f * PLANK_HALF_LENGTH;
+    float half_span = sqrtf(half_length * half_length - BRIDGE_DIP * BRIDGE_DIP);
+    i2d_vec2 points[BRIDGE_PLANKS + 1];
+    i2d_body_id left, right;
+    int k;
+    for (k = 0; k <= BRIDGE_PLANKS; ++k) {
+        /* Along the left half down to the middle, then up the right half. */
+        float along = (float)k / (float)(BRIDGE_PLANKS / 2);
+        float x = BRIDGE_LEFT_X + half_span * along;
+        float y = BRIDGE_TOP - BRIDGE_DIP * (along <= 1.0f ? along : 2.0f - along);
+        points[k] = row3(x, y);
+    }
+    left = add_body(d, I2D_BODY_STATIC, row3(BRIDGE_LEFT_X - POST_HALF_WIDTH, 0.5f * BRIDGE_TOP), 0.0f, still);
+    right = add_body(d, I2D_BODY_STATIC, row3(BRIDGE_LEFT_X + 2.0f * half_span + POST_HALF_WIDTH, 0.5f * BRIDGE_TOP),
+                     0.0f, still);
+    add_box(left, &def, POST_HALF_WIDTH, 0.5f * BRIDGE_TOP);
+    add_box(right, &def, POST_HALF_WIDTH, 0.5f * BRIDGE_TOP);
+    def.density = PLANK_DENSITY;
+    for (k = 0; k < BRIDGE_PLANKS; ++k) {
+        i2d_vec2 a = points[k], b = points[k + 1];
+        d->planks[k] = add_body(d, I2D_BODY_DYNAMIC, vec2(0.5f * (a.x + b.x), 0.5f * (a.y + b.y)),
+                                atan2f(b.y - a.y, b.x - a.x), still);
+        add_box(d->planks[k], &def, PLANK_HALF_LENGTH, PLANK_HALF_THICKNESS);
+    }
+    for (k = 0; k <= BRIDGE_PLANKS; ++k) {
+        d->bridge_joints[k] = revolute_at(d, k == 0 ? left : d->planks[k - 1],
+                                          k == BRIDGE_PLANKS ? right : d->planks[k], points[k]);
+    }
+    d->bridge_middle_start = points[BRIDGE_PLANKS / 2].y - ROW3_Y;
+}
+
+/* The benchmark's ragdoll, standing with its feet RAGDOLL_FEET above the bridge's middle. */
+static void build_ragdoll(demo* d) {
+    float middle_x = i2d_body_get_world_point(d->planks[BRIDGE_PLANKS / 2], vec2(-PLANK_HALF_LENGTH, 0.0f)).x;
+    /* The feet are 0.275 m above the spawn point (scenes.md). */
+    bench_ragdoll_def def = bench_default_ragdoll_def(row3(middle_x, RAGDOLL_FEET - 0.275f), 1);
+    int bone;
+    if (!bench_ragdoll_create(d->world, &def, &d->ragdoll)) {
+        fail("bench_ragdoll_create");
+    }
+    for (bone = 0; bone < BENCH_BONE_COUNT; ++bone) {
+        if (d->body_count == MAX_BODIES) {
+            fprintf(stderr, "impulse2d_demo: more than %d bodies\n", MAX_BODIES);
+            exit(EXIT_FAILURE);
+        }
+        d->bodies[d->body_count++] = d->ragdoll.bodies[bone];
+    }
+}
+
+/* A chassis with a wheel at each end on a wheel joint: the wheel slides on a spring along the
+ * chassis' vertical axis (the suspension) and turns freely but for its motor. The chassis starts
+ * level with the springs unloaded; a static disc half buried in the ground ahead is the bump. */
+static void build_car(demo* d) {
+    i2d_shape_def def = i2d_default_shape_def();
+    i2d_vec2 chassis_at = row3(CAR_X, WHEEL_RADIUS + AXLE_DROP);
+    int side;
+    d->chassis = add_body(d, I2D_BODY_DYNAMIC, chassis_at, 0.0f, still);
+    add_box(d->chassis, &def, CAR_HALF_WIDTH, CAR_HALF_HEIGHT);
+    d->chassis_start_x = chassis_at.x;
+    for (side = 0; side < 2; ++side) {
+        i2d_vec2 axle = row3(CAR_X + (side ? AXLE_X : -AXLE_X), WHEEL_RADIUS);
+        i2d_wheel_joint_def wheel = i2d_default_wheel_joint_def();
+        d->wheels[side] = add_body(d, I2D_BODY_DYNAMIC, axle, 0.0f, still);
+        add_circle(d->wheels[side], &def, WHEEL_RADIUS);
+        wheel.base.body_a = d->chassis;
+        wheel.base.body_b = d->wheels[side];
+        wheel.base.local_anchor_a = i2d_body_get_local_point(d->chassis, axle);
+        wheel.local_axis_a = vec2(0.0f, 1.0f);
+        wheel.enable_spring = true;
+        wheel.hertz = SUSPENSION_HERTZ;
+        wheel.damping_ratio = SUSPENSION_DAMPING;
+        wheel.enable_motor = true;
+        wheel.motor_speed = -WHEEL_SPEED;
+        wheel.max_motor_torque = WHEEL_TORQUE;
+        d->suspension[side] = check_joint(i2d_joint_create_wheel(d->world, &wheel), "i2d_joint_create_wheel");
+    }
+    add_circle(add_body(d, I2D_BODY_STATIC, row3(BUMP_X, BUMP_HEIGHT - BUMP_RADIUS), 0.0f, still), &def, BUMP_RADIUS);
+}
+
+static float hill(float x) { return ROW4_Y + HILL_HEIGHT * cosf(HILL_WAVE * x); }
 
 /* The landscape, listed right to left so that the segments' solid side is below them. */
 static void build_chain_ground(i2d_body_id body) {
@@ -511,6 +661,10 @@ static void build_scene(demo* d) {
     d->pyramid_top = build_pile(d, PYRAMID_X, ROW2_Y, PYRAMID_ROWS, 1);
     d->pyramid_top_start = position(d->pyramid_top);
     build_dropped(d);
+    build_bridge(d);
+    build_ragdoll(d);
+    build_car(d);
+    build_floor(d, ROW3_Y, 3.0f); /* after the bump, so that the ground is drawn over its buried part */
     build_chain_level(d);
     d->momentum_before = mass(d->t[T_HEAVY].body) * velocity(d->t[T_HEAVY].body).x +
                          mass(d->t[T_LIGHT].body) * velocity(d->t[T_LIGHT].body).x;
@@ -593,6 +747,30 @@ static void watch_turning(demo* d, int step) {
     }
 }
 
+/* How far apart a joint's two anchors are in the world, m (0 for a joint that holds exactly). */
+static float joint_gap(i2d_joint_id joint) {
+    i2d_vec2 a = i2d_body_get_world_point(i2d_joint_get_body_a(joint), i2d_joint_get_local_anchor_a(joint));
+    i2d_vec2 b = i2d_body_get_world_point(i2d_joint_get_body_b(joint), i2d_joint_get_local_anchor_b(joint));
+    check_last("reading a joint's anchors");
+    return hypotf(a.x - b.x, a.y - b.y);
+}
+
+/* The widest joint gap of the bridge and the ragdoll, and the suspension's largest travel. */
+static void watch_joints(demo* d) {
+    int k;
+    for (k = 0; k <= BRIDGE_PLANKS; ++k) {
+        d->widest_gap = fmaxf(d->widest_gap, joint_gap(d->bridge_joints[k]));
+    }
+    for (k = 1; k < BENCH_BONE_COUNT; ++k) {
+        d->widest_gap = fmaxf(d->widest_gap, joint_gap(d->ragdoll.joints[k]));
+    }
+    for (k = 0; k < 2; ++k) {
+        float travel = i2d_wheel_joint_get_translation(d->suspension[k]);
+        check_last("i2d_wheel_joint_get_translation");
+        d->most_compressed = fmaxf(d->most_compressed, travel);
+    }
+}
+
 static void run(demo* d) {
     int step, i;
     follow_rim(d);
@@ -609,6 +787,7 @@ static void run(demo* d) {
         follow_rim(d);
         watch_sliders(d);
         watch_turning(d, step);
+        watch_joints(d);
         d->bullet_max_x = fmaxf(d->bullet_max_x, position(d->bullet).x);
     }
     run_control_shot(d);
@@ -705,6 +884,35 @@ static void report_resting(const demo* d) {
            degrees(transform(d->t[T_TILTED].body).q));
 }
 
+static void report_joints(const demo* d) {
+    i2d_vec2 middle = i2d_body_get_world_point(d->planks[BRIDGE_PLANKS / 2], vec2(-PLANK_HALF_LENGTH, 0.0f));
+    i2d_vec2 hip = position(d->ragdoll.bodies[BENCH_BONE_HIP]);
+    float m = mass(d->chassis), m_wheel = mass(d->wheels[0]);
+    float driven = position(d->chassis).x - d->chassis_start_x;
+    float travel[2];
+    int k, asleep = 0;
+    for (k = 0; k < 2; ++k) {
+        travel[k] = i2d_wheel_joint_get_translation(d->suspension[k]);
+        check_last("i2d_wheel_joint_get_translation");
+    }
+    for (k = 0; k < BENCH_BONE_COUNT; ++k) {
+        asleep += !i2d_body_is_awake(d->ragdoll.bodies[k]);
+    }
+    printf("chain bridge of %d planks on %d revolute joints: its middle from %.3f m to %.3f m above the ground"
+           " with a ragdoll on it (%d of %d ragdoll bodies asleep, hip %.2f m up)\n",
+           BRIDGE_PLANKS, BRIDGE_PLANKS + 1, d->bridge_middle_start, middle.y - ROW3_Y, asleep, BENCH_BONE_COUNT,
+           hip.y - ROW3_Y);
+    printf("  widest joint gap (anchors apart) in the bridge and the ragdoll during the run: %.2f mm\n",
+           1000.0f * d->widest_gap);
+    /* Rolling without slipping at the motor's speed: v = w r. */
+    printf("car on wheel joints (%.1f kg chassis, %.2f kg wheels, %.0f Hz springs): drove %.2f m, now %.3f m/s,"
+           " %.1f %% of the motors' w r = %.3f m/s;\n",
+           m, m_wheel, SUSPENSION_HERTZ, driven, velocity(d->chassis).x,
+           100.0f * velocity(d->chassis).x / (WHEEL_SPEED * WHEEL_RADIUS), WHEEL_SPEED * WHEEL_RADIUS);
+    printf("  suspension travel now %.1f and %.1f mm, at most %.1f mm over the %.2f m bump\n", 1000.0f * travel[0],
+           1000.0f * travel[1], 1000.0f * d->most_compressed, BUMP_HEIGHT);
+}
+
 static void report_chain_level(const demo* d) {
     i2d_vec2 box = position(d->chain_box), ball = position(d->chain_ball);
     printf("chain level (60 one-sided segments): the box slid from x = %.1f to x = %.2f, %.2f m above the"
@@ -733,6 +941,7 @@ static void report(const demo* d) {
     report_tipper_and_disc(d);
     report_capsule(d);
     report_resting(d);
+    report_joints(d);
     report_chain_level(d);
     printf("contacts touching at the end: %d (candidate pairs %d)\n", (int)counters.contact_count,
            (int)counters.pair_count);
@@ -747,10 +956,10 @@ typedef struct view {
 
 #define VIEW_MIN_X (-16.5f)
 #define VIEW_MAX_X 16.5f
-#define VIEW_MIN_Y (ROW3_Y - 1.4f)
+#define VIEW_MIN_Y (ROW4_Y - 1.4f)
 #define VIEW_MAX_Y 6.6f
 #define VIEW_SCALE 36.0f /* pixels per metre */
-#define CAPTION_HEIGHT 56.0f
+#define CAPTION_HEIGHT 74.0f
 
 static float px(const view* v, float x) { return (x - v->min_x) * v->scale; }
 static float py(const view* v, float y) { return (v->max_y - y) * v->scale; }
@@ -938,11 +1147,34 @@ static void draw_labels(FILE* f, const view* v, const demo* d) {
     draw_text(f, v, row2(PYRAMID_X, (float)PYRAMID_ROWS + 0.35f), "pyramid of %d rows", PYRAMID_ROWS);
     draw_text(f, v, row2(2.8f, 2.65f), "dropped tilted, land flat");
     draw_text(f, v, row2(10.0f, SLOPE_TOP_Y + 1.0f), "capsule rolls down a slope");
-    draw_text(f, v, vec2(-8.0f, ROW3_Y + 2.3f), "a chain of %d one-sided segments: nothing catches on a seam",
+    draw_text(f, v, row3(BRIDGE_LEFT_X + 4.9f, BRIDGE_TOP + 0.6f), "ragdoll dropped on a chain bridge of %d planks",
+              BRIDGE_PLANKS);
+    draw_text(f, v, row3(position(d->chassis).x, 2.0f), "car on wheel joints, %.0f rad/s", WHEEL_SPEED);
+    draw_text(f, v, vec2(-8.0f, ROW4_Y + 2.3f), "a chain of %d one-sided segments: nothing catches on a seam",
               CHAIN_POINTS - 1);
     draw_text(f, v, vec2(8.0f, hill(THIN_WALL_X) + 2.0f * BULLET_HEIGHT + 0.9f),
               "a %.0f m/s bullet stopped by a %.0f cm wall (without continuous collision: x = %.0f m)",
               (double)BULLET_SPEED, (double)(200.0f * THIN_WALL_HALF), (double)d->control_max_x);
+}
+
+/* A dot where each joint holds its two bodies (body A's anchor). */
+static void draw_joint(FILE* f, const view* v, i2d_joint_id joint) {
+    i2d_vec2 at = i2d_body_get_world_point(i2d_joint_get_body_a(joint), i2d_joint_get_local_anchor_a(joint));
+    check_last("reading a joint's anchor");
+    fprintf(f, "<circle cx=\"%.2f\" cy=\"%.2f\" r=\"2.5\" fill=\"#222\" stroke=\"none\"/>\n", px(v, at.x),
+            py(v, at.y));
+}
+
+static void draw_joints(FILE* f, const view* v, const demo* d) {
+    int k;
+    for (k = 0; k <= BRIDGE_PLANKS; ++k) {
+        draw_joint(f, v, d->bridge_joints[k]);
+    }
+    for (k = 1; k < BENCH_BONE_COUNT; ++k) {
+        draw_joint(f, v, d->ragdoll.joints[k]);
+    }
+    draw_joint(f, v, d->suspension[0]);
+    draw_joint(f, v, d->suspension[1]);
 }
 
 /* One legend entry: a swatch (a square, or a line when the style has no fill) and its text.
@@ -972,9 +1204,12 @@ static void draw_legend(FILE* f, float top) {
     x = legend_entry(f, x, y, centre, "path of a centre");
     legend_entry(f, x, y, rim, "path of a rim point");
     fprintf(f, "<text x=\"10\" y=\"%.1f\">impulse2d demo: the state after %.1f s (%d steps of 1/60 s, %d substeps"
-               " each); y up, 1 m = %.0f px. Top: bodies that only move; bottom: bodies that turn"
-               " (a circle's line is a radius).</text>\n",
+               " each); y up, 1 m = %.0f px. Top: bodies that only move; middle: bodies that turn"
+               " (a circle's line is a radius);</text>\n",
             y + 22.0f, (double)STEP_COUNT * TIME_STEP, STEP_COUNT, SUBSTEPS, VIEW_SCALE);
+    fprintf(f, "<text x=\"10\" y=\"%.1f\">third: bodies held by joints, a dot at each joint; bottom: a chain"
+               " landscape and a bullet fired at a thin wall.</text>\n",
+            y + 40.0f);
 }
 
 static void write_svg(const demo* d, const char* path) {
@@ -994,6 +1229,7 @@ static void write_svg(const demo* d, const char* path) {
     fprintf(f, "<rect width=\"100%%\" height=\"100%%\" fill=\"white\"/>\n");
     draw_paths(f, &v, d);
     draw_bodies(f, &v, d);
+    draw_joints(f, &v, d);
     draw_labels(f, &v, d);
     draw_legend(f, height);
     fprintf(f, "</svg>\n");

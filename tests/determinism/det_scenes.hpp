@@ -11,12 +11,18 @@
 // sleeping_bin is large enough for every stage of the step to be shared by workers
 // (several hundred awake bodies, thousands of contacts) and comes to rest: a bin of
 // mixed shapes, some bouncy, with a heavy plank (the overflow colour), that all sleep.
+//
+// ragdoll_heap drops 60 of the bench's ragdolls (bench/ragdoll.c: 660 bodies, 600 revolute
+// joints with limits, springs and motors) onto a ground in overlapping layers, so that
+// joints are solved in every stage the workers share.
 #pragma once
 
 #include <impulse2d/impulse2d.h>
 
 #include <cmath>
 #include <cstdint>
+
+#include "ragdoll.h"
 
 namespace det {
 
@@ -172,6 +178,29 @@ inline i2d_world_id bullet_room(const i2d_world_def& wd) {
         } else {
             const i2d_circle circle{i2d_vec2{0, 0}, 0.05f};
             i2d_shape_create_circle(body, &shape, &circle);
+        }
+    }
+    return world;
+}
+
+inline i2d_world_id ragdoll_heap(const i2d_world_def& wd) {
+    constexpr int count = 60, per_layer = 12;
+    const i2d_world_id world = i2d_world_create(&wd);
+    if (I2D_IS_NULL(world)) {
+        return world;
+    }
+    const i2d_shape_def ground_material = material(0.6f, 0.0f);
+    const i2d_body_id ground = add_body(world, I2D_BODY_STATIC, i2d_vec2{0, 0});
+    i2d_shape_create_offset_box(ground, &ground_material, 20.0f, 0.5f, i2d_vec2{0, -0.5f}, i2d_make_rot(0));
+    for (int i = 0; i < count; ++i) {
+        const int layer = i / per_layer, column = i % per_layer;
+        // Odd layers shifted by half a spacing, so that ragdolls land across the ones below.
+        const float x = -6.6f + 1.2f * float(column) + 0.6f * float(layer % 2);
+        bench_ragdoll_def def = bench_default_ragdoll_def(i2d_vec2{x, 1.0f + 2.2f * float(layer)}, i + 1);
+        bench_ragdoll ragdoll;
+        if (!bench_ragdoll_create(world, &def, &ragdoll)) {
+            i2d_world_destroy(world);
+            return I2D_NULL_WORLD_ID;
         }
     }
     return world;

@@ -11,8 +11,10 @@
 
 #include <cmath>
 #include <cstdio>
+#include <vector>
 
 #include "check.h"
+#include "ragdoll.h"  // bench/: the scenes.md ragdoll, the same one the rain scene drops
 
 namespace phys {
 
@@ -113,6 +115,26 @@ public:
         return circle(body_def(I2D_BODY_DYNAMIC, center, velocity), radius, m);
     }
 
+    /** A static body without shapes: the world end of a joint (a pivot, a wall, a rail). */
+    i2d_body_id anchor(i2d_vec2 position = i2d_vec2{0, 0}) {
+        const i2d_body_def def = body_def(I2D_BODY_STATIC, position);
+        return i2d_body_create(world, &def);
+    }
+
+    /** The scenes.md ragdoll (bench/ragdoll.c) standing with its feet 0.275 m above `spawn`;
+     *  false (and a message) on failure. */
+    bool ragdoll(i2d_vec2 spawn, int32_t group, bench_ragdoll* out) {
+        const bench_ragdoll_def def = bench_default_ragdoll_def(spawn, group);
+        if (!bench_ragdoll_create(world, &def, out)) {
+            fprintf(stderr, "    fixture: ragdoll creation failed: %s\n", i2d_last_error_message());
+            return false;
+        }
+        return true;
+    }
+
+    /** The world's downward pull, m/s^2 (10 by default). */
+    double gravity() const { return -double(i2d_world_get_gravity(world).y); }
+
     /** One step of time_step with `substeps` substeps; false (and a message) on failure. */
     bool step() {
         i2d_status s = i2d_world_step(world, time_step, substeps);
@@ -144,6 +166,68 @@ inline double box_mass(double half_width, double half_height, double density) {
     return density * 4.0 * half_width * half_height;
 }
 inline double circle_mass(double radius, double density) { return density * pi * radius * radius; }
+
+/** Fills a joint def's base: bodies a and b joined at a world point (each body's local
+ *  anchor is that point in its frame). Works for every kind's def. */
+template <class JointDef>
+JointDef& join_at(JointDef& def, i2d_body_id a, i2d_body_id b, i2d_vec2 world_point) {
+    def.base.body_a = a;
+    def.base.body_b = b;
+    def.base.local_anchor_a = i2d_body_get_local_point(a, world_point);
+    def.base.local_anchor_b = i2d_body_get_local_point(b, world_point);
+    return def;
+}
+
+inline double angle(i2d_body_id b) { return double(i2d_rot_get_angle(i2d_body_get_rotation(b))); }
+
+/** Translational plus rotational kinetic energy, J (velocity is that of the centre of mass). */
+inline double kinetic_energy(i2d_body_id b) {
+    const double v = speed(velocity(b)), w = double(i2d_body_get_angular_velocity(b));
+    return 0.5 * double(i2d_body_get_mass(b)) * v * v + 0.5 * double(i2d_body_get_rotational_inertia(b)) * w * w;
+}
+
+/** Whether the body's pose and velocities are all finite numbers (a blown-up solver
+ *  gives NaN or inf). */
+inline bool is_finite(i2d_body_id b) {
+    const i2d_transform xf = i2d_body_get_transform(b);
+    const i2d_vec2 v = velocity(b);
+    return std::isfinite(xf.p.x) && std::isfinite(xf.p.y) && std::isfinite(xf.q.c) && std::isfinite(xf.q.s) &&
+           std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(i2d_body_get_angular_velocity(b));
+}
+
+/** A sampled oscillation x(t) about 0: the times it crosses 0 going up (interpolated
+ *  between samples) and its extremes between crossings, for periods and decay. */
+class Oscillation {
+public:
+    void add(double t, double x) {
+        if (has_last_ && last_x_ < 0.0 && x >= 0.0) {
+            up_crossings.push_back(last_t_ + (t - last_t_) * (-last_x_) / (x - last_x_));
+        }
+        if (has_last_ && (last_x_ < 0.0) != (x < 0.0)) {
+            if (has_extreme_) {
+                extremes.push_back(extreme_);
+            }
+            extreme_ = x;
+            has_extreme_ = true;
+        } else if (has_extreme_ && std::fabs(x) > std::fabs(extreme_)) {
+            extreme_ = x;
+        }
+        last_t_ = t;
+        last_x_ = x;
+        has_last_ = true;
+    }
+    /** Mean period over the whole upward crossings seen; 0 with fewer than two. */
+    double period() const {
+        const size_t n = up_crossings.size();
+        return n < 2 ? 0.0 : (up_crossings[n - 1] - up_crossings[0]) / double(n - 1);
+    }
+    std::vector<double> up_crossings;
+    std::vector<double> extremes;  // one per completed half cycle, signed, in order
+
+private:
+    double last_t_ = 0.0, last_x_ = 0.0, extreme_ = 0.0;
+    bool has_last_ = false, has_extreme_ = false;
+};
 
 /** Prints the scenario when checks failed since `failures_before`, so a failure inside a
  *  loop over cases says which case it was. */

@@ -1,0 +1,94 @@
+// SPDX-License-Identifier: MIT
+// Weld joints against closed form: a rigid weld holds a body still under gravity, and a
+// welded cantilever keeps its shape.
+#include <impulse2d/impulse2d.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <vector>
+
+#include "check.h"
+#include "physics_fixture.hpp"
+
+namespace {
+
+using namespace phys;
+
+}  // namespace
+
+// A 1 m bar welded by one end to a static body, sticking out sideways: gravity pulls and
+// twists it, and the (rigid) weld keeps both its ends within 1 mm of where they started.
+I2D_TEST(phys_joint_weld_to_static_holds_within_1mm_under_gravity) {
+    constexpr double tolerance = 0.001;  // m
+    Scene s;
+    const i2d_vec2 wall{0.0f, 5.0f};
+    const i2d_body_id ground = s.anchor(wall);
+    const i2d_body_id bar = s.dynamic_box(i2d_vec2{wall.x + 0.5f, wall.y}, 0.5f, 0.1f);
+    i2d_weld_joint_def def = i2d_default_weld_joint_def();
+    const i2d_joint_id joint = i2d_joint_create_weld(s.world, &join_at(def, ground, bar, wall));
+    I2D_REQUIRE(!I2D_IS_NULL(bar) && !I2D_IS_NULL(joint));
+    const i2d_vec2 far_end_local{0.5f, 0.0f};
+    const i2d_vec2 far_start = i2d_body_get_world_point(bar, far_end_local);
+    const i2d_vec2 centre_start = position(bar);
+    double worst = 0.0;
+    for (int k = 0; k < steps_for(3.0); ++k) {
+        I2D_REQUIRE(s.step());
+        const i2d_vec2 far = i2d_body_get_world_point(bar, far_end_local), c = position(bar);
+        worst = std::max({worst, std::hypot(double(far.x - far_start.x), double(far.y - far_start.y)),
+                          std::hypot(double(c.x - centre_start.x), double(c.y - centre_start.y))});
+    }
+    fprintf(stderr, "    worst displacement of the bar's centre or far end: %.4f mm (allowed 1 mm); angle %.2e rad; "
+            "reaction (%.4f, %.4f) N, %.4f N m (weight %.4f N, its torque %.4f N m)\n",
+            1000.0 * worst, angle(bar), double(i2d_joint_get_reaction_force(joint).x),
+            double(i2d_joint_get_reaction_force(joint).y), double(i2d_joint_get_reaction_torque(joint)),
+            double(i2d_body_get_mass(bar)) * s.gravity(), double(i2d_body_get_mass(bar)) * s.gravity() * 0.5);
+    I2D_CHECK(worst < tolerance);
+}
+
+// Ten 0.5 m boxes welded end to end out of a wall: the cantilever holds its shape. Its
+// tip drops less than 2 % of its 5 m (10 cm: a bend of about a degree), no box turns more
+// than 2 degrees, and it is still: the tip moves less than 1 mm between 2 s and 5 s.
+I2D_TEST(phys_joint_weld_cantilever_of_10_boxes_holds_its_shape) {
+    constexpr int box_count = 10;
+    constexpr float box_half_length = 0.25f, box_half_height = 0.1f;
+    constexpr double length = 2.0 * box_half_length * box_count;
+    constexpr double max_drop = 0.02 * length;         // m
+    constexpr double max_turn = 2.0 * pi / 180.0;      // rad
+    constexpr double max_creep = 0.001;                // m
+    Scene s;
+    const i2d_vec2 wall{0.0f, 10.0f};
+    i2d_body_id previous = s.anchor(wall);
+    std::vector<i2d_body_id> boxes;
+    for (int i = 0; i < box_count; ++i) {
+        const float left = wall.x + 2.0f * box_half_length * float(i);
+        const i2d_body_id box = s.dynamic_box(i2d_vec2{left + box_half_length, wall.y}, box_half_length,
+                                              box_half_height);
+        i2d_weld_joint_def def = i2d_default_weld_joint_def();
+        I2D_REQUIRE(!I2D_IS_NULL(box) &&
+                    !I2D_IS_NULL(i2d_joint_create_weld(s.world, &join_at(def, previous, box, i2d_vec2{left, wall.y}))));
+        boxes.push_back(box);
+        previous = box;
+    }
+    const i2d_vec2 tip_local{box_half_length, 0.0f};
+    I2D_REQUIRE(s.step(steps_for(2.0)));
+    const i2d_vec2 tip_at_2s = i2d_body_get_world_point(boxes.back(), tip_local);
+    I2D_REQUIRE(s.step(steps_for(3.0)));
+    const i2d_vec2 tip = i2d_body_get_world_point(boxes.back(), tip_local);
+    double turn = 0.0;
+    bool finite = true;
+    for (const i2d_body_id b : boxes) {
+        turn = std::max(turn, std::fabs(angle(b)));
+        finite = finite && is_finite(b);
+    }
+    const double drop = double(wall.y) - double(tip.y);
+    const double creep = std::hypot(double(tip.x - tip_at_2s.x), double(tip.y - tip_at_2s.y));
+    fprintf(stderr, "    tip dropped %.2f cm (allowed %.0f cm), largest box angle %.3f deg, tip moved %.4f mm "
+            "between 2 s and 5 s\n",
+            100.0 * drop, 100.0 * max_drop, turn * 180.0 / pi, 1000.0 * creep);
+    I2D_CHECK(finite);
+    I2D_CHECK(drop < max_drop);
+    I2D_CHECK(turn < max_turn);
+    I2D_CHECK(creep < max_creep);
+}
+
