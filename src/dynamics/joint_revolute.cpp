@@ -8,7 +8,7 @@ namespace i2d {
 void prepare_revolute(JointConstraint& c, const JointStep& step) {
     const RevoluteSettings& s = c.def->revolute;
     c.axial_mass = inverse_or_zero(c.inv_inertia_a + c.inv_inertia_b);
-    c.spring = s.enable_spring ? make_softness(s.hertz, s.damping_ratio, step.h) : Softness{};
+    c.spring = s.enable_spring ? make_spring(s.hertz, s.damping_ratio, step.h) : SpringRow{};
 }
 
 void warm_start_revolute(const JointConstraint& c, JointBodies& j) {
@@ -24,7 +24,7 @@ void solve_revolute(JointConstraint& c, JointBodies& j, const JointStep& step, b
     const bool turns = c.axial_mass > 0.0f;
     if (s.enable_spring && s.hertz > 0.0f && turns) {
         const float error = unwind_angle(current_angle(c, j) - s.target_angle);
-        apply_angular(c, j, spring_impulse(error, j.wb - j.wa, c.axial_mass, c.spring, p.spring));
+        apply_angular(c, j, spring_impulse(error, j.wb - j.wa, c.axial_mass, c.spring, p.spring, use_bias));
     }
     if (s.enable_motor && turns) {
         const float max_impulse = step.h * s.max_motor_torque;
