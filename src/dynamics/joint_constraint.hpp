@@ -30,9 +30,15 @@ struct JointStep {
     float max_spin = 0.0f;
 };
 
+/// The optional rows a joint has this step (JointConstraint::rows), so that a plain
+/// hinge never reads its settings.
+enum JointRows : uint8_t { spring_row = 1, motor_row = 2, limit_row = 4 };
+
 struct JointConstraint {
     const JointDef* def = nullptr;
     int32_t joint = null_index;
+    JointType type = JointType::filter;
+    uint8_t rows = 0;  // JointRows
     int32_t state_a = 0, state_b = 0;  // solver states; the fixed one for a body that cannot move
     bool moves_a = false, moves_b = false;  // whether this joint may change the body's velocity
     float inv_mass_a = 0.0f, inv_mass_b = 0.0f;
