@@ -217,11 +217,11 @@ I2D_TEST(phys_joint_breakable_force_event_fires_above_the_threshold_and_not_belo
         I2D_REQUIRE(!I2D_IS_NULL(joints[i]));
     }
     int low_listed = 0, high_listed = 0, high_first = -1;
-    const int steps = steps_for(2.0);
+    const int steps = steps_for(2.0), settling_steps = steps_for(0.05);
     for (int k = 0; k < steps; ++k) {
         I2D_REQUIRE(s.step());
         low_listed += listed(s.world, joints[0]);
-        const bool high = listed(s.world, joints[1]);
+        const bool high = k >= settling_steps && listed(s.world, joints[1]);
         high_listed += high;
         if (high && high_first < 0) {
             high_first = k + 1;
@@ -245,7 +245,10 @@ I2D_TEST(phys_joint_breakable_force_event_fires_above_the_threshold_and_not_belo
 }
 
 // A bar welded to a wall by one end needs the torque m g d (d: the anchor to its centre);
-// a torque threshold of 0.9 of that lists the joint, 1.1 never does.
+// a torque threshold of 0.9 of that lists the joint at every step, 1.1 never once the load
+// has settled. A soft weld takes a load that starts all at once with a transient (the bar
+// starts in free fall): 1.44 m g d at the first step, 0.91 at the second, within 4 % from
+// the third, 2026-11-24; a rigid joint would hold m g d from the start.
 I2D_TEST(phys_joint_breakable_torque_event_fires_above_the_threshold_and_not_below) {
     Scene s(no_sleep_def());
     const double g = s.gravity();
@@ -263,17 +266,17 @@ I2D_TEST(phys_joint_breakable_torque_event_fires_above_the_threshold_and_not_bel
         I2D_REQUIRE(!I2D_IS_NULL(joints[i]));
     }
     int low_listed = 0, high_listed = 0, high_first = -1;
-    const int steps = steps_for(2.0);
+    const int steps = steps_for(2.0), settling_steps = steps_for(0.05);
     for (int k = 0; k < steps; ++k) {
         I2D_REQUIRE(s.step());
         low_listed += listed(s.world, joints[0]);
-        const bool high = listed(s.world, joints[1]);
+        const bool high = k >= settling_steps && listed(s.world, joints[1]);
         high_listed += high;
         if (high && high_first < 0) {
             high_first = k + 1;
         }
     }
-    fprintf(stderr, "    torque threshold 0.9 m g d listed after %d of %d steps, 1.1 m g d after %d (first: step %d); "
+    fprintf(stderr, "    torque threshold 0.9 m g d listed after %d of %d steps, 1.1 m g d after %d once settled (first: step %d); "
             "reaction torque %.4f N m\n",
             low_listed, steps, high_listed, high_first, double(i2d_joint_get_reaction_torque(joints[0])));
     I2D_CHECK(low_listed == steps);
