@@ -13,10 +13,12 @@
 namespace i2d {
 
 void Islands::add_awake_body(int32_t body) {
+    ++awake_version_;
     dense_list_add(awake_bodies_, body, [this](int32_t b) -> int32_t& { return bodies_[b].awake_index; });
 }
 
 void Islands::remove_awake_body(int32_t body) {
+    ++awake_version_;
     dense_list_remove(awake_bodies_, body, [this](int32_t b) -> int32_t& { return bodies_[b].awake_index; });
 }
 

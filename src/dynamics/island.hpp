@@ -63,6 +63,9 @@ public:
 
     /// Kinematic and dynamic bodies that are awake, each at its awake_index.
     const std::vector<int32_t>& awake_bodies() const { return awake_bodies_; }
+    /// Changes whenever a body joins or leaves the awake list (and so whenever an awake
+    /// index may have changed).
+    uint64_t awake_version() const { return awake_version_; }
     int32_t sleeping_island_count() const { return islands_.count() - int32_t(awake_islands_.size()); }
 
     // Each step: every awake island starts out rested; each body that has not rested
@@ -104,7 +107,8 @@ private:
     Pool<Island> islands_;
     std::vector<int32_t> awake_bodies_;
     std::vector<int32_t> awake_islands_;
-    std::vector<float> island_rest_;  // per awake island: its shortest body rest time, s
+    std::vector<float> island_rest_;
+    uint64_t awake_version_ = 0;  // per awake island: its shortest body rest time, s
     // Scratch kept between steps so that sleeping and splitting allocate nothing.
     std::vector<int32_t> members_, stack_, island_pieces_, resting_;
 };

@@ -30,9 +30,15 @@ struct JointStep {
     float max_spin = 0.0f;
 };
 
+/// The optional rows a joint has this step (JointConstraint::rows), so that a plain
+/// hinge never reads its settings.
+enum JointRows : uint8_t { spring_row = 1, motor_row = 2, limit_row = 4 };
+
 struct JointConstraint {
     const JointDef* def = nullptr;
     int32_t joint = null_index;
+    JointType type = JointType::filter;
+    uint8_t rows = 0;  // JointRows
     int32_t state_a = 0, state_b = 0;  // solver states; the fixed one for a body that cannot move
     bool moves_a = false, moves_b = false;  // whether this joint may change the body's velocity
     float inv_mass_a = 0.0f, inv_mass_b = 0.0f;
@@ -42,8 +48,8 @@ struct JointConstraint {
     float delta_angle = 0.0f; // angle B - angle A - reference at the step's start, unwound
     Vec2 axis;                // prismatic, wheel: A's axis in the world at the step's start
     float axial_mass = 0.0f;  // effective mass of the kind's axial row
-    Softness spring;          // the kind's spring (weld: linear; mouse: its pull)
-    Softness angular_spring;  // weld: angular
+    SpringRow spring;          // the kind's spring (weld: linear; mouse: its pull)
+    SpringRow angular_spring;  // weld: angular
     JointImpulses impulses;
 };
 
@@ -187,9 +193,14 @@ inline float motor_impulse(float cdot, float speed, float mass, float max_impuls
 }
 
 /// A spring row toward error 0: `error` is the row's position error, `cdot` its speed.
-inline float spring_impulse(float error, float cdot, float mass, const Softness& spring, float& accumulated) {
+/// Nothing in the relax pass for a spring that acts once per substep.
+inline float spring_impulse(float error, float cdot, float mass, const SpringRow& spring, float& accumulated,
+                            bool use_bias) {
+    if (!use_bias && !spring.relaxes) {
+        return 0.0f;
+    }
     const float impulse =
-        -mass * spring.mass_scale * (cdot + spring.bias_rate * error) - spring.impulse_scale * accumulated;
+        -mass * (spring.position_rate * error + spring.speed_scale * cdot) - spring.impulse_scale * accumulated;
     accumulated += impulse;
     return impulse;
 }

@@ -41,7 +41,7 @@ void prepare_distance(JointConstraint& c, const JointStep& step) {
     const float cra = cross(f.ra, f.axis), crb = cross(f.rb, f.axis);
     c.axial_mass = inverse_or_zero(c.inv_mass_a + c.inv_mass_b + c.inv_inertia_a * cra * cra +
                                    c.inv_inertia_b * crb * crb);
-    c.spring = s.enable_spring ? make_softness(s.hertz, s.damping_ratio, step.h) : Softness{};
+    c.spring = s.enable_spring ? make_spring(s.hertz, s.damping_ratio, step.h) : SpringRow{};
 }
 
 void warm_start_distance(const JointConstraint& c, JointBodies& j) {
@@ -66,7 +66,8 @@ void solve_distance(JointConstraint& c, JointBodies& j, const JointStep& step, b
         p.axial += impulse;
         apply_linear(c, j, f.ra, f.rb, impulse * f.axis);
     } else if (s.hertz > 0.0f) {
-        const float impulse = spring_impulse(f.length - rest, row_speed(f, j), c.axial_mass, c.spring, p.axial);
+        const float impulse = spring_impulse(f.length - rest, row_speed(f, j), c.axial_mass, c.spring, p.axial,
+                                              use_bias);
         apply_linear(c, j, f.ra, f.rb, impulse * f.axis);
     }
     if (s.enable_motor && !is_rigid(s)) {  // a rod holds its length against any motor

@@ -10,7 +10,7 @@ namespace i2d {
 
 void prepare_mouse(JointConstraint& c, const JointStep& step) {
     const MouseSettings& s = c.def->mouse;
-    c.spring = make_softness(s.hertz, s.damping_ratio, step.h);
+    c.spring = s.hertz > 0.0f ? make_spring(s.hertz, s.damping_ratio, step.h) : SpringRow{};
 }
 
 void warm_start_mouse(const JointConstraint& c, JointBodies& j) {
@@ -18,15 +18,17 @@ void warm_start_mouse(const JointConstraint& c, JointBodies& j) {
     apply_linear(c, j, Vec2{}, rb, c.impulses.linear);
 }
 
-// Both passes: the spring is the joint's behaviour.
-void solve_mouse(JointConstraint& c, JointBodies& j, const JointStep& step, bool) {
+void solve_mouse(JointConstraint& c, JointBodies& j, const JointStep& step, bool use_bias) {
     const MouseSettings& s = c.def->mouse;
+    const SpringRow& row = c.spring;
+    if (!use_bias && !row.relaxes) {
+        return;
+    }
     JointImpulses& p = c.impulses;
     const Vec2 rb = rotate(j.dqb, c.anchor_b);
-    const Vec2 error = current_separation(c, j, Vec2{}, rb);
-    const Vec2 cdot = relative_velocity(j, Vec2{}, rb) + c.spring.bias_rate * error;
-    const Vec2 rigid = solve22(point_mass_matrix(c, Vec2{}, rb), cdot);
-    Vec2 wanted = p.linear - c.spring.mass_scale * rigid - c.spring.impulse_scale * p.linear;
+    const Vec2 rate = row.position_rate * current_separation(c, j, Vec2{}, rb) +
+                      row.speed_scale * relative_velocity(j, Vec2{}, rb);
+    Vec2 wanted = p.linear - solve22(point_mass_matrix(c, Vec2{}, rb), rate) - row.impulse_scale * p.linear;
     const float max_impulse = step.h * s.max_force;
     const float size = length(wanted);
     if (size > max_impulse) {

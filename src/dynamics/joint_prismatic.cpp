@@ -19,7 +19,7 @@ void apply_block(const JointConstraint& c, JointBodies& j, const SlideFrame& f, 
 void prepare_prismatic(JointConstraint& c, const JointStep& step) {
     const PrismaticSettings& s = c.def->prismatic;
     c.axial_mass = slide_axial_mass(c);
-    c.spring = s.enable_spring ? make_softness(s.hertz, s.damping_ratio, step.h) : Softness{};
+    c.spring = s.enable_spring ? make_spring(s.hertz, s.damping_ratio, step.h) : SpringRow{};
 }
 
 void warm_start_prismatic(const JointConstraint& c, JointBodies& j) {
@@ -35,7 +35,7 @@ void solve_prismatic(JointConstraint& c, JointBodies& j, const JointStep& step, 
     const SlideFrame f = slide_frame(c, j);
     if (s.enable_spring && s.hertz > 0.0f) {
         const float error = f.translation - s.target_translation;
-        apply_axial(c, j, f, spring_impulse(error, axial_speed(f, j), c.axial_mass, c.spring, p.axial));
+        apply_axial(c, j, f, spring_impulse(error, axial_speed(f, j), c.axial_mass, c.spring, p.axial, use_bias));
     }
     if (s.enable_motor) {
         const float max_impulse = step.h * s.max_motor_force;

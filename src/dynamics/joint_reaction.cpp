@@ -28,7 +28,7 @@ JointReaction distance_reaction(const JointConstraint& c, const JointBodies& j, 
 
 JointReaction joint_reaction(const JointConstraint& c, const JointBodies& j, float inv_h) {
     const JointImpulses& p = c.impulses;
-    switch (c.def->type) {
+    switch (c.type) {
         case JointType::revolute:
             return {inv_h * p.linear, inv_h * (p.spring + p.motor + p.lower - p.upper), inv_h * p.motor};
         case JointType::prismatic:

@@ -8,7 +8,10 @@ namespace i2d {
 void prepare_revolute(JointConstraint& c, const JointStep& step) {
     const RevoluteSettings& s = c.def->revolute;
     c.axial_mass = inverse_or_zero(c.inv_inertia_a + c.inv_inertia_b);
-    c.spring = s.enable_spring ? make_softness(s.hertz, s.damping_ratio, step.h) : Softness{};
+    c.spring = s.enable_spring ? make_spring(s.hertz, s.damping_ratio, step.h) : SpringRow{};
+    const bool turns = c.axial_mass > 0.0f;
+    c.rows = uint8_t((s.enable_spring && s.hertz > 0.0f && turns ? spring_row : 0) |
+                     (s.enable_motor && turns ? motor_row : 0) | (s.enable_limit && turns ? limit_row : 0));
 }
 
 void warm_start_revolute(const JointConstraint& c, JointBodies& j) {
@@ -18,22 +21,33 @@ void warm_start_revolute(const JointConstraint& c, JointBodies& j) {
     apply_angular(c, j, p.spring + p.motor + p.lower - p.upper);
 }
 
-void solve_revolute(JointConstraint& c, JointBodies& j, const JointStep& step, bool use_bias) {
+namespace {
+
+// The spring, motor and limit rows, those the joint has.
+void solve_revolute_rows(JointConstraint& c, JointBodies& j, const JointStep& step, bool use_bias) {
     const RevoluteSettings& s = c.def->revolute;
     JointImpulses& p = c.impulses;
-    const bool turns = c.axial_mass > 0.0f;
-    if (s.enable_spring && s.hertz > 0.0f && turns) {
+    if (c.rows & spring_row) {
         const float error = unwind_angle(current_angle(c, j) - s.target_angle);
-        apply_angular(c, j, spring_impulse(error, j.wb - j.wa, c.axial_mass, c.spring, p.spring));
+        apply_angular(c, j, spring_impulse(error, j.wb - j.wa, c.axial_mass, c.spring, p.spring, use_bias));
     }
-    if (s.enable_motor && turns) {
+    if (c.rows & motor_row) {
         const float max_impulse = step.h * s.max_motor_torque;
         apply_angular(c, j, motor_impulse(j.wb - j.wa, s.motor_speed, c.axial_mass, max_impulse, p.motor));
     }
-    if (s.enable_limit && turns) {
+    if (c.rows & limit_row) {
         const float angle = current_angle(c, j);
         apply_angular(c, j, limit_impulse(angle - s.lower_angle, j.wb - j.wa, c.axial_mass, p.lower, step, use_bias));
         apply_angular(c, j, -limit_impulse(s.upper_angle - angle, j.wa - j.wb, c.axial_mass, p.upper, step, use_bias));
+    }
+}
+
+}  // namespace
+
+void solve_revolute(JointConstraint& c, JointBodies& j, const JointStep& step, bool use_bias) {
+    JointImpulses& p = c.impulses;
+    if (c.rows != 0) {
+        solve_revolute_rows(c, j, step, use_bias);
     }
     // The point row last: it is the one that must hold.
     const Vec2 ra = rotate(j.dqa, c.anchor_a), rb = rotate(j.dqb, c.anchor_b);

@@ -61,6 +61,7 @@ int32_t JointSet::create(const JointDef& def) {
     j.edges[1].body = def.body_b;
     link_edge(index, 0);
     link_edge(index, 1);
+    ++version_;
     return index;
 }
 
@@ -68,6 +69,7 @@ void JointSet::destroy(int32_t joint) {
     unlink_edge(joint, 0);
     unlink_edge(joint, 1);
     joints_.free(joint);
+    ++version_;
 }
 
 // Walks the shorter list: a ragdoll's bodies have two or three joints each.

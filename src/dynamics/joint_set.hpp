@@ -67,6 +67,10 @@ public:
     JointMeasures measure(int32_t joint) const;
 
     int32_t count() const { return joints_.count(); }
+    /// Changes whenever a joint is created or destroyed or a body of one changes type:
+    /// with the islands' awake version, whether the joints to solve can have changed.
+    uint64_t version() const { return version_; }
+    void touch() { ++version_; }
 
     /// Aborts on a broken list or island link; does nothing unless built with I2D_VALIDATE.
     void validate() const;
@@ -77,6 +81,7 @@ private:
 
     Pool<Joint>& joints_;
     Pool<Body>& bodies_;
+    uint64_t version_ = 0;
 };
 
 }  // namespace i2d

@@ -61,6 +61,7 @@ void JointSolver::prepare_one(JointConstraint& c, const Joint& joint, const Pool
     const Body& b = bodies[d.body_b];
     const bool mouse = d.type == JointType::mouse;
     c.def = &d;
+    c.type = d.type;
     c.moves_a = !mouse && can_move(a);
     c.moves_b = can_move(b);
     // Kinematic bodies are read from their own state (they move); static and sleeping
@@ -75,7 +76,12 @@ void JointSolver::prepare_one(JointConstraint& c, const Joint& joint, const Pool
     c.anchor_a = mouse ? Vec2{} : rotate(a.transform.q, f.local_anchor_a - a.local_center);
     c.anchor_b = rotate(b.transform.q, f.local_anchor_b - b.local_center);
     c.delta_center = b.center - (mouse ? d.mouse.target : a.center);
-    c.delta_angle = unwind_angle(get_angle(inv_mul_rot(a.transform.q, b.transform.q)) - f.reference_angle);
+    // The exact angle costs a tenth of a plain hinge's step: only the kinds that read it.
+    const bool reads_angle = d.type == JointType::prismatic || d.type == JointType::weld ||
+                             d.type == JointType::motor ||
+                             (d.type == JointType::revolute && (d.revolute.enable_limit || d.revolute.enable_spring));
+    c.delta_angle =
+        reads_angle ? unwind_angle(get_angle(inv_mul_rot(a.transform.q, b.transform.q)) - f.reference_angle) : 0.0f;
     const Vec2 local_axis = d.type == JointType::prismatic ? d.prismatic.local_axis_a : d.wheel.local_axis_a;
     c.axis = rotate(a.transform.q, local_axis);
     c.impulses = joint.impulses;
@@ -105,7 +111,7 @@ void JointSolver::warm_start(int32_t begin, int32_t end, BodyState* states) {
         JointConstraint& c = constraints_[std::size_t(k)];
         const JointBodies before = load_bodies(c, states);
         JointBodies j = before;
-        switch (c.def->type) {
+        switch (c.type) {
             case JointType::revolute: warm_start_revolute(c, j); break;
             case JointType::prismatic: warm_start_prismatic(c, j); break;
             case JointType::distance: warm_start_distance(c, j); break;
@@ -128,7 +134,7 @@ void JointSolver::solve(int32_t begin, int32_t end, BodyState* states, bool use_
         JointConstraint& c = constraints_[std::size_t(k)];
         const JointBodies before = load_bodies(c, states);
         JointBodies j = before;
-        switch (c.def->type) {
+        switch (c.type) {
             case JointType::revolute: solve_revolute(c, j, step_, use_bias); break;
             case JointType::prismatic: solve_prismatic(c, j, step_, use_bias); break;
             case JointType::distance: solve_distance(c, j, step_, use_bias); break;

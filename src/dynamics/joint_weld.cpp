@@ -5,12 +5,24 @@
 
 namespace i2d {
 
+namespace {
+
+// A rigid row pushes its error out only in the biased pass, like every rigid row; a
+// spring (hertz > 0) acts as its SpringRow says.
+SpringRow weld_row(float hertz, const SpringRow& spring, const JointStep& step, bool use_bias) {
+    if (hertz > 0.0f) {
+        return spring;
+    }
+    return use_bias ? as_spring_row(step.rigid) : SpringRow{};
+}
+
+}  // namespace
+
 void prepare_weld(JointConstraint& c, const JointStep& step) {
     const WeldSettings& s = c.def->weld;
     c.axial_mass = inverse_or_zero(c.inv_inertia_a + c.inv_inertia_b);
-    c.spring = s.linear_hertz > 0.0f ? make_softness(s.linear_hertz, s.linear_damping_ratio, step.h) : step.rigid;
-    c.angular_spring =
-        s.angular_hertz > 0.0f ? make_softness(s.angular_hertz, s.angular_damping_ratio, step.h) : step.rigid;
+    c.spring = make_spring(s.linear_hertz, s.linear_damping_ratio, step.h);
+    c.angular_spring = make_spring(s.angular_hertz, s.angular_damping_ratio, step.h);
 }
 
 void warm_start_weld(const JointConstraint& c, JointBodies& j) {
@@ -19,23 +31,21 @@ void warm_start_weld(const JointConstraint& c, JointBodies& j) {
     apply_angular(c, j, c.impulses.angular);
 }
 
-// A spring acts in both passes (it is the joint's behaviour); a rigid row pushes its
-// error out only in the biased pass, like every rigid row.
-void solve_weld(JointConstraint& c, JointBodies& j, const JointStep&, bool use_bias) {
+void solve_weld(JointConstraint& c, JointBodies& j, const JointStep& step, bool use_bias) {
     const WeldSettings& s = c.def->weld;
     JointImpulses& p = c.impulses;
     if (c.axial_mass > 0.0f) {
-        const bool pushes = use_bias || s.angular_hertz > 0.0f;
-        const Softness soft = pushes ? c.angular_spring : Softness{};
-        const float error = pushes ? current_angle(c, j) : 0.0f;
-        apply_angular(c, j, spring_impulse(error, j.wb - j.wa, c.axial_mass, soft, p.angular));
+        const SpringRow row = weld_row(s.angular_hertz, c.angular_spring, step, use_bias);
+        apply_angular(c, j, spring_impulse(current_angle(c, j), j.wb - j.wa, c.axial_mass, row, p.angular, use_bias));
+    }
+    const SpringRow row = weld_row(s.linear_hertz, c.spring, step, use_bias);
+    if (!use_bias && !row.relaxes) {
+        return;
     }
     const Vec2 ra = rotate(j.dqa, c.anchor_a), rb = rotate(j.dqb, c.anchor_b);
-    const bool pushes = use_bias || s.linear_hertz > 0.0f;
-    const Softness soft = pushes ? c.spring : Softness{};
-    const Vec2 bias = pushes ? soft.bias_rate * current_separation(c, j, ra, rb) : Vec2{};
-    const Vec2 b = solve22(point_mass_matrix(c, ra, rb), relative_velocity(j, ra, rb) + bias);
-    const Vec2 impulse = -soft.mass_scale * b - soft.impulse_scale * p.linear;
+    const Vec2 rate = row.position_rate * current_separation(c, j, ra, rb) +
+                      row.speed_scale * relative_velocity(j, ra, rb);
+    const Vec2 impulse = -solve22(point_mass_matrix(c, ra, rb), rate) - row.impulse_scale * p.linear;
     p.linear += impulse;
     apply_linear(c, j, ra, rb, impulse);
 }

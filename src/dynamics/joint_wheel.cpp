@@ -9,7 +9,7 @@ namespace i2d {
 void prepare_wheel(JointConstraint& c, const JointStep& step) {
     const WheelSettings& s = c.def->wheel;
     c.axial_mass = slide_axial_mass(c);
-    c.spring = s.enable_spring ? make_softness(s.hertz, s.damping_ratio, step.h) : Softness{};
+    c.spring = s.enable_spring ? make_spring(s.hertz, s.damping_ratio, step.h) : SpringRow{};
 }
 
 void warm_start_wheel(const JointConstraint& c, JointBodies& j) {
@@ -30,7 +30,8 @@ void solve_wheel(JointConstraint& c, JointBodies& j, const JointStep& step, bool
     }
     const SlideFrame f = slide_frame(c, j);
     if (s.enable_spring && s.hertz > 0.0f) {
-        apply_axial(c, j, f, spring_impulse(f.translation, axial_speed(f, j), c.axial_mass, c.spring, p.axial));
+        apply_axial(c, j, f,
+                    spring_impulse(f.translation, axial_speed(f, j), c.axial_mass, c.spring, p.axial, use_bias));
     }
     if (s.enable_limit) {
         solve_slide_limits(c, j, f, s.lower_translation, s.upper_translation, step, use_bias);

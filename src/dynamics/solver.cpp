@@ -307,8 +307,19 @@ void Solver::store_overflow(void* solver, const Stage&, int32_t, int32_t, int32_
 // Joints and contacts share one colouring, so that a colour's joints and contacts are
 // independent of one another too; kept while nothing it depends on changed.
 void Solver::color_constraints() {
-    links_.joint_set.gather_awake(links_.islands.awake_bodies(), awake_joints_);
-    const bool joints_differ = joints_changed();
+    // The joints to solve change only with the joints or the awake list.
+    const uint64_t joint_version = links_.joint_set.version(), awake_version = links_.islands.awake_version();
+    bool joints_differ = false;
+    if (!gathered_ || joint_version != gathered_joint_version_ || awake_version != gathered_awake_version_) {
+        gathered_ = true;
+        gathered_joint_version_ = joint_version;
+        gathered_awake_version_ = awake_version;
+        links_.joint_set.gather_awake(links_.islands.awake_bodies(), awake_joints_);
+        joints_differ = joints_changed();
+        if (joints_differ) {
+            colored_joint_key_.swap(joint_key_);  // what color_joints colours
+        }
+    }
     const uint64_t version = links_.contacts.layout_version();
     const int32_t awake_bodies = int32_t(links_.islands.awake_bodies().size());
     if (colored_ && version == colored_version_ && awake_bodies == colored_body_count_ && !joints_differ) {
@@ -317,7 +328,6 @@ void Solver::color_constraints() {
     colored_ = true;
     colored_version_ = version;
     colored_body_count_ = awake_bodies;
-    colored_joint_key_.swap(joint_key_);
     colors_.reset(awake_bodies);
     color_joints();
     color_contacts();

@@ -120,6 +120,8 @@ private:
     // The joints to solve this step, and per joint what its colour depends on (index and
     // the two states it moves, or -1), as last coloured.
     std::vector<int32_t> awake_joints_;
+    bool gathered_ = false;
+    uint64_t gathered_joint_version_ = 0, gathered_awake_version_ = 0;
     std::vector<int32_t> joint_key_, colored_joint_key_;
     std::vector<int8_t> joint_colors_;  // per awake joint, or -1 when it moves nothing
     std::vector<int32_t> joint_color_starts_;  // per colour: its first slot in ordered_joints_

@@ -73,6 +73,7 @@ void World::unlink_joint(int32_t joint) {
 }
 
 void World::link_joints(int32_t body) {
+    joints_.touch();  // the body's type changed: its joints may move it, or no longer
     joints_.visit_joints(body, [this](int32_t joint, int32_t other) {
         wake_body(other);
         link_joint(joint);
