@@ -21,14 +21,14 @@ constexpr float drop_height = 2.0f;     // m, feet above the ground at the start
 constexpr float layer_height = 2.0f;    // m between layers of ragdolls
 constexpr float ragdoll_spacing = 0.8f; // m between neighbours in a layer: they land on each other
 constexpr int per_layer = 10;
-// A joint pulled this far apart (its two anchors, in the world) is tearing, not just soft: soft
-// joints give under a landing's impact by centimetres. This bound caught the joints branch's
-// runaway guard (2a1bc6c) tearing landing ragdolls: the 100-ragdoll heap's widest gap went from
-// 49 to 65 mm, and back with 9306921. (Box2D v3's rain, ragdolls landing at 28 m/s rather than
-// 19, reads up to 0.13 m.) Continuous collision, which sets a fast limb back to where it first
-// touches without its joints (as Box2D does), widened it to 53 mm, and springs that keep their
-// energy to 58 mm (2026-11-24).
-constexpr double max_joint_gap = 0.08;  // m
+// A joint pulled this far apart (its two anchors, in the world) is torn, not soft: soft joints
+// give under a landing's impact by centimetres. The 100-ragdoll heap's widest gap read 49 mm
+// on the joints branch at 9306921, 65 mm at 2a1bc6c (its runaway guard tearing landing
+// ragdolls) and 57 mm at 0bb3e4a (springs solved anew); Box2D v3's rain, whose ragdolls land
+// at 28 m/s rather than 19, reads up to 0.13 m. A bound at 5 cm flipped with every solver
+// change (continuous collision, setting fast limbs back without their joints, gave 58 mm);
+// 10 cm is twice what the heap needs and still far from a torn limb's 0.25 m.
+constexpr double max_joint_gap = 0.1;  // m
 // How deep below the ground's top a body may be: the contact slop and soft push-out.
 constexpr double max_below_ground = 0.05;  // m
 
