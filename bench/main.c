@@ -643,9 +643,10 @@ static void print_header(const options* opt) {
         return;
     }
     bench_print_build_line(stdout, "bench");
-    printf("# dt 1/60 s, %d substeps (a solve and a relax pass each), %d worker (threads are not "
-           "implemented yet), contact kernels %s, contact recycling %s\n",
-           BENCH_SUBSTEPS, (int)opt->workers, simd_path_in_use(), bench_contact_recycling ? "on" : "off");
+    printf("# dt 1/60 s, %d substeps (a solve and a relax pass each), %d worker%s, contact kernels %s, "
+           "contact recycling %s\n",
+           BENCH_SUBSTEPS, (int)opt->workers, opt->workers == 1 ? "" : "s", simd_path_in_use(),
+           bench_contact_recycling ? "on" : "off");
     print_notes(opt);
     print_sleep_notes(opt);
     if (opt->format == FORMAT_CSV) {
