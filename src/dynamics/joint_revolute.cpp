@@ -27,8 +27,10 @@ namespace {
 void solve_revolute_rows(JointConstraint& c, JointBodies& j, const JointStep& step, bool use_bias) {
     const RevoluteSettings& s = c.def->revolute;
     JointImpulses& p = c.impulses;
+    // The rows change velocities only: the angle is the same for all of them.
+    const float angle = (c.rows & (spring_row | limit_row)) ? current_angle(c, j) : 0.0f;
     if (c.rows & spring_row) {
-        const float error = unwind_angle(current_angle(c, j) - s.target_angle);
+        const float error = unwind_angle(angle - s.target_angle);
         apply_angular(c, j, spring_impulse(error, j.wb - j.wa, c.axial_mass, c.spring, p.spring, use_bias));
     }
     if (c.rows & motor_row) {
@@ -36,7 +38,6 @@ void solve_revolute_rows(JointConstraint& c, JointBodies& j, const JointStep& st
         apply_angular(c, j, motor_impulse(j.wb - j.wa, s.motor_speed, c.axial_mass, max_impulse, p.motor));
     }
     if (c.rows & limit_row) {
-        const float angle = current_angle(c, j);
         apply_angular(c, j, limit_impulse(angle - s.lower_angle, j.wb - j.wa, c.axial_mass, p.lower, step, use_bias));
         apply_angular(c, j, -limit_impulse(s.upper_angle - angle, j.wa - j.wb, c.axial_mass, p.upper, step, use_bias));
     }
