@@ -109,8 +109,7 @@ void JointSolver::prepare(const Pool<Joint>& joints, const Pool<Body>& bodies, i
 void JointSolver::warm_start(int32_t begin, int32_t end, BodyState* states) {
     for (int32_t k = begin; k < end; ++k) {
         JointConstraint& c = constraints_[std::size_t(k)];
-        const JointBodies before = load_bodies(c, states);
-        JointBodies j = before;
+        JointBodies j = load_bodies(c, states);
         switch (c.type) {
             case JointType::revolute: warm_start_revolute(c, j); break;
             case JointType::prismatic: warm_start_prismatic(c, j); break;
@@ -122,7 +121,7 @@ void JointSolver::warm_start(int32_t begin, int32_t end, BodyState* states) {
             default: break;
         }
         if (!within_limits(j, step_)) {
-            j = before;
+            j = load_bodies(c, states);  // the states are untouched until store_bodies
             c.impulses = {};
         }
         store_bodies(c, j, states);
@@ -132,8 +131,7 @@ void JointSolver::warm_start(int32_t begin, int32_t end, BodyState* states) {
 void JointSolver::solve(int32_t begin, int32_t end, BodyState* states, bool use_bias) {
     for (int32_t k = begin; k < end; ++k) {
         JointConstraint& c = constraints_[std::size_t(k)];
-        const JointBodies before = load_bodies(c, states);
-        JointBodies j = before;
+        JointBodies j = load_bodies(c, states);
         switch (c.type) {
             case JointType::revolute: solve_revolute(c, j, step_, use_bias); break;
             case JointType::prismatic: solve_prismatic(c, j, step_, use_bias); break;
@@ -145,7 +143,7 @@ void JointSolver::solve(int32_t begin, int32_t end, BodyState* states, bool use_
             default: break;
         }
         if (!within_limits(j, step_)) {
-            j = before;
+            j = load_bodies(c, states);  // the states are untouched until store_bodies
             c.impulses = {};
         }
         store_bodies(c, j, states);
