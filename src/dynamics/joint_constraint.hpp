@@ -81,6 +81,10 @@ inline void store_bodies(const JointConstraint& c, const JointBodies& j, BodySta
     }
 }
 
+/// How a rigid row acts in this pass: pushed back toward no error with the world's joint
+/// softness in the biased pass, and plainly rigid, without bias, when relaxing.
+inline Softness rigid_pass(const JointStep& step, bool use_bias) { return use_bias ? step.rigid : Softness{}; }
+
 /// An angle brought into (-pi, pi].
 inline float unwind_angle(float angle) {
     constexpr float pi = 3.14159265f, two_pi = 6.28318531f;
@@ -105,6 +109,9 @@ inline float joint_atan2(float y, float x) {
     r = x < 0.0f ? 3.14159265f - r : r;
     return y < 0.0f ? -r : r;
 }
+
+/// The same to within 1 ulp (trig.hpp), for the angles read once per step.
+inline float exact_relative_angle(Rot a, Rot b) { return get_angle(inv_mul_rot(a, b)); }
 
 /// The angle that turns a into b, in (-pi, pi].
 inline float relative_angle(Rot a, Rot b) {

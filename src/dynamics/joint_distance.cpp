@@ -56,13 +56,9 @@ void solve_distance(JointConstraint& c, JointBodies& j, const JointStep& step, b
     const DistanceFrame f = distance_frame(c, j);
     const float rest = clamp(s.length, s.min_length, s.max_length);
     if (is_rigid(s)) {
-        float bias = 0.0f, mass_scale = 1.0f, impulse_scale = 0.0f;
-        if (use_bias) {
-            bias = step.rigid.bias_rate * (f.length - rest);
-            mass_scale = step.rigid.mass_scale;
-            impulse_scale = step.rigid.impulse_scale;
-        }
-        const float impulse = -c.axial_mass * mass_scale * (row_speed(f, j) + bias) - impulse_scale * p.axial;
+        const Softness soft = rigid_pass(step, use_bias);
+        const float bias = use_bias ? soft.bias_rate * (f.length - rest) : 0.0f;
+        const float impulse = -c.axial_mass * soft.mass_scale * (row_speed(f, j) + bias) - soft.impulse_scale * p.axial;
         p.axial += impulse;
         apply_linear(c, j, f.ra, f.rb, impulse * f.axis);
     } else if (s.hertz > 0.0f) {

@@ -46,20 +46,15 @@ void solve_prismatic(JointConstraint& c, JointBodies& j, const JointStep& step, 
     }
     // The perpendicular offset and the angle, together.
     const Vec2 cdot{dot(f.perp, j.vb - j.va) + f.s2 * j.wb - f.s1 * j.wa, j.wb - j.wa};
-    Vec2 bias;
-    float mass_scale = 1.0f, impulse_scale = 0.0f;
-    if (use_bias) {
-        bias = step.rigid.bias_rate * Vec2{f.perp_offset, current_angle(c, j)};
-        mass_scale = step.rigid.mass_scale;
-        impulse_scale = step.rigid.impulse_scale;
-    }
+    const Softness soft = rigid_pass(step, use_bias);
+    const Vec2 bias = use_bias ? soft.bias_rate * Vec2{f.perp_offset, current_angle(c, j)} : Vec2{};
     const float ma = c.inv_mass_a, mb = c.inv_mass_b, ia = c.inv_inertia_a, ib = c.inv_inertia_b;
     const float k11 = ma + mb + ia * f.s1 * f.s1 + ib * f.s2 * f.s2;
     const float k12 = ia * f.s1 + ib * f.s2;
     float k22 = ia + ib;
     k22 = k22 > 0.0f ? k22 : 1.0f;  // neither body turns: the angle row is satisfied already
     const Vec2 b = solve22(Mat22{{k11, k12}, {k12, k22}}, cdot + bias);
-    const Vec2 impulse = -mass_scale * b - impulse_scale * p.linear;
+    const Vec2 impulse = -soft.mass_scale * b - soft.impulse_scale * p.linear;
     p.linear += impulse;
     apply_block(c, j, f, impulse);
 }

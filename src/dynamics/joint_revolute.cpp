@@ -52,15 +52,10 @@ void solve_revolute(JointConstraint& c, JointBodies& j, const JointStep& step, b
     }
     // The point row last: it is the one that must hold.
     const Vec2 ra = rotate(j.dqa, c.anchor_a), rb = rotate(j.dqb, c.anchor_b);
-    Vec2 bias;
-    float mass_scale = 1.0f, impulse_scale = 0.0f;
-    if (use_bias) {
-        bias = step.rigid.bias_rate * current_separation(c, j, ra, rb);
-        mass_scale = step.rigid.mass_scale;
-        impulse_scale = step.rigid.impulse_scale;
-    }
+    const Softness soft = rigid_pass(step, use_bias);
+    const Vec2 bias = use_bias ? soft.bias_rate * current_separation(c, j, ra, rb) : Vec2{};
     const Vec2 b = solve22(point_mass_matrix(c, ra, rb), relative_velocity(j, ra, rb) + bias);
-    const Vec2 impulse = -mass_scale * b - impulse_scale * p.linear;
+    const Vec2 impulse = -soft.mass_scale * b - soft.impulse_scale * p.linear;
     p.linear += impulse;
     apply_linear(c, j, ra, rb, impulse);
 }

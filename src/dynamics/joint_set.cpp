@@ -3,25 +3,10 @@
 #include "dynamics/joint_set.hpp"
 
 #include "core/assert.hpp"
+#include "dynamics/joint_constraint.hpp"
 #include "math/math.hpp"
 
 namespace i2d {
-
-namespace {
-
-// The angle from rotation a to rotation b, in (-pi, pi], without wrapping errors.
-float relative_angle(Rot a, Rot b) { return get_angle(inv_mul_rot(a, b)); }
-
-// An angle brought into (-pi, pi].
-float unwind(float angle) {
-    constexpr float pi = 3.14159265f;
-    if (angle <= -pi) {
-        return angle + 2.0f * pi;
-    }
-    return angle > pi ? angle - 2.0f * pi : angle;
-}
-
-}  // namespace
 
 void JointSet::link_edge(int32_t joint, int32_t side) {
     JointEdge& edge = joints_[joint].edges[side];
@@ -130,7 +115,7 @@ JointMeasures JointSet::measure(int32_t joint) const {
         case JointType::wheel: local_axis = d.wheel.local_axis_a; break;
         default: break;
     }
-    m.angle = unwind(relative_angle(a.transform.q, b.transform.q) - reference);
+    m.angle = unwind_angle(exact_relative_angle(a.transform.q, b.transform.q) - reference);
     if (local_axis.x != 0.0f || local_axis.y != 0.0f) {
         const Vec2 axis = rotate(a.transform.q, local_axis);
         m.translation = dot(axis, separation);

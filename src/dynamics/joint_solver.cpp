@@ -81,7 +81,7 @@ void JointSolver::prepare_one(JointConstraint& c, const Joint& joint, const Pool
                              d.type == JointType::motor ||
                              (d.type == JointType::revolute && (d.revolute.enable_limit || d.revolute.enable_spring));
     c.delta_angle =
-        reads_angle ? unwind_angle(get_angle(inv_mul_rot(a.transform.q, b.transform.q)) - f.reference_angle) : 0.0f;
+        reads_angle ? unwind_angle(exact_relative_angle(a.transform.q, b.transform.q) - f.reference_angle) : 0.0f;
     const Vec2 local_axis = d.type == JointType::prismatic ? d.prismatic.local_axis_a : d.wheel.local_axis_a;
     c.axis = rotate(a.transform.q, local_axis);
     c.impulses = joint.impulses;

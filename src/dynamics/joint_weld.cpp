@@ -13,7 +13,7 @@ SpringRow weld_row(float hertz, const SpringRow& spring, const JointStep& step, 
     if (hertz > 0.0f) {
         return spring;
     }
-    return use_bias ? as_spring_row(step.rigid) : SpringRow{};
+    return as_spring_row(rigid_pass(step, use_bias));
 }
 
 }  // namespace

@@ -39,7 +39,7 @@ void solve_wheel(JointConstraint& c, JointBodies& j, const JointStep& step, bool
     // On the line: the perpendicular offset, rigid.
     const float k = c.inv_mass_a + c.inv_mass_b + c.inv_inertia_a * f.s1 * f.s1 + c.inv_inertia_b * f.s2 * f.s2;
     const float cdot = dot(f.perp, j.vb - j.va) + f.s2 * j.wb - f.s1 * j.wa;
-    const Softness soft = use_bias ? step.rigid : Softness{};
+    const Softness soft = rigid_pass(step, use_bias);
     const float bias = use_bias ? soft.bias_rate * f.perp_offset : 0.0f;
     const float impulse = -inverse_or_zero(k) * soft.mass_scale * (cdot + bias) - soft.impulse_scale * p.linear.x;
     p.linear.x += impulse;
