@@ -346,6 +346,13 @@ I2D_API bool i2d_body_is_awake(i2d_body_id id) {
     });
 }
 
+I2D_API bool i2d_body_is_quarantined(i2d_body_id id) {
+    return guarded("i2d_body_is_quarantined", false, [&](Call& call) {
+        BodyRef b;
+        return call.body(id, b) && b.world->is_quarantined(b.index);
+    });
+}
+
 I2D_API i2d_status i2d_body_set_awake(i2d_body_id id, bool awake) {
     return guarded("i2d_body_set_awake", I2D_ERR_OUT_OF_MEMORY, [&](Call& call) {
         BodyRef b;

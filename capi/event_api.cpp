@@ -27,6 +27,16 @@ static_assert(offsetof(BodyMoveEvent, body) == offsetof(i2d_body_move_event, bod
 static_assert(offsetof(BodyMoveEvent, user_data) == offsetof(i2d_body_move_event, user_data), "event layout");
 static_assert(offsetof(BodyMoveEvent, fell_asleep) == offsetof(i2d_body_move_event, fell_asleep), "event layout");
 
+static_assert(sizeof(BodyQuarantineEvent) == sizeof(i2d_body_quarantine_event), "event layout");
+static_assert(offsetof(BodyQuarantineEvent, body) == offsetof(i2d_body_quarantine_event, body), "event layout");
+static_assert(offsetof(BodyQuarantineEvent, user_data) == offsetof(i2d_body_quarantine_event, user_data),
+              "event layout");
+static_assert(offsetof(BodyQuarantineEvent, former_type) == offsetof(i2d_body_quarantine_event, former_type),
+              "event layout");
+static_assert(int32_t(BodyType::static_body) == I2D_BODY_STATIC && int32_t(BodyType::kinematic) == I2D_BODY_KINEMATIC &&
+                  int32_t(BodyType::dynamic) == I2D_BODY_DYNAMIC,
+              "a quarantine event's former type is the public enum's value");
+
 namespace {
 
 template <class Public, class Core>
@@ -68,6 +78,8 @@ I2D_API i2d_body_events i2d_world_get_body_events(i2d_world_id id) {
             return i2d_body_events{};
         }
         const WorldEvents& e = w.world->events();
-        return i2d_body_events{as_public<i2d_body_move_event>(e.body_moves), int32_t(e.body_moves.size())};
+        return i2d_body_events{as_public<i2d_body_move_event>(e.body_moves), int32_t(e.body_moves.size()),
+                               as_public<i2d_body_quarantine_event>(e.body_quarantines),
+                               int32_t(e.body_quarantines.size())};
     });
 }

@@ -36,6 +36,7 @@ const i2d_struct_info struct_infos[] = {
     I2D_STRUCT_INFO(i2d_sensor_end_event),
     I2D_STRUCT_INFO(i2d_sensor_events),
     I2D_STRUCT_INFO(i2d_body_move_event),
+    I2D_STRUCT_INFO(i2d_body_quarantine_event),
     I2D_STRUCT_INFO(i2d_body_events),
     I2D_STRUCT_INFO(i2d_ray_result),
     I2D_STRUCT_INFO(i2d_circle),

@@ -152,6 +152,9 @@ I2D_API i2d_status i2d_body_apply_angular_impulse(i2d_body_id body, float impuls
  *  touching it is destroyed, and when its velocity, transform or shapes change
  *  or a force, torque or impulse is applied with wake = true. */
 I2D_API bool i2d_body_is_awake(i2d_body_id body);
+/** True after a step found the body's state non-finite and froze it (see
+ *  i2d_body_quarantine_event); false again once its type is set. */
+I2D_API bool i2d_body_is_quarantined(i2d_body_id body);
 /** Wakes the body and everything touching it, or puts them all to sleep at once
  *  (awake = false; static bodies are refused with I2D_ERR_INVALID_ARGUMENT). */
 I2D_API i2d_status i2d_body_set_awake(i2d_body_id body, bool awake);
@@ -347,7 +350,8 @@ I2D_API int32_t i2d_world_overlap_shape_ids(i2d_world_id world, const i2d_shape_
 
 I2D_API i2d_contact_events i2d_world_get_contact_events(i2d_world_id world);
 I2D_API i2d_sensor_events i2d_world_get_sensor_events(i2d_world_id world);
-/** Every body that moved during the last step: one call per frame instead of one per body. */
+/** Every body that moved during the last step: one call per frame instead of one per
+ *  body; and every body the step quarantined (i2d_body_quarantine_event). */
 I2D_API i2d_body_events i2d_world_get_body_events(i2d_world_id world);
 
 /** Rebuilds the static tree top-down for the best query cost; worth calling once after

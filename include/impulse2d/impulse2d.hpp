@@ -169,6 +169,7 @@ public:
     float rotational_inertia() const { return checked(i2d_body_get_rotational_inertia(id_)); }
     i2d_vec2 world_center_of_mass() const { return checked(i2d_body_get_world_center_of_mass(id_)); }
     bool awake() const { return checked(i2d_body_is_awake(id_)); }
+    bool quarantined() const { return checked(i2d_body_is_quarantined(id_)); }
     void set_awake(bool awake) { i2d_body_set_awake(id_, awake); detail::throw_if_failed(); }
 
     /** A force (N) at a world point for the next step. */

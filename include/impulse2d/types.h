@@ -350,9 +350,25 @@ typedef struct i2d_body_move_event {
     void* user_data;
     bool fell_asleep; /**< the body fell asleep at the end of this step */
 } i2d_body_move_event;
+/** A body whose state (position, rotation or velocity) stopped being finite during the
+ *  last step, which no accepted input should cause but an overflow somewhere still
+ *  might. Instead of spreading NaN through the world, the step left it at the pose it
+ *  started from (`transform`), made it static, ended its contacts and cleared its
+ *  joints' impulses; every other body went on. A body that took the NaN from it within
+ *  the same step (through a contact or a joint) is quarantined too. The body stays
+ *  quarantined (i2d_body_is_quarantined) until its type is set again: give it a pose
+ *  and velocity, then i2d_body_set_type(body, former_type) brings it back. */
+typedef struct i2d_body_quarantine_event {
+    i2d_transform transform;
+    i2d_body_id body;
+    void* user_data;
+    i2d_body_type former_type; /**< its type before the quarantine made it static */
+} i2d_body_quarantine_event;
 typedef struct i2d_body_events {
     const i2d_body_move_event* move_events;
     int32_t move_count;
+    const i2d_body_quarantine_event* quarantine_events;
+    int32_t quarantine_count;
 } i2d_body_events;
 
 #endif

@@ -56,6 +56,7 @@ struct alignas(64) Body {
     int32_t island = null_index;      // every moving body has one; static bodies none
     int32_t move_event = null_index;  // its body move event of the last step, if any
     bool needs_cover = false;         // velocity or pose changed since its boxes were fattened
+    bool quarantined = false;         // frozen by a step that found its state non-finite
     float mass = 0.0f;
     float inertia = 0.0f;  // about the centre of mass
     void* user_data = nullptr;

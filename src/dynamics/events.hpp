@@ -39,6 +39,14 @@ struct BodyMoveEvent {
     bool fell_asleep;
 };
 
+/// A body frozen because its state stopped being finite (world.cpp, quarantine).
+struct BodyQuarantineEvent {
+    Transform transform;
+    uint64_t body;
+    void* user_data;
+    int32_t former_type;  // BodyType, as the public enum's value
+};
+
 struct JointEvent {
     uint64_t joint;
     void* user_data;
@@ -67,13 +75,14 @@ struct WorldEvents {
     std::vector<ShapePairEvent> contact_end;
     std::vector<ShapePairEvent> sensor_begin, sensor_end;
     std::vector<BodyMoveEvent> body_moves;
+    std::vector<BodyQuarantineEvent> body_quarantines;
     std::vector<JointEvent> joint_events;
     std::vector<ContactHitEvent> contact_hits;
 
     void clear() {
         contact_begin.clear(), contact_end.clear(), sensor_begin.clear(), sensor_end.clear();
         contact_hits.clear();
-        body_moves.clear(), joint_events.clear();
+        body_moves.clear(), body_quarantines.clear(), joint_events.clear();
     }
 };
 

@@ -452,8 +452,9 @@ void Solver::integrate_velocities(void* solver, const Stage&, int32_t begin, int
         s.linear_velocity = length_squared(v) <= max_speed * max_speed
                                 ? v
                                 : limited_velocity(m, s.linear_velocity, gravity, h, max_speed);
-        // At most a quarter turn per substep: faster spins alias and tunnel.
-        s.angular_velocity = w >= -max_spin && w <= max_spin ? w : (w > 0.0f ? max_spin : -max_spin);
+        // At most a quarter turn per substep: faster spins alias and tunnel. A NaN passes
+        // through, to be quarantined, rather than becoming a full spin.
+        s.angular_velocity = w > max_spin ? max_spin : (w < -max_spin ? -max_spin : w);
     }
 }
 
@@ -480,9 +481,15 @@ void Solver::finalize_bodies(void* solver, const Stage&, int32_t begin, int32_t 
 // shapes' bounds and its rest time. What reaches beyond the body waits in its slots for
 // finish_bodies.
 void Solver::finalize_body(int32_t k) {
-    const BodyState& s = states_[std::size_t(k)];
     const int32_t index = links_.islands.awake_bodies()[std::size_t(k)];
     Body& b = links_.bodies[index];
+    // A state that overflowed is not written: the body stays where the step found it,
+    // at rest, and the world quarantines it (no NaN reaches the bounds or the trees).
+    static const BodyState at_rest{};
+    const BodyState& solved = states_[std::size_t(k)];
+    const bool finite = is_finite(solved.linear_velocity) && is_finite(solved.angular_velocity) &&
+                        is_finite(b.center + solved.delta_position) && is_finite(solved.delta_rotation);
+    const BodyState& s = finite ? solved : at_rest;
     const Transform start = b.transform;
     b.linear_velocity = s.linear_velocity;
     b.angular_velocity = s.angular_velocity;
@@ -513,6 +520,7 @@ void Solver::finalize_body(int32_t k) {
     const bool moved = !(b.transform.p == start.p && b.transform.q.c == start.q.c && b.transform.q.s == start.q.s);
     flags |= moved ? body_moved : 0;
     flags |= settings.enable_continuous && is_fast(b, s, time_step_) ? fast_body : 0;
+    flags |= finite ? 0 : non_finite_state;
     final_flags_[std::size_t(k)] = flags;
 }
 
@@ -551,6 +559,7 @@ void Solver::finish_bodies() {
     const std::vector<int32_t>& awake = links_.islands.awake_bodies();
     const bool sleep = links_.settings.enable_sleep;
     fast_bodies_.clear();
+    non_finite_bodies_.clear();
     for (std::size_t k = 0; k < awake.size(); ++k) {
         const uint8_t flags = final_flags_[k];
         if (sleep) {
@@ -558,6 +567,9 @@ void Solver::finish_bodies() {
         }
         if (flags & fast_body) {
             fast_bodies_.push_back(awake[k]);
+        }
+        if (flags & non_finite_state) {
+            non_finite_bodies_.push_back(awake[k]);
         }
         if ((flags & (proxies_enlarged | kinematic_rest)) == 0) {
             continue;

@@ -75,6 +75,9 @@ public:
     /// The dynamic bodies the last step moved far for their size, in awake order: the
     /// continuous stage sweeps them.
     const std::vector<int32_t>& fast_bodies() const { return fast_bodies_; }
+    /// The bodies whose solved state was not finite, in awake order: the last step left
+    /// them where it found them, at rest, for the world to quarantine.
+    const std::vector<int32_t>& non_finite_bodies() const { return non_finite_bodies_; }
 
 private:
     void color_constraints();
@@ -156,8 +159,15 @@ private:
     StageRunner runner_;
     bool parallel_ = false;
     // What the final pass leaves per awake body for finish_bodies.
-    enum FinalFlags : uint8_t { body_moved = 1, proxies_enlarged = 2, kinematic_rest = 4, fast_body = 8 };
+    enum FinalFlags : uint8_t {
+        body_moved = 1,
+        proxies_enlarged = 2,
+        kinematic_rest = 4,
+        fast_body = 8,
+        non_finite_state = 16
+    };
     std::vector<int32_t> fast_bodies_;
+    std::vector<int32_t> non_finite_bodies_;
     std::vector<uint8_t> final_flags_;
     std::vector<int32_t> rest_islands_;  // the body's island's rest slot (Islands::rest_slot)
     std::vector<float> rest_times_;

@@ -71,6 +71,7 @@ void World::destroy_body(int32_t body) {
 
 void World::set_type(int32_t body, BodyType type) {
     if (bodies[body].type == type) {
+        bodies[body].quarantined = false;  // a quarantined body kept static on purpose
         return;
     }
     // What touched it loses a support or meets a new obstacle.
@@ -86,6 +87,7 @@ void World::set_type(int32_t body, BodyType type) {
     }
     Body& b = bodies[body];
     b.type = type;
+    b.quarantined = false;
     b.sleep_time = 0.0f;
     if (type == BodyType::static_body) {
         b.linear_velocity = {};

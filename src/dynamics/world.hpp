@@ -125,6 +125,7 @@ public:
     bool apply_angular_impulse(int32_t body, float impulse, bool wake);
 
     bool is_awake(int32_t body) const { return islands_.is_awake(body); }
+    bool is_quarantined(int32_t body) const { return bodies[body].quarantined; }
     /// Wakes the body's island (and resets its rest timer); a no-op for static bodies.
     void wake_body(int32_t body) { islands_.wake_body(body); }
     /// Puts the body and everything touching it to sleep now.
@@ -198,6 +199,8 @@ private:
     bool change_velocity(int32_t body, Vec2 dv, float dw, bool wake);
     bool prepare_to_receive(int32_t body, bool wake);
     void report_falling_asleep(int32_t body);
+    void quarantine_non_finite_bodies();
+    void forget_joint_impulses(int32_t body);
     void report_sensor_crossings();
     void validate_body(int32_t body) const;
 

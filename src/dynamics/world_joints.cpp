@@ -80,6 +80,16 @@ void World::link_joints(int32_t body) {
     });
 }
 
+void World::forget_joint_impulses(int32_t body) {
+    joints_.visit_joints(body, [this](int32_t joint, int32_t) {
+        Joint& j = joints[joint];
+        j.impulses = JointImpulses{};
+        j.reaction_force = Vec2{};
+        j.reaction_torque = 0.0f;
+        j.motor_output = 0.0f;
+    });
+}
+
 void World::unlink_joints(int32_t body) {
     joints_.visit_joints(body, [this](int32_t joint, int32_t other) {
         wake_body(other);

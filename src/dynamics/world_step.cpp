@@ -45,6 +45,9 @@ void World::step(float time_step, int32_t substep_count) {
         islands_.sleep_rested_islands(settings.time_to_sleep, [this](int32_t body) { report_falling_asleep(body); });
     }
     profile_.sleep += timer.lap_ms();
+    if (!solver_.non_finite_bodies().empty()) {
+        quarantine_non_finite_bodies();
+    }
     validate();
     profile_.step = total.lap_ms();
 }
@@ -58,6 +61,31 @@ void World::report_falling_asleep(int32_t body) {
         moves.push_back({b.transform, events_.ids.body_id(body, bodies.generation(body)), b.user_data, false});
     }
     moves[std::size_t(b.move_event)].fell_asleep = true;
+}
+
+// A body whose solved state overflowed (the solver left it where the step found it, at
+// rest) is frozen there rather than allowed to spread NaN: made static, so that nothing
+// moves it and it moves nothing, its joints' impulses forgotten (they were solved
+// against its NaN), and reported. Its contacts end with set_type; those ends belong to
+// this step's arrays, which the caller has not seen yet.
+void World::quarantine_non_finite_bodies() {
+    const std::size_t contact_ends_before = events_.pending_contact_ends.size();
+    const std::size_t sensor_ends_before = events_.pending_sensor_ends.size();
+    for (const int32_t body : solver_.non_finite_bodies()) {
+        const Body& b = bodies[body];
+        events_.current.body_quarantines.push_back(
+            {b.transform, events_.ids.body_id(body, bodies.generation(body)), b.user_data, int32_t(b.type)});
+        forget_joint_impulses(body);
+        set_type(body, BodyType::static_body);
+        bodies[body].quarantined = true;
+    }
+    const auto take_new_ends = [](std::vector<ShapePairEvent>& pending, std::size_t before,
+                                  std::vector<ShapePairEvent>& current) {
+        current.insert(current.end(), pending.begin() + std::ptrdiff_t(before), pending.end());
+        pending.resize(before);
+    };
+    take_new_ends(events_.pending_contact_ends, contact_ends_before, events_.current.contact_end);
+    take_new_ends(events_.pending_sensor_ends, sensor_ends_before, events_.current.sensor_end);
 }
 
 // A fast body that passed through a sensor within the step neither began nor ended the

@@ -1362,6 +1362,11 @@ static void run_body_moves(i2d_world_id world) {
             /* fell_asleep is set exactly for the bodies the step put to sleep. */
             I2D_CHECK(ev->fell_asleep == !i2d_body_is_awake(bodies[which]));
         }
+        /* Finite input never needs the non-finite quarantine. */
+        I2D_CHECK(e.quarantine_count == 0 && e.quarantine_events == NULL);
+        for (int i = 0; i < MOVE_BODIES; ++i) {
+            I2D_CHECK(!i2d_body_is_quarantined(bodies[i]) && i2d_last_status() == I2D_OK);
+        }
         /* Every body whose transform changed in the step is there. */
         for (int i = 0; i < MOVE_BODIES; ++i) {
             i2d_transform xf = i2d_body_get_transform(bodies[i]);
@@ -1411,7 +1416,7 @@ static void check_no_events(i2d_world_id world, const char* what) {
     I2D_CHECK(se.begin_count == 0 && se.end_count == 0);
     i2d_body_events be = i2d_world_get_body_events(world);
     I2D_CHECK(i2d_last_status() == I2D_ERR_INVALID_HANDLE);
-    I2D_CHECK(be.move_count == 0);
+    I2D_CHECK(be.move_count == 0 && be.quarantine_count == 0);
     I2D_CHECK(i2d_world_rebuild_static_tree(world) == I2D_ERR_INVALID_HANDLE);
     if (i2d_check_failures != before) {
         fprintf(stderr, "  (with %s)\n", what);

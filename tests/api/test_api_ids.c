@@ -182,6 +182,9 @@ static void check_body_id_refused(i2d_body_id b, const char* ctx) {
     bool awake = i2d_body_is_awake(b);
     CHECK_LAST_HANDLE_REFUSED(ctx, "i2d_body_is_awake");
     CHECK_IN(ctx, !awake);
+    bool quarantined = i2d_body_is_quarantined(b);
+    CHECK_LAST_HANDLE_REFUSED(ctx, "i2d_body_is_quarantined");
+    CHECK_IN(ctx, !quarantined);
     void* data = i2d_body_get_user_data(b);
     CHECK_LAST_HANDLE_REFUSED(ctx, "i2d_body_get_user_data");
     CHECK_IN(ctx, data == NULL);

@@ -70,6 +70,7 @@ I2D_TEST(cpp_handles_match_the_c_calls) {
     const i2d_vec2 c = i2d_body_get_position(ball.id());
     I2D_CHECK(ball.position().x == c.x && ball.position().y == c.y);
     I2D_CHECK(ground.type() == I2D_BODY_STATIC && ground.mass() == 0.0f);
+    I2D_CHECK(!ball.quarantined() && world.body_events().quarantine_count == 0);
     I2D_CHECK(world.counters().body_count == 2);
     I2D_CHECK(world.overlap_aabb(i2d_aabb{{-1.0f, 0.0f}, {1.0f, 1.0f}}).size() == 2);
     I2D_CHECK(world.cast_ray_closest({0.0f, 5.0f}, {0.0f, -10.0f}).shape.bits == shape.id().bits);

@@ -364,6 +364,12 @@ void read_events(i2d_world_id w) {
         }
         check_body_finite(moves.move_events[i].body);
     }
+    // Quarantine is the last line of defence: a world fed only finite values must never
+    // need it, so a quarantined body is a finding like a NaN.
+    if (moves.quarantine_count > 0) {
+        const i2d_vec2 at = moves.quarantine_events[0].transform.p;
+        fail("a body was quarantined (its state went non-finite)", at.x, at.y);
+    }
 }
 
 // ---- The instructions ------------------------------------------------------------------
@@ -481,6 +487,7 @@ void run_body_call(FuzzInput& in, uint8_t op) {
             i2d_body_get_local_point(b, in.vec2());
             i2d_body_get_world_point_velocity(b, in.vec2());
             i2d_body_is_awake(b);
+            i2d_body_is_quarantined(b);
             i2d_body_get_user_data(b);
             i2d_body_get_shape_count(b);
             check_body_finite(b);

@@ -1,6 +1,8 @@
 # SPDX-License-Identifier: MIT
 """Events as lists of named tuples, queries as lists."""
 
+import pytest
+
 import impulse2d
 from conftest import make_ground
 
@@ -21,7 +23,11 @@ def test_contact_and_body_events_of_a_landing(world):
     assert isinstance(event, impulse2d.ContactBegin)
     assert {event.shape_a, event.shape_b} == {shape, ground.shapes[0]}
     assert moved > 0
+    # Finite input never needs the non-finite quarantine.
+    assert world.quarantine_events() == [] and ball.quarantined is False
     ball.destroy()
+    with pytest.raises(impulse2d.InvalidHandle):
+        ball.quarantined
     world.step()
     begin, end = world.contact_events()
     assert len(end) == 1 and isinstance(end[0], impulse2d.ContactEnd)

@@ -47,6 +47,8 @@ static const i2d_js_layout_entry k_layout[] = {
     I2D_JS_SIZE(i2d_body_events),
     I2D_JS_FIELD(i2d_body_events, move_events),
     I2D_JS_FIELD(i2d_body_events, move_count),
+    I2D_JS_FIELD(i2d_body_events, quarantine_events),
+    I2D_JS_FIELD(i2d_body_events, quarantine_count),
     I2D_JS_SIZE(i2d_contact_events),
     I2D_JS_FIELD(i2d_contact_events, begin_events),
     I2D_JS_FIELD(i2d_contact_events, begin_count),

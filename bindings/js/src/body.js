@@ -61,6 +61,8 @@ export class Body {
   get worldCenterOfMass() { return this.vec2Getter('_i2d_body_get_world_center_of_mass'); }
   get awake() { return this.getter('_i2d_body_is_awake') !== 0; }
   set awake(awake) { this.rt.check(this.rt.m._i2d_body_set_awake(this.id, awake ? 1 : 0)); }
+  /** True after a step froze the body because its state went non-finite (see the C header). */
+  get quarantined() { return this.getter('_i2d_body_is_quarantined') !== 0; }
 
   applyLinearImpulse(impulse, point = this.worldCenterOfMass, wake = true) {
     const rt = this.rt;

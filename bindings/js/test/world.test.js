@@ -50,6 +50,7 @@ test('a box dropped on the ground comes to rest on it and falls asleep', () => {
   assert.ok(Math.abs(y - 0.5) < 0.02, `resting centre at ${y}`);
   assert.ok(Math.abs(Math.sin(2 * box.angle)) < 0.01, `face down: angle ${box.angle}`);
   assert.equal(box.awake, false);
+  assert.equal(box.quarantined, false);
   world.destroy();
 });
 

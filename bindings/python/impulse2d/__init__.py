@@ -41,6 +41,7 @@ from .joint import Joint
 from .shape import Shape
 from .types import (
     BodyMove,
+    BodyQuarantine,
     BodyType,
     ContactBegin,
     ContactEnd,
@@ -75,6 +76,7 @@ __all__ = [
     "SensorBegin",
     "SensorEnd",
     "BodyMove",
+    "BodyQuarantine",
     "RayHit",
     "Counters",
     "Impulse2DError",

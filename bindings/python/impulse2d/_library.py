@@ -108,6 +108,7 @@ SIGNATURES = {
     "i2d_body_apply_linear_impulse": (_STATUS, [_ID, Vec2, Vec2, C.c_bool]),
     "i2d_body_apply_angular_impulse": (_STATUS, [_ID, C.c_float, C.c_bool]),
     "i2d_body_is_awake": (C.c_bool, [_ID]),
+    "i2d_body_is_quarantined": (C.c_bool, [_ID]),
     "i2d_body_set_awake": (_STATUS, [_ID, C.c_bool]),
     "i2d_body_get_shape_count": (C.c_int32, [_ID]),
     "i2d_body_get_shapes": (C.c_int32, [_ID, _PTR, C.c_int32]),

@@ -179,8 +179,17 @@ class BodyMoveEvent(C.Structure):
     _fields_ = [("transform", Transform), ("body", C.c_uint64), ("user_data", C.c_void_p), ("fell_asleep", C.c_bool)]
 
 
+class BodyQuarantineEvent(C.Structure):
+    _fields_ = [("transform", Transform), ("body", C.c_uint64), ("user_data", C.c_void_p), ("former_type", C.c_int)]
+
+
 class BodyEvents(C.Structure):
-    _fields_ = [("move_events", C.POINTER(BodyMoveEvent)), ("move_count", C.c_int32)]
+    _fields_ = [
+        ("move_events", C.POINTER(BodyMoveEvent)),
+        ("move_count", C.c_int32),
+        ("quarantine_events", C.POINTER(BodyQuarantineEvent)),
+        ("quarantine_count", C.c_int32),
+    ]
 
 
 class RayResult(C.Structure):
@@ -325,6 +334,7 @@ DECLARED = {
     "i2d_sensor_events": SensorEvents,
     "i2d_contact_hit_event": ContactHitEvent,
     "i2d_body_move_event": BodyMoveEvent,
+    "i2d_body_quarantine_event": BodyQuarantineEvent,
     "i2d_body_events": BodyEvents,
     "i2d_ray_result": RayResult,
     "i2d_circle": Circle,

@@ -188,6 +188,15 @@ class Body:
         check(lib.i2d_body_set_awake(self._id, value))
 
     @property
+    def quarantined(self) -> bool:
+        """True after a step froze the body because its state went non-finite (it is
+        static now); False again once its type is set."""
+        value = lib.i2d_body_is_quarantined(self._id)
+        if not value:
+            check_last()
+        return bool(value)
+
+    @property
     def user_data(self) -> Any:
         """Any Python object, kept by the World (not passed to C)."""
         if not self.is_valid:

@@ -66,6 +66,16 @@ class BodyMove(NamedTuple):
     fell_asleep: bool
 
 
+class BodyQuarantine(NamedTuple):
+    """A body the last step froze because its state stopped being finite: it was made
+    static at the pose it started the step from. Set its type again to bring it back."""
+
+    body: "Body"
+    position: Vec
+    rotation: Vec  #: (cosine, sine)
+    former_type: BodyType
+
+
 class RayHit(NamedTuple):
     """The closest shape a ray hit."""
 

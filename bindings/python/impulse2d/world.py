@@ -13,6 +13,7 @@ from .joint import Joint
 from .shape import Shape
 from .types import (
     BodyMove,
+    BodyQuarantine,
     BodyType,
     ContactBegin,
     ContactEnd,
@@ -198,6 +199,20 @@ class World:
             xf = m.transform
             moves.append(BodyMove(Body(self, m.body), (xf.p.x, xf.p.y), (xf.q.c, xf.q.s), bool(m.fell_asleep)))
         return moves
+
+    def quarantine_events(self) -> List[BodyQuarantine]:
+        """Every body the last step quarantined (its state went non-finite). A world fed
+        only finite values should never have one; see i2d_body_quarantine_event."""
+        e = lib.i2d_world_get_body_events(self._id)
+        check_last()
+        frozen = []
+        for i in range(e.quarantine_count):
+            q = e.quarantine_events[i]
+            xf = q.transform
+            frozen.append(
+                BodyQuarantine(Body(self, q.body), (xf.p.x, xf.p.y), (xf.q.c, xf.q.s), BodyType(q.former_type))
+            )
+        return frozen
 
     # ---- Queries ---------------------------------------------------------------------------
 
