@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "core/prefetch.hpp"
 #include "math/math.hpp"
 
 namespace i2d {
@@ -40,6 +41,33 @@ bool within_limits(const JointBodies& j, const JointStep& step) {
     const float v = runaway_factor * step.max_speed, w = runaway_factor * step.max_spin;
     return length_squared(j.va) <= v * v && length_squared(j.vb) <= v * v && std::fabs(j.wa) <= w &&
            std::fabs(j.wb) <= w;
+}
+
+// The constraints lie in solve order, but each reads its kind's settings (limits, motor,
+// spring target) from the joint pool, in no order: a cache miss per joint per pass unless
+// asked for a few joints ahead.
+constexpr int32_t prefetch_settings_ahead = 4;
+
+I2D_FORCE_INLINE const void* kind_settings(const JointDef& d) {
+    switch (d.type) {
+        case JointType::revolute: return &d.revolute;
+        case JointType::prismatic: return &d.prismatic;
+        case JointType::distance: return &d.distance;
+        case JointType::weld: return &d.weld;
+        case JointType::wheel: return &d.wheel;
+        case JointType::motor: return &d.motor;
+        case JointType::mouse: return &d.mouse;
+        default: return &d;
+    }
+}
+
+I2D_FORCE_INLINE void prefetch_settings(const std::vector<JointConstraint>& constraints, int32_t k, int32_t end) {
+    const int32_t ahead = k + prefetch_settings_ahead;
+    if (ahead < end) {
+        const char* settings = static_cast<const char*>(kind_settings(*constraints[std::size_t(ahead)].def));
+        prefetch_line(settings);
+        prefetch_line(settings + 63);  // a kind's settings may straddle two lines
+    }
 }
 
 // A side the joint can move: a dynamic body that is awake.
@@ -130,6 +158,7 @@ void JointSolver::warm_start(int32_t begin, int32_t end, BodyState* states) {
 
 void JointSolver::solve(int32_t begin, int32_t end, BodyState* states, bool use_bias) {
     for (int32_t k = begin; k < end; ++k) {
+        prefetch_settings(constraints_, k, end);
         JointConstraint& c = constraints_[std::size_t(k)];
         JointBodies j = load_bodies(c, states);
         switch (c.type) {
