@@ -12,7 +12,8 @@ export class Camera {
   }
 }
 
-export function draw(ctx, camera, bodies, transforms, heldBody) {
+/** drag, while a body is held: {from, to}, its grabbed point and the pointer (world). */
+export function draw(ctx, camera, bodies, transforms, heldBody, drag) {
   const { canvas } = camera;
   ctx.setTransform(1, 0, 0, 1, 0, 0);
   ctx.fillStyle = '#f8fafc';
@@ -31,6 +32,16 @@ export function draw(ctx, camera, bodies, transforms, heldBody) {
     ctx.fillStyle = body === heldBody ? COLORS.held : view.asleep ? COLORS.asleep : COLORS[view.type];
     ctx.strokeStyle = '#1f2937';
     for (const g of view.geometries) drawGeometry(ctx, g);
+  }
+  if (drag) {
+    // The drag joint's spring, from the grabbed point to the pointer.
+    ctx.setTransform(s, 0, 0, -s, canvas.width / 2 - s * camera.cx, canvas.height / 2 + s * camera.cy);
+    ctx.strokeStyle = COLORS.held;
+    ctx.lineWidth = 2 / s;
+    ctx.beginPath();
+    ctx.moveTo(drag.from.x, drag.from.y);
+    ctx.lineTo(drag.to.x, drag.to.y);
+    ctx.stroke();
   }
   ctx.setTransform(1, 0, 0, 1, 0, 0);
 }

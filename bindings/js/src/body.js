@@ -17,6 +17,8 @@ export class Body {
     this.userData = undefined;
     /** @type {Shape[]} */
     this.shapes = [];
+    /** Joints this body is one of the two bodies of. */
+    this.joints = [];
   }
 
   get rt() { return this.world.rt; }
@@ -46,6 +48,21 @@ export class Body {
   setTransform(position, angle = this.angle) {
     const rt = this.rt;
     rt.check(rt.m._i2d_body_set_transform(this.id, rt.vec2(0, vx(position), vy(position)), rt.rot(1, angle)));
+  }
+
+  /** A world point in the body's frame: how joint anchors are given. */
+  getLocalPoint(worldPoint) {
+    const rt = this.rt;
+    rt.m._i2d_body_get_local_point(rt.result(), this.id, rt.vec2(0, vx(worldPoint), vy(worldPoint)));
+    rt.checkLast();
+    return rt.readVec2(rt.result());
+  }
+  /** A point of the body's frame in the world. */
+  getWorldPoint(localPoint) {
+    const rt = this.rt;
+    rt.m._i2d_body_get_world_point(rt.result(), this.id, rt.vec2(0, vx(localPoint), vy(localPoint)));
+    rt.checkLast();
+    return rt.readVec2(rt.result());
   }
 
   get linearVelocity() { return this.vec2Getter('_i2d_body_get_linear_velocity'); }
@@ -120,7 +137,7 @@ export class Body {
       this.id, def, rt.vec2(0, vx(point1), vy(point1)), rt.vec2(1, vx(point2), vy(point2))));
   }
 
-  /** Destroys the body and its shapes. */
+  /** Destroys the body, its shapes and its joints. */
   destroy() {
     this.rt.check(this.rt.m._i2d_body_destroy(this.id));
     this.world.forgetBody(this);

@@ -9,6 +9,7 @@ export interface AABB { minX: number; minY: number; maxX: number; maxY: number; 
 
 export type BodyType = 'static' | 'kinematic' | 'dynamic';
 export type ShapeType = 'circle' | 'capsule' | 'segment' | 'polygon';
+export type JointType = 'distance' | 'filter' | 'motor' | 'mouse' | 'prismatic' | 'revolute' | 'weld' | 'wheel';
 export type StatusName =
   | 'I2D_ERR_INVALID_ARGUMENT' | 'I2D_ERR_INVALID_HANDLE' | 'I2D_ERR_WORLD_LOCKED'
   | 'I2D_ERR_CAPACITY' | 'I2D_ERR_OUT_OF_MEMORY';
@@ -53,6 +54,94 @@ export type Geometry =
   | { type: 'capsule'; center1: Vec2; center2: Vec2; radius: number }
   | { type: 'segment'; point1: Vec2; point2: Vec2 };
 
+/** What every joint kind takes (i2d_joint_base). Anchors are in each body's frame,
+ *  relative to its origin (Body.getLocalPoint turns a world point into one). */
+export interface JointOptions {
+  localAnchorA?: Vec2Like;         // m, default (0, 0)
+  localAnchorB?: Vec2Like;
+  collideConnected?: boolean;      // default false: the two bodies do not collide
+  forceThreshold?: number;         // N; passing it lists the joint in jointEvents(); default FLT_MAX (never)
+  torqueThreshold?: number;        // N m; likewise
+}
+
+export interface RevoluteJointOptions extends JointOptions {
+  referenceAngle?: number;         // rad: angle of B minus A's when the joint angle is 0
+  enableLimit?: boolean;
+  lowerAngle?: number;             // rad, within [-0.99 pi, 0.99 pi], lower <= upper
+  upperAngle?: number;
+  enableMotor?: boolean;
+  motorSpeed?: number;             // rad/s
+  maxMotorTorque?: number;         // N m, >= 0
+  enableSpring?: boolean;          // a spring toward targetAngle
+  hertz?: number;                  // Hz, [0, 1e5]
+  dampingRatio?: number;           // [0, 1e5]
+  targetAngle?: number;            // rad
+}
+
+export interface PrismaticJointOptions extends JointOptions {
+  localAxisA?: Vec2Like;           // default (1, 0); stored at unit length, must not be zero
+  referenceAngle?: number;
+  enableLimit?: boolean;
+  lowerTranslation?: number;       // m, lower <= upper
+  upperTranslation?: number;
+  enableMotor?: boolean;
+  motorSpeed?: number;             // m/s
+  maxMotorForce?: number;          // N, >= 0
+  enableSpring?: boolean;
+  hertz?: number;
+  dampingRatio?: number;
+  targetTranslation?: number;      // m
+}
+
+export interface DistanceJointOptions extends JointOptions {
+  length?: number;                 // rest length, m; default 1; [0.005, 1e5]
+  enableLimit?: boolean;           // with enableSpring and hertz 0: a rope
+  minLength?: number;              // m, 0 <= min <= max; stored clamped to [0.005, 1e5]
+  maxLength?: number;
+  enableSpring?: boolean;          // default false: a rigid rod
+  hertz?: number;
+  dampingRatio?: number;
+  enableMotor?: boolean;
+  motorSpeed?: number;             // m/s, positive lengthens
+  maxMotorForce?: number;          // N
+}
+
+export interface WeldJointOptions extends JointOptions {
+  referenceAngle?: number;
+  linearHertz?: number;            // default 0: rigid
+  angularHertz?: number;           // default 0: rigid
+  linearDampingRatio?: number;     // default 1
+  angularDampingRatio?: number;    // default 1
+}
+
+export interface WheelJointOptions extends JointOptions {
+  localAxisA?: Vec2Like;           // the suspension's axis in A; default (0, 1)
+  enableSpring?: boolean;          // default true
+  hertz?: number;                  // default 1
+  dampingRatio?: number;           // default 0.7
+  enableLimit?: boolean;
+  lowerTranslation?: number;       // m
+  upperTranslation?: number;
+  enableMotor?: boolean;
+  motorSpeed?: number;             // rad/s, of the wheel's turning
+  maxMotorTorque?: number;         // N m
+}
+
+export interface MotorJointOptions extends JointOptions {
+  linearOffset?: Vec2Like;         // m: B's origin in A's frame to drive toward
+  angularOffset?: number;          // rad
+  maxForce?: number;               // N, default 1
+  maxTorque?: number;              // N m, default 1
+  correctionFactor?: number;       // share of the pose error removed per step, [0, 1]; default 0.3
+}
+
+export interface MouseJointOptions extends JointOptions {
+  target?: Vec2Like;               // m, world
+  hertz?: number;                  // default 4
+  dampingRatio?: number;           // default 1
+  maxForce?: number;               // N, default 1000
+}
+
 export interface Counters { bodyCount: number; shapeCount: number; contactCount: number; awakeBodyCount: number; }
 export interface RayHit { shape: Shape; point: Vec2; normal: Vec2; fraction: number; }
 
@@ -76,6 +165,8 @@ export class Body {
   /** The body's number in its world, carried by its move events. */
   readonly index: number;
   readonly shapes: Shape[];
+  /** Joints this body is one of the two bodies of. */
+  readonly joints: Joint[];
   userData: unknown;
   isValid(): boolean;
   readonly type: BodyType;
@@ -83,6 +174,9 @@ export class Body {
   readonly angle: number;
   transform(): Transform;
   setTransform(position: Vec2Like, angle?: number): void;
+  /** A world point in the body's frame: how joint anchors are given. */
+  getLocalPoint(worldPoint: Vec2Like): Vec2;
+  getWorldPoint(localPoint: Vec2Like): Vec2;
   get linearVelocity(): Vec2;
   set linearVelocity(v: Vec2Like);
   setLinearVelocity(v: Vec2Like): void;
@@ -98,7 +192,150 @@ export class Body {
   createPolygon(points: Vec2Like[], options?: ShapeOptions): Shape;
   createCapsule(center1: Vec2Like, center2: Vec2Like, radius: number, options?: ShapeOptions): Shape;
   createSegment(point1: Vec2Like, point2: Vec2Like, options?: ShapeOptions): Shape;
+  /** Destroys the body, its shapes and its joints. */
   destroy(): void;
+}
+
+/** What every joint kind has. Setters check their value as creation does, throw
+ *  Impulse2dError on a refusal (the joint keeps what it had) and wake both bodies. */
+export class Joint {
+  readonly world: World;
+  readonly id: bigint;
+  readonly bodyA: Body;
+  readonly bodyB: Body;
+  userData: unknown;
+  isValid(): boolean;
+  readonly type: JointType;
+  get localAnchorA(): Vec2;
+  set localAnchorA(v: Vec2Like);
+  get localAnchorB(): Vec2;
+  set localAnchorB(v: Vec2Like);
+  collideConnected: boolean;
+  forceThreshold: number;
+  torqueThreshold: number;
+  /** The force the joint applied to body B in the last step, N (on A: its negative). */
+  readonly reactionForce: Vec2;
+  /** The torque the joint applied to body B in the last step, N m. */
+  readonly reactionTorque: number;
+  wakeBodies(): void;
+  /** Destroys the joint and wakes its bodies. */
+  destroy(): void;
+}
+
+export class RevoluteJoint extends Joint {
+  readonly type: 'revolute';
+  /** rad, of B relative to A minus the reference angle, in (-pi, pi]. */
+  readonly angle: number;
+  /** The motor's torque in the last step, N m. */
+  readonly motorTorque: number;
+  referenceAngle: number;
+  enableLimit: boolean;
+  lowerAngle: number;
+  upperAngle: number;
+  /** Both limits at once (one at a time is refused when it would pass the other). */
+  setLimits(lower: number, upper: number): void;
+  enableMotor: boolean;
+  motorSpeed: number;
+  maxMotorTorque: number;
+  enableSpring: boolean;
+  hertz: number;
+  dampingRatio: number;
+  targetAngle: number;
+}
+
+export class PrismaticJoint extends Joint {
+  readonly type: 'prismatic';
+  /** m along the axis, of B's anchor from A's. */
+  readonly translation: number;
+  /** m/s along the axis. */
+  readonly speed: number;
+  /** The motor's force in the last step, N. */
+  readonly motorForce: number;
+  get localAxisA(): Vec2;
+  set localAxisA(v: Vec2Like);
+  referenceAngle: number;
+  enableLimit: boolean;
+  lowerTranslation: number;
+  upperTranslation: number;
+  setLimits(lower: number, upper: number): void;
+  enableMotor: boolean;
+  motorSpeed: number;
+  maxMotorForce: number;
+  enableSpring: boolean;
+  hertz: number;
+  dampingRatio: number;
+  targetTranslation: number;
+}
+
+export class DistanceJoint extends Joint {
+  readonly type: 'distance';
+  /** m, between the two anchors now. */
+  readonly currentLength: number;
+  /** The motor's force in the last step, N. */
+  readonly motorForce: number;
+  length: number;
+  enableLimit: boolean;
+  minLength: number;
+  maxLength: number;
+  setLengthRange(minLength: number, maxLength: number): void;
+  enableSpring: boolean;
+  hertz: number;
+  dampingRatio: number;
+  enableMotor: boolean;
+  motorSpeed: number;
+  maxMotorForce: number;
+}
+
+export class WeldJoint extends Joint {
+  readonly type: 'weld';
+  referenceAngle: number;
+  linearHertz: number;
+  angularHertz: number;
+  linearDampingRatio: number;
+  angularDampingRatio: number;
+}
+
+export class WheelJoint extends Joint {
+  readonly type: 'wheel';
+  /** m along the axis: the suspension's travel. */
+  readonly translation: number;
+  /** The motor's torque in the last step, N m. */
+  readonly motorTorque: number;
+  get localAxisA(): Vec2;
+  set localAxisA(v: Vec2Like);
+  enableSpring: boolean;
+  hertz: number;
+  dampingRatio: number;
+  enableLimit: boolean;
+  lowerTranslation: number;
+  upperTranslation: number;
+  setLimits(lower: number, upper: number): void;
+  enableMotor: boolean;
+  motorSpeed: number;
+  maxMotorTorque: number;
+}
+
+export class MotorJoint extends Joint {
+  readonly type: 'motor';
+  get linearOffset(): Vec2;
+  set linearOffset(v: Vec2Like);
+  angularOffset: number;
+  maxForce: number;
+  maxTorque: number;
+  correctionFactor: number;
+}
+
+export class MouseJoint extends Joint {
+  readonly type: 'mouse';
+  get target(): Vec2;
+  set target(v: Vec2Like);
+  hertz: number;
+  dampingRatio: number;
+  maxForce: number;
+}
+
+export class FilterJoint extends Joint {
+  readonly type: 'filter';
 }
 
 /** The last step's body move events, viewed in the module's memory (no copy). Valid
@@ -131,6 +368,22 @@ export class World {
   get gravity(): Vec2;
   set gravity(g: Vec2Like);
   createBody(options?: BodyOptions): Body;
+  /** Joints between two bodies of this world, at least one dynamic. An option the kind
+   *  does not have throws a TypeError; a value the library refuses, an Impulse2dError. */
+  createRevoluteJoint(bodyA: Body, bodyB: Body, options?: RevoluteJointOptions): RevoluteJoint;
+  createPrismaticJoint(bodyA: Body, bodyB: Body, options?: PrismaticJointOptions): PrismaticJoint;
+  createDistanceJoint(bodyA: Body, bodyB: Body, options?: DistanceJointOptions): DistanceJoint;
+  createWeldJoint(bodyA: Body, bodyB: Body, options?: WeldJointOptions): WeldJoint;
+  createWheelJoint(bodyA: Body, bodyB: Body, options?: WheelJointOptions): WheelJoint;
+  createMotorJoint(bodyA: Body, bodyB: Body, options?: MotorJointOptions): MotorJoint;
+  /** bodyA is not moved (often a static body without shapes); bodyB must be dynamic. */
+  createMouseJoint(bodyA: Body, bodyB: Body, options?: MouseJointOptions): MouseJoint;
+  createFilterJoint(bodyA: Body, bodyB: Body, options?: JointOptions): FilterJoint;
+  /** Live joints, in creation order. */
+  readonly joints: Joint[];
+  jointCount(): number;
+  /** Joints whose reaction passed its force or torque threshold in the last step. */
+  jointEvents(): Joint[];
   counters(): Counters;
   stateHash(): bigint;
   simdPath(): number;

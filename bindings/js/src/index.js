@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
-// impulse2d for JavaScript: the WebAssembly build of the library behind World, Body and
-// Shape classes. Load once, then make worlds:
+// impulse2d for JavaScript: the WebAssembly build of the library behind World, Body,
+// Shape and Joint classes. Load once, then make worlds:
 //   const i2d = await loadImpulse2d();
 //   const world = i2d.createWorld({ gravity: [0, -10] });
 import createImpulse2dModule from '../dist/impulse2d_wasm.mjs';
@@ -12,6 +12,9 @@ export { World } from './world.js';
 export { BodyMoves } from './body_moves.js';
 export { Body } from './body.js';
 export { Shape } from './shape.js';
+export {
+  Joint, RevoluteJoint, PrismaticJoint, DistanceJoint, WeldJoint, WheelJoint, MotorJoint, MouseJoint, FilterJoint,
+} from './joint.js';
 
 /**
  * Instantiates the module. In node the .wasm is read from the package (or `wasmBinary`);

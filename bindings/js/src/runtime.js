@@ -2,6 +2,7 @@
 // The loaded module and what every wrapper needs from it: scratch memory for arguments
 // and results, struct offsets by name, and turning a refused call into an exception.
 import { Impulse2dError } from './errors.js';
+import { JOINT_KIND_NAMES } from './joint_kinds.js';
 
 // Structs passed by value (i2d_vec2, i2d_rot, i2d_aabb, filters) cross the wasm C ABI
 // as pointers to a copy, and struct results come back through a pointer the caller
@@ -21,6 +22,9 @@ export class Runtime {
       body: this.readDefault('_i2d_default_body_def', 'i2d_body_def'),
       shape: this.readDefault('_i2d_default_shape_def', 'i2d_shape_def'),
     };
+    for (const kind of JOINT_KIND_NAMES) {
+      this.defaults[`${kind}_joint`] = this.readDefault(`_i2d_default_${kind}_joint_def`, `i2d_${kind}_joint_def`);
+    }
     this.allFilter = this.m._malloc(this.size('i2d_query_filter'));
     this.m._i2d_default_query_filter(this.allFilter);
   }

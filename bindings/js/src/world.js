@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
-// A world: stepping, bodies, queries and events over an i2d_world_id.
+// A world: stepping, bodies, joints, queries and events over an i2d_world_id.
 import { Body, BODY_TYPES } from './body.js';
 import { BodyMoves } from './body_moves.js';
+import { createJoint } from './joint.js';
 import { vx, vy } from './vectors.js';
 
 export class World {
@@ -19,6 +20,8 @@ export class World {
     this.bodyByIndex = [undefined];
     this.freeIndices = [];
     this.shapeById = new Map();
+    /** Live joints by id, in creation order: what joint events are mapped back through. */
+    this.jointById = new Map();
   }
 
   isValid() { return this.rt.m._i2d_world_is_valid(this.id) !== 0; }
@@ -57,6 +60,46 @@ export class World {
 
   /** Live bodies, in creation order of their indices. */
   get bodies() { return this.bodyByIndex.filter((b) => b !== undefined); }
+
+  // Joints between bodyA and bodyB of this world (at least one dynamic); options are the
+  // kind's settings as its class names them (include/impulse2d/joint.h documents each).
+  createRevoluteJoint(bodyA, bodyB, options) { return this.makeJoint('revolute', bodyA, bodyB, options); }
+  createPrismaticJoint(bodyA, bodyB, options) { return this.makeJoint('prismatic', bodyA, bodyB, options); }
+  createDistanceJoint(bodyA, bodyB, options) { return this.makeJoint('distance', bodyA, bodyB, options); }
+  createWeldJoint(bodyA, bodyB, options) { return this.makeJoint('weld', bodyA, bodyB, options); }
+  createWheelJoint(bodyA, bodyB, options) { return this.makeJoint('wheel', bodyA, bodyB, options); }
+  createMotorJoint(bodyA, bodyB, options) { return this.makeJoint('motor', bodyA, bodyB, options); }
+  /** bodyA is not moved (any body of the world, often a static one); bodyB must be dynamic. */
+  createMouseJoint(bodyA, bodyB, options) { return this.makeJoint('mouse', bodyA, bodyB, options); }
+  createFilterJoint(bodyA, bodyB, options) { return this.makeJoint('filter', bodyA, bodyB, options); }
+
+  /** Live joints, in creation order. */
+  get joints() { return [...this.jointById.values()]; }
+
+  /** Joints alive in the world, as the library counts them. */
+  jointCount() {
+    const count = this.rt.m._i2d_world_get_joint_count(this.id);
+    this.rt.checkLast();
+    return count;
+  }
+
+  /** Joints whose reaction force or torque passed its threshold in the last step. */
+  jointEvents() {
+    const rt = this.rt;
+    const at = rt.result();
+    rt.m._i2d_world_get_joint_events(at, this.id);
+    rt.checkLast();
+    const events = rt.u32[(at + rt.field('i2d_joint_events.events')) >> 2];
+    const count = rt.i32[(at + rt.field('i2d_joint_events.count')) >> 2];
+    const stride = rt.size('i2d_joint_event');
+    const idOffset = rt.field('i2d_joint_event.joint');
+    const joints = [];
+    for (let i = 0; i < count; i++) {
+      const id = rt.u64[(events + i * stride + idOffset) >> 3];
+      joints.push(this.jointById.get(id) ?? id);
+    }
+    return joints;
+  }
 
   /** {bodyCount, shapeCount, contactCount, awakeBodyCount}. */
   counters() {
@@ -162,18 +205,33 @@ export class World {
     this.bodyByIndex = [undefined];
     this.freeIndices = [];
     this.shapeById.clear();
+    this.jointById.clear();
   }
 
   /** @internal */
   rememberShape(shape) { this.shapeById.set(shape.id, shape); }
+  /** @internal */
+  makeJoint(kind, bodyA, bodyB, options) {
+    const joint = createJoint(this, kind, bodyA, bodyB, options);
+    this.jointById.set(joint.id, joint);
+    bodyA.joints.push(joint);
+    bodyB.joints.push(joint);
+    return joint;
+  }
+  /** @internal */
+  forgetJoint(joint) {
+    this.jointById.delete(joint.id);
+    for (const body of [joint.bodyA, joint.bodyB]) body.joints.splice(body.joints.indexOf(joint), 1);
+  }
   /** @internal */
   forgetShape(shape) {
     this.shapeById.delete(shape.id);
     const list = shape.body.shapes;
     list.splice(list.indexOf(shape), 1);
   }
-  /** @internal */
+  /** @internal The library destroyed the body's joints with it. */
   forgetBody(body) {
+    for (const joint of [...body.joints]) this.forgetJoint(joint);
     for (const shape of body.shapes) this.shapeById.delete(shape.id);
     this.bodyByIndex[body.index] = undefined;
     this.freeIndices.push(body.index);

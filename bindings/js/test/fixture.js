@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
-// What the binding's tests share: one loaded module and a world with a ground box.
-import { loadImpulse2d } from '../src/index.js';
+// What the binding's tests share: one loaded module, a world with a ground box, and the
+// assertions for refused calls and measured figures.
+import assert from 'node:assert/strict';
+import { Impulse2dError, loadImpulse2d } from '../src/index.js';
 
 export const i2d = await loadImpulse2d();
 
@@ -14,4 +16,20 @@ export function groundedWorld(options) {
 
 export function stepSeconds(world, seconds) {
   for (let i = 0; i < Math.round(seconds * 60); i++) world.step(1 / 60, 4);
+}
+
+/** Asserts that fn throws the library's refusal: its status, and a message naming the cause. */
+export function refused(fn, status, messagePart) {
+  assert.throws(fn, (error) => {
+    assert.ok(error instanceof Impulse2dError, `${error}`);
+    assert.equal(error.status, status);
+    assert.ok(error.message.includes(messagePart), `message: ${error.message}`);
+    return true;
+  });
+}
+
+/** Asserts |actual - expected| <= tolerance, printing all three and what was measured. */
+export function assertNear(actual, expected, tolerance, what) {
+  assert.ok(Math.abs(actual - expected) <= tolerance,
+            `${what}: ${actual} is not within ${tolerance} of ${expected}`);
 }

@@ -3,17 +3,7 @@
 // message, and leaves the world as it was.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { Impulse2dError } from '../src/index.js';
-import { i2d, groundedWorld } from './fixture.js';
-
-function refused(fn, status, messagePart) {
-  assert.throws(fn, (error) => {
-    assert.ok(error instanceof Impulse2dError, `${error}`);
-    assert.equal(error.status, status);
-    assert.ok(error.message.includes(messagePart), `message: ${error.message}`);
-    return true;
-  });
-}
+import { i2d, groundedWorld, refused } from './fixture.js';
 
 test('bad world options are refused with the library message', () => {
   refused(() => i2d.createWorld({ gravity: [NaN, 0] }), 'I2D_ERR_INVALID_ARGUMENT', 'gravity');
