@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/prefetch.hpp"
 #include "dynamics/constants.hpp"
 #include "dynamics/contact_set.hpp"
 #include "dynamics/island.hpp"
@@ -399,9 +400,17 @@ void Solver::color_contacts() {
     const std::vector<int32_t>& awake = links_.contacts.awake();
     const Pool<Contact>& contacts = links_.contacts.pool();
     contact_colors_.resize(awake.size());
+    contact_points_.resize(awake.size());
     color_starts_.assign(ConstraintColors::count + 1, 0);
+    // The awake list jumps through the contact pool: ask for contacts ahead, and keep
+    // what the layout pass below needs (point counts) so that it reads no contact again.
+    constexpr std::size_t contacts_ahead = 32;
     for (std::size_t k = 0; k < awake.size(); ++k) {
+        if (k + contacts_ahead < awake.size()) {
+            prefetch_line(&contacts[awake[k + contacts_ahead]]);
+        }
         const Contact& contact = contacts[awake[k]];
+        contact_points_[k] = uint8_t(contact.point_count);
         int32_t color = -1;
         if ((contact.flags & contact_sensor) == 0 && contact.point_count != 0) {
             color = colors_.assign((contact.flags & contact_moves_a) ? contact.state_a : ConstraintColors::null_state,
@@ -421,7 +430,7 @@ void Solver::color_contacts() {
         for (std::size_t k = 0; k < awake.size(); ++k) {
             const int32_t color = contact_colors_[k];
             const bool in_sequence = color == ConstraintColors::overflow;
-            if (color >= 0 && (in_sequence ? pass == 0 : contacts[awake[k]].point_count == points)) {
+            if (color >= 0 && (in_sequence ? pass == 0 : contact_points_[k] == points)) {
                 ordered_contacts_[std::size_t(next[std::size_t(color)]++)] = awake[k];
             }
         }
