@@ -154,6 +154,103 @@ I2D_TEST(api_bulk_velocity_wakes_sleeping_body) {
     i2d_world_destroy(s.world);
 }
 
+/* ---- Waking: what a write wakes and whose rest timer it restarts --------------------- */
+
+#define STEP_TIME (1.0f / 60.0f)
+#define SUBSTEPS 4
+
+/* Two boxes resting on a ground a little apart: their fat boxes overlap, so they share a
+ * contact, but it has no points, so they are separate islands that fall asleep on their
+ * own timers. */
+typedef struct neighbours {
+    i2d_world_id world;
+    i2d_body_id moved, other;
+} neighbours;
+
+#define NEIGHBOUR_GAP 0.05f /* m: more than the speculative distance, less than two margins */
+
+static void make_neighbours(neighbours* n, bool enable_sleep) {
+    i2d_world_def world_def = i2d_default_world_def();
+    world_def.enable_sleep = enable_sleep;
+    n->world = i2d_world_create(&world_def);
+    i2d_shape_def shape_def = i2d_default_shape_def();
+    i2d_body_def def = i2d_default_body_def();
+    def.position = v2(0.0f, -1.0f);
+    i2d_shape_create_box(i2d_body_create(n->world, &def), &shape_def, 10.0f, 1.0f);
+    def.type = I2D_BODY_DYNAMIC;
+    def.position = v2(0.0f, 0.5f);
+    n->moved = i2d_body_create(n->world, &def);
+    i2d_shape_create_box(n->moved, &shape_def, 0.5f, 0.5f);
+    def.position = v2(1.0f + NEIGHBOUR_GAP, 0.5f);
+    n->other = i2d_body_create(n->world, &def);
+    i2d_shape_create_box(n->other, &shape_def, 0.5f, 0.5f);
+}
+
+/* Steps until the body sleeps; the step count, or -1 if it is still awake after limit. */
+static int steps_until_asleep(i2d_world_id world, i2d_body_id body, int limit) {
+    for (int step = 1; step <= limit; ++step) {
+        i2d_world_step(world, STEP_TIME, SUBSTEPS);
+        if (!i2d_body_is_awake(body)) {
+            return step;
+        }
+    }
+    return -1;
+}
+
+/* With nothing asleep, a bulk write still restarts the rest timer of what the moved body
+ * touches, as waking it does: the neighbour (in an island of its own) falls asleep that
+ * much later than in an untouched world, and at the same step as after the per-body call. */
+I2D_TEST(api_bulk_transform_restarts_rest_timers_of_neighbours) {
+    neighbours untouched, bulk, single;
+    make_neighbours(&untouched, true);
+    make_neighbours(&bulk, true);
+    make_neighbours(&single, true);
+    /* Rest for most of time_to_sleep (0.5 s): both still awake. */
+    const int rest_steps = 20;
+    for (int i = 0; i < rest_steps; ++i) {
+        i2d_world_step(untouched.world, STEP_TIME, SUBSTEPS);
+        i2d_world_step(bulk.world, STEP_TIME, SUBSTEPS);
+        i2d_world_step(single.world, STEP_TIME, SUBSTEPS);
+    }
+    I2D_REQUIRE(i2d_body_is_awake(bulk.other) && i2d_body_is_awake(bulk.moved));
+    I2D_REQUIRE(i2d_world_get_counters(bulk.world).sleeping_island_count == 0);
+
+    /* The moved body is put back where it is: only the timers can change. */
+    i2d_transform xf = i2d_body_get_transform(bulk.moved);
+    I2D_CHECK_STATUS(i2d_world_set_body_transforms(bulk.world, &bulk.moved, 1, &xf), I2D_OK);
+    I2D_CHECK_STATUS(i2d_body_set_transform(single.moved, xf.p, xf.q), I2D_OK);
+
+    const int limit = 120;
+    const int untouched_sleeps = steps_until_asleep(untouched.world, untouched.other, limit);
+    const int bulk_sleeps = steps_until_asleep(bulk.world, bulk.other, limit);
+    const int single_sleeps = steps_until_asleep(single.world, single.other, limit);
+    I2D_CHECK(untouched_sleeps > 0 && bulk_sleeps > 0);
+    I2D_CHECK(bulk_sleeps >= untouched_sleeps + rest_steps / 2); /* the timer started over */
+    I2D_CHECK(bulk_sleeps == single_sleeps);
+    I2D_CHECK(i2d_world_get_state_hash(bulk.world) == i2d_world_get_state_hash(single.world));
+    i2d_world_destroy(untouched.world);
+    i2d_world_destroy(bulk.world);
+    i2d_world_destroy(single.world);
+}
+
+/* A body put to sleep next to the moved one wakes with the bulk write, in a world that
+ * sleeps and in one that does not (where only i2d_body_set_awake puts bodies to sleep). */
+I2D_TEST(api_bulk_transform_wakes_sleeping_neighbours) {
+    for (int enable_sleep = 0; enable_sleep < 2; ++enable_sleep) {
+        neighbours n;
+        make_neighbours(&n, enable_sleep != 0);
+        i2d_world_step(n.world, STEP_TIME, SUBSTEPS);
+        I2D_REQUIRE(i2d_body_set_awake(n.other, false) == I2D_OK);
+        I2D_REQUIRE(!i2d_body_is_awake(n.other) && i2d_body_is_awake(n.moved));
+        i2d_transform xf = i2d_body_get_transform(n.moved);
+        xf.p.x -= 0.01f;
+        I2D_CHECK_STATUS(i2d_world_set_body_transforms(n.world, &n.moved, 1, &xf), I2D_OK);
+        I2D_CHECK(i2d_body_is_awake(n.other));
+        I2D_CHECK(i2d_world_get_counters(n.world).sleeping_island_count == 0);
+        i2d_world_destroy(n.world);
+    }
+}
+
 /* ---- Refused calls name the index and change nothing --------------------------------- */
 
 static int message_has(const char* text) { return strstr(i2d_last_error_message(), text) != NULL; }
