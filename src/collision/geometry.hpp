@@ -10,8 +10,57 @@ namespace i2d {
 /// (kg/m^2). Segments have no area and no mass.
 MassData compute_mass(const Geometry& g, float density);
 float area(const Geometry& g);
-/// Tight world-space bounds of the shape placed by xf.
-AABB compute_aabb(const Geometry& g, const Transform& xf);
+/// Tight world-space bounds of the shape placed by xf: the box of its core points (the
+/// centre, the segment or the vertices) grown by its radius.
+///
+/// Inline, and without the core copy geometry.cpp's other tests build: every step refits
+/// every awake body's shapes, and so does a bulk transform write for each body it moves.
+/// Out of line, the returned box crossed in two registers that GCC put back together
+/// through the stack and reloaded in one 16-byte load, a store-forwarding stall per shape;
+/// the copy zeroed and filled eight points for a box's four. Same operations in the same
+/// order, so the same bits.
+inline AABB compute_aabb(const Geometry& g, const Transform& xf) {
+    Vec2 lower, upper;
+    float radius = 0.0f;
+    switch (g.type) {
+        case ShapeType::circle:
+            lower = upper = transform_point(xf, g.circle.center);
+            radius = g.circle.radius;
+            break;
+        case ShapeType::capsule: {
+            const Vec2 p1 = transform_point(xf, g.capsule.center1), p2 = transform_point(xf, g.capsule.center2);
+            lower = min(p1, p2);
+            upper = max(p1, p2);
+            radius = g.capsule.radius;
+            break;
+        }
+        case ShapeType::segment: {
+            const Vec2 p1 = transform_point(xf, g.segment.point1), p2 = transform_point(xf, g.segment.point2);
+            lower = min(p1, p2);
+            upper = max(p1, p2);
+            break;
+        }
+        case ShapeType::chain_segment: {
+            const Vec2 p1 = transform_point(xf, g.chain_segment.point1);
+            const Vec2 p2 = transform_point(xf, g.chain_segment.point2);
+            lower = min(p1, p2);
+            upper = max(p1, p2);
+            break;
+        }
+        case ShapeType::polygon:
+            lower = upper = transform_point(xf, g.polygon.vertices[0]);
+            for (int32_t i = 1; i < g.polygon.count; ++i) {
+                const Vec2 p = transform_point(xf, g.polygon.vertices[i]);
+                lower = min(lower, p);
+                upper = max(upper, p);
+            }
+            radius = g.polygon.radius;
+            break;
+        case ShapeType::count: break;
+    }
+    const Vec2 r{radius, radius};
+    return {lower - r, upper + r};
+}
 
 /// Farthest distance of the shape's points from a point of the body frame, m.
 float extent_from(const Geometry& g, Vec2 local_point);
