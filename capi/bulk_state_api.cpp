@@ -175,7 +175,7 @@ I2D_API i2d_status i2d_world_set_body_transforms(i2d_world_id world_id, const i2
             (count > 0 && !call.not_null(in, "transforms")) || !valid_transforms(call, count, in)) {
             return last_status();
         }
-        // In chunks on the stack: no allocation, and one broadphase commit per chunk.
+        // In chunks on the stack: no allocation.
         constexpr int32_t chunk = 256;
         int32_t slots[chunk];
         Transform transforms[chunk];

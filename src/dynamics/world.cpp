@@ -349,10 +349,17 @@ void World::set_transforms(const int32_t* list, const Transform* transforms, int
         Body& b = bodies[body];
         b.transform = transforms[i];
         b.center = transform_point(transforms[i], b.local_center);
-        update_shape_bounds(b, shapes, broad_phase_, Vec2{}, false);
+        // Proxies that must move are re-inserted before the next body moves, as when
+        // set_transform is called for each body in turn: the trees, and so the pairs
+        // and every later step, come out the same. (One commit at the end, in storage
+        // order, was about 12 % faster when every body was teleported, but its trees
+        // and later steps differed from the per-body calls'.)
+        if (refit_shape_bounds(b, shapes, Vec2{}, false)) {
+            move_enlarged_proxies(b, shapes, broad_phase_);
+            broad_phase_.commit_moves();
+        }
         mark_for_cover(body);
     }
-    broad_phase_.commit_moves();
 }
 
 // Velocities enter the world already within its limits: the solver's first use of a
