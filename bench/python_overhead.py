@@ -3,11 +3,17 @@
 """Python binding costs: per-call overhead of single-body calls, and ns per body of the
 bulk NumPy calls on 10,000 bodies (target: at most 20 ns per body).
 
+The plain transform write puts every body back where it is. Three more lines show what
+other writes cost: new poses that stay within the shapes' fat boxes, teleports that
+re-insert every shape in the broadphase tree, and the plain write in a world that sleeps
+(there each write restarts the rest timers of what the bodies touch).
+
 Usage: python3 bench/python_overhead.py [--repeat N]
 Prints the median of N timed repeats (default 15) of each measurement.
 """
 
 import argparse
+import itertools
 import os
 import statistics
 import sys
@@ -21,6 +27,8 @@ import impulse2d  # noqa: E402
 from impulse2d._native import lib  # noqa: E402
 
 BODY_COUNT = 10_000
+NUDGE = 0.01  # m: well within the fat boxes' 0.1 m margin, so no shape is re-inserted
+TELEPORT = 0.5  # m: beyond the margin, so every shape is re-inserted
 
 
 def median_seconds(fn, repeat, inner):
@@ -34,6 +42,23 @@ def median_seconds(fn, repeat, inner):
     return statistics.median(times)
 
 
+def build_scene(world):
+    """A ground and BODY_COUNT boxes in rows, stepped once; returns the boxes."""
+    ground = world.create_body(impulse2d.STATIC, position=(0.0, -1.0))
+    ground.create_box(600.0, 1.0)
+    bodies = []
+    for i in range(BODY_COUNT):
+        body = world.create_body(position=((i % 500) * 1.2 - 300.0, 0.5 + 1.2 * (i // 500)))
+        body.create_box(0.5, 0.5)
+        bodies.append(body)
+    world.step()
+    return bodies
+
+
+def print_per_body(name, fn, repeat):
+    print("  %-45s %8.2f ns" % (name, 1e9 * median_seconds(fn, repeat, 50) / BODY_COUNT))
+
+
 def main():
     parser = argparse.ArgumentParser()
     parser.add_argument("--repeat", type=int, default=15)
@@ -41,14 +66,7 @@ def main():
     print("impulse2d %s, %s, Python %s, NumPy %s" % (
         impulse2d.library_version, impulse2d.library_path, sys.version.split()[0], np.__version__))
     with impulse2d.World(enable_sleep=False) as world:
-        ground = world.create_body(impulse2d.STATIC, position=(0.0, -1.0))
-        ground.create_box(600.0, 1.0)
-        bodies = []
-        for i in range(BODY_COUNT):
-            body = world.create_body(position=((i % 500) * 1.2 - 300.0, 0.5 + 1.2 * (i // 500)))
-            body.create_box(0.5, 0.5)
-            bodies.append(body)
-        world.step()
+        bodies = build_scene(world)
         body = bodies[0]
         body_id = body.id
 
@@ -79,10 +97,26 @@ def main():
             ("world.transforms(bodies)  (list of Body)", lambda: world.transforms(bodies)),
         ]
         for name, fn in bulk:
-            per_body = 1e9 * median_seconds(fn, args.repeat, 50) / BODY_COUNT
-            print("  %-45s %8.2f ns" % (name, per_body))
+            print_per_body(name, fn, args.repeat)
         per_body_loop = median_seconds(lambda: [b.position for b in bodies], max(3, args.repeat // 3), 1)
         print("  %-45s %8.2f ns" % ("[b.position for b in bodies]  (for scale)", 1e9 * per_body_loop / BODY_COUNT))
+
+        # Each call alternates between the poses and the moved ones, so that every call
+        # moves every body (an even count of calls per repeat ends where it started).
+        nudged, moved = xf.copy(), xf.copy()
+        nudged[:, 0] += NUDGE
+        moved[:, 0] += TELEPORT
+        nudges = itertools.cycle([nudged, xf])
+        teleports = itertools.cycle([moved, xf])
+        print_per_body("set_transforms, moved %g m (no re-insert)" % NUDGE,
+                       lambda: world.set_transforms(ids, next(nudges)), args.repeat)
+        print_per_body("set_transforms, moved %g m (all re-inserted)" % TELEPORT,
+                       lambda: world.set_transforms(ids, next(teleports)), args.repeat)
+    with impulse2d.World() as sleeping_world:
+        ids = sleeping_world.body_ids(build_scene(sleeping_world))
+        xf = sleeping_world.transforms(ids)
+        print_per_body("set_transforms(ids, xf), world that sleeps",
+                       lambda: sleeping_world.set_transforms(ids, xf), args.repeat)
     return 0
 
 

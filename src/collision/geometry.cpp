@@ -77,17 +77,6 @@ float polygon_core_distance(const Polygon& poly, Vec2 p) {
 
 }  // namespace
 
-AABB compute_aabb(const Geometry& g, const Transform& xf) {
-    const Core c = world_core(g, xf);
-    Vec2 lower = c.points[0], upper = c.points[0];
-    for (int32_t i = 1; i < c.count; ++i) {
-        lower = min(lower, c.points[i]);
-        upper = max(upper, c.points[i]);
-    }
-    const Vec2 r{c.radius, c.radius};
-    return {lower - r, upper + r};
-}
-
 float extent_from(const Geometry& g, Vec2 local_point) {
     const Core c = world_core(g, Transform{});
     float farthest = 0.0f;

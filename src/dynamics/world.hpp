@@ -106,8 +106,8 @@ public:
     /// new type's tree, its mass follows, a static body stops, and it wakes with what
     /// touched it.
     void set_type(int32_t body, BodyType type);
-    /// The same for many bodies, with one broadphase commit at the end: the trees take
-    /// the moved proxies in storage order rather than one at a time.
+    /// The same for many bodies, in list order, to the same result as set_transform
+    /// called for each in turn.
     void set_transforms(const int32_t* bodies, const Transform* transforms, int32_t count);
     void set_linear_velocity(int32_t body, Vec2 v);
     void set_angular_velocity(int32_t body, float w);

@@ -154,6 +154,245 @@ I2D_TEST(api_bulk_velocity_wakes_sleeping_body) {
     i2d_world_destroy(s.world);
 }
 
+/* ---- Waking: what a write wakes and whose rest timer it restarts --------------------- */
+
+#define STEP_TIME (1.0f / 60.0f)
+#define SUBSTEPS 4
+
+/* Two boxes resting on a ground a little apart: their fat boxes overlap, so they share a
+ * contact, but it has no points, so they are separate islands that fall asleep on their
+ * own timers. */
+typedef struct neighbours {
+    i2d_world_id world;
+    i2d_body_id moved, other;
+} neighbours;
+
+#define NEIGHBOUR_GAP 0.05f /* m: more than the speculative distance, less than two margins */
+
+static void make_neighbours(neighbours* n, bool enable_sleep) {
+    i2d_world_def world_def = i2d_default_world_def();
+    world_def.enable_sleep = enable_sleep;
+    n->world = i2d_world_create(&world_def);
+    i2d_shape_def shape_def = i2d_default_shape_def();
+    i2d_body_def def = i2d_default_body_def();
+    def.position = v2(0.0f, -1.0f);
+    i2d_shape_create_box(i2d_body_create(n->world, &def), &shape_def, 10.0f, 1.0f);
+    def.type = I2D_BODY_DYNAMIC;
+    def.position = v2(0.0f, 0.5f);
+    n->moved = i2d_body_create(n->world, &def);
+    i2d_shape_create_box(n->moved, &shape_def, 0.5f, 0.5f);
+    def.position = v2(1.0f + NEIGHBOUR_GAP, 0.5f);
+    n->other = i2d_body_create(n->world, &def);
+    i2d_shape_create_box(n->other, &shape_def, 0.5f, 0.5f);
+}
+
+/* Steps until the body sleeps; the step count, or -1 if it is still awake after limit. */
+static int steps_until_asleep(i2d_world_id world, i2d_body_id body, int limit) {
+    for (int step = 1; step <= limit; ++step) {
+        i2d_world_step(world, STEP_TIME, SUBSTEPS);
+        if (!i2d_body_is_awake(body)) {
+            return step;
+        }
+    }
+    return -1;
+}
+
+/* With nothing asleep, a bulk write still restarts the rest timer of what the moved body
+ * touches, as waking it does: the neighbour (in an island of its own) falls asleep that
+ * much later than in an untouched world, and at the same step as after the per-body call. */
+I2D_TEST(api_bulk_transform_restarts_rest_timers_of_neighbours) {
+    neighbours untouched, bulk, single;
+    make_neighbours(&untouched, true);
+    make_neighbours(&bulk, true);
+    make_neighbours(&single, true);
+    /* Rest for most of time_to_sleep (0.5 s): both still awake. */
+    const int rest_steps = 20;
+    for (int i = 0; i < rest_steps; ++i) {
+        i2d_world_step(untouched.world, STEP_TIME, SUBSTEPS);
+        i2d_world_step(bulk.world, STEP_TIME, SUBSTEPS);
+        i2d_world_step(single.world, STEP_TIME, SUBSTEPS);
+    }
+    I2D_REQUIRE(i2d_body_is_awake(bulk.other) && i2d_body_is_awake(bulk.moved));
+    I2D_REQUIRE(i2d_world_get_counters(bulk.world).sleeping_island_count == 0);
+
+    /* The moved body is put back where it is: only the timers can change. */
+    i2d_transform xf = i2d_body_get_transform(bulk.moved);
+    I2D_CHECK_STATUS(i2d_world_set_body_transforms(bulk.world, &bulk.moved, 1, &xf), I2D_OK);
+    I2D_CHECK_STATUS(i2d_body_set_transform(single.moved, xf.p, xf.q), I2D_OK);
+
+    const int limit = 120;
+    const int untouched_sleeps = steps_until_asleep(untouched.world, untouched.other, limit);
+    const int bulk_sleeps = steps_until_asleep(bulk.world, bulk.other, limit);
+    const int single_sleeps = steps_until_asleep(single.world, single.other, limit);
+    I2D_CHECK(untouched_sleeps > 0 && bulk_sleeps > 0);
+    I2D_CHECK(bulk_sleeps >= untouched_sleeps + rest_steps / 2); /* the timer started over */
+    I2D_CHECK(bulk_sleeps == single_sleeps);
+    I2D_CHECK(i2d_world_get_state_hash(bulk.world) == i2d_world_get_state_hash(single.world));
+    i2d_world_destroy(untouched.world);
+    i2d_world_destroy(bulk.world);
+    i2d_world_destroy(single.world);
+}
+
+/* A body put to sleep next to the moved one wakes with the bulk write, in a world that
+ * sleeps and in one that does not (where only i2d_body_set_awake puts bodies to sleep). */
+I2D_TEST(api_bulk_transform_wakes_sleeping_neighbours) {
+    for (int enable_sleep = 0; enable_sleep < 2; ++enable_sleep) {
+        neighbours n;
+        make_neighbours(&n, enable_sleep != 0);
+        i2d_world_step(n.world, STEP_TIME, SUBSTEPS);
+        I2D_REQUIRE(i2d_body_set_awake(n.other, false) == I2D_OK);
+        I2D_REQUIRE(!i2d_body_is_awake(n.other) && i2d_body_is_awake(n.moved));
+        i2d_transform xf = i2d_body_get_transform(n.moved);
+        xf.p.x -= 0.01f;
+        I2D_CHECK_STATUS(i2d_world_set_body_transforms(n.world, &n.moved, 1, &xf), I2D_OK);
+        I2D_CHECK(i2d_body_is_awake(n.other));
+        I2D_CHECK(i2d_world_get_counters(n.world).sleeping_island_count == 0);
+        i2d_world_destroy(n.world);
+    }
+}
+
+/* ---- Writes at scale: the same as per-body calls, whatever sleeps ------------------- */
+
+/* Enough bodies that a write crosses the 256-body chunks of i2d_world_set_body_transforms
+ * and the trees take re-insertions in bulk. */
+#define PILE_ROWS 12
+#define PILE_COLUMNS 50
+#define PILE_COUNT (PILE_ROWS * PILE_COLUMNS)
+#define PILE_WRITES 423     /* bodies in one bulk write (some listed twice): not a multiple of 4 */
+#define PILE_STEPS 120      /* steps after the write that must stay bit for bit equal */
+#define PILE_SETTLE_STEPS 90
+#define ROTATION_STRETCH 1.0004f /* c^2 + s^2 off 1 by 8e-4, within the 1e-3 accepted */
+
+typedef struct pile {
+    i2d_world_id world;
+    i2d_body_id bodies[PILE_COUNT];
+} pile;
+
+/* Boxes, circles and capsules resting on a ground in loose rows: most touch their
+ * neighbours, some only have their fat boxes overlap. A fraction is then put to sleep
+ * when asked, so that the write must wake islands. */
+static void make_pile(pile* p, bool enable_sleep, bool some_asleep) {
+    i2d_world_def world_def = i2d_default_world_def();
+    world_def.enable_sleep = enable_sleep;
+    p->world = i2d_world_create(&world_def);
+    i2d_shape_def shape_def = i2d_default_shape_def();
+    i2d_body_def ground_def = i2d_default_body_def();
+    ground_def.position = v2(0.0f, -1.0f);
+    i2d_shape_create_box(i2d_body_create(p->world, &ground_def), &shape_def, 100.0f, 1.0f);
+    for (int i = 0; i < PILE_COUNT; ++i) {
+        i2d_body_def def = i2d_default_body_def();
+        def.type = I2D_BODY_DYNAMIC;
+        def.position = v2(-40.0f + 1.6f * (float)(i % PILE_COLUMNS), 0.6f + 1.1f * (float)(i / PILE_COLUMNS));
+        p->bodies[i] = i2d_body_create(p->world, &def);
+        if (i % 3 == 0) {
+            i2d_shape_create_box(p->bodies[i], &shape_def, 0.5f, 0.5f);
+        } else if (i % 3 == 1) {
+            i2d_circle c = {{0.0f, 0.0f}, 0.5f};
+            i2d_shape_create_circle(p->bodies[i], &shape_def, &c);
+        } else {
+            i2d_shape_create_capsule(p->bodies[i], &shape_def, v2(-0.3f, 0.0f), v2(0.3f, 0.0f), 0.25f);
+        }
+    }
+    for (int i = 0; i < PILE_SETTLE_STEPS; ++i) {
+        i2d_world_step(p->world, STEP_TIME, SUBSTEPS);
+    }
+    for (int i = 0; some_asleep && i < PILE_COUNT; i += 7) {
+        i2d_body_set_awake(p->bodies[i], false);
+    }
+}
+
+/* The first step (0 = right after the write) at which the worlds differ in hash or in
+ * which bodies are awake, or -1. */
+static int first_difference(const pile* a, const pile* b, int steps) {
+    for (int step = 0; step <= steps; ++step) {
+        if (step > 0) {
+            i2d_world_step(a->world, STEP_TIME, SUBSTEPS);
+            i2d_world_step(b->world, STEP_TIME, SUBSTEPS);
+        }
+        if (i2d_world_get_state_hash(a->world) != i2d_world_get_state_hash(b->world)) {
+            return step;
+        }
+        for (int i = 0; i < PILE_COUNT; ++i) {
+            if (i2d_body_is_awake(a->bodies[i]) != i2d_body_is_awake(b->bodies[i])) {
+                return step;
+            }
+        }
+    }
+    return -1;
+}
+
+static int count_awake(const pile* p) {
+    int awake = 0;
+    for (int i = 0; i < PILE_COUNT; ++i) {
+        awake += i2d_body_is_awake(p->bodies[i]);
+    }
+    return awake;
+}
+
+/* One bulk write of PILE_WRITES bodies in a random order against the same poses set
+ * body by body, in worlds that sleep or not and with islands asleep or not (the bulk
+ * call wakes what it touches only when something sleeps, and restarts rest timers only
+ * when they count): then PILE_STEPS steps, every one the same to the bit. The poses mix
+ * small nudges (the fat boxes still hold the shapes), teleports (re-insertions) and
+ * bodies left where they are, and some rotations are a little off unit length, so that
+ * the bulk call's normalisation must round as the per-body call's does. */
+static void check_bulk_write_matches_per_body(bool enable_sleep, bool some_asleep) {
+    pile bulk, single;
+    make_pile(&bulk, enable_sleep, some_asleep);
+    make_pile(&single, enable_sleep, some_asleep);
+    I2D_REQUIRE(i2d_world_get_state_hash(bulk.world) == i2d_world_get_state_hash(single.world));
+    const int awake_before = count_awake(&bulk);
+    I2D_CHECK(some_asleep ? awake_before < PILE_COUNT : awake_before == PILE_COUNT);
+
+    static int picked[PILE_WRITES];
+    static i2d_body_id ids[PILE_WRITES];
+    static i2d_transform xf[PILE_WRITES];
+    rng r = {enable_sleep * 2 + some_asleep + 11};
+    for (int k = 0; k < PILE_WRITES; ++k) {
+        const int i = rng_int(&r, PILE_COUNT);
+        picked[k] = i;
+        ids[k] = bulk.bodies[i];
+        xf[k] = i2d_body_get_transform(bulk.bodies[i]);
+        const int kind = rng_int(&r, 3);
+        if (kind == 0) { /* a nudge within the fat box's margin */
+            xf[k].p.x += rng_float(&r, -0.02f, 0.02f);
+            xf[k].q = i2d_make_rot(i2d_rot_get_angle(xf[k].q) + rng_float(&r, -0.01f, 0.01f));
+        } else if (kind == 1) { /* a teleport above the pile */
+            xf[k].p = v2(rng_float(&r, -40.0f, 40.0f), rng_float(&r, 15.0f, 30.0f));
+            xf[k].q = i2d_make_rot(rng_float(&r, -3.0f, 3.0f));
+        }
+        if (k % 5 == 0) { /* off unit length within the tolerance: normalising changes bits */
+            xf[k].q.c *= ROTATION_STRETCH;
+            xf[k].q.s *= ROTATION_STRETCH;
+        }
+    }
+    I2D_CHECK_STATUS(i2d_world_set_body_transforms(bulk.world, ids, PILE_WRITES, xf), I2D_OK);
+    for (int k = 0; k < PILE_WRITES; ++k) {
+        I2D_CHECK_STATUS(i2d_body_set_transform(single.bodies[picked[k]], xf[k].p, xf[k].q), I2D_OK);
+    }
+    if (some_asleep) {
+        I2D_CHECK(count_awake(&bulk) > awake_before); /* the write woke islands */
+    }
+    const int differs = first_difference(&bulk, &single, PILE_STEPS);
+    if (differs >= 0) {
+        ++i2d_check_failures;
+        fprintf(stderr, "sleep %d, some asleep %d: bulk and per-body worlds differ at step %d\n", enable_sleep,
+                some_asleep, differs);
+    }
+    i2d_world_destroy(bulk.world);
+    i2d_world_destroy(single.world);
+}
+
+I2D_TEST(api_bulk_transforms_match_per_body_in_sleeping_worlds) {
+    check_bulk_write_matches_per_body(true, false);
+    check_bulk_write_matches_per_body(true, true);
+}
+
+I2D_TEST(api_bulk_transforms_match_per_body_in_worlds_without_sleep) {
+    check_bulk_write_matches_per_body(false, false);
+    check_bulk_write_matches_per_body(false, true);
+}
+
 /* ---- Refused calls name the index and change nothing --------------------------------- */
 
 static int message_has(const char* text) { return strstr(i2d_last_error_message(), text) != NULL; }

@@ -26,9 +26,12 @@ def test_reads_match_per_body_getters(world):
     assert np.any(linear[:, 1] != 0.0)  # the pile is moving: a real comparison
 
 
-def test_writes_match_per_body_setters():
+# A world that sleeps restarts rest timers on a write; one that does not skips them.
+@pytest.mark.parametrize("enable_sleep", [True, False])
+def test_writes_match_per_body_setters(enable_sleep):
     rng = np.random.default_rng(5)
-    with impulse2d.World() as bulk_world, impulse2d.World() as single_world:
+    with impulse2d.World(enable_sleep=enable_sleep) as bulk_world, \
+            impulse2d.World(enable_sleep=enable_sleep) as single_world:
         bulk = make_pile(bulk_world)
         single = make_pile(single_world)
         xf = np.zeros((len(bulk), 4), np.float32)

@@ -2,6 +2,7 @@
 // Shape geometry: mass against closed form, bounds, point and box overlap, and ray casts
 // against dense sampling along the ray.
 #include <cmath>
+#include <cstring>
 
 #include "check.h"
 #include "collision/geometry.hpp"
@@ -56,6 +57,98 @@ I2D_TEST(unit_geometry_aabb_is_tight) {
     I2D_CHECK(c.lower == (Vec2{2.5f, 2.5f}) && c.upper == (Vec2{3.5f, 3.5f}));
     const AABB b = compute_aabb(box_geometry(1.0f, 0.25f), at(-1.0f, 1.0f));
     I2D_CHECK(b.lower == (Vec2{-2.0f, 0.75f}) && b.upper == (Vec2{0.0f, 1.25f}));
+}
+
+namespace {
+
+// The bounds of a polygon by the plain formula: each vertex turned and moved, the lower
+// and upper corners kept vertex by vertex. compute_aabb may use SIMD lanes (SSE2), which
+// must give these very bits, or a world's trees, and so its steps, would depend on the
+// target it was built for.
+AABB scalar_polygon_bounds(const Polygon& polygon, const Transform& xf) {
+    Vec2 lower = transform_point(xf, polygon.vertices[0]), upper = lower;
+    for (int32_t i = 1; i < polygon.count; ++i) {
+        const Vec2 p = transform_point(xf, polygon.vertices[i]);
+        lower = min(lower, p);
+        upper = max(upper, p);
+    }
+    const Vec2 r{polygon.radius, polygon.radius};
+    return {lower - r, upper + r};
+}
+
+}  // namespace
+
+I2D_TEST(unit_geometry_polygon_aabb_bits_match_the_scalar_formula) {
+    TestRng rng(2024);
+    // Quarter turns and zero coordinates give products and sums of zero, whose sign the
+    // minima must keep as the scalar code does; -0 positions included.
+    const Rot exact_turns[] = {Rot{1.0f, 0.0f}, Rot{0.0f, 1.0f}, Rot{-1.0f, 0.0f}, Rot{0.0f, -1.0f}};
+    const float zeros[] = {0.0f, -0.0f};
+    int32_t compared = 0, mismatches = 0;
+    for (int32_t trial = 0; trial < 4000; ++trial) {
+        Geometry g;
+        g.type = ShapeType::polygon;
+        if (trial % 4 == 0) {
+            g.polygon = make_box(rng.uniform(0.01f, 3.0f), rng.uniform(0.01f, 3.0f));
+        } else {
+            Vec2 points[max_polygon_vertices];
+            const int32_t count = 3 + rng.below(max_polygon_vertices - 2);
+            for (int32_t i = 0; i < count; ++i) {
+                points[i] = {rng.uniform(-2.0f, 2.0f), rng.uniform(-2.0f, 2.0f)};
+            }
+            if (trial % 3 == 0) {  // corners on the axes: turned coordinates of exact zero
+                points[0] = {0.0f, 1.5f};
+                points[1].y = 0.0f;
+            }
+            Hull hull;
+            if (compute_hull(points, count, hull) != HullStatus::ok) {
+                continue;
+            }
+            g.polygon = make_polygon(hull, trial % 5 == 0 ? rng.uniform(0.0f, 0.2f) : 0.0f);
+        }
+        Transform xf;
+        if (trial % 7 == 0) {
+            xf = {{zeros[rng.below(2)], zeros[rng.below(2)]}, exact_turns[rng.below(4)]};
+        } else {
+            const float angle = rng.uniform(-3.2f, 3.2f);
+            const Vec2 origin{rng.uniform(-1000.0f, 1000.0f), rng.uniform(-1000.0f, 1000.0f)};
+            xf = {origin, Rot{std::cos(angle), std::sin(angle)}};
+        }
+        const AABB fast = compute_aabb(g, xf);
+        const AABB plain = scalar_polygon_bounds(g.polygon, xf);
+        ++compared;
+        mismatches += std::memcmp(&fast, &plain, sizeof fast) != 0 ? 1 : 0;
+    }
+    // Ties between +0 and -0 at the extremes, where only the order of the minima decides
+    // the sign: triangles with two corners on an axis (at +0) either side of the origin,
+    // turned by exact quarter turns to origins of either sign of zero.
+    const Vec2 triangles[4][3] = {{{-1.0f, 0.0f}, {1.0f, 0.0f}, {0.0f, 1.0f}},
+                                  {{-1.0f, 0.0f}, {1.0f, 0.0f}, {0.0f, -1.0f}},
+                                  {{0.0f, -1.0f}, {0.0f, 1.0f}, {1.0f, 0.0f}},
+                                  {{0.0f, -1.0f}, {0.0f, 1.0f}, {-1.0f, 0.0f}}};
+    for (const auto& triangle : triangles) {
+        for (int32_t first = 0; first < 3; ++first) {
+            Geometry g;
+            g.type = ShapeType::polygon;
+            g.polygon.count = 3;
+            for (int32_t i = 0; i < 3; ++i) {
+                g.polygon.vertices[i] = triangle[(first + i) % 3];
+            }
+            for (const Rot& q : exact_turns) {
+                for (const float x : zeros) {
+                    for (const float y : zeros) {
+                        const Transform xf{{x, y}, q};
+                        const AABB fast = compute_aabb(g, xf);
+                        const AABB plain = scalar_polygon_bounds(g.polygon, xf);
+                        ++compared;
+                        mismatches += std::memcmp(&fast, &plain, sizeof fast) != 0 ? 1 : 0;
+                    }
+                }
+            }
+        }
+    }
+    I2D_CHECK(compared > 3000);
+    I2D_CHECK(mismatches == 0);
 }
 
 I2D_TEST(unit_geometry_contains_point_includes_boundary) {
