@@ -939,7 +939,9 @@ void run_query_call(FuzzInput& in, uint8_t op) {
                 i2d_shape_is_valid(hits[i].shape);
             }
             i2d_shape_id ids[16];
-            i2d_world_overlap_point_ids(w, in.vec2(), query_filter(in), ids, in.count(16));
+            // count() may say 17 (one past its limit), which this buffer cannot take.
+            const int32_t id_capacity = in.count(16);
+            i2d_world_overlap_point_ids(w, in.vec2(), query_filter(in), ids, id_capacity > 16 ? 16 : id_capacity);
             break;
         }
         default:
