@@ -33,14 +33,19 @@ Vec2 limited_velocity(const BodyMotion& m, Vec2 v, Vec2 gravity, float h, float 
     return {float(vx * scale), float(vy * scale)};
 }
 
-// Gravity and force over mass of a body the solver moves; zero for fixed ones (and
-// finite whatever the force, for the restitution estimate that uses it).
-Vec2 free_acceleration(const Body& b, Vec2 gravity) {
+// Gravity and force over mass of a body the solver moves; zero for fixed ones. Only the
+// restitution estimate reads it, which squares it times a gap: each component is held
+// to `limit` (what takes a body from rest to the speed cap within the step; more would
+// not move it further), so that the estimate stays finite whatever the force.
+Vec2 free_acceleration(const Body& b, Vec2 gravity, float limit) {
     if (b.type != BodyType::dynamic || b.inv_mass == 0.0f) {
         return {};
     }
     const Vec2 a = b.gravity_scale * gravity + b.inv_mass * b.force;
-    return is_finite(a) ? a : Vec2{};
+    if (!is_finite(a)) {
+        return {};
+    }
+    return {max_of(-limit, min_of(a.x, limit)), max_of(-limit, min_of(a.y, limit))};
 }
 
 // Whether the body's fastest point went far relative to its thinnest shape: then it may
@@ -230,6 +235,7 @@ void Solver::gather_bodies(void* solver, const Stage&, int32_t begin, int32_t en
     Solver& self = *static_cast<Solver*>(solver);
     const std::vector<int32_t>& awake = self.links_.islands.awake_bodies();
     const Vec2 gravity = self.links_.settings.gravity;
+    const float acceleration_limit = self.links_.settings.maximum_linear_speed / self.time_step_;
     for (int32_t k = begin; k < end; ++k) {
         const Body& b = self.links_.bodies[awake[std::size_t(k)]];
         const bool dynamic = b.type == BodyType::dynamic;
@@ -242,7 +248,7 @@ void Solver::gather_bodies(void* solver, const Stage&, int32_t begin, int32_t en
         m.gravity_scale = b.gravity_scale;
         m.linear_damping = b.linear_damping;
         m.angular_damping = b.angular_damping;
-        m.free_acceleration = free_acceleration(b, gravity);
+        m.free_acceleration = free_acceleration(b, gravity, acceleration_limit);
         m.is_dynamic = dynamic;
     }
 }

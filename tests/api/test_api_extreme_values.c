@@ -109,6 +109,26 @@ I2D_TEST(api_extreme_impulse_clamped) {
     check_pair_after_step(&p, "angular impulse 1e25");
 }
 
+/* Found by fuzzing: restitution estimates a point's impact speed from the pair's approach
+ * acceleration, sqrt(v^2 + 2 a gap); a force near FLT_MAX (accepted: finite, no overflow
+ * in the body's sum) made that infinite, and the restitution pass then wrote NaN (the
+ * body was quarantined). The second box starts 5 cm above the first, falling. */
+I2D_TEST(api_extreme_force_keeps_restitution_finite) {
+    const float forces[] = {1e30f, 3e38f};
+    for (int k = 0; k < 2; ++k) {
+        bounce_pair p = create_bounce_pair();
+        i2d_transform lifted = {{0.25f, 1.55f}, {1.0f, 0.0f}};
+        I2D_CHECK_STATUS(i2d_body_set_transform(p.second, lifted.p, lifted.q), I2D_OK);
+        I2D_CHECK_STATUS(i2d_body_set_linear_velocity(p.second, (i2d_vec2){0.0f, -3.0f}), I2D_OK);
+        I2D_CHECK_STATUS(i2d_body_apply_force_to_center(p.second, (i2d_vec2){0.0f, -forces[k]}, true), I2D_OK);
+        I2D_CHECK_STATUS(i2d_world_step(p.world, 1.0f / 60.0f, 4), I2D_OK);
+        i2d_body_events events = i2d_world_get_body_events(p.world);
+        I2D_CHECK(events.quarantine_count == 0);
+        I2D_CHECK(!i2d_body_is_quarantined(p.first) && !i2d_body_is_quarantined(p.second));
+        check_pair_after_step(&p, "force near FLT_MAX");
+    }
+}
+
 I2D_TEST(api_extreme_body_def_velocity_clamped) {
     i2d_world_def wdef = i2d_default_world_def();
     bounce_pair p;
