@@ -6,8 +6,10 @@
 // Method: N circles of radius 0.5 m (as their boxes) in a square of 4 m^2 per circle (the
 // density is the same for every N), all dynamic, moving at up to 3 m/s in random directions
 // and bouncing off the sides. dt = 1/60 s. Each update: move the circles (not timed); then,
-// timed, re-insert with move_proxy every proxy whose tight box left its fat box (margin
-// 0.1 m, as the engine does) and call update_pairs with an accept that takes every pair.
+// timed, move_proxy every proxy whose tight box left its fat box (margin 0.1 m, as the
+// engine gives shapes of this size) and call update_pairs with an accept that takes every
+// pair (it commits the moves as the step does: re-inserted, or in a tree where at least
+// an eighth of the proxies moved, rebuilt where they moved).
 // Update 0 pairs everything for the first time and is not timed; ms per update = total of
 // updates 1..U-1 / (U - 1). Each N runs R times from the same start; median and minimum are
 // reported. For N <= 2000 the first run checks every update against brute force: the pairs
@@ -51,7 +53,7 @@ namespace {
 enum { exit_ok = 0, exit_mismatch = 1, exit_usage = 2 };
 
 constexpr float radius = 0.5f;
-constexpr float margin = 0.1f;          // the engine's fat-box margin, m
+constexpr float margin = 0.1f;          // the engine's fat-box margin for these circles, m
 constexpr float area_per_circle = 4.0f; // m^2 of region per circle
 constexpr float max_speed = 3.0f;       // m/s
 constexpr float dt = 1.0f / 60.0f;

@@ -63,24 +63,64 @@ void BroadPhase::enlarge_proxy(int32_t key, const AABB& fat_aabb) {
     buffer_move(key);
 }
 
-void BroadPhase::commit_moves() {
+// The slots are cleared in the order the moves came in, which is the order of the keys
+// when bodies move in creation order: a forward walk, not a random one.
+void BroadPhase::order_pending_moves() {
     pending_moves_.erase(std::remove_if(pending_moves_.begin(), pending_moves_.end(),
                                         [](const MoveEntry& e) { return e.key == null_index; }),
                          pending_moves_.end());
-    // The slots are cleared in the order the moves came in, which is the order of the
-    // keys when bodies move in creation order: a forward walk, not a random one.
     for (MoveEntry& e : pending_moves_) {
         e.order = storage_order(e.key);
         pending_slot_[e.key] = null_index;
     }
     radix_sort(pending_moves_, move_scratch_, [](const MoveEntry& e) { return e.order; });
+}
+
+void BroadPhase::commit_moves() {
+    order_pending_moves();
     for (const MoveEntry& e : pending_moves_) {
         tree(proxy_kind(e.key)).move_proxy_at(int32_t(e.order), e.box);
     }
     pending_moves_.clear();
-    // Once a quarter of a tree has been re-inserted its nodes are scattered again; the
-    // O(n) compaction is then cheaper than the cache misses it saves.
+    finish_commit();
+}
+
+namespace {
+
+// A tree in which at least this share of the proxies moved (1 / n) is rebuilt where they
+// moved rather than re-inserted into. A rebuild takes the subtrees beside the moved
+// leaves' paths as they are, and where few leaves moved it pairs each with a large
+// subtree, deepening the tree; many moved leaves share their paths, and the rebuilt part
+// is then a fresh tree (the tumbler, 2025 boxes nearly all moving: 0.25 ms a step for
+// the move and rebuild against 0.4 ms for re-insertion).
+constexpr int32_t rebuild_share_denominator = 8;
+
+}  // namespace
+
+void BroadPhase::commit_moves_in_place() {
+    order_pending_moves();
+    int32_t moves[int32_t(ProxyKind::count)] = {};
+    for (const MoveEntry& e : pending_moves_) {
+        ++moves[int32_t(proxy_kind(e.key))];
+    }
+    for (const MoveEntry& e : pending_moves_) {
+        const ProxyKind kind = proxy_kind(e.key);
+        DynamicTree& t = tree(kind);
+        if (rebuild_share_denominator * moves[int32_t(kind)] >= t.proxy_count()) {
+            t.move_proxy_in_place_at(int32_t(e.order), e.box);
+        } else {
+            t.move_proxy_at(int32_t(e.order), e.box);
+        }
+    }
+    pending_moves_.clear();
+    finish_commit();
+}
+
+void BroadPhase::finish_commit() {
     for (DynamicTree& t : trees_) {
+        t.rebuild_grown();
+        // Once a quarter of a tree has been rebuilt or re-inserted its nodes are scattered
+        // again; the O(n) compaction is then cheaper than the cache misses it saves.
         if (t.proxy_count() > 0 && 4 * t.moves_since_compact() > t.proxy_count()) {
             t.compact();
         }
@@ -94,7 +134,7 @@ void BroadPhase::buffer_move(int32_t key) {
 }
 
 int32_t BroadPhase::begin_pair_queries() {
-    commit_moves();
+    commit_moves_in_place();
     queries_.clear();
     for (const int32_t key : move_buffer_) {
         if (key != null_index) {  // blank: destroyed after it moved

@@ -42,9 +42,13 @@ public:
     /// before then replaces the box) and queues the proxy for pair finding. Until the
     /// commit the trees and fat_aabb() still show the old box.
     void move_proxy(int32_t key, const AABB& fat_aabb);
-    /// Performs the queued re-insertions in the order their leaves lie in the tree's node
-    /// array (see storage order below).
+    /// Performs the queued moves in the order their leaves lie in the tree's node array
+    /// (see storage order below), each a re-insertion: for a few moves at a time (a
+    /// caller placing bodies one by one).
     void commit_moves();
+    /// The same for the many moves of a step: in a tree where many proxies moved, each
+    /// leaf takes its box where it is and the grown part of the tree is rebuilt once.
+    void commit_moves_in_place();
     /// Grows the fat box in place (or the queued box of a pending move) and queues the
     /// proxy for pair finding.
     void enlarge_proxy(int32_t key, const AABB& fat_aabb);
@@ -76,6 +80,8 @@ public:
 
 private:
     void buffer_move(int32_t key);
+    void order_pending_moves();
+    void finish_commit();
     int32_t& pending_slot(int32_t key);
     // Storage order: re-insertions and pair queries are made in the order of the
     // proxies' leaves in the node array, which compact() keeps depth-first. In caller

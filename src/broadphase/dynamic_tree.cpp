@@ -42,6 +42,7 @@ int32_t DynamicTree::create_proxy(const AABB& fat_aabb, uint64_t category_bits, 
         proxy_categories_.reserve(capacity);
         free_proxies_.reserve(capacity);
     }
+    rebuild_grown();  // insertions assume exact boxes
     const int32_t leaf = allocate_node();
     int32_t proxy;
     if (free_proxies_.empty()) {
@@ -65,6 +66,7 @@ int32_t DynamicTree::create_proxy(const AABB& fat_aabb, uint64_t category_bits, 
 }
 
 void DynamicTree::destroy_proxy(int32_t proxy) {
+    rebuild_grown();
     const int32_t leaf = proxy_nodes_[proxy];
     I2D_ASSERT(nodes_[leaf].is_leaf() && nodes_[leaf].height == 0);
     remove_leaf(leaf);
@@ -82,6 +84,7 @@ void DynamicTree::move_proxy(int32_t proxy, const AABB& fat_aabb) {
 // still contains its new box, not from the root, which keeps the walk local.
 void DynamicTree::move_proxy_at(int32_t leaf, const AABB& fat_aabb) {
     I2D_ASSERT(nodes_[leaf].is_leaf());
+    rebuild_grown();
     const int32_t parent = nodes_[leaf].parent;
     if (parent != null_index && contains(nodes_[parent].aabb, fat_aabb)) {
         // Still inside its parent (one move in five): it keeps its sibling, and only
@@ -100,6 +103,7 @@ void DynamicTree::move_proxy_at(int32_t leaf, const AABB& fat_aabb) {
 }
 
 void DynamicTree::enlarge_proxy(int32_t proxy, const AABB& fat_aabb) {
+    rebuild_grown();
     const int32_t leaf = proxy_nodes_[proxy];
     I2D_ASSERT(contains(fat_aabb, nodes_[leaf].aabb));
     nodes_[leaf].aabb = fat_aabb;
@@ -109,6 +113,26 @@ void DynamicTree::enlarge_proxy(int32_t proxy, const AABB& fat_aabb) {
             break;
         }
         nodes_[index].aabb = union_of(nodes_[index].aabb, fat_aabb);
+    }
+}
+
+// Every ancestor is marked, not only those that grew, so that the rebuild finds each
+// marked node by descending from the root through marked nodes alone.
+void DynamicTree::move_proxy_in_place_at(int32_t leaf, const AABB& fat_aabb) {
+    I2D_ASSERT(nodes_[leaf].is_leaf());
+    nodes_[leaf].aabb = fat_aabb;
+    int32_t index = nodes_[leaf].parent;
+    for (; index != null_index; index = nodes_[index].parent) {
+        TreeNode& node = nodes_[index];
+        node.grown = true;
+        if (contains(node.aabb, fat_aabb)) {
+            index = node.parent;
+            break;
+        }
+        node.aabb = union_of(node.aabb, fat_aabb);
+    }
+    for (; index != null_index && !nodes_[index].grown; index = nodes_[index].parent) {
+        nodes_[index].grown = true;
     }
 }
 
@@ -298,36 +322,55 @@ float DynamicTree::total_perimeter() const {
 namespace {
 
 constexpr int32_t bin_count = 16;
-// Beyond this depth the build splits at the median, which bounds the depth whatever the
-// geometry (coincident boxes give the SAH nothing to separate).
+// Beyond this depth the build halves the spread of the centres instead of asking the
+// SAH, which bounds the depth whatever the geometry.
 constexpr int32_t max_sah_depth = 40;
 
 }  // namespace
 
 void DynamicTree::rebuild() {
-    rebuild_scratch_.clear();
-    for (int32_t i = 0; i < int32_t(nodes_.size()); ++i) {
-        if (nodes_[i].height < 0) {
-            continue;
-        }
-        if (nodes_[i].is_leaf()) {
-            nodes_[i].parent = null_index;
-            rebuild_scratch_.push_back(i);
-        } else {
-            free_node(i);
-        }
+    for (TreeNode& node : nodes_) {
+        node.grown = node.height > 0;
     }
-    root_ = rebuild_scratch_.empty() ? null_index
-                                     : build_top_down(rebuild_scratch_.data(), int32_t(rebuild_scratch_.size()));
-    if (root_ != null_index) {
-        nodes_[root_].parent = null_index;
-    }
+    rebuild_marked(Split::sah);
     compact();
+}
+
+int32_t DynamicTree::rebuild_grown() { return rebuild_marked(Split::midpoint); }
+
+// The marked nodes are freed; what hangs below them unmarked (leaves, and subtrees no
+// moved leaf reached) becomes the items of one build.
+int32_t DynamicTree::rebuild_marked(Split rule) {
+    if (root_ == null_index || !nodes_[root_].grown) {
+        return 0;
+    }
+    build_items_.clear();
+    collect_stack_.clear();
+    collect_stack_.push_back(root_);
+    while (!collect_stack_.empty()) {
+        const int32_t index = collect_stack_.back();
+        collect_stack_.pop_back();
+        TreeNode& node = nodes_[index];
+        if (node.grown) {
+            collect_stack_.push_back(node.child2());
+            collect_stack_.push_back(node.child1());
+            free_node(index);
+        } else {
+            node.parent = null_index;
+            build_items_.push_back({node.aabb, center(node.aabb), index, 0});
+        }
+    }
+    root_ = build_top_down(rule);
+    nodes_[root_].parent = null_index;
+    const int32_t built = int32_t(built_nodes_.size());
+    moves_since_compact_ += built;
+    return built;
 }
 
 // Preorder: a node, then its whole first subtree, then its second, so every subtree is
 // one contiguous run of the array and a traversal reads memory mostly forwards.
 void DynamicTree::compact() {
+    rebuild_grown();
     moves_since_compact_ = 0;
     compact_scratch_.clear();
     compact_scratch_.reserve(size_t(2 * proxy_count_));
@@ -362,93 +405,25 @@ void DynamicTree::compact() {
     validate();
 }
 
-// Binned SAH over the leaves' centres: the split plane that minimises
-// perimeter(left) * count(left) + perimeter(right) * count(right).
-int32_t DynamicTree::build_top_down(int32_t* leaves, int32_t count) {
-    struct Task {
-        int32_t* leaves;
-        int32_t count;
-        int32_t parent;
-        int32_t depth;
-        bool first_child;
-    };
-    std::vector<Task> tasks{{leaves, count, null_index, 0, true}};
+// Top-down over build_items_, depth first: each internal node is made before its
+// children, so the heights come right in one pass over the made nodes in reverse.
+int32_t DynamicTree::build_top_down(Split rule) {
+    built_nodes_.clear();
+    build_tasks_.clear();
+    build_tasks_.push_back({0, int32_t(build_items_.size()), null_index, 0, true});
     int32_t root = null_index;
-    while (!tasks.empty()) {
-        const Task task = tasks.back();
-        tasks.pop_back();
+    while (!build_tasks_.empty()) {
+        const BuildTask task = build_tasks_.back();
+        build_tasks_.pop_back();
         int32_t node;
-        if (task.count == 1) {
-            node = task.leaves[0];
+        if (task.end - task.begin == 1) {
+            node = build_items_[std::size_t(task.begin)].node;
         } else {
             node = allocate_node();
-            AABB centres{nodes_[task.leaves[0]].aabb.lower, nodes_[task.leaves[0]].aabb.lower};
-            for (int32_t i = 0; i < task.count; ++i) {
-                const Vec2 c = center(nodes_[task.leaves[i]].aabb);
-                centres.lower = min(centres.lower, c);
-                centres.upper = max(centres.upper, c);
-            }
-            const bool split_x = centres.upper.x - centres.lower.x >= centres.upper.y - centres.lower.y;
-            const float lo = split_x ? centres.lower.x : centres.lower.y;
-            const float extent = split_x ? centres.upper.x - centres.lower.x : centres.upper.y - centres.lower.y;
-            auto coord = [&](int32_t leaf) {
-                const Vec2 c = center(nodes_[leaf].aabb);
-                return split_x ? c.x : c.y;
-            };
-            int32_t split = task.count / 2;
-            if (extent > 0.0f && task.depth < max_sah_depth) {
-                AABB bin_box[bin_count];
-                int32_t bin_n[bin_count] = {};
-                auto bin_of = [&](int32_t leaf) {
-                    const int32_t b = int32_t(float(bin_count) * (coord(leaf) - lo) / extent);
-                    return std::min(std::max(b, 0), bin_count - 1);
-                };
-                for (int32_t i = 0; i < task.count; ++i) {
-                    const int32_t b = bin_of(task.leaves[i]);
-                    bin_box[b] = bin_n[b] == 0 ? nodes_[task.leaves[i]].aabb
-                                               : union_of(bin_box[b], nodes_[task.leaves[i]].aabb);
-                    ++bin_n[b];
-                }
-                // Sweep from the right to know every right side's cost, then from the left.
-                float right_cost[bin_count] = {};
-                AABB acc{};
-                int32_t acc_n = 0;
-                for (int32_t b = bin_count - 1; b > 0; --b) {
-                    if (bin_n[b] > 0) {
-                        acc = acc_n == 0 ? bin_box[b] : union_of(acc, bin_box[b]);
-                        acc_n += bin_n[b];
-                    }
-                    right_cost[b] = acc_n == 0 ? 0.0f : perimeter(acc) * float(acc_n);
-                }
-                float best_cost = FLT_MAX;
-                int32_t best_bin = -1;
-                acc_n = 0;
-                for (int32_t b = 0; b < bin_count - 1; ++b) {
-                    if (bin_n[b] > 0) {
-                        acc = acc_n == 0 ? bin_box[b] : union_of(acc, bin_box[b]);
-                        acc_n += bin_n[b];
-                    }
-                    if (acc_n == 0 || acc_n == task.count) {
-                        continue;
-                    }
-                    const float cost = perimeter(acc) * float(acc_n) + right_cost[b + 1];
-                    if (cost < best_cost) {
-                        best_cost = cost;
-                        best_bin = b;
-                    }
-                }
-                if (best_bin >= 0) {
-                    int32_t* mid = std::partition(task.leaves, task.leaves + task.count,
-                                                  [&](int32_t leaf) { return bin_of(leaf) <= best_bin; });
-                    split = int32_t(mid - task.leaves);
-                }
-            } else {
-                std::nth_element(task.leaves, task.leaves + split, task.leaves + task.count,
-                                 [&](int32_t l, int32_t r) { return coord(l) < coord(r); });
-            }
-            nodes_[node].height = 1;  // internal; its children are filled in by the child tasks
-            tasks.push_back({task.leaves, split, node, task.depth + 1, true});
-            tasks.push_back({task.leaves + split, task.count - split, node, task.depth + 1, false});
+            built_nodes_.push_back(node);
+            const int32_t split = split_items(task.begin, task.end, task.depth, rule, nodes_[node].aabb);
+            build_tasks_.push_back({split, task.end, node, task.depth + 1, false});
+            build_tasks_.push_back({task.begin, split, node, task.depth + 1, true});
         }
         if (task.parent == null_index) {
             root = node;
@@ -457,22 +432,109 @@ int32_t DynamicTree::build_top_down(int32_t* leaves, int32_t count) {
             nodes_[node].parent = task.parent;
         }
     }
-    // Boxes and heights bottom-up: children were allocated after parents, and
-    // leaves are final, so a pass in reverse allocation order is not enough in general;
-    // recompute by walking up from every leaf instead.
-    for (int32_t i = 0; i < count; ++i) {
-        for (int32_t index = nodes_[leaves[i]].parent; index != null_index; index = nodes_[index].parent) {
-            TreeNode& n = nodes_[index];
-            if (n.child1() == null_index || n.child2() == null_index) {
-                break;
-            }
-            const TreeNode& c1 = nodes_[n.child1()];
-            const TreeNode& c2 = nodes_[n.child2()];
-            n.aabb = union_of(c1.aabb, c2.aabb);
-            n.height = int16_t(1 + std::max(c1.height, c2.height));
-        }
+    for (auto it = built_nodes_.rbegin(); it != built_nodes_.rend(); ++it) {
+        TreeNode& n = nodes_[*it];
+        n.height = int16_t(1 + std::max(nodes_[n.child1()].height, nodes_[n.child2()].height));
     }
     return root;
+}
+
+namespace {
+
+constexpr AABB empty_box{{FLT_MAX, FLT_MAX}, {-FLT_MAX, -FLT_MAX}};
+
+}  // namespace
+
+// Along the axis where the items' centres spread most, binned SAH over the centres (the
+// split that minimises perimeter(left) * count(left) + perimeter(right) * count(right))
+// or the middle of the spread. Partitions [begin, end), writes the union of the items'
+// boxes to `bounds` and returns where the second half starts.
+int32_t DynamicTree::split_items(int32_t begin, int32_t end, int32_t depth, Split rule, AABB& bounds) {
+    BuildItem* items = build_items_.data();
+    const int32_t count = end - begin;
+    AABB centres{items[begin].centre, items[begin].centre};
+    bounds = items[begin].box;
+    for (int32_t i = begin + 1; i < end; ++i) {
+        centres.lower = min(centres.lower, items[i].centre);
+        centres.upper = max(centres.upper, items[i].centre);
+        bounds = union_of(bounds, items[i].box);
+    }
+    if (count == 2) {
+        return begin + 1;
+    }
+    const bool split_x = centres.upper.x - centres.lower.x >= centres.upper.y - centres.lower.y;
+    const float lo = split_x ? centres.lower.x : centres.lower.y;
+    const float extent = split_x ? centres.upper.x - centres.lower.x : centres.upper.y - centres.lower.y;
+    const auto coord = [split_x](const BuildItem& item) { return split_x ? item.centre.x : item.centre.y; };
+    if (rule == Split::sah && extent > 0.0f && depth < max_sah_depth) {
+        const float scale = float(bin_count) / extent;
+        AABB bin_box[bin_count];
+        int32_t bin_n[bin_count] = {};
+        for (int32_t b = 0; b < bin_count; ++b) {
+            bin_box[b] = empty_box;
+        }
+        for (int32_t i = begin; i < end; ++i) {
+            const int32_t b = std::min(int32_t(scale * (coord(items[i]) - lo)), bin_count - 1);
+            items[i].bin = b;
+            bin_box[b] = union_of(bin_box[b], items[i].box);
+            ++bin_n[b];
+        }
+        // Sweep from the right to know every right side's cost, then from the left.
+        float right_cost[bin_count] = {};
+        AABB acc = empty_box;
+        int32_t acc_n = 0;
+        for (int32_t b = bin_count - 1; b > 0; --b) {
+            acc = union_of(acc, bin_box[b]);
+            acc_n += bin_n[b];
+            right_cost[b] = acc_n == 0 ? 0.0f : perimeter(acc) * float(acc_n);
+        }
+        float best_cost = FLT_MAX;
+        int32_t best_bin = -1;
+        acc = empty_box;
+        acc_n = 0;
+        for (int32_t b = 0; b < bin_count - 1; ++b) {
+            acc = union_of(acc, bin_box[b]);
+            acc_n += bin_n[b];
+            if (acc_n == 0 || acc_n == count) {
+                continue;
+            }
+            const float cost = perimeter(acc) * float(acc_n) + right_cost[b + 1];
+            if (cost < best_cost) {
+                best_cost = cost;
+                best_bin = b;
+            }
+        }
+        if (best_bin >= 0) {
+            return partition_items(begin, end, [best_bin](const BuildItem& item) { return item.bin <= best_bin; });
+        }
+    }
+    // The midpoint of the centres' spread: cheap, and it bounds the depth whatever the
+    // geometry (boxes piled on one spot give the SAH nothing to separate).
+    const float middle = lo + 0.5f * extent;
+    const int32_t split = partition_items(begin, end, [&](const BuildItem& item) { return coord(item) <= middle; });
+    return split == begin || split == end ? begin + count / 2 : split;
+}
+
+// The standard library's partition may order items differently from one library to the
+// next, and the order shapes the tree and so the pairs; this one is the same everywhere.
+template <class Left>
+int32_t DynamicTree::partition_items(int32_t begin, int32_t end, Left&& left) {
+    BuildItem* items = build_items_.data();
+    int32_t i = begin, j = end - 1;
+    for (;;) {
+        while (i <= j && left(items[i])) {
+            ++i;
+        }
+        while (i <= j && !left(items[j])) {
+            --j;
+        }
+        if (i >= j) {
+            return i;
+        }
+        std::swap(items[i], items[j]);
+        ++i;
+        --j;
+    }
 }
 
 void DynamicTree::validate() const {
@@ -495,8 +557,10 @@ void DynamicTree::validate() const {
         I2D_ASSERT(c1.parent == i && c2.parent == i);
         I2D_ASSERT(n.height == 1 + std::max(c1.height, c2.height));
         // Exactly the union, not just containing it: a box left loose costs every query.
+        // Only a node marked for the rebuild may hold more, and its parent is marked too.
         const AABB both = union_of(c1.aabb, c2.aabb);
-        I2D_ASSERT(n.aabb.lower == both.lower && n.aabb.upper == both.upper);
+        I2D_ASSERT(n.grown ? contains(n.aabb, both) : n.aabb.lower == both.lower && n.aabb.upper == both.upper);
+        I2D_ASSERT(!n.grown || n.parent == null_index || nodes_[n.parent].grown);
     }
     I2D_ASSERT(leaves == proxy_count_);
     int32_t free_count = 0;

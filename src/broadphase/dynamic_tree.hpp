@@ -7,8 +7,13 @@
 // walks down choosing the sibling that adds the least perimeter (2D's surface area),
 // counting the growth of every ancestor (Bittner et al., "Fast, Effective BVH Updates
 // for Animated Scenes", as Box2D v3 uses it); rotations on the way back up keep the
-// height near log2(n). A top-down binned SAH rebuild serves bulk creation. The
-// alternative, a loose grid, needs a cell size that suits every scene.
+// height near log2(n). A top-down build serves bulk creation (binned SAH) and the step:
+// when many proxies move at once, each leaf takes its new box where it is (its ancestors
+// grow and are marked), and one build, splitting at the middle of the centres, then
+// replaces every marked node, taking the unmarked subtrees below them whole (Box2D v3
+// does the same). That costs less than re-inserting each leaf, and the rebuilt part is
+// a fresh tree rather than the sum of greedy insertions. The alternative, a loose grid,
+// needs a cell size that suits every scene.
 //
 // Proxy ids are not node indices: a small table maps each proxy to its leaf, so that
 // compact() can move nodes. Once a tree outgrows the cache, nodes scattered through
@@ -35,6 +40,7 @@ struct alignas(32) TreeNode {
     AABB aabb;
     int32_t parent = null_index; // also the free list link for free nodes
     int16_t height = 0;          // leaves 0; -1 when free
+    bool grown = false;          // internal: a leaf below moved in place; rebuilt by rebuild_grown()
 
     // Two slots shared by both kinds of node, which keeps a node at 32 bytes (two per
     // cache line): internal nodes hold their children, leaves their user value (a
@@ -71,6 +77,13 @@ public:
     /// Grows the leaf's box in place (ancestors grow to contain it); cheaper than a move
     /// when the box only gets bigger. The box must contain the old one.
     void enlarge_proxy(int32_t proxy, const AABB& fat_aabb);
+    /// Gives the leaf a new box where it is, for many moves at once: its ancestors grow to
+    /// hold it and are marked, and rebuild_grown() then rebuilds them. Queries stay exact
+    /// meanwhile (internal boxes are only looser); any other change rebuilds first.
+    void move_proxy_in_place_at(int32_t order, const AABB& fat_aabb);
+    /// Rebuilds every node marked by move_proxy_in_place_at, keeping the unmarked subtrees
+    /// below them as they are; returns how many internal nodes it made.
+    int32_t rebuild_grown();
 
     const AABB& fat_aabb(int32_t proxy) const { return nodes_[proxy_nodes_[proxy]].aabb; }
     int32_t user_value(int32_t proxy) const { return nodes_[proxy_nodes_[proxy]].user_value(); }
@@ -104,7 +117,8 @@ public:
     void rebuild();
     /// Lays the nodes out depth-first in one array (same tree, same proxy ids).
     void compact();
-    /// Re-insertions since the last compact() or rebuild(): how scattered the nodes are.
+    /// Re-insertions and rebuilt nodes since the last compact() or rebuild(): how
+    /// scattered the nodes are.
     int32_t moves_since_compact() const { return moves_since_compact_; }
 
     int32_t height() const { return root_ == null_index ? 0 : nodes_[root_].height; }
@@ -134,7 +148,16 @@ private:
     /// True if it rotated.
     bool rotate(int32_t node);
     void refit_upward(int32_t node, bool rotate_nodes);
-    int32_t build_top_down(int32_t* leaves, int32_t count);
+    /// How a build splits a set of items in two: by the surface-area heuristic (better
+    /// trees, for a tree built once) or at the middle of their centres (a third of the
+    /// cost, for the rebuild every step, whose queries were as fast in the tumbler).
+    enum class Split : uint8_t { sah, midpoint };
+    /// Builds a tree over build_items_ (leaves and whole subtrees); returns its root.
+    int32_t build_top_down(Split rule);
+    int32_t split_items(int32_t begin, int32_t end, int32_t depth, Split rule, AABB& bounds);
+    int32_t rebuild_marked(Split rule);
+    template <class Left>
+    int32_t partition_items(int32_t begin, int32_t end, Left&& left);
 
     std::vector<TreeNode> nodes_;
     std::vector<int32_t> proxy_nodes_;  // proxy id -> leaf node; null_index when free
@@ -150,7 +173,23 @@ private:
     int32_t free_list_ = null_index;
     int32_t proxy_count_ = 0;
     int32_t moves_since_compact_ = 0;
-    std::vector<int32_t> rebuild_scratch_;
+    // Build scratch, kept between builds so that the step allocates nothing.
+    struct BuildItem {
+        AABB box;
+        Vec2 centre;
+        int32_t node;
+        int32_t bin;  // scratch of split_items
+    };
+    struct BuildTask {
+        int32_t begin, end;  // a range of build_items_
+        int32_t parent;      // null_index for the root
+        int32_t depth;
+        bool first_child;
+    };
+    std::vector<BuildItem> build_items_;
+    std::vector<BuildTask> build_tasks_;
+    std::vector<int32_t> built_nodes_;  // internal nodes in the order the build made them
+    std::vector<int32_t> collect_stack_;
 };
 
 }  // namespace i2d

@@ -14,9 +14,13 @@ constexpr float max_shape_extent = 100000.0f;
 /// smaller shapes have masses whose inverse overflows.
 constexpr float min_shape_extent = 1.0e-4f;
 
-/// How far a moving shape's fat box reaches beyond its tight box, m. Larger margins
-/// re-insert shapes into the tree less often but give the narrowphase more pairs.
-constexpr float aabb_margin = 0.1f;
+/// How far a moving shape's fat box reaches beyond its tight box: this fraction of the
+/// shape's size (half the diagonal of its box), at most the maximum, m. Larger margins
+/// move proxies in the tree less often but give the narrowphase more pairs, and a small
+/// shape meets more pairs for the same margin than a large one: 0.1 m on a 0.25 m box
+/// doubles its candidates.
+constexpr float aabb_margin_fraction = 0.25f;
+constexpr float max_aabb_margin = 0.1f;
 
 /// Largest |coordinate| accepted for positions and points, m. Float has about 60 m of
 /// resolution out there: beyond it geometry is meaningless.

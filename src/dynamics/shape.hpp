@@ -51,6 +51,7 @@ struct Shape {
     bool enable_sensor_events = true;
     bool enable_hit_events = false;
     bool enlarged = false;  // the step gave it a new fat box; its proxy moves at the step's end
+    float aabb_margin = 0.0f;  // how far the fat box reaches beyond the tight box, m
     int32_t prev_in_body = null_index, next_in_body = null_index;
     int32_t chain = null_index;  // the chain this segment belongs to, if any
     float density = 0.0f;

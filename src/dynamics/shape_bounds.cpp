@@ -4,6 +4,7 @@
 
 #include "collision/geometry.hpp"
 #include "dynamics/constants.hpp"
+#include "math/math.hpp"
 
 namespace i2d {
 
@@ -15,11 +16,18 @@ ProxyKind proxy_kind_of(BodyType type) {
     }
 }
 
-AABB fatten(const AABB& box, BodyType type, Vec2 displacement, float reach) {
+float aabb_margin_of(const Geometry& geometry) {
+    const AABB local = compute_aabb(geometry, Transform{});
+    const float half_diagonal = 0.5f * length(local.upper - local.lower);
+    return min_of(max_aabb_margin, aabb_margin_fraction * half_diagonal);
+}
+
+AABB fatten(const Shape& shape, BodyType type, Vec2 displacement, float reach) {
+    const AABB& box = shape.aabb;
     if (type == BodyType::static_body) {
         return box;
     }
-    const Vec2 margin{aabb_margin + reach, aabb_margin + reach};
+    const Vec2 margin{shape.aabb_margin + reach, shape.aabb_margin + reach};
     return {min(box.lower, box.lower + displacement) - margin, max(box.upper, box.upper + displacement) + margin};
 }
 
@@ -33,7 +41,7 @@ bool refit_shape_bounds(const Body& body, Pool<Shape>& shapes, Vec2 displacement
                                              {shape.aabb.lower + displacement, shape.aabb.upper + displacement})
                                   : shape.aabb;
         if (!contains(shape.fat_aabb, needed)) {
-            shape.fat_aabb = fatten(shape.aabb, body.type, displacement, reach);
+            shape.fat_aabb = fatten(shape, body.type, displacement, reach);
             shape.enlarged = true;
             any = true;
         }

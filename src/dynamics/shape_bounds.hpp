@@ -19,8 +19,12 @@ namespace i2d {
 
 ProxyKind proxy_kind_of(BodyType type);
 
-/// reach: how far the body's turn can carry the box besides, m (turn_reach).
-AABB fatten(const AABB& box, BodyType type, Vec2 displacement, float reach = 0.0f);
+/// The margin of a shape of this geometry, m (aabb_margin_fraction).
+float aabb_margin_of(const Geometry& geometry);
+
+/// The fat box of the shape's tight box: grown by its margin, stretched along the
+/// displacement; reach: how far the body's turn can carry the box besides, m (turn_reach).
+AABB fatten(const Shape& shape, BodyType type, Vec2 displacement, float reach = 0.0f);
 
 /// How far a kinematic body's turn over a step can carry its shapes, m: their fat boxes
 /// cover it, so that a paddle turning a third of a radian per step has its pairs (and the

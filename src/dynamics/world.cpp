@@ -111,7 +111,7 @@ void World::set_type(int32_t body, BodyType type) {
 void World::create_proxy(int32_t shape, bool query_now) {
     Shape& s = shapes[shape];
     const BodyType type = bodies[s.body].type;
-    s.fat_aabb = fatten(s.aabb, type, Vec2{});
+    s.fat_aabb = fatten(s, type, Vec2{});
     s.proxy_key = broad_phase_.create_proxy(s.fat_aabb, s.filter.category_bits, shape,
                                             proxy_kind_of(type), query_now);
     mark_for_cover(s.body);  // the new box is not stretched along the body's motion
@@ -126,6 +126,7 @@ int32_t World::attach_shape(int32_t body, const ShapeDef& def, const Geometry& g
     Shape& s = shapes[index];
     s.body = body;
     s.geometry = geometry;
+    s.aabb_margin = aabb_margin_of(geometry);
     s.density = def.density;
     s.friction = def.friction;
     s.restitution = def.restitution;
@@ -314,7 +315,7 @@ void World::cover_step_ahead(float time_step) {
         }
     }
     to_cover_.clear();
-    broad_phase_.commit_moves();
+    broad_phase_.commit_moves_in_place();
 }
 
 void World::mark_for_cover(int32_t body) {

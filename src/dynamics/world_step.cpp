@@ -33,7 +33,7 @@ void World::step(float time_step, int32_t substep_count) {
         continuous_.run(solver_.fast_bodies(), time_step);
     }
     profile_.continuous += timer.lap_ms();
-    broad_phase_.commit_moves();
+    broad_phase_.commit_moves_in_place();
     profile_.update_bounds += timer.lap_ms();
 
     contacts_.end_step();

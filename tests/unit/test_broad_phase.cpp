@@ -577,3 +577,77 @@ I2D_TEST(unit_broad_phase_destroyed_after_move_and_key_reused) {
     I2D_CHECK(calls == (std::vector<Pair>{{0, 5}, {2, 5}}));
     I2D_CHECK(same_box(bp.fat_aabb(e), {{0.5f, 0.5f}, {20.5f, 0.6f}}));
 }
+
+// The step's commit (a tree where many proxies moved is rebuilt where they moved) and the
+// one-by-one re-insertion find the same new pairs, and both the brute-force set: half the
+// proxies of a crowded world move a little, then all of them, then one in twenty.
+I2D_TEST(unit_broad_phase_moves_in_place_find_the_pairs_reinsertion_finds) {
+    TestRng rng(31);
+    BroadPhase in_place, reinserted;
+    std::vector<AABB> fat;
+    std::vector<int32_t> keys;
+    for (int32_t i = 0; i < 1500; ++i) {
+        const float x = rng.uniform(-20.0f, 20.0f), y = rng.uniform(-20.0f, 20.0f), s = rng.uniform(0.2f, 1.5f);
+        fat.push_back(fatten({{x, y}, {x + s, y + s}}));
+        const ProxyKind kind = i % 10 == 0 ? ProxyKind::static_proxy : ProxyKind::dynamic_proxy;
+        keys.push_back(in_place.create_proxy(fat.back(), 1, i, kind, true));
+        I2D_REQUIRE(reinserted.create_proxy(fat.back(), 1, i, kind, true) == keys.back());
+    }
+    std::set<Pair> known;
+    const auto update = [&](BroadPhase& bp, bool reinsert) {
+        if (reinsert) {
+            bp.commit_moves();
+        }
+        std::vector<ShapePairCandidate> out;
+        bp.update_pairs([&](int32_t a, int32_t b) { return known.count({a, b}) == 0; }, out);
+        std::set<Pair> found;
+        for (const ShapePairCandidate& p : out) {
+            found.insert({p.shape_a, p.shape_b});
+        }
+        return found;
+    };
+    const auto brute_new_pairs = [&](const std::vector<int32_t>& moved) {
+        std::set<Pair> expected;
+        for (const int32_t i : moved) {
+            for (int32_t j = 0; j < int32_t(fat.size()); ++j) {
+                const bool both_static = i % 10 == 0 && j % 10 == 0;
+                const Pair p{std::min(i, j), std::max(i, j)};
+                if (j != i && !both_static && bf_overlap(fat[i], fat[j]) && known.count(p) == 0) {
+                    expected.insert(p);
+                }
+            }
+        }
+        return expected;
+    };
+    const std::set<Pair> first_in_place = update(in_place, false), first_reinserted = update(reinserted, true);
+    I2D_CHECK(first_in_place == first_reinserted);
+    known = first_in_place;
+    const int32_t shares[] = {2, 1, 20};
+    for (const int32_t share : shares) {
+        std::vector<int32_t> moved;
+        for (int32_t i = 0; i < int32_t(fat.size()); ++i) {
+            if (i % 10 != 0 && rng.below(share) == 0) {
+                const Vec2 d{rng.uniform(-0.6f, 0.6f), rng.uniform(-0.6f, 0.6f)};
+                fat[i] = {fat[i].lower + d, fat[i].upper + d};
+                in_place.move_proxy(keys[i], fat[i]);
+                reinserted.move_proxy(keys[i], fat[i]);
+                moved.push_back(i);
+            }
+        }
+        for (auto it = known.begin(); it != known.end();) {
+            it = bf_overlap(fat[it->first], fat[it->second]) ? std::next(it) : known.erase(it);
+        }
+        const std::set<Pair> expected = brute_new_pairs(moved);
+        const std::set<Pair> got_in_place = update(in_place, false), got_reinserted = update(reinserted, true);
+        std::printf("1 in %d moved (%zu): %zu new pairs, in place %zu, re-inserted %zu\n", share, moved.size(),
+                    expected.size(), got_in_place.size(), got_reinserted.size());
+        I2D_CHECK(got_in_place == expected);
+        I2D_CHECK(got_reinserted == expected);
+        I2D_CHECK(!expected.empty());
+        known.insert(expected.begin(), expected.end());
+        for (const int32_t i : moved) {
+            I2D_CHECK(same_box(in_place.fat_aabb(keys[i]), fat[i]) && same_box(reinserted.fat_aabb(keys[i]), fat[i]));
+        }
+        in_place.tree(ProxyKind::dynamic_proxy).validate();
+    }
+}
