@@ -6,31 +6,49 @@
 
 namespace i2d {
 
+// Depth first, second child first. A node's children are tested before anything is
+// pushed, so the stack holds only nodes known to overlap the box, and the overlapping
+// second child is taken at once rather than through the stack; the visits come in the
+// order a plain stack traversal gives.
 template <class Visit>
 void DynamicTree::query(const AABB& box, Visit&& visit) const {
-    if (root_ == null_index) {
+    if (root_ == null_index || !overlaps(nodes_[root_].aabb, box)) {
         return;
     }
     GrowableStack<int32_t, 256> stack;
-    stack.push(root_);
-    while (!stack.empty()) {
-        const int32_t index = stack.pop();
+    int32_t index = root_;
+    for (;;) {
         const TreeNode& node = nodes_[index];
-        if (!overlaps(node.aabb, box)) {
-            continue;
-        }
         if (node.is_leaf()) {
             if (!visit(node.proxy(), node.user_value())) {
                 return;
             }
         } else {
-            // Ask for both children now: by the time the stack reaches them they are in
-            // cache, which hides most of a large tree's memory latency.
-            prefetch_node(node.child1());
-            prefetch_node(node.child2());
-            stack.push(node.child1());
-            stack.push(node.child2());
+            const int32_t first = node.child1(), second = node.child2();
+            const TreeNode& a = nodes_[first];
+            const TreeNode& b = nodes_[second];
+            const bool first_overlaps = overlaps(a.aabb, box), second_overlaps = overlaps(b.aabb, box);
+            if (first_overlaps) {
+                if (!second_overlaps) {
+                    index = first;
+                    continue;
+                }
+                // Asked for now: by the time the stack returns to it its children are in cache.
+                if (!a.is_leaf()) {
+                    prefetch_node(a.child1());
+                    prefetch_node(a.child2());
+                }
+                stack.push(first);
+            }
+            if (second_overlaps) {
+                index = second;
+                continue;
+            }
         }
+        if (stack.empty()) {
+            return;
+        }
+        index = stack.pop();
     }
 }
 
