@@ -401,45 +401,46 @@ void Solver::color_joints() {
 // in. Within a colour, whose contacts are independent, two-point contacts come first,
 // so that SIMD blocks hold one kind and blocks of single points skip the second; the
 // overflow colour is solved in sequence and keeps awake order. A body the contact
-// cannot move (static, kinematic, asleep) takes no colour slot.
+// cannot move (static, kinematic, asleep) takes no colour slot. The sort's key is the
+// colour and the kind of contact in one; only the contacts that took a colour are
+// sorted, so that contacts without points (most of them while bodies tumble) are read
+// once.
 void Solver::color_contacts() {
     const std::vector<int32_t>& awake = links_.contacts.awake();
     const Pool<Contact>& contacts = links_.contacts.pool();
-    contact_colors_.resize(awake.size());
-    contact_points_.resize(awake.size());
-    color_starts_.assign(ConstraintColors::count + 1, 0);
-    // The awake list jumps through the contact pool: ask for contacts ahead, and keep
-    // what the layout pass below needs (point counts) so that it reads no contact again.
+    constexpr int32_t key_count = 2 * ConstraintColors::count;
+    key_starts_.assign(key_count + 1, 0);
+    colored_contacts_.clear();
+    // The awake list jumps through the contact pool: ask for contacts ahead.
     constexpr std::size_t contacts_ahead = 32;
     for (std::size_t k = 0; k < awake.size(); ++k) {
         if (k + contacts_ahead < awake.size()) {
             prefetch_line(&contacts[awake[k + contacts_ahead]]);
         }
         const Contact& contact = contacts[awake[k]];
-        contact_points_[k] = uint8_t(contact.point_count);
-        int32_t color = -1;
-        if ((contact.flags & contact_sensor) == 0 && contact.point_count != 0) {
-            color = colors_.assign((contact.flags & contact_moves_a) ? contact.state_a : ConstraintColors::null_state,
-                                   (contact.flags & contact_moves_b) ? contact.state_b : ConstraintColors::null_state);
-            ++color_starts_[std::size_t(color) + 1];
+        if ((contact.flags & contact_sensor) != 0 || contact.point_count == 0) {
+            continue;
         }
-        contact_colors_[k] = int8_t(color);
+        const int32_t color =
+            colors_.assign((contact.flags & contact_moves_a) ? contact.state_a : ConstraintColors::null_state,
+                           (contact.flags & contact_moves_b) ? contact.state_b : ConstraintColors::null_state);
+        const bool single_after_pairs = color != ConstraintColors::overflow && contact.point_count == 1;
+        const int32_t key = 2 * color + (single_after_pairs ? 1 : 0);
+        ++key_starts_[std::size_t(key) + 1];
+        colored_contacts_.push_back({awake[k], key});
     }
-    for (int32_t color = 0; color < ConstraintColors::count; ++color) {
-        color_starts_[std::size_t(color) + 1] += color_starts_[std::size_t(color)];
+    for (int32_t key = 0; key < key_count; ++key) {
+        key_starts_[std::size_t(key) + 1] += key_starts_[std::size_t(key)];
     }
-    ordered_contacts_.resize(std::size_t(color_starts_[ConstraintColors::count]));
+    color_starts_.resize(ConstraintColors::count + 1);
+    for (int32_t color = 0; color <= ConstraintColors::count; ++color) {
+        color_starts_[std::size_t(color)] = key_starts_[std::size_t(2 * color)];
+    }
+    ordered_contacts_.resize(colored_contacts_.size());
     std::vector<int32_t>& next = scratch_starts_;
-    next.assign(color_starts_.begin(), color_starts_.end() - 1);
-    for (int32_t pass = 0; pass < 2; ++pass) {
-        const int32_t points = 2 - pass;
-        for (std::size_t k = 0; k < awake.size(); ++k) {
-            const int32_t color = contact_colors_[k];
-            const bool in_sequence = color == ConstraintColors::overflow;
-            if (color >= 0 && (in_sequence ? pass == 0 : contact_points_[k] == points)) {
-                ordered_contacts_[std::size_t(next[std::size_t(color)]++)] = awake[k];
-            }
-        }
+    next.assign(key_starts_.begin(), key_starts_.end() - 1);
+    for (const ColoredContact& c : colored_contacts_) {
+        ordered_contacts_[std::size_t(next[std::size_t(c.key)]++)] = c.contact;
     }
 }
 

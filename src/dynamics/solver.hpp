@@ -140,8 +140,12 @@ private:
         bool sequential = false;
     };
     std::vector<ColorRun> color_runs_;
-    std::vector<int8_t> contact_colors_;  // per awake contact, or -1 when it is not solved
-    std::vector<uint8_t> contact_points_;  // per awake contact: its manifold's point count
+    struct ColoredContact {
+        int32_t contact;
+        int32_t key;  // 2 x colour, + 1 for a single point (solved after the pairs)
+    };
+    std::vector<ColoredContact> colored_contacts_;  // in awake order
+    std::vector<int32_t> key_starts_;               // per sort key: its first slot
     std::vector<int32_t> color_starts_;   // per colour: its first slot in ordered_contacts_
     std::vector<int32_t> ordered_contacts_;  // the contacts to solve, colour by colour
     std::vector<int32_t> scratch_starts_;
