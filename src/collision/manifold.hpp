@@ -45,13 +45,22 @@ Manifold collide_polygons(const Polygon& a, const Transform& xf_a, const Polygon
                           float speculative = speculative_distance);
 
 /// Chain segments (manifold_chain.cpp): one-sided, and no contact at a seam with a normal
-/// that the neighbouring segment's face covers.
+/// that the neighbouring segment's face covers. `held`: the shape touched the free side
+/// before; pushed behind the segment since, it gets a contact on the face that pushes it
+/// back instead of none.
 Manifold collide_chain_segment_circle(const ChainSegment& a, const Transform& xf_a, const Circle& b,
-                                      const Transform& xf_b, float speculative = speculative_distance);
+                                      const Transform& xf_b, float speculative = speculative_distance,
+                                      bool held = false);
 Manifold collide_chain_segment_capsule(const ChainSegment& a, const Transform& xf_a, const Capsule& b,
-                                       const Transform& xf_b, float speculative = speculative_distance);
+                                       const Transform& xf_b, float speculative = speculative_distance,
+                                       bool held = false);
 Manifold collide_chain_segment_polygon(const ChainSegment& a, const Transform& xf_a, const Polygon& b,
-                                       const Transform& xf_b, float speculative = speculative_distance);
+                                       const Transform& xf_b, float speculative = speculative_distance,
+                                       bool held = false);
+/// A chain segment (either side, A or B) and a shape it holds, as collide_shapes orders
+/// them: the normal from A to B.
+Manifold collide_held_by_chain(const Geometry& a, const Transform& xf_a, const Geometry& b, const Transform& xf_b,
+                               float speculative = speculative_distance);
 
 /// A pair of shapes of any kinds, through the pair table; the reversed order of a
 /// primary pair is computed as (B, A) with the normal flipped.

@@ -13,7 +13,10 @@
 //   so a polygon gets a contact on this segment's face instead (its incident edge
 //   clipped to the segment), and a circle none.
 // A shape whose centre lies behind the segment (the left of point1 -> point2) gets no
-// contact at all: that is what makes the chain one-sided.
+// contact at all: that is what makes the chain one-sided. Unless the segment holds it:
+// a shape that touched the free side and was then pushed through (crushed against a wall
+// by a spinning blade, say) keeps a contact on the segment's face, which pushes it back.
+// The caller knows which shapes are held (their contact had points the step before).
 #include <cmath>
 
 #include "collision/hull.hpp"
@@ -111,32 +114,79 @@ Manifold face_contact(const WorldChainSegment& s, const Polygon& b, const Transf
     return m;
 }
 
+// A circle held by the segment: the point of it deepest below the face, while its centre
+// lies within the segment's extent (beyond it the neighbouring segment holds it).
+Manifold held_circle_contact(const WorldChainSegment& s, Vec2 centre, float radius) {
+    const Vec2 edge = s.point2 - s.point1;
+    const float along = dot(centre - s.point1, edge) / dot(edge, edge);
+    if (!(along >= 0.0f && along <= 1.0f)) {
+        return {};
+    }
+    const float separation = dot(centre - s.point1, s.normal) - radius;
+    Manifold m;
+    m.normal = s.normal;
+    m.point_count = 1;
+    m.points[0].point = centre - (radius + 0.5f * separation) * s.normal;
+    m.points[0].penetration = -separation;
+    m.points[0].id = make_feature_id(0, 0);
+    return m;
+}
+
 }  // namespace
 
 Manifold collide_chain_segment_circle(const ChainSegment& a, const Transform& xf_a, const Circle& b,
-                                      const Transform& xf_b, float speculative) {
+                                      const Transform& xf_b, float speculative, bool held) {
     const WorldChainSegment s = to_world(a, xf_a);
-    if (behind(s, transform_point(xf_b, b.center))) {
-        return {};
+    const Vec2 centre = transform_point(xf_b, b.center);
+    if (behind(s, centre)) {
+        return held ? held_circle_contact(s, centre, b.radius) : Manifold{};
     }
     const Manifold m = collide_segment_circle(Segment{a.point1, a.point2}, xf_a, b, xf_b, speculative);
     return m.point_count == 0 || admissible(s, m.normal) ? m : Manifold{};
 }
 
 Manifold collide_chain_segment_polygon(const ChainSegment& a, const Transform& xf_a, const Polygon& b,
-                                       const Transform& xf_b, float speculative) {
+                                       const Transform& xf_b, float speculative, bool held) {
     const WorldChainSegment s = to_world(a, xf_a);
     if (behind(s, transform_point(xf_b, b.centroid))) {
-        return {};
+        return held ? face_contact(s, b, xf_b, speculative) : Manifold{};
     }
     const Manifold m = collide_segment_polygon(Segment{a.point1, a.point2}, xf_a, b, xf_b, speculative);
     return m.point_count == 0 || admissible(s, m.normal) ? m : face_contact(s, b, xf_b, speculative);
 }
 
 Manifold collide_chain_segment_capsule(const ChainSegment& a, const Transform& xf_a, const Capsule& b,
-                                       const Transform& xf_b, float speculative) {
+                                       const Transform& xf_b, float speculative, bool held) {
     return collide_chain_segment_polygon(a, xf_a, make_capsule_polygon(b.center1, b.center2, b.radius), xf_b,
-                                         speculative);
+                                         speculative, held);
+}
+
+Manifold collide_held_by_chain(const Geometry& a, const Transform& xf_a, const Geometry& b, const Transform& xf_b,
+                               float speculative) {
+    const bool chain_first = a.type == ShapeType::chain_segment;
+    const Geometry& chain = chain_first ? a : b;
+    const Geometry& other = chain_first ? b : a;
+    const Transform& xf_chain = chain_first ? xf_a : xf_b;
+    const Transform& xf_other = chain_first ? xf_b : xf_a;
+    Manifold m;
+    switch (other.type) {
+        case ShapeType::circle:
+            m = collide_chain_segment_circle(chain.chain_segment, xf_chain, other.circle, xf_other, speculative, true);
+            break;
+        case ShapeType::capsule:
+            m = collide_chain_segment_capsule(chain.chain_segment, xf_chain, other.capsule, xf_other, speculative,
+                                              true);
+            break;
+        case ShapeType::polygon:
+            m = collide_chain_segment_polygon(chain.chain_segment, xf_chain, other.polygon, xf_other, speculative,
+                                              true);
+            break;
+        default: return {};  // segments and chains never collide
+    }
+    if (!chain_first) {
+        m.normal = -m.normal;
+    }
+    return m;
 }
 
 }  // namespace i2d

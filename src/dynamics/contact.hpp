@@ -34,6 +34,9 @@ enum ContactFlags : uint32_t {
     contact_moves_b = 1u << 7,
     contact_recyclable = 1u << 8,         // the poses below are those the manifold was made at
     contact_hit_events = 1u << 9,         // either shape enables hit events
+    contact_held_by_chain = 1u << 10,     // a chain segment's contact that had points at the
+                                          // last manifold: the segment holds the shape from its
+                                          // free side, even once pushed behind it
 };
 
 /// A contact's link in one of its bodies' contact lists; keys are (contact << 1) | edge.

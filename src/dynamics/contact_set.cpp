@@ -453,8 +453,17 @@ void ContactSet::update_contact(Contact& c, const Shape& a, const Shape& b, floa
     const float margin = speculative_margin(body_a, body_b, time_step);
     const float gap = max_of(max_of(a.aabb.lower.x - b.aabb.upper.x, b.aabb.lower.x - a.aabb.upper.x),
                              max_of(a.aabb.lower.y - b.aabb.upper.y, b.aabb.lower.y - a.aabb.upper.y));
-    const Manifold fresh = gap > margin ? Manifold{}
-                                        : collide_shapes(a.geometry, body_a.transform, b.geometry, body_b.transform, margin);
+    const bool chain = a.geometry.type == ShapeType::chain_segment || b.geometry.type == ShapeType::chain_segment;
+    const bool held = chain && (c.flags & contact_held_by_chain) != 0;
+    Manifold fresh;
+    if (held) {
+        fresh = collide_held_by_chain(a.geometry, body_a.transform, b.geometry, body_b.transform, margin);
+    } else if (gap <= margin) {
+        fresh = collide_shapes(a.geometry, body_a.transform, b.geometry, body_b.transform, margin);
+    }
+    if (chain) {
+        c.flags = fresh.point_count > 0 ? c.flags | contact_held_by_chain : c.flags & ~uint32_t(contact_held_by_chain);
+    }
     update_points(c, fresh, body_a.center, body_b.center);
     remember_poses(c, body_a.transform, body_a.center, body_b.transform, body_b.center);
 }
