@@ -120,8 +120,8 @@ typedef struct i2d_world_def {
     float time_to_sleep;
     /** Default I2D_SIMD_AUTOMATIC. A path the CPU does not support is refused. */
     i2d_simd_path simd_path;
-    /** Default true. A contact whose two bodies moved less than about a millimetre (and
-     *  turned less than a degree) relative to each other since its manifold was made
+    /** Default true. A contact whose two bodies moved less than 5 mm (2 mm if apart; and
+     *  turned less than 2 degrees) relative to each other since its manifold was made
      *  keeps that manifold, its points riding the bodies, instead of running the
      *  narrowphase again: resting stacks cost far less. False makes every contact's
      *  manifold afresh at every step. */
