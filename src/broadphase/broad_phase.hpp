@@ -66,10 +66,12 @@ public:
     // thread) commits the moves and orders the queued proxies, returning how many there
     // are; query_pairs does queries [begin, end) and may run on several threads at once
     // over disjoint ranges, reading only; end_pair_queries (one thread) clears the queue.
-    // Each range's pairs come out in the order update_pairs gives them.
+    // Each range's pairs come out in the order update_pairs gives them. `ahead(a, b)` is
+    // called for each candidate as it is found, some time before accept(a, b) is.
     int32_t begin_pair_queries();
-    template <class Accept>
-    void query_pairs(int32_t begin, int32_t end, Accept&& accept, std::vector<ShapePairCandidate>& out) const;
+    template <class Accept, class Ahead>
+    void query_pairs(int32_t begin, int32_t end, Accept&& accept, std::vector<ShapePairCandidate>& out,
+                     Ahead&& ahead) const;
     void end_pair_queries();
 
     const DynamicTree& tree(ProxyKind kind) const { return trees_[int32_t(kind)]; }

@@ -7,12 +7,28 @@ namespace i2d {
 template <class Accept>
 void BroadPhase::update_pairs(Accept&& accept, std::vector<ShapePairCandidate>& out) {
     const int32_t count = begin_pair_queries();
-    query_pairs(0, count, accept, out);
+    query_pairs(0, count, accept, out, [](int32_t, int32_t) {});
     end_pair_queries();
 }
 
-template <class Accept>
-void BroadPhase::query_pairs(int32_t begin, int32_t end, Accept&& accept, std::vector<ShapePairCandidate>& out) const {
+// Candidates are handed to accept a few dozen at a time, in the order they were found,
+// after `ahead` has been told of each as it was found: the caller's own lookup for a
+// pair (the contact set's hash of known pairs, a cache miss per candidate in a large
+// world) can then be asked for while the traversal goes on.
+template <class Accept, class Ahead>
+void BroadPhase::query_pairs(int32_t begin, int32_t end, Accept&& accept, std::vector<ShapePairCandidate>& out,
+                             Ahead&& ahead) const {
+    constexpr int32_t batch = 32;
+    ShapePairCandidate found[batch];
+    int32_t found_count = 0;
+    const auto flush = [&]() {
+        for (int32_t i = 0; i < found_count; ++i) {
+            if (accept(found[i].shape_a, found[i].shape_b)) {
+                out.push_back(found[i]);
+            }
+        }
+        found_count = 0;
+    };
     for (int32_t q = begin; q < end; ++q) {
         const QueryEntry& entry = queries_[std::size_t(q)];
         const int32_t key = entry.key;
@@ -34,13 +50,16 @@ void BroadPhase::query_pairs(int32_t begin, int32_t end, Accept&& accept, std::v
                 }
                 const int32_t a = shape < other_shape ? shape : other_shape;
                 const int32_t b = shape < other_shape ? other_shape : shape;
-                if (accept(a, b)) {
-                    out.push_back({a, b});
+                ahead(a, b);
+                found[found_count++] = {a, b};
+                if (found_count == batch) {
+                    flush();
                 }
                 return true;
             });
         }
     }
+    flush();
 }
 
 }  // namespace i2d

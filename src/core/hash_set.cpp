@@ -4,6 +4,8 @@
 
 #include <algorithm>
 
+#include "core/prefetch.hpp"
+
 namespace i2d {
 
 // A 64-bit finaliser (splitmix64's): pair keys differ in few bits, so mix them all.
@@ -28,6 +30,12 @@ bool HashSet::contains(uint64_t key) const {
         if (slots_[i] == 0) {
             return false;
         }
+    }
+}
+
+void HashSet::prefetch(uint64_t key) const {
+    if (!slots_.empty()) {
+        prefetch_line(&slots_[hash(key) & (slots_.size() - 1)]);
     }
 }
 

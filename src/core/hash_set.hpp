@@ -20,6 +20,8 @@ public:
     /// Returns true if the key was there.
     bool remove(uint64_t key);
     bool contains(uint64_t key) const;
+    /// Asks for the slot where a lookup of `key` starts, for a lookup soon after.
+    void prefetch(uint64_t key) const;
     void clear();
     int32_t count() const { return count_; }
 

@@ -285,7 +285,9 @@ void ContactSet::query_range(void* set, const Stage& stage, int32_t begin, int32
     ContactSet& self = *static_cast<ContactSet*>(set);
     std::vector<ShapePairCandidate>& out = self.block_pairs_[std::size_t(begin / stage.items_per_block)];
     out.clear();
-    self.querying_->query_pairs(begin, end, [&self](int32_t a, int32_t b) { return self.may_pair(a, b); }, out);
+    self.querying_->query_pairs(
+        begin, end, [&self](int32_t a, int32_t b) { return self.may_pair(a, b); }, out,
+        [&self](int32_t a, int32_t b) { self.pair_set_.prefetch(pair_key(a, b)); });
 }
 
 // New pairs, block by block in query order, become contacts on this thread.
