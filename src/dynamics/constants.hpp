@@ -113,6 +113,7 @@ constexpr int32_t parallel_min_moved_proxies = 64;
 constexpr int32_t bodies_per_work_block = 64;
 constexpr int32_t contacts_per_work_block = 64;
 constexpr int32_t joints_per_work_block = 32;
+constexpr int32_t joint_trees_per_work_block = 8;
 constexpr int32_t proxies_per_work_block = 16;
 
 }  // namespace i2d

@@ -39,6 +39,8 @@ struct JointConstraint {
     int32_t joint = null_index;
     JointType type = JointType::filter;
     uint8_t rows = 0;  // JointRows
+    uint8_t exact_rows = 0;  // ExactRows (joint_tree.hpp): rows the exact tree solve holds,
+                             // which the sweep then leaves alone; set by JointTrees::build
     int32_t state_a = 0, state_b = 0;  // solver states; the fixed one for a body that cannot move
     bool moves_a = false, moves_b = false;  // whether this joint may change the body's velocity
     float inv_mass_a = 0.0f, inv_mass_b = 0.0f;

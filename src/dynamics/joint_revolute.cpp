@@ -2,6 +2,7 @@
 // Revolute joint: the anchors held together (a rigid 2D point row), plus a spring toward
 // a target angle, a motor and a limit on the relative angle (one angular row each).
 #include "dynamics/joint_constraint.hpp"
+#include "dynamics/joint_tree.hpp"
 
 namespace i2d {
 
@@ -49,6 +50,9 @@ void solve_revolute(JointConstraint& c, JointBodies& j, const JointStep& step, b
     JointImpulses& p = c.impulses;
     if (c.rows != 0) {
         solve_revolute_rows(c, j, step, use_bias);
+    }
+    if (c.exact_rows & exact_point_rows) {
+        return;  // the tree's exact pass holds it
     }
     // The point row last: it is the one that must hold.
     const Vec2 ra = rotate(j.dqa, c.anchor_a), rb = rotate(j.dqb, c.anchor_b);

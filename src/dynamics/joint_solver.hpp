@@ -18,6 +18,7 @@
 #include "dynamics/events.hpp"
 #include "dynamics/joint.hpp"
 #include "dynamics/joint_constraint.hpp"
+#include "dynamics/joint_tree.hpp"
 
 namespace i2d {
 
@@ -33,6 +34,17 @@ public:
                  int32_t end);
     void warm_start(int32_t begin, int32_t end, BodyState* states);
     void solve(int32_t begin, int32_t end, BodyState* states, bool use_bias);
+
+    /// The trees whose rigid rows are solved exactly (joint_tree.hpp): found after
+    /// lay_out, before prepare (one thread); one exact pass after each sweep, over ranges
+    /// of trees.
+    void build_trees(const Pool<Joint>& joints, const Pool<Body>& bodies, int32_t state_count) {
+        trees_.build(constraints_, joints, bodies, state_count);
+    }
+    int32_t tree_count() const { return trees_.tree_count(); }
+    void solve_trees(int32_t begin, int32_t end, BodyState* states, const BodyMotion* motions, bool use_bias) {
+        trees_.solve(begin, end, constraints_, states, motions, step_, use_bias);
+    }
     /// Impulses back to the joints, and their reactions over the last substep.
     void store(Pool<Joint>& joints, const BodyState* states, int32_t begin, int32_t end) const;
     /// Joints whose reaction passed a threshold, in solve order (one thread).
@@ -42,6 +54,7 @@ private:
     void prepare_one(JointConstraint& c, const Joint& joint, const Pool<Body>& bodies, int32_t fixed_state) const;
 
     std::vector<JointConstraint> constraints_;
+    JointTrees trees_;
     JointStep step_;
 };
 

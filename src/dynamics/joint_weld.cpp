@@ -2,6 +2,7 @@
 // Weld joint: B's pose held in A's frame by a point row and an angle row, each rigid or
 // a spring of its own stiffness.
 #include "dynamics/joint_constraint.hpp"
+#include "dynamics/joint_tree.hpp"
 
 namespace i2d {
 
@@ -34,12 +35,12 @@ void warm_start_weld(const JointConstraint& c, JointBodies& j) {
 void solve_weld(JointConstraint& c, JointBodies& j, const JointStep& step, bool use_bias) {
     const WeldSettings& s = c.def->weld;
     JointImpulses& p = c.impulses;
-    if (c.axial_mass > 0.0f) {
+    if (c.axial_mass > 0.0f && (c.exact_rows & exact_angle_row) == 0) {
         const SpringRow row = weld_row(s.angular_hertz, c.angular_spring, step, use_bias);
         apply_angular(c, j, spring_impulse(current_angle(c, j), j.wb - j.wa, c.axial_mass, row, p.angular, use_bias));
     }
     const SpringRow row = weld_row(s.linear_hertz, c.spring, step, use_bias);
-    if (!use_bias && !row.relaxes) {
+    if ((c.exact_rows & exact_point_rows) || (!use_bias && !row.relaxes)) {
         return;
     }
     const Vec2 ra = rotate(j.dqa, c.anchor_a), rb = rotate(j.dqb, c.anchor_b);

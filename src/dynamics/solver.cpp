@@ -75,6 +75,7 @@ void Solver::step(float time_step, int32_t substep_count) {
     color_constraints();
     contact_solver_.lay_out(contact_layout());
     joint_solver_.lay_out(ordered_joints_.data(), int32_t(ordered_joints_.size()));
+    joint_solver_.build_trees(links_.joints, links_.bodies, awake);
     lay_out_color_runs();
     if (links_.settings.enable_sleep) {
         links_.islands.begin_rest_times();
@@ -185,16 +186,20 @@ void Solver::build_stages(int32_t substep_count) {
     stages_.clear();
     add_stage(&Solver::gather_bodies, bodies, bodies_per_work_block);
     add_stage(&Solver::prepare_joints, joint_solver_.count(), joints_per_work_block);
+    const int32_t trees = joint_solver_.tree_count();
     add_stage(&Solver::pack_contacts, contact_solver_.block_count(), min_blocks);
     add_stage(&Solver::pack_overflow, contact_solver_.overflow_count(), contacts_per_work_block);
     for (int32_t i = 0; i < substep_count; ++i) {
         add_stage(&Solver::integrate_velocities, bodies, bodies_per_work_block);
         add_color_stages(&Solver::warm_start, 0, true);
         add_color_stages(&Solver::solve, 2 * i, true);
+        add_stage(&Solver::solve_joint_trees, trees, joint_trees_per_work_block, 0, 2 * i);
         add_stage(&Solver::integrate_positions, bodies, bodies_per_work_block);
         add_color_stages(&Solver::solve, 2 * i + 1, true);
+        add_stage(&Solver::solve_joint_trees, trees, joint_trees_per_work_block, 0, 2 * i + 1);
     }
     add_color_stages(&Solver::solve, 2 * substep_count - 1, true);
+    add_stage(&Solver::solve_joint_trees, trees, joint_trees_per_work_block, 0, 2 * substep_count - 1);
 
     add_stage(&Solver::check_bounce, 1, 1);
     constexpr int32_t restitution_iterations = 4;
@@ -219,6 +224,7 @@ bool Solver::stages_changed(int32_t substep_count) {
     stage_key_scratch_.push_back(contact_solver_.block_count());
     stage_key_scratch_.push_back(contact_solver_.overflow_count());
     stage_key_scratch_.push_back(joint_solver_.count());
+    stage_key_scratch_.push_back(joint_solver_.tree_count());
     for (const ColorRun& r : color_runs_) {
         stage_key_scratch_.push_back(r.joint_count);
         stage_key_scratch_.push_back(r.contact_items);
@@ -256,6 +262,12 @@ void Solver::gather_bodies(void* solver, const Stage&, int32_t begin, int32_t en
 void Solver::prepare_joints(void* solver, const Stage&, int32_t begin, int32_t end, int32_t) {
     Solver& self = *static_cast<Solver*>(solver);
     self.joint_solver_.prepare(self.links_.joints, self.links_.bodies, int32_t(self.states_.size()) - 1, begin, end);
+}
+
+void Solver::solve_joint_trees(void* solver, const Stage& stage, int32_t begin, int32_t end, int32_t) {
+    Solver& self = *static_cast<Solver*>(solver);
+    const SolvePass& pass = self.passes_[std::size_t(stage.arg1)];
+    self.joint_solver_.solve_trees(begin, end, self.states_.data(), self.motions_.data(), pass.use_bias);
 }
 
 void Solver::store_joints(void* solver, const Stage&, int32_t begin, int32_t end, int32_t) {

@@ -101,6 +101,7 @@ private:
     // The stages; `begin` and `end` index the stage's items.
     static void gather_bodies(void* solver, const Stage& stage, int32_t begin, int32_t end, int32_t worker);
     static void prepare_joints(void* solver, const Stage& stage, int32_t begin, int32_t end, int32_t worker);
+    static void solve_joint_trees(void* solver, const Stage& stage, int32_t begin, int32_t end, int32_t worker);
     static void store_joints(void* solver, const Stage& stage, int32_t begin, int32_t end, int32_t worker);
     static void pack_contacts(void* solver, const Stage& stage, int32_t begin, int32_t end, int32_t worker);
     static void pack_overflow(void* solver, const Stage& stage, int32_t begin, int32_t end, int32_t worker);
