@@ -11,7 +11,9 @@
 // come before the contacts, and a colour's stage covers both. The stage loop is Box2D v3's: per substep
 // integrate velocities, warm start, solve with push-out, integrate positions, relax;
 // then one more relax, restitution, impulses back to the contacts, and the bodies' final
-// pose, bounds, rest time and move event in one pass over them.
+// pose, bounds, rest time and move event in one pass over them. Each solve or relax
+// sweep over the colours is followed by the exact pass over hanging joint trees
+// (joint_tree.hpp), which holds their rigid rows where the sweep left off.
 //
 // Threads: the step is a list of stages (stage_runner.hpp) that the world's workers
 // share: bodies in blocks, each colour's contact blocks, the overflow colour whole on one

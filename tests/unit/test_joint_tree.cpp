@@ -1,0 +1,112 @@
+// SPDX-License-Identifier: MIT
+// JointTrees' choice of joints: the rigid rows of trees hung from one body that does not
+// move are solved exactly; free trees, loops and trees hung twice are left to the sweep,
+// and so are kinds without rigid rows. The solving itself is checked against closed forms
+// by the physics suite (test_joints_chain.cpp, test_joints_weld.cpp).
+#include <vector>
+
+#include "check.h"
+#include "dynamics/joint_tree.hpp"
+
+using namespace i2d;
+
+namespace {
+
+// Bodies and joints as the solver sees them at a step's start: dynamic awake bodies take
+// the next state, static, kinematic and sleeping ones none.
+struct Layout {
+    Pool<Body> bodies;
+    Pool<Joint> joints;
+    std::vector<JointConstraint> constraints;
+    int32_t states = 0;
+
+    int32_t body(BodyType type, bool awake = true) {
+        const int32_t b = bodies.allocate();
+        bodies[b].type = type;
+        bodies[b].awake_index = type != BodyType::static_body && awake ? states++ : null_index;
+        return b;
+    }
+    int32_t joint(JointType type, int32_t a, int32_t b, float weld_linear_hertz = 0.0f) {
+        const int32_t j = joints.allocate();
+        joints[j].def.type = type;
+        joints[j].def.body_a = a;
+        joints[j].def.body_b = b;
+        joints[j].def.weld.linear_hertz = weld_linear_hertz;
+        JointConstraint c;
+        c.joint = j;
+        constraints.push_back(c);
+        return int32_t(constraints.size()) - 1;
+    }
+    int32_t dynamic() { return body(BodyType::dynamic); }
+};
+
+// Joints from a to b, b to c, ... along the bodies given; returns the first's constraint.
+int32_t chain(Layout& l, const std::vector<int32_t>& bodies) {
+    const int32_t first = int32_t(l.constraints.size());
+    for (std::size_t i = 0; i + 1 < bodies.size(); ++i) {
+        l.joint(JointType::revolute, bodies[i], bodies[i + 1]);
+    }
+    return first;
+}
+
+bool all_exact(const Layout& l, int32_t first, int32_t count, uint8_t rows = exact_point_rows) {
+    bool ok = true;
+    for (int32_t k = first; k < first + count; ++k) {
+        ok = ok && l.constraints[std::size_t(k)].exact_rows == rows;
+    }
+    return ok;
+}
+
+}  // namespace
+
+I2D_TEST(unit_joint_trees_take_hanging_trees_and_leave_the_rest_to_the_sweep) {
+    Layout l;
+    const int32_t ceiling = l.body(BodyType::static_body);
+    // A chain hung from the ceiling, with a branch: one tree.
+    const int32_t c0 = l.dynamic(), c1 = l.dynamic(), c2 = l.dynamic(), branch = l.dynamic();
+    const int32_t hung = chain(l, {ceiling, c0, c1, c2});
+    l.joint(JointType::revolute, c1, branch);
+    // A ragdoll-like free tree: no joint to anything fixed.
+    const int32_t f0 = l.dynamic(), f1 = l.dynamic(), f2 = l.dynamic();
+    const int32_t free_tree = chain(l, {f0, f1, f2});
+    // A bridge hung at both ends.
+    const int32_t b0 = l.dynamic(), b1 = l.dynamic();
+    const int32_t bridge = chain(l, {ceiling, b0, b1, ceiling});
+    // A hung loop: ceiling - l0, then l0 - l1 - l2 - l0.
+    const int32_t l0 = l.dynamic(), l1 = l.dynamic(), l2 = l.dynamic();
+    const int32_t loop = chain(l, {ceiling, l0, l1, l2, l0});
+    // Hung from a kinematic body, and from a sleeping one: both count as fixed.
+    const int32_t crane = l.body(BodyType::kinematic, false), k0 = l.dynamic();
+    const int32_t from_kinematic = chain(l, {crane, k0});
+    const int32_t sleeper = l.body(BodyType::dynamic, false), s0 = l.dynamic();
+    const int32_t from_sleeper = chain(l, {sleeper, s0});
+    // A weld with a soft point row gives only its angle; a distance joint gives nothing,
+    // and a mouse joint on the hung chain leaves the chain a tree.
+    const int32_t w0 = l.dynamic();
+    const int32_t weld = l.joint(JointType::weld, ceiling, w0, 5.0f);
+    const int32_t distance = l.joint(JointType::distance, ceiling, l.dynamic());
+    const int32_t mouse = l.joint(JointType::mouse, ceiling, c2);
+
+    JointTrees trees;
+    trees.build(l.constraints, l.joints, l.bodies, l.states);
+    I2D_CHECK(all_exact(l, hung, 4));
+    I2D_CHECK(all_exact(l, free_tree, 2, 0));
+    I2D_CHECK(all_exact(l, bridge, 3, 0));
+    I2D_CHECK(all_exact(l, loop, 4, 0));
+    I2D_CHECK(all_exact(l, from_kinematic, 1));
+    I2D_CHECK(all_exact(l, from_sleeper, 1));
+    I2D_CHECK(l.constraints[std::size_t(weld)].exact_rows == exact_angle_row);
+    I2D_CHECK(l.constraints[std::size_t(distance)].exact_rows == 0);
+    I2D_CHECK(l.constraints[std::size_t(mouse)].exact_rows == 0);
+    // The hung chain with its branch, the two single hangers and the weld: four trees.
+    I2D_CHECK(trees.tree_count() == 4);
+
+    // The same layout again keeps the marks; the bridge's far end let go leaves a tree.
+    trees.build(l.constraints, l.joints, l.bodies, l.states);
+    I2D_CHECK(trees.tree_count() == 4 && all_exact(l, hung, 4));
+    l.joints[l.constraints[std::size_t(bridge + 2)].joint].def.type = JointType::filter;
+    trees.build(l.constraints, l.joints, l.bodies, l.states);
+    I2D_CHECK(all_exact(l, bridge, 2));
+    I2D_CHECK(l.constraints[std::size_t(bridge + 2)].exact_rows == 0);
+    I2D_CHECK(trees.tree_count() == 5);
+}
