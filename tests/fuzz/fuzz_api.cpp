@@ -557,7 +557,9 @@ void run_shape_call(FuzzInput& in, uint8_t op) {
             def.count = count > 12 ? 12 : count;
             def.is_loop = in.flag();
             def.materials = in.byte() < 245 ? materials : nullptr;
-            def.material_count = in.flag() ? in.count(9) : 0;
+            // As many as the array holds at most: count() may say one more.
+            const int32_t material_count = in.flag() ? in.count(9) : 0;
+            def.material_count = material_count > 9 ? 9 : material_count;
             def.filter = filter(in);
             if (in.byte() > 250) {
                 def.internal_cookie = in.u32();
@@ -922,8 +924,10 @@ void run_query_call(FuzzInput& in, uint8_t op) {
                                      in.byte() < 245 ? ray_callback : nullptr, &context);
             } else {
                 i2d_shape_id out[16];
+                // count() may say 17 (one past its limit), which this buffer cannot take.
+                const int32_t capacity = in.count(16);
                 i2d_world_overlap_shape_ids(w, in.byte() < 245 ? &proxy : nullptr, query_filter(in), out,
-                                            in.count(16));
+                                            capacity > 16 ? 16 : capacity);
                 i2d_world_overlap_shape(w, &proxy, query_filter(in), in.byte() < 245 ? overlap_callback : nullptr,
                                         &context);
             }
