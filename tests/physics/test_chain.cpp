@@ -188,7 +188,8 @@ Crush crush_through_floor(CrushedShape kind) {
         const i2d_body_def def = body_def(I2D_BODY_DYNAMIC, i2d_vec2{10.0f, half});
         shape = i2d_body_create(scene.world, &def);
         i2d_shape_def sd = shape_def(grip);
-        I2D_CHECK(!I2D_IS_NULL(i2d_shape_create_capsule(shape, &sd, i2d_vec2{-0.3f, 0.0f}, i2d_vec2{0.3f, 0.0f}, half)));
+        const i2d_vec2 end1{-0.3f, 0.0f}, end2{0.3f, 0.0f};
+        I2D_CHECK(!I2D_IS_NULL(i2d_shape_create_capsule(shape, &sd, end1, end2, half)));
     }
     i2d_body_def plate_def = body_def(I2D_BODY_KINEMATIC, i2d_vec2{10.0f, 2.0f * half + start_gap + plate_half});
     const i2d_body_id plate = scene.box(plate_def, 5.0f, plate_half, grip);

@@ -232,7 +232,8 @@ I2D_TEST(phys_joint_chain_with_100kg_weight_released_level_keeps_its_energy) {
         highest = std::max(highest, energy());
         for (std::size_t i = 0; i + 1 < c.bodies.size(); ++i) {
             const i2d_vec2 a = i2d_body_get_world_point(c.bodies[i], link_far);
-            const i2d_vec2 b = i2d_body_get_world_point(c.bodies[i + 1], i + 2 == c.bodies.size() ? weight_near : link_near);
+            const i2d_vec2 near_end = i + 2 == c.bodies.size() ? weight_near : link_near;
+            const i2d_vec2 b = i2d_body_get_world_point(c.bodies[i + 1], near_end);
             widest = std::max(widest, std::hypot(double(a.x - b.x), double(a.y - b.y)));
         }
         for (const i2d_body_id b : c.bodies) {

@@ -282,8 +282,8 @@ void run_soak(int steps, uint64_t seed) {
     }
     scene.check("end of soak");
     const long resident_at_end = resident_kib();
-    std::printf("soak: %d steps, %d bodies at the end, memory held %ld KiB after %d steps, %ld KiB at the end\n", steps,
-                scene.population(), resident_after_settle, settle, resident_at_end);
+    std::printf("soak: %d steps, %d bodies at the end, memory held %ld KiB after %d steps, %ld KiB at the end\n",
+                steps, scene.population(), resident_after_settle, settle, resident_at_end);
     if (resident_after_settle > 0 && resident_at_end > 0) {
         I2D_CHECK(resident_at_end - resident_after_settle <= 1024);
     }
