@@ -118,11 +118,16 @@ void JointTrees::build(std::vector<JointConstraint>& constraints, const Pool<Joi
     };
     for (int32_t k = 0; k < count; ++k) {
         const JointDef& d = joints[constraints[std::size_t(k)].joint].def;
+        const Body& a = bodies[d.body_a];
+        const Body& b = bodies[d.body_b];
         int32_t* key = &key_scratch_[std::size_t(key_width * k)];
         key[0] = constraints[std::size_t(k)].joint;
-        key[1] = d.type == JointType::mouse ? null_index : state_if_moving(bodies[d.body_a]);
-        key[2] = state_if_moving(bodies[d.body_b]);
-        key[3] = exact_rows_of(d);
+        key[1] = d.type == JointType::mouse ? null_index : state_if_moving(a);
+        key[2] = state_if_moving(b);
+        // An angle row neither body can turn (fixed rotation, or fixed) has nothing to solve.
+        const bool turns =
+            (key[1] != null_index && a.inv_inertia > 0.0f) || (key[2] != null_index && b.inv_inertia > 0.0f);
+        key[3] = exact_rows_of(d) & (turns ? 0xff : ~uint8_t(exact_angle_row));
     }
     if (key_scratch_ == built_key_ && !tree_starts_.empty()) {
         return;  // the same joints between the same states: the trees and marks hold

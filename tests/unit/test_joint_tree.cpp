@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: MIT
 // JointTrees' choice of joints: the rigid rows of trees hung from one body that does not
 // move are solved exactly; free trees, loops and trees hung twice are left to the sweep,
-// and so are kinds without rigid rows. The solving itself is checked against closed forms
-// by the physics suite (test_joints_chain.cpp, test_joints_weld.cpp).
+// and so are kinds without rigid rows and angle rows that no body can turn. The solving
+// itself is checked against closed forms by the physics suite (test_joints_chain.cpp,
+// test_joints_weld.cpp).
 #include <vector>
 
 #include "check.h"
@@ -20,9 +21,11 @@ struct Layout {
     std::vector<JointConstraint> constraints;
     int32_t states = 0;
 
-    int32_t body(BodyType type, bool awake = true) {
+    int32_t body(BodyType type, bool awake = true, bool turns = true) {
         const int32_t b = bodies.allocate();
         bodies[b].type = type;
+        bodies[b].inv_mass = type == BodyType::dynamic ? 1.0f : 0.0f;
+        bodies[b].inv_inertia = type == BodyType::dynamic && turns ? 1.0f : 0.0f;
         bodies[b].awake_index = type != BodyType::static_body && awake ? states++ : null_index;
         return b;
     }
@@ -86,6 +89,9 @@ I2D_TEST(unit_joint_trees_take_hanging_trees_and_leave_the_rest_to_the_sweep) {
     const int32_t weld = l.joint(JointType::weld, ceiling, w0, 5.0f);
     const int32_t distance = l.joint(JointType::distance, ceiling, l.dynamic());
     const int32_t mouse = l.joint(JointType::mouse, ceiling, c2);
+    // A rigid weld to a body that cannot turn gives its point only.
+    const int32_t slider = l.body(BodyType::dynamic, true, false);
+    const int32_t fixed_turn_weld = l.joint(JointType::weld, ceiling, slider);
 
     JointTrees trees;
     trees.build(l.constraints, l.joints, l.bodies, l.states);
@@ -98,15 +104,16 @@ I2D_TEST(unit_joint_trees_take_hanging_trees_and_leave_the_rest_to_the_sweep) {
     I2D_CHECK(l.constraints[std::size_t(weld)].exact_rows == exact_angle_row);
     I2D_CHECK(l.constraints[std::size_t(distance)].exact_rows == 0);
     I2D_CHECK(l.constraints[std::size_t(mouse)].exact_rows == 0);
-    // The hung chain with its branch, the two single hangers and the weld: four trees.
-    I2D_CHECK(trees.tree_count() == 4);
+    I2D_CHECK(l.constraints[std::size_t(fixed_turn_weld)].exact_rows == exact_point_rows);
+    // The hung chain with its branch, the two single hangers and the two welds: five trees.
+    I2D_CHECK(trees.tree_count() == 5);
 
     // The same layout again keeps the marks; the bridge's far end let go leaves a tree.
     trees.build(l.constraints, l.joints, l.bodies, l.states);
-    I2D_CHECK(trees.tree_count() == 4 && all_exact(l, hung, 4));
+    I2D_CHECK(trees.tree_count() == 5 && all_exact(l, hung, 4));
     l.joints[l.constraints[std::size_t(bridge + 2)].joint].def.type = JointType::filter;
     trees.build(l.constraints, l.joints, l.bodies, l.states);
     I2D_CHECK(all_exact(l, bridge, 2));
     I2D_CHECK(l.constraints[std::size_t(bridge + 2)].exact_rows == 0);
-    I2D_CHECK(trees.tree_count() == 5);
+    I2D_CHECK(trees.tree_count() == 6);
 }
