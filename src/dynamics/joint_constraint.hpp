@@ -214,35 +214,65 @@ inline float spring_impulse(float error, float cdot, float mass, const SpringRow
     return impulse;
 }
 
+/// How far past the speed limits a joint's pass may leave a body before it counts as
+/// running away.
+constexpr float joint_runaway_factor = 16.0f;
+
+/// Whether the joint left both bodies short of running away (NaN fails). A joint
+/// fighting another on one body (two that cannot both hold) drives the velocities and
+/// its impulses up without end, doubling within a few passes; a sound joint may pass the
+/// speed limits for a pass (integration brings the body back under them) but never by
+/// this much, and stopping it there would tear ragdolls landing fast.
+inline bool within_limits(const JointBodies& j, const JointStep& step) {
+    const float v = joint_runaway_factor * step.max_speed, w = joint_runaway_factor * step.max_spin;
+    return length_squared(j.va) <= v * v && length_squared(j.vb) <= v * v && (j.wa < 0.0f ? -j.wa : j.wa) <= w &&
+           (j.wb < 0.0f ? -j.wb : j.wb) <= w;
+}
+
+/// One joint's pass over its bodies' states: load, `pass`, store; a pass that would
+/// leave a body running away is undone and the joint gives up its impulses, starting
+/// over.
+template <class Pass>
+inline void guarded_pass(JointConstraint& c, BodyState* states, const JointStep& step, Pass&& pass) {
+    JointBodies j = load_bodies(c, states);
+    pass(j);
+    if (!within_limits(j, step)) {
+        j = load_bodies(c, states);  // the states are untouched until store_bodies
+        c.impulses = {};
+    }
+    store_bodies(c, j, states);
+}
+
 // The kinds (joint_<kind>.cpp). prepare fills what the kind needs beyond the common
-// fields; solve runs one pass (use_bias: the pass that pushes errors out).
+// fields; warm start and solve run one guarded pass (use_bias: the pass that pushes
+// errors out).
 void prepare_revolute(JointConstraint& c, const JointStep& step);
-void warm_start_revolute(const JointConstraint& c, JointBodies& j);
-void solve_revolute(JointConstraint& c, JointBodies& j, const JointStep& step, bool use_bias);
+void warm_start_revolute(JointConstraint& c, BodyState* states, const JointStep& step);
+void solve_revolute(JointConstraint& c, BodyState* states, const JointStep& step, bool use_bias);
 
 void prepare_prismatic(JointConstraint& c, const JointStep& step);
-void warm_start_prismatic(const JointConstraint& c, JointBodies& j);
-void solve_prismatic(JointConstraint& c, JointBodies& j, const JointStep& step, bool use_bias);
+void warm_start_prismatic(JointConstraint& c, BodyState* states, const JointStep& step);
+void solve_prismatic(JointConstraint& c, BodyState* states, const JointStep& step, bool use_bias);
 
 void prepare_distance(JointConstraint& c, const JointStep& step);
-void warm_start_distance(const JointConstraint& c, JointBodies& j);
-void solve_distance(JointConstraint& c, JointBodies& j, const JointStep& step, bool use_bias);
+void warm_start_distance(JointConstraint& c, BodyState* states, const JointStep& step);
+void solve_distance(JointConstraint& c, BodyState* states, const JointStep& step, bool use_bias);
 
 void prepare_weld(JointConstraint& c, const JointStep& step);
-void warm_start_weld(const JointConstraint& c, JointBodies& j);
-void solve_weld(JointConstraint& c, JointBodies& j, const JointStep& step, bool use_bias);
+void warm_start_weld(JointConstraint& c, BodyState* states, const JointStep& step);
+void solve_weld(JointConstraint& c, BodyState* states, const JointStep& step, bool use_bias);
 
 void prepare_wheel(JointConstraint& c, const JointStep& step);
-void warm_start_wheel(const JointConstraint& c, JointBodies& j);
-void solve_wheel(JointConstraint& c, JointBodies& j, const JointStep& step, bool use_bias);
+void warm_start_wheel(JointConstraint& c, BodyState* states, const JointStep& step);
+void solve_wheel(JointConstraint& c, BodyState* states, const JointStep& step, bool use_bias);
 
 void prepare_motor(JointConstraint& c, const JointStep& step);
-void warm_start_motor(const JointConstraint& c, JointBodies& j);
-void solve_motor(JointConstraint& c, JointBodies& j, const JointStep& step, bool use_bias);
+void warm_start_motor(JointConstraint& c, BodyState* states, const JointStep& step);
+void solve_motor(JointConstraint& c, BodyState* states, const JointStep& step, bool use_bias);
 
 void prepare_mouse(JointConstraint& c, const JointStep& step);
-void warm_start_mouse(const JointConstraint& c, JointBodies& j);
-void solve_mouse(JointConstraint& c, JointBodies& j, const JointStep& step, bool use_bias);
+void warm_start_mouse(JointConstraint& c, BodyState* states, const JointStep& step);
+void solve_mouse(JointConstraint& c, BodyState* states, const JointStep& step, bool use_bias);
 
 /// What the joint did to body B in the last substep, as a force and torque (N, N m),
 /// and its motor's force or torque, with the bodies where the step left them.

@@ -44,13 +44,15 @@ void prepare_distance(JointConstraint& c, const JointStep& step) {
     c.spring = s.enable_spring ? make_spring(s.hertz, s.damping_ratio, step.h) : SpringRow{};
 }
 
-void warm_start_distance(const JointConstraint& c, JointBodies& j) {
+namespace {
+
+void warm_start_distance_bodies(const JointConstraint& c, JointBodies& j) {
     const JointImpulses& p = c.impulses;
     const DistanceFrame f = distance_frame(c, j);
     apply_linear(c, j, f.ra, f.rb, (p.axial + p.motor + p.lower - p.upper) * f.axis);
 }
 
-void solve_distance(JointConstraint& c, JointBodies& j, const JointStep& step, bool use_bias) {
+void solve_distance_bodies(JointConstraint& c, JointBodies& j, const JointStep& step, bool use_bias) {
     const DistanceSettings& s = c.def->distance;
     JointImpulses& p = c.impulses;
     const DistanceFrame f = distance_frame(c, j);
@@ -79,6 +81,16 @@ void solve_distance(JointConstraint& c, JointBodies& j, const JointStep& step, b
                                           use_bias);
         apply_linear(c, j, f.ra, f.rb, -upper * f.axis);
     }
+}
+
+}  // namespace
+
+void warm_start_distance(JointConstraint& c, BodyState* states, const JointStep& step) {
+    guarded_pass(c, states, step, [&c](JointBodies& j) { warm_start_distance_bodies(c, j); });
+}
+
+void solve_distance(JointConstraint& c, BodyState* states, const JointStep& step, bool use_bias) {
+    guarded_pass(c, states, step, [&](JointBodies& j) { solve_distance_bodies(c, j, step, use_bias); });
 }
 
 }  // namespace i2d

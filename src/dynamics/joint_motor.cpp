@@ -13,14 +13,16 @@ void prepare_motor(JointConstraint& c, const JointStep&) {
     c.axial_mass = inverse_or_zero(c.inv_inertia_a + c.inv_inertia_b);
 }
 
-void warm_start_motor(const JointConstraint& c, JointBodies& j) {
+namespace {
+
+void warm_start_motor_bodies(const JointConstraint& c, JointBodies& j) {
     const Vec2 ra = rotate(j.dqa, c.anchor_a), rb = rotate(j.dqb, c.anchor_b);
     apply_linear(c, j, ra, rb, c.impulses.linear);
     apply_angular(c, j, c.impulses.angular);
 }
 
 // Both passes: the correction is the joint's behaviour, not an error to relax away.
-void solve_motor(JointConstraint& c, JointBodies& j, const JointStep& step, bool) {
+void solve_motor_bodies(JointConstraint& c, JointBodies& j, const JointStep& step, bool) {
     const MotorSettings& s = c.def->motor;
     JointImpulses& p = c.impulses;
     const float rate = s.correction_factor * step.inv_h;
@@ -41,6 +43,16 @@ void solve_motor(JointConstraint& c, JointBodies& j, const JointStep& step, bool
     }
     apply_linear(c, j, ra, rb, wanted - p.linear);
     p.linear = wanted;
+}
+
+}  // namespace
+
+void warm_start_motor(JointConstraint& c, BodyState* states, const JointStep& step) {
+    guarded_pass(c, states, step, [&c](JointBodies& j) { warm_start_motor_bodies(c, j); });
+}
+
+void solve_motor(JointConstraint& c, BodyState* states, const JointStep& step, bool use_bias) {
+    guarded_pass(c, states, step, [&](JointBodies& j) { solve_motor_bodies(c, j, step, use_bias); });
 }
 
 }  // namespace i2d

@@ -13,12 +13,14 @@ void prepare_mouse(JointConstraint& c, const JointStep& step) {
     c.spring = s.hertz > 0.0f ? make_spring(s.hertz, s.damping_ratio, step.h) : SpringRow{};
 }
 
-void warm_start_mouse(const JointConstraint& c, JointBodies& j) {
+namespace {
+
+void warm_start_mouse_bodies(const JointConstraint& c, JointBodies& j) {
     const Vec2 rb = rotate(j.dqb, c.anchor_b);
     apply_linear(c, j, Vec2{}, rb, c.impulses.linear);
 }
 
-void solve_mouse(JointConstraint& c, JointBodies& j, const JointStep& step, bool use_bias) {
+void solve_mouse_bodies(JointConstraint& c, JointBodies& j, const JointStep& step, bool use_bias) {
     const MouseSettings& s = c.def->mouse;
     const SpringRow& row = c.spring;
     if (!use_bias && !row.relaxes) {
@@ -36,6 +38,16 @@ void solve_mouse(JointConstraint& c, JointBodies& j, const JointStep& step, bool
     }
     apply_linear(c, j, Vec2{}, rb, wanted - p.linear);
     p.linear = wanted;
+}
+
+}  // namespace
+
+void warm_start_mouse(JointConstraint& c, BodyState* states, const JointStep& step) {
+    guarded_pass(c, states, step, [&c](JointBodies& j) { warm_start_mouse_bodies(c, j); });
+}
+
+void solve_mouse(JointConstraint& c, BodyState* states, const JointStep& step, bool use_bias) {
+    guarded_pass(c, states, step, [&](JointBodies& j) { solve_mouse_bodies(c, j, step, use_bias); });
 }
 
 }  // namespace i2d

@@ -22,14 +22,16 @@ void prepare_prismatic(JointConstraint& c, const JointStep& step) {
     c.spring = s.enable_spring ? make_spring(s.hertz, s.damping_ratio, step.h) : SpringRow{};
 }
 
-void warm_start_prismatic(const JointConstraint& c, JointBodies& j) {
+namespace {
+
+void warm_start_prismatic_bodies(const JointConstraint& c, JointBodies& j) {
     const JointImpulses& p = c.impulses;
     const SlideFrame f = slide_frame(c, j);
     apply_axial(c, j, f, p.axial + p.motor + p.lower - p.upper);
     apply_block(c, j, f, p.linear);
 }
 
-void solve_prismatic(JointConstraint& c, JointBodies& j, const JointStep& step, bool use_bias) {
+void solve_prismatic_bodies(JointConstraint& c, JointBodies& j, const JointStep& step, bool use_bias) {
     const PrismaticSettings& s = c.def->prismatic;
     JointImpulses& p = c.impulses;
     const SlideFrame f = slide_frame(c, j);
@@ -57,6 +59,16 @@ void solve_prismatic(JointConstraint& c, JointBodies& j, const JointStep& step, 
     const Vec2 impulse = -soft.mass_scale * b - soft.impulse_scale * p.linear;
     p.linear += impulse;
     apply_block(c, j, f, impulse);
+}
+
+}  // namespace
+
+void warm_start_prismatic(JointConstraint& c, BodyState* states, const JointStep& step) {
+    guarded_pass(c, states, step, [&c](JointBodies& j) { warm_start_prismatic_bodies(c, j); });
+}
+
+void solve_prismatic(JointConstraint& c, BodyState* states, const JointStep& step, bool use_bias) {
+    guarded_pass(c, states, step, [&](JointBodies& j) { solve_prismatic_bodies(c, j, step, use_bias); });
 }
 
 }  // namespace i2d

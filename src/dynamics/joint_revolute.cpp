@@ -15,14 +15,14 @@ void prepare_revolute(JointConstraint& c, const JointStep& step) {
                      (s.enable_motor && turns ? motor_row : 0) | (s.enable_limit && turns ? limit_row : 0));
 }
 
-void warm_start_revolute(const JointConstraint& c, JointBodies& j) {
+namespace {
+
+void warm_start_revolute_bodies(const JointConstraint& c, JointBodies& j) {
     const JointImpulses& p = c.impulses;
     const Vec2 ra = rotate(j.dqa, c.anchor_a), rb = rotate(j.dqb, c.anchor_b);
     apply_linear(c, j, ra, rb, p.linear);
     apply_angular(c, j, p.spring + p.motor + p.lower - p.upper);
 }
-
-namespace {
 
 // The spring, motor and limit rows, those the joint has.
 void solve_revolute_rows(JointConstraint& c, JointBodies& j, const JointStep& step, bool use_bias) {
@@ -44,9 +44,7 @@ void solve_revolute_rows(JointConstraint& c, JointBodies& j, const JointStep& st
     }
 }
 
-}  // namespace
-
-void solve_revolute(JointConstraint& c, JointBodies& j, const JointStep& step, bool use_bias) {
+void solve_revolute_bodies(JointConstraint& c, JointBodies& j, const JointStep& step, bool use_bias) {
     JointImpulses& p = c.impulses;
     if (c.rows != 0) {
         solve_revolute_rows(c, j, step, use_bias);
@@ -62,6 +60,16 @@ void solve_revolute(JointConstraint& c, JointBodies& j, const JointStep& step, b
     const Vec2 impulse = -soft.mass_scale * b - soft.impulse_scale * p.linear;
     p.linear += impulse;
     apply_linear(c, j, ra, rb, impulse);
+}
+
+}  // namespace
+
+void warm_start_revolute(JointConstraint& c, BodyState* states, const JointStep& step) {
+    guarded_pass(c, states, step, [&c](JointBodies& j) { warm_start_revolute_bodies(c, j); });
+}
+
+void solve_revolute(JointConstraint& c, BodyState* states, const JointStep& step, bool use_bias) {
+    guarded_pass(c, states, step, [&](JointBodies& j) { solve_revolute_bodies(c, j, step, use_bias); });
 }
 
 }  // namespace i2d

@@ -11,10 +11,6 @@ namespace i2d {
 
 namespace {
 
-// How far past the speed limits a joint's pass may leave a body before it counts as
-// running away.
-constexpr float runaway_factor = 16.0f;
-
 // Where a kind's anchors sit and what angle counts as zero. The motor joint aims B's
 // origin at its offset point of A; the mouse joint's A plays no part.
 struct JointFrame {
@@ -30,17 +26,6 @@ JointFrame frame_of(const JointDef& d) {
         case JointType::motor: return {d.motor.linear_offset, Vec2{}, d.motor.angular_offset};
         default: return {d.local_anchor_a, d.local_anchor_b, 0.0f};
     }
-}
-
-// Whether the joint left both bodies short of running away (NaN fails). A joint
-// fighting another on one body (two that cannot both hold) drives the velocities and
-// its impulses up without end, doubling within a few passes; a sound joint may pass the
-// speed limits for a pass (integration brings the body back under them) but never by
-// this much, and stopping it there would tear ragdolls landing fast.
-bool within_limits(const JointBodies& j, const JointStep& step) {
-    const float v = runaway_factor * step.max_speed, w = runaway_factor * step.max_spin;
-    return length_squared(j.va) <= v * v && length_squared(j.vb) <= v * v && std::fabs(j.wa) <= w &&
-           std::fabs(j.wb) <= w;
 }
 
 // The constraints lie in solve order, but each reads its kind's settings (limits, motor,
@@ -133,26 +118,23 @@ void JointSolver::prepare(const Pool<Joint>& joints, const Pool<Body>& bodies, i
     }
 }
 
-// A joint whose impulses would break the speed limits gives them up and starts over.
+// Each kind runs its pass through guarded_pass (joint_constraint.hpp) in its own file, so
+// that the bodies' velocities stay in registers from load to store: passed to a kind's
+// functions by reference, they went through memory between the call and the guard, a
+// third of a joint_grid step's joint time.
 void JointSolver::warm_start(int32_t begin, int32_t end, BodyState* states) {
     for (int32_t k = begin; k < end; ++k) {
         JointConstraint& c = constraints_[std::size_t(k)];
-        JointBodies j = load_bodies(c, states);
         switch (c.type) {
-            case JointType::revolute: warm_start_revolute(c, j); break;
-            case JointType::prismatic: warm_start_prismatic(c, j); break;
-            case JointType::distance: warm_start_distance(c, j); break;
-            case JointType::weld: warm_start_weld(c, j); break;
-            case JointType::wheel: warm_start_wheel(c, j); break;
-            case JointType::motor: warm_start_motor(c, j); break;
-            case JointType::mouse: warm_start_mouse(c, j); break;
+            case JointType::revolute: warm_start_revolute(c, states, step_); break;
+            case JointType::prismatic: warm_start_prismatic(c, states, step_); break;
+            case JointType::distance: warm_start_distance(c, states, step_); break;
+            case JointType::weld: warm_start_weld(c, states, step_); break;
+            case JointType::wheel: warm_start_wheel(c, states, step_); break;
+            case JointType::motor: warm_start_motor(c, states, step_); break;
+            case JointType::mouse: warm_start_mouse(c, states, step_); break;
             default: break;
         }
-        if (!within_limits(j, step_)) {
-            j = load_bodies(c, states);  // the states are untouched until store_bodies
-            c.impulses = {};
-        }
-        store_bodies(c, j, states);
     }
 }
 
@@ -160,22 +142,16 @@ void JointSolver::solve(int32_t begin, int32_t end, BodyState* states, bool use_
     for (int32_t k = begin; k < end; ++k) {
         prefetch_settings(constraints_, k, end);
         JointConstraint& c = constraints_[std::size_t(k)];
-        JointBodies j = load_bodies(c, states);
         switch (c.type) {
-            case JointType::revolute: solve_revolute(c, j, step_, use_bias); break;
-            case JointType::prismatic: solve_prismatic(c, j, step_, use_bias); break;
-            case JointType::distance: solve_distance(c, j, step_, use_bias); break;
-            case JointType::weld: solve_weld(c, j, step_, use_bias); break;
-            case JointType::wheel: solve_wheel(c, j, step_, use_bias); break;
-            case JointType::motor: solve_motor(c, j, step_, use_bias); break;
-            case JointType::mouse: solve_mouse(c, j, step_, use_bias); break;
+            case JointType::revolute: solve_revolute(c, states, step_, use_bias); break;
+            case JointType::prismatic: solve_prismatic(c, states, step_, use_bias); break;
+            case JointType::distance: solve_distance(c, states, step_, use_bias); break;
+            case JointType::weld: solve_weld(c, states, step_, use_bias); break;
+            case JointType::wheel: solve_wheel(c, states, step_, use_bias); break;
+            case JointType::motor: solve_motor(c, states, step_, use_bias); break;
+            case JointType::mouse: solve_mouse(c, states, step_, use_bias); break;
             default: break;
         }
-        if (!within_limits(j, step_)) {
-            j = load_bodies(c, states);  // the states are untouched until store_bodies
-            c.impulses = {};
-        }
-        store_bodies(c, j, states);
     }
 }
 

@@ -26,13 +26,15 @@ void prepare_weld(JointConstraint& c, const JointStep& step) {
     c.angular_spring = make_spring(s.angular_hertz, s.angular_damping_ratio, step.h);
 }
 
-void warm_start_weld(const JointConstraint& c, JointBodies& j) {
+namespace {
+
+void warm_start_weld_bodies(const JointConstraint& c, JointBodies& j) {
     const Vec2 ra = rotate(j.dqa, c.anchor_a), rb = rotate(j.dqb, c.anchor_b);
     apply_linear(c, j, ra, rb, c.impulses.linear);
     apply_angular(c, j, c.impulses.angular);
 }
 
-void solve_weld(JointConstraint& c, JointBodies& j, const JointStep& step, bool use_bias) {
+void solve_weld_bodies(JointConstraint& c, JointBodies& j, const JointStep& step, bool use_bias) {
     const WeldSettings& s = c.def->weld;
     JointImpulses& p = c.impulses;
     if (c.axial_mass > 0.0f && (c.exact_rows & exact_angle_row) == 0) {
@@ -49,6 +51,16 @@ void solve_weld(JointConstraint& c, JointBodies& j, const JointStep& step, bool 
     const Vec2 impulse = -solve22(point_mass_matrix(c, ra, rb), rate) - row.impulse_scale * p.linear;
     p.linear += impulse;
     apply_linear(c, j, ra, rb, impulse);
+}
+
+}  // namespace
+
+void warm_start_weld(JointConstraint& c, BodyState* states, const JointStep& step) {
+    guarded_pass(c, states, step, [&c](JointBodies& j) { warm_start_weld_bodies(c, j); });
+}
+
+void solve_weld(JointConstraint& c, BodyState* states, const JointStep& step, bool use_bias) {
+    guarded_pass(c, states, step, [&](JointBodies& j) { solve_weld_bodies(c, j, step, use_bias); });
 }
 
 }  // namespace i2d

@@ -12,7 +12,9 @@ void prepare_wheel(JointConstraint& c, const JointStep& step) {
     c.spring = s.enable_spring ? make_spring(s.hertz, s.damping_ratio, step.h) : SpringRow{};
 }
 
-void warm_start_wheel(const JointConstraint& c, JointBodies& j) {
+namespace {
+
+void warm_start_wheel_bodies(const JointConstraint& c, JointBodies& j) {
     const JointImpulses& p = c.impulses;
     const SlideFrame f = slide_frame(c, j);
     apply_axial(c, j, f, p.axial + p.lower - p.upper);
@@ -20,7 +22,7 @@ void warm_start_wheel(const JointConstraint& c, JointBodies& j) {
     apply_angular(c, j, p.motor);
 }
 
-void solve_wheel(JointConstraint& c, JointBodies& j, const JointStep& step, bool use_bias) {
+void solve_wheel_bodies(JointConstraint& c, JointBodies& j, const JointStep& step, bool use_bias) {
     const WheelSettings& s = c.def->wheel;
     JointImpulses& p = c.impulses;
     const float turn_mass = inverse_or_zero(c.inv_inertia_a + c.inv_inertia_b);
@@ -44,6 +46,16 @@ void solve_wheel(JointConstraint& c, JointBodies& j, const JointStep& step, bool
     const float impulse = -inverse_or_zero(k) * soft.mass_scale * (cdot + bias) - soft.impulse_scale * p.linear.x;
     p.linear.x += impulse;
     apply_perpendicular(c, j, f, impulse);
+}
+
+}  // namespace
+
+void warm_start_wheel(JointConstraint& c, BodyState* states, const JointStep& step) {
+    guarded_pass(c, states, step, [&c](JointBodies& j) { warm_start_wheel_bodies(c, j); });
+}
+
+void solve_wheel(JointConstraint& c, BodyState* states, const JointStep& step, bool use_bias) {
+    guarded_pass(c, states, step, [&](JointBodies& j) { solve_wheel_bodies(c, j, step, use_bias); });
 }
 
 }  // namespace i2d
