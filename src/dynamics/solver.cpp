@@ -75,7 +75,11 @@ void Solver::step(float time_step, int32_t substep_count) {
     color_constraints();
     contact_solver_.lay_out(contact_layout());
     joint_solver_.lay_out(ordered_joints_.data(), int32_t(ordered_joints_.size()));
-    joint_solver_.build_trees(links_.joints, links_.bodies, awake);
+    if (joints_regathered_) {
+        // What the trees depend on (the joints, their settings, their bodies' types, masses
+        // and places) moves the joint set's or the islands' version.
+        joint_solver_.build_trees(links_.joints, links_.bodies, awake);
+    }
     lay_out_color_runs();
     if (links_.settings.enable_sleep) {
         links_.islands.begin_rest_times();
@@ -339,8 +343,10 @@ void Solver::color_constraints() {
     // The joints to solve change only with the joints or the awake list.
     const uint64_t joint_version = links_.joint_set.version(), awake_version = links_.islands.awake_version();
     bool joints_differ = false;
+    joints_regathered_ = false;
     if (!gathered_ || joint_version != gathered_joint_version_ || awake_version != gathered_awake_version_) {
         gathered_ = true;
+        joints_regathered_ = true;
         gathered_joint_version_ = joint_version;
         gathered_awake_version_ = awake_version;
         links_.joint_set.gather_awake(links_.islands.awake_bodies(), awake_joints_);

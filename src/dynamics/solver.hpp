@@ -130,6 +130,7 @@ private:
     // the two states it moves, or -1), as last coloured.
     std::vector<int32_t> awake_joints_;
     bool gathered_ = false;
+    bool joints_regathered_ = false;  // this step gathered the joints again (build the trees)
     uint64_t gathered_joint_version_ = 0, gathered_awake_version_ = 0;
     std::vector<int32_t> joint_key_, colored_joint_key_;
     std::vector<int8_t> joint_colors_;  // per awake joint, or -1 when it moves nothing

@@ -245,6 +245,7 @@ void World::destroy_chain(int32_t chain) {
 // make it static in disguise. Inertia is summed about the body origin, then moved to the
 // centre of mass by the parallel axis theorem.
 void World::update_mass(int32_t body) {
+    joints_.touch();  // a body that can no longer turn gives its joints' trees no angle rows
     Body& b = bodies[body];
     b.mass = b.inv_mass = b.inertia = b.inv_inertia = 0.0f;
     b.max_extent = 0.0f;

@@ -34,6 +34,7 @@ void World::destroy_joint(int32_t joint) {
 
 void World::joint_changed(int32_t joint) {
     const JointDef& def = joints[joint].def;
+    joints_.touch();  // a setting may change which rows the tree pass takes
     wake_body(def.body_a);
     wake_body(def.body_b);
     if (def.collide_connected) {

@@ -21,7 +21,7 @@ const i2d_vec2 cantilever_wall{0.0f, 10.0f};
 
 // The cantilever's boxes, from the wall out, each welded to the one before at their
 // shared end (the first to a static body at the wall).
-std::vector<i2d_body_id> build_cantilever(Scene& s) {
+std::vector<i2d_body_id> build_cantilever(Scene& s, std::vector<i2d_joint_id>* welds = nullptr) {
     i2d_body_id previous = s.anchor(cantilever_wall);
     std::vector<i2d_body_id> boxes;
     for (int i = 0; i < cantilever_boxes; ++i) {
@@ -29,9 +29,14 @@ std::vector<i2d_body_id> build_cantilever(Scene& s) {
         const i2d_body_id box = s.dynamic_box(i2d_vec2{left + box_half_length, cantilever_wall.y}, box_half_length,
                                               box_half_height);
         i2d_weld_joint_def def = i2d_default_weld_joint_def();
-        if (I2D_IS_NULL(box) ||
-            I2D_IS_NULL(i2d_joint_create_weld(s.world, &join_at(def, previous, box, i2d_vec2{left, cantilever_wall.y})))) {
+        const i2d_joint_id weld =
+            I2D_IS_NULL(box) ? I2D_NULL_JOINT_ID
+                             : i2d_joint_create_weld(s.world, &join_at(def, previous, box, i2d_vec2{left, cantilever_wall.y}));
+        if (I2D_IS_NULL(weld)) {
             return {};
+        }
+        if (welds != nullptr) {
+            welds->push_back(weld);
         }
         boxes.push_back(box);
         previous = box;
@@ -129,4 +134,37 @@ I2D_TEST(phys_joint_weld_cantilever_of_10_boxes_stays_joined) {
             1000.0 * max_gap);
     I2D_CHECK(finite);
     I2D_CHECK(widest < max_gap);
+}
+
+// The welds' settings decide at every step how they are held: made springs (2 Hz) by
+// their setters, they leave the tree pass and the cantilever sags as soft welds let it
+// (more than 10 cm); made rigid again, they rejoin it and pull the cantilever back up
+// (its tip within 1 cm of the wall's height).
+I2D_TEST(phys_joint_weld_cantilever_follows_its_welds_settings) {
+    constexpr double rigid_drop = 0.001, soft_drop = 0.1, recovered_drop = 0.01;  // m
+    constexpr float spring_hertz = 2.0f;
+    Scene s;
+    std::vector<i2d_joint_id> welds;
+    const std::vector<i2d_body_id> boxes = build_cantilever(s, &welds);
+    I2D_REQUIRE(boxes.size() == std::size_t(cantilever_boxes));
+    const auto tip_drop = [&] {
+        return double(cantilever_wall.y) - double(i2d_body_get_world_point(boxes.back(), {box_half_length, 0.0f}).y);
+    };
+    I2D_REQUIRE(s.step(steps_for(1.0)));
+    const double rigid = tip_drop();
+    for (const i2d_joint_id weld : welds) {
+        I2D_CHECK(i2d_weld_joint_set_angular_hertz(weld, spring_hertz) == I2D_OK);
+    }
+    I2D_REQUIRE(s.step(steps_for(2.0)));
+    const double soft = tip_drop();
+    for (const i2d_joint_id weld : welds) {
+        I2D_CHECK(i2d_weld_joint_set_angular_hertz(weld, 0.0f) == I2D_OK);
+    }
+    I2D_REQUIRE(s.step(steps_for(3.0)));
+    const double recovered = tip_drop();
+    fprintf(stderr, "    tip drop: rigid %.4f mm, after 2 s as %.0f Hz springs %.1f cm, rigid again after 3 s %.4f mm\n",
+            1000.0 * rigid, double(spring_hertz), 100.0 * soft, 1000.0 * recovered);
+    I2D_CHECK(std::fabs(rigid) < rigid_drop);
+    I2D_CHECK(soft > soft_drop);
+    I2D_CHECK(std::fabs(recovered) < recovered_drop);
 }
