@@ -34,7 +34,10 @@ struct BodyMotion {
     float torque = 0.0f;
     float inv_mass = 0.0f, inv_inertia = 0.0f;
     float gravity_scale = 1.0f;
-    float linear_damping = 0.0f, angular_damping = 0.0f;
+    float linear_damping = 0.0f;  // 1/s
+    // Implicit damping over one substep, v -> v / (1 + h c): the divisions once a step
+    // rather than once a substep, where they cost as much as the rest of the integration.
+    float linear_damping_factor = 1.0f, angular_damping_factor = 1.0f;
     Vec2 free_acceleration;  // gravity and force over mass, m/s^2; zero unless dynamic
     bool is_dynamic = false;
 };

@@ -257,7 +257,8 @@ void Solver::gather_bodies(void* solver, const Stage&, int32_t begin, int32_t en
         m.inv_inertia = b.inv_inertia;
         m.gravity_scale = b.gravity_scale;
         m.linear_damping = b.linear_damping;
-        m.angular_damping = b.angular_damping;
+        m.linear_damping_factor = 1.0f / (1.0f + self.substep_ * b.linear_damping);
+        m.angular_damping_factor = 1.0f / (1.0f + self.substep_ * b.angular_damping);
         m.free_acceleration = free_acceleration(b, gravity, acceleration_limit);
         m.is_dynamic = dynamic;
     }
@@ -478,9 +479,9 @@ void Solver::integrate_velocities(void* solver, const Stage&, int32_t begin, int
         if (m.is_dynamic) {
             v += h * (m.gravity_scale * gravity + m.inv_mass * m.force);
             w += h * m.inv_inertia * m.torque;
-            // Implicit damping: stable for any damping and step, v -> v / (1 + h c).
-            v = (1.0f / (1.0f + h * m.linear_damping)) * v;
-            w = (1.0f / (1.0f + h * m.angular_damping)) * w;
+            // Implicit damping: stable for any damping and step.
+            v = m.linear_damping_factor * v;
+            w = m.angular_damping_factor * w;
         }
         // NaN-safe: an overflow anywhere above fails this test too.
         s.linear_velocity = length_squared(v) <= max_speed * max_speed
