@@ -73,6 +73,11 @@ struct alignas(64) Contact {
     float rolling_resistance = 0.0f;  // torque arm, m
     float tangent_speed = 0.0f;       // m/s along left_perp(normal)
     int32_t awake_index = null_index;  // in the awake contact list, if there
+    // Hit events: the fastest impact the solver pushed against this step, m/s (0: none),
+    // and the point it was at. In the first line with the flags: the end of the step
+    // reads both for every awake contact.
+    float hit_speed = 0.0f;
+    int32_t hit_point = 0;
     ContactPoint points[2];
     // Narrowphase and bookkeeping.
     int32_t shape_a = null_index, shape_b = null_index;  // shape_a < shape_b
@@ -81,16 +86,13 @@ struct alignas(64) Contact {
     // Separation minus dot(centre offset + anchor_b - anchor_a, normal) when the manifold
     // was made, m: what recycling adds the bodies' motion to.
     float base_separations[2] = {};
-    // Hit events: the fastest impact the solver pushed against this step, m/s (0: none),
-    // and the point it was at.
-    float hit_speed = 0.0f;
-    int32_t hit_point = 0;
     // The bodies' rotations and B's pose seen from A when the manifold was made.
     Rot made_rotation_a, made_rotation_b;
     Transform made_relative_pose;
 };
 
 static_assert(offsetof(Contact, points) + sizeof(ContactPoint[2]) <= 128, "solver data in two cache lines");
+static_assert(offsetof(Contact, hit_point) + sizeof(int32_t) <= 64, "the end of the step reads one line");
 
 /// Replaces the contact's points by those of a fresh world-space manifold, anchored at the
 /// bodies' centres of mass, and carries each point's impulses over from the old point

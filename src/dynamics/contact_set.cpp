@@ -518,14 +518,12 @@ void ContactSet::end_step() {
 
 void ContactSet::end_range(void* set, const Stage&, int32_t begin, int32_t end, int32_t) {
     ContactSet& self = *static_cast<ContactSet*>(set);
-    // A short pass over contacts in no order: the flags' line and the hit speed's are
+    // A short pass over contacts in no order: the line of the flags and the hit speed is
     // asked for well ahead.
     constexpr int32_t contacts_ahead = 16;
     for (int32_t k = begin; k < end; ++k) {
         if (k + contacts_ahead < end) {
-            const Contact& ahead = self.contacts_[self.awake_[std::size_t(k + contacts_ahead)]];
-            prefetch_line(&ahead.flags);
-            prefetch_line(&ahead.hit_speed);
+            prefetch_line(&self.contacts_[self.awake_[std::size_t(k + contacts_ahead)]].flags);
         }
         Contact& c = self.contacts_[self.awake_[std::size_t(k)]];
         uint8_t flags = 0;
