@@ -47,6 +47,16 @@ struct alignas(W >= 4 ? 4 * W : 4) ContactBlock {
     ContactPointLanes<W> points[2];
 };
 
+/// What some lane of a block needs beyond a plain contact, so that the solve passes
+/// read only those fields: in a 16-lane block every field is a cache line, and the
+/// passes stream every block from memory. A block's uses are the union of its lanes'.
+enum BlockUses : uint8_t {
+    block_rolls = 1,           // rolling resistance
+    block_conveys = 2,         // a tangent speed other than +0 (moving surfaces)
+    block_tracks_impact = 4,   // a bounce or hit events: impact speeds are followed
+    block_keeps_max_push = 8,  // the largest push per point, for restitution or hit events
+};
+
 /// Softness as the kernels take it (softness.hpp makes it).
 struct LaneSoftness {
     float bias_rate, mass_scale, impulse_scale;
@@ -69,8 +79,9 @@ struct BodyState;
 struct ContactKernels {
     int32_t width;
     const char* name;
-    void (*warm_start)(void* blocks, int32_t count, BodyState* states);
-    void (*solve)(void* blocks, int32_t count, BodyState* states, const SolvePass& pass);
+    // `uses` holds one BlockUses per block.
+    void (*warm_start)(void* blocks, const uint8_t* uses, int32_t count, BodyState* states);
+    void (*solve)(void* blocks, const uint8_t* uses, int32_t count, BodyState* states, const SolvePass& pass);
     void (*restitution)(void* blocks, int32_t count, BodyState* states, float threshold);
 };
 

@@ -12,7 +12,8 @@
 // not apply to a lane leaves its bits alone (not even the sign of a zero changes), so
 // that a block may skip work no lane needs and still give every lane the same bits: a
 // block of single points skips point 2, a block where no point is still approaching
-// skips the impact tracking. The lane types live in anonymous namespaces, so each
+// skips the impact tracking, and a block skips what none of its lanes uses (its
+// BlockUses: rolling, moving surfaces, impact speeds, the largest push). The lane types live in anonymous namespaces, so each
 // translation unit's kernels are its own.
 #pragma once
 
@@ -259,7 +260,7 @@ struct SecondPoint {
 };
 
 template <class L, int W>
-I2D_FORCE_INLINE void warm_start_block(ContactBlock<W>& c, BodyState* states) {
+I2D_FORCE_INLINE void warm_start_block(ContactBlock<W>& c, uint8_t uses, BodyState* states) {
     using F = typename L::F;
     BodyLanes<L> a = BodyLanes<L>::gather(states, c.state_a);
     BodyLanes<L> b = BodyLanes<L>::gather(states, c.state_b);
@@ -275,9 +276,9 @@ I2D_FORCE_INLINE void warm_start_block(ContactBlock<W>& c, BodyState* states) {
             v = Velocities<L>::select(second.lanes, before, v);
         }
     }
-    const F rolling = L::load(c.rolling_impulse);
-    const typename L::M rolls = nonzero<L>(L::load(c.rolling_resistance));
-    if (L::any(rolls)) {
+    if (uses & block_rolls) {
+        const F rolling = L::load(c.rolling_impulse);
+        const typename L::M rolls = nonzero<L>(L::load(c.rolling_resistance));
         v.wa = L::blend(rolls, v.wa, v.wa - pair.ia * rolling);
         v.wb = L::blend(rolls, v.wb, v.wb + pair.ib * rolling);
     }
@@ -358,10 +359,12 @@ I2D_FORCE_INLINE void track_impact(ContactBlock<W>& c, int i, typename L::F sepa
 template <class L, int W>
 I2D_FORCE_INLINE void solve_friction(Velocities<L>& v, ContactBlock<W>& c, const PairLanes<L>& pair,
                                      const PointLanes<L> p[2], const PointImpulse<L> x[2],
-                                     const SecondPoint<L>& second, const typename L::F drift[2],
+                                     const SecondPoint<L>& second, const typename L::F drift[2], bool conveys,
                                      const SolvePass& pass) {
     using F = typename L::F;
-    const F friction = L::load(c.friction), tangent_speed = L::load(c.tangent_speed);
+    // Without moving surfaces every lane's tangent speed is +0, which subtracts exactly.
+    const F friction = L::load(c.friction);
+    const F tangent_speed = conveys ? L::load(c.tangent_speed) : L::splat(0.0f);
     const typename L::M anchored = L::eq(tangent_speed, L::splat(0.0f));
     for (int i = 0; i < (second.any ? 2 : 1); ++i) {
         const Velocities<L> before = v;
@@ -390,9 +393,6 @@ I2D_FORCE_INLINE void solve_rolling(Velocities<L>& v, ContactBlock<W>& c, const 
     using F = typename L::F;
     const F arm = L::load(c.rolling_resistance);
     const typename L::M rolls = nonzero<L>(arm);
-    if (!L::any(rolls)) {
-        return;
-    }
     const F k = pair.ia + pair.ib;
     const F rolling_mass = L::blend(L::gt(k, L::splat(0.0f)), L::splat(0.0f), L::splat(1.0f) / k);
     const F max_torque = arm * normal_total;
@@ -405,7 +405,7 @@ I2D_FORCE_INLINE void solve_rolling(Velocities<L>& v, ContactBlock<W>& c, const 
 }
 
 template <class L, int W>
-I2D_FORCE_INLINE void solve_block(ContactBlock<W>& c, BodyState* states, const SolvePass& pass) {
+I2D_FORCE_INLINE void solve_block(ContactBlock<W>& c, uint8_t uses, BodyState* states, const SolvePass& pass) {
     using F = typename L::F;
     BodyLanes<L> a = BodyLanes<L>::gather(states, c.state_a);
     BodyLanes<L> b = BodyLanes<L>::gather(states, c.state_b);
@@ -416,6 +416,8 @@ I2D_FORCE_INLINE void solve_block(ContactBlock<W>& c, BodyState* states, const S
     PointTerms<L> terms[2];
     PointImpulse<L> x[2];
     F mass[2], drift[2] = {L::splat(0.0f), L::splat(0.0f)};
+    // Without it, the largest push is neither read nor kept: nothing will ask for it.
+    const bool keeps_max_push = (uses & block_keeps_max_push) != 0;
     for (int i = 0; i < points; ++i) {
         p[i] = PointLanes<L>::load(c.points[i]);
         const AnchorOffset<L> offset = AnchorOffset<L>::of(a, b, p[i]);
@@ -424,9 +426,10 @@ I2D_FORCE_INLINE void solve_block(ContactBlock<W>& c, BodyState* states, const S
             drift[i] = offset.drift(pair, p[i]);
         }
         terms[i] = point_terms(pair, separation, pass);
-        x[i] = {L::load(c.points[i].normal_impulse), L::load(c.points[i].max_normal_impulse)};
+        x[i] = {L::load(c.points[i].normal_impulse),
+                keeps_max_push ? L::load(c.points[i].max_normal_impulse) : L::splat(0.0f)};
         mass[i] = L::load(c.points[i].normal_mass);
-        if (pass.use_bias) {
+        if (pass.use_bias && (uses & block_tracks_impact)) {
             track_impact<L, W>(c, i, separation, x[i].max_normal, pass.elapsed);
         }
     }
@@ -438,10 +441,14 @@ I2D_FORCE_INLINE void solve_block(ContactBlock<W>& c, BodyState* states, const S
     solve_normal(v, pair, p, mass, terms, x, active, second.any);
     for (int i = 0; i < points; ++i) {
         L::store(c.points[i].normal_impulse, x[i].normal);
-        L::store(c.points[i].max_normal_impulse, x[i].max_normal);
+        if (keeps_max_push) {
+            L::store(c.points[i].max_normal_impulse, x[i].max_normal);
+        }
     }
-    solve_friction<L, W>(v, c, pair, p, x, second, drift, pass);
-    solve_rolling<L, W>(v, c, pair, (L::splat(0.0f) + x[0].normal) + x[1].normal);
+    solve_friction<L, W>(v, c, pair, p, x, second, drift, (uses & block_conveys) != 0, pass);
+    if (uses & block_rolls) {
+        solve_rolling<L, W>(v, c, pair, (L::splat(0.0f) + x[0].normal) + x[1].normal);
+    }
     v.write_to(a, b);
     a.scatter(states, c.state_a);
     b.scatter(states, c.state_b);
@@ -489,16 +496,16 @@ I2D_FORCE_INLINE void restitution_block(ContactBlock<W>& c, BodyState* states, f
 template <class L>
 struct KernelsOf {
     static constexpr int W = L::width;
-    static void warm_start(void* blocks, int32_t count, BodyState* states) {
+    static void warm_start(void* blocks, const uint8_t* uses, int32_t count, BodyState* states) {
         ContactBlock<W>* c = static_cast<ContactBlock<W>*>(blocks);
         for (int32_t k = 0; k < count; ++k) {
-            warm_start_block<L, W>(c[k], states);
+            warm_start_block<L, W>(c[k], uses[k], states);
         }
     }
-    static void solve(void* blocks, int32_t count, BodyState* states, const SolvePass& pass) {
+    static void solve(void* blocks, const uint8_t* uses, int32_t count, BodyState* states, const SolvePass& pass) {
         ContactBlock<W>* c = static_cast<ContactBlock<W>*>(blocks);
         for (int32_t k = 0; k < count; ++k) {
-            solve_block<L, W>(c[k], states, pass);
+            solve_block<L, W>(c[k], uses[k], states, pass);
         }
     }
     static void restitution(void* blocks, int32_t count, BodyState* states, float threshold) {

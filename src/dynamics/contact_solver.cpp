@@ -41,6 +41,24 @@ void pack_point(ContactPointLanes<W>& p, int lane, const ContactPoint& cp, Vec2 
     p.max_normal_impulse[lane] = 0.0f;
 }
 
+// What the kernels must read for this contact (contact_block.hpp). Restitution's pass
+// needs every point's largest push as soon as any contact in the world is elastic.
+uint8_t uses_of(const Contact& contact, bool keeps_max_push) {
+    uint8_t uses = keeps_max_push ? uint8_t(block_keeps_max_push) : uint8_t(0);
+    if (contact.rolling_resistance != 0.0f) {
+        uses |= block_rolls;
+    }
+    uint32_t tangent_speed_bits;
+    std::memcpy(&tangent_speed_bits, &contact.tangent_speed, sizeof(tangent_speed_bits));
+    if (tangent_speed_bits != 0u) {
+        uses |= block_conveys;
+    }
+    if (contact.restitution != 0.0f || (contact.flags & contact_hit_events) != 0) {
+        uses |= block_tracks_impact | block_keeps_max_push;
+    }
+    return uses;
+}
+
 // One contact into one lane. The block was zeroed: what a contact leaves out (a second
 // point, padding lanes) stays zero, which the kernels read as nothing to do.
 template <int W>
@@ -143,6 +161,7 @@ void ContactSolver::lay_out_colors(const ContactLayout& layout) {
         }
     }
     blocks<W>().resize(std::size_t(block_total));
+    block_uses_.resize(std::size_t(block_total));
     lane_contacts_.assign(std::size_t(block_total) * W, -1);
     int32_t run = 0;
     for (int32_t c = 0; c < colors; ++c) {
@@ -165,6 +184,7 @@ void ContactSolver::lay_out(const ContactLayout& layout) {
     const int32_t overflow = layout.color_count - 1;
     const int32_t first = layout.color_starts[overflow], count = layout.color_starts[overflow + 1] - first;
     overflow_.resize(std::size_t(count));
+    overflow_uses_.resize(std::size_t(count));
     overflow_contacts_.assign(layout.ordered + first, layout.ordered + first + count);
 }
 
@@ -173,14 +193,20 @@ void ContactSolver::pack_range(const ContactLayout& layout, int32_t begin, int32
     ContactBlock<W>* out = blocks<W>().data();
     std::memset(static_cast<void*>(out + begin), 0, std::size_t(end - begin) * sizeof(ContactBlock<W>));
     const int32_t lane_end = end * W;
+    uint8_t uses = 0;
     for (int32_t lane = begin * W; lane < lane_end; ++lane) {
         ContactBlock<W>& block = out[lane / W];
         const int32_t contact = lane_contacts_[std::size_t(lane)];
         if (contact >= 0) {
             prefetch_ahead(layout, lane_contacts_.data(), lane, lane_end);
             pack_lane(block, lane % W, layout.contacts[contact], layout);
+            uses |= uses_of(layout.contacts[contact], layout.any_elastic);
         } else {
             block.state_a[lane % W] = block.state_b[lane % W] = layout.fixed_state;
+        }
+        if (lane % W == W - 1) {
+            block_uses_[std::size_t(lane / W)] = uses;
+            uses = 0;
         }
     }
 }
@@ -198,7 +224,9 @@ void ContactSolver::pack_overflow(const ContactLayout& layout, int32_t begin, in
     std::memset(static_cast<void*>(overflow_.data() + begin), 0, std::size_t(end - begin) * sizeof(ContactBlock<1>));
     for (int32_t k = begin; k < end; ++k) {
         prefetch_ahead(layout, overflow_contacts_.data(), k, end);
-        pack_lane(overflow_[std::size_t(k)], 0, layout.contacts[overflow_contacts_[std::size_t(k)]], layout);
+        const Contact& contact = layout.contacts[overflow_contacts_[std::size_t(k)]];
+        pack_lane(overflow_[std::size_t(k)], 0, contact, layout);
+        overflow_uses_[std::size_t(k)] = uses_of(contact, layout.any_elastic);
     }
 }
 
@@ -208,24 +236,25 @@ int32_t ContactSolver::run_items(int32_t run) const {
 
 ContactSolver::RunBlocks ContactSolver::run_blocks(int32_t run, int32_t first) const {
     if (run_is_sequential(run)) {
-        return {&scalar_contact_kernels(), const_cast<ContactBlock<1>*>(overflow_.data() + first)};
+        return {&scalar_contact_kernels(), const_cast<ContactBlock<1>*>(overflow_.data() + first),
+                overflow_uses_.data() + first};
     }
     const std::size_t block = std::size_t(runs_[std::size_t(run)].first_block + first);
     void* colored = kernels_->width == 16  ? static_cast<void*>(const_cast<ContactBlock<16>*>(blocks16_.data() + block))
                     : kernels_->width == 8 ? static_cast<void*>(const_cast<ContactBlock<8>*>(blocks8_.data() + block))
                     : kernels_->width == 4 ? static_cast<void*>(const_cast<ContactBlock<4>*>(blocks4_.data() + block))
                                            : static_cast<void*>(const_cast<ContactBlock<1>*>(blocks1_.data() + block));
-    return {kernels_, colored};
+    return {kernels_, colored, block_uses_.data() + block};
 }
 
 void ContactSolver::warm_start(int32_t run, int32_t begin, int32_t end, BodyState* states) const {
     const RunBlocks r = run_blocks(run, begin);
-    r.kernels->warm_start(r.blocks, end - begin, states);
+    r.kernels->warm_start(r.blocks, r.uses, end - begin, states);
 }
 
 void ContactSolver::solve(int32_t run, int32_t begin, int32_t end, BodyState* states, const SolvePass& pass) const {
     const RunBlocks r = run_blocks(run, begin);
-    r.kernels->solve(r.blocks, end - begin, states, pass);
+    r.kernels->solve(r.blocks, r.uses, end - begin, states, pass);
 }
 
 void ContactSolver::apply_restitution(int32_t run, int32_t begin, int32_t end, BodyState* states,

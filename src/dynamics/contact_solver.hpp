@@ -52,6 +52,7 @@ struct ContactLayout {
     const BodyState* states;      // velocities before the step
     const BodyMotion* motions;
     int32_t fixed_state;          // index of the shared fixed state
+    bool any_elastic;             // some contact has restitution: the restitution pass may run
 };
 
 class ContactSolver {
@@ -106,6 +107,7 @@ private:
     struct RunBlocks {
         const ContactKernels* kernels;
         void* blocks;
+        const uint8_t* uses;
     };
     RunBlocks run_blocks(int32_t run, int32_t first) const;
 
@@ -116,6 +118,7 @@ private:
     std::vector<ContactBlock<8>> blocks8_;
     std::vector<ContactBlock<16>> blocks16_;
     std::vector<ContactBlock<1>> overflow_;
+    std::vector<uint8_t> block_uses_, overflow_uses_;  // BlockUses per block
     struct ColorRun {
         int32_t first_block, block_count;
     };

@@ -94,7 +94,7 @@ void Solver::step(float time_step, int32_t substep_count) {
 ContactLayout Solver::contact_layout() const {
     return ContactLayout{links_.contacts.pool(), ordered_contacts_.data(), color_starts_.data(),
                          ConstraintColors::count, states_.data(),      motions_.data(),
-                         int32_t(states_.size()) - 1};
+                         int32_t(states_.size()) - 1, any_elastic_contact_};
 }
 
 void Solver::add_stage(Stage::Fn fn, int32_t item_count, int32_t min_items_per_block, int32_t arg0, int32_t arg1) {
@@ -430,6 +430,7 @@ void Solver::color_contacts() {
     constexpr int32_t key_count = 2 * ConstraintColors::count;
     key_starts_.assign(key_count + 1, 0);
     colored_contacts_.clear();
+    any_elastic_contact_ = false;
     // The awake list jumps through the contact pool: ask for contacts ahead.
     constexpr std::size_t contacts_ahead = 32;
     for (std::size_t k = 0; k < awake.size(); ++k) {
@@ -443,6 +444,7 @@ void Solver::color_contacts() {
         const int32_t color =
             colors_.assign((contact.flags & contact_moves_a) ? contact.state_a : ConstraintColors::null_state,
                            (contact.flags & contact_moves_b) ? contact.state_b : ConstraintColors::null_state);
+        any_elastic_contact_ = any_elastic_contact_ || contact.restitution != 0.0f;
         const bool single_after_pairs = color != ConstraintColors::overflow && contact.point_count == 1;
         const int32_t key = 2 * color + (single_after_pairs ? 1 : 0);
         ++key_starts_[std::size_t(key) + 1];

@@ -153,6 +153,7 @@ private:
     std::vector<int32_t> color_starts_;   // per colour: its first slot in ordered_contacts_
     std::vector<int32_t> ordered_contacts_;  // the contacts to solve, colour by colour
     std::vector<int32_t> scratch_starts_;
+    bool any_elastic_contact_ = false;  // among the coloured contacts
     // The contact layout the colours above were made for.
     bool colored_ = false;
     uint64_t colored_version_ = 0;

@@ -594,6 +594,46 @@ I2D_TEST(phys_soft_elastic_ball_keeps_energy) {
     I2D_CHECK(worst < 0.01);
 }
 
+I2D_TEST(phys_soft_elastic_ball_on_a_resting_box_bounces_back_to_its_height) {
+    // An elastic ball (radius 0.25, density 1) dropped from 1 m onto an elastic plank
+    // (1 m x 0.2 m, density 1: about the ball's mass) that rests on an inelastic ground,
+    // no friction, sleep off. The ground holds the plank, so in the rigid model the plank
+    // takes none of the bounce: the ball comes back up to 1 m and the plank stays put.
+    // That needs the restitution pass to hold the plank on the ground although that
+    // contact does not bounce itself; without it the ball rose to 0.23 m. The soft step
+    // falls short of the rigid answer here: the ball leaves at 91 % of its impact speed
+    // (0.82 m; 92 % from 20 m, and not from the ground's stiffness or the number of
+    // restitution iterations), an open fidelity gap that the bound below allows.
+    const double r = 0.25, h = 1.0, plank_half_height = 0.1;
+    Scene scene(no_sleep_def());
+    I2D_REQUIRE(!I2D_IS_NULL(scene.ground(0.0f, 50.0f, mat(0.0f, 0.0f))));
+    const i2d_body_id plank =
+        scene.dynamic_box(i2d_vec2{0, float(plank_half_height)}, 0.5f, float(plank_half_height), mat(0.0f, 1.0f));
+    I2D_REQUIRE(!I2D_IS_NULL(plank));
+    I2D_REQUIRE(scene.step(steps_for(0.5)));  // the plank settles before the drop
+    const double plank_y = position(plank).y;
+    const double top = 2 * plank_half_height;
+    const i2d_body_id ball = scene.dynamic_circle(i2d_vec2{0, float(top + h + r)}, float(r), mat(0.0f, 1.0f));
+    I2D_REQUIRE(!I2D_IS_NULL(ball));
+    double apex = -INFINITY, prev_vy = 0, plank_moved = 0;
+    bool bounced = false;
+    for (int s = 1; s <= steps_for(2.0) && apex == -INFINITY; ++s) {
+        I2D_REQUIRE(scene.step());
+        const double vy = velocity(ball).y;
+        bounced = bounced || vy > 0;
+        if (bounced && prev_vy > 0 && vy <= 0) {
+            apex = position(ball).y - r - top;
+        }
+        prev_vy = vy;
+        plank_moved = std::max(plank_moved, std::fabs(position(plank).y - plank_y));
+    }
+    fprintf(stderr, "    ball back up to %.4f m of %.1f m; plank moved at most %.2f mm\n", apex, h,
+            1e3 * plank_moved);
+    constexpr double soft_step_shortfall = 0.2;  // of the height; measured 0.18
+    I2D_CHECK(apex > (1 - soft_step_shortfall) * h && apex < 1.02 * h);
+    I2D_CHECK(plank_moved < 0.005);
+}
+
 // ---- 7. Rolling resistance -----------------------------------------------------------------
 
 namespace {
