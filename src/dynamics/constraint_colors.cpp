@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "dynamics/constraint_colors.hpp"
 
+#include "core/bits.hpp"
+
 namespace i2d {
 
 void ConstraintColors::reset(int32_t state_count) {
@@ -20,31 +22,31 @@ int32_t ConstraintColors::assign(int32_t state_a, int32_t state_b) {
     return overflow;
 }
 
+// The lowest colour free for both bodies.
 int32_t ConstraintColors::assign_moving_pair(int32_t state_a, int32_t state_b) {
-    const uint32_t taken = used_[std::size_t(state_a)] | used_[std::size_t(state_b)];
-    for (int32_t color = 0; color < moving_pair_colors; ++color) {
-        const uint32_t bit = 1u << color;
-        if ((taken & bit) == 0) {
-            used_[std::size_t(state_a)] |= bit;
-            used_[std::size_t(state_b)] |= bit;
-            return color;
-        }
+    constexpr uint32_t moving_pair_mask = (1u << moving_pair_colors) - 1u;
+    const uint32_t free = ~(used_[std::size_t(state_a)] | used_[std::size_t(state_b)]) & moving_pair_mask;
+    if (free == 0u) {
+        return overflow;
     }
-    return overflow;
+    const int32_t color = lowest_set_bit(free);
+    used_[std::size_t(state_a)] |= 1u << color;
+    used_[std::size_t(state_b)] |= 1u << color;
+    return color;
 }
 
-// Down to colour 1 for a body that touches many fixed bodies, never colour 0 (as in
-// Box2D v3): a contact with a fixed body is never solved before every moving pair.
+// The highest free colour below the overflow colour, down to colour 1 for a body that
+// touches many fixed bodies, never colour 0 (as in Box2D v3): a contact with a fixed
+// body is never solved before every moving pair.
 int32_t ConstraintColors::assign_against_fixed(int32_t state) {
-    const uint32_t taken = used_[std::size_t(state)];
-    for (int32_t color = overflow - 1; color >= 1; --color) {
-        const uint32_t bit = 1u << color;
-        if ((taken & bit) == 0) {
-            used_[std::size_t(state)] |= bit;
-            return color;
-        }
+    constexpr uint32_t against_fixed_mask = ((1u << overflow) - 1u) & ~1u;
+    const uint32_t free = ~used_[std::size_t(state)] & against_fixed_mask;
+    if (free == 0u) {
+        return overflow;
     }
-    return overflow;
+    const int32_t color = highest_set_bit(free);
+    used_[std::size_t(state)] |= 1u << color;
+    return color;
 }
 
 }  // namespace i2d
