@@ -250,6 +250,9 @@ void ContactSet::body_woke(int32_t body) {
         Contact& c = contacts_[contact];
         if (c.awake_index == null_index) {
             add_awake(contact);
+            if (is_solid(c) && c.point_count > 0) {
+                solvable_.push_back(contact);
+            }
         }
         const int32_t edge = c.edges[0].body == body ? 0 : 1;
         layout_version_ += set_solver_state(c, edge, bodies_[body]) ? 1u : 0u;
@@ -326,6 +329,7 @@ void ContactSet::collide(float time_step) {
     run_over_awake(&ContactSet::collide_range);
 
     bool layout_change = false;
+    solvable_.clear();
     for (int32_t k = 0; k < count; ++k) {
         const uint8_t flags = collide_flags_[std::size_t(k)];
         if (flags == 0) {
@@ -333,6 +337,9 @@ void ContactSet::collide(float time_step) {
         }
         layout_change = layout_change || (flags & layout_changed) != 0;
         const int32_t index = awake_[std::size_t(k)];
+        if (flags & has_points) {
+            solvable_.push_back(index);
+        }
         const Contact& c = contacts_[index];
         for (int32_t e = 0; e < 2; ++e) {
             if (flags & (e == 0 ? wakes_a : wakes_b)) {
@@ -401,6 +408,9 @@ uint8_t ContactSet::collide_one(int32_t k, float time_step) {
         }
     }
     uint8_t flags = is_solid(c) ? point_change_flags(c, had_points) : 0;
+    if (is_solid(c) && c.point_count > 0) {
+        flags |= has_points;
+    }
     if (state_a_changed || state_b_changed || c.point_count != old_point_count) {
         flags |= layout_changed;
     }
@@ -477,6 +487,18 @@ void ContactSet::forget_manifolds(int32_t body) {
 // Contacts that gained their first point join their bodies' islands; those that lost
 // their last one leave.
 void ContactSet::update_links() {
+#if defined(I2D_VALIDATE)
+    // What the solver colours next: exactly the awake solid contacts with points, in order.
+    std::size_t next = 0;
+    for (const int32_t index : awake_) {
+        const Contact& c = contacts_[index];
+        if (is_solid(c) && c.point_count > 0) {
+            I2D_ASSERT(next < solvable_.size() && solvable_[next] == index);
+            ++next;
+        }
+    }
+    I2D_ASSERT(next == solvable_.size());
+#endif
     for (const int32_t index : point_changes_) {
         Contact& c = contacts_[index];
         const int32_t body_a = c.edges[0].body, body_b = c.edges[1].body;

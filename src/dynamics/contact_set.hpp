@@ -51,6 +51,10 @@ public:
     Pool<Contact>& pool() { return contacts_; }
     const Pool<Contact>& pool() const { return contacts_; }
     const std::vector<int32_t>& awake() const { return awake_; }
+    /// The awake solid contacts with points, in awake order, from this step's narrowphase
+    /// on (bodies woken after it add theirs): all the solver colours. Most awake contacts
+    /// of a tumbling heap have none, and need not be read again.
+    const std::vector<int32_t>& solvable() const { return solvable_; }
     /// Changes whenever what the solver's colouring reads changes: the awake list, a
     /// contact's point count, its bodies' solver states. Equal versions, equal colours.
     uint64_t layout_version() const { return layout_version_; }
@@ -137,6 +141,7 @@ private:
     Pool<Contact> contacts_;
     HashSet pair_set_;  // pair_key of the shapes of every contact
     std::vector<int32_t> awake_;
+    std::vector<int32_t> solvable_;
     uint64_t layout_version_ = 0;
     // Step scratch, kept so that a steady state allocates nothing.
     std::vector<ShapePairCandidate> new_pairs_;
@@ -144,7 +149,7 @@ private:
     std::vector<int32_t> point_changes_;  // contacts that gained or lost all their points
     // Per awake contact, what its update found for the islands (CollideFlags), and at
     // the end of the step what must happen to it (EndFlags).
-    enum CollideFlags : uint8_t { layout_changed = 1, points_changed = 2, wakes_a = 4, wakes_b = 8 };
+    enum CollideFlags : uint8_t { layout_changed = 1, points_changed = 2, wakes_a = 4, wakes_b = 8, has_points = 16 };
     enum EndFlags : uint8_t { ends = 1, reports = 2, hits = 4 };
     std::vector<uint8_t> collide_flags_;
     std::vector<std::vector<ShapePairCandidate>> block_pairs_;  // per block of pair queries

@@ -421,23 +421,22 @@ void Solver::color_joints() {
 // so that SIMD blocks hold one kind and blocks of single points skip the second; the
 // overflow colour is solved in sequence and keeps awake order. A body the contact
 // cannot move (static, kinematic, asleep) takes no colour slot. The sort's key is the
-// colour and the kind of contact in one; only the contacts that took a colour are
-// sorted, so that contacts without points (most of them while bodies tumble) are read
-// once.
+// colour and the kind of contact in one. Only contacts with points are read
+// (ContactSet::solvable): most of a tumbling heap's have none.
 void Solver::color_contacts() {
-    const std::vector<int32_t>& awake = links_.contacts.awake();
+    const std::vector<int32_t>& solvable = links_.contacts.solvable();
     const Pool<Contact>& contacts = links_.contacts.pool();
     constexpr int32_t key_count = 2 * ConstraintColors::count;
     key_starts_.assign(key_count + 1, 0);
     colored_contacts_.clear();
     any_elastic_contact_ = false;
-    // The awake list jumps through the contact pool: ask for contacts ahead.
+    // The list jumps through the contact pool: ask for contacts ahead.
     constexpr std::size_t contacts_ahead = 32;
-    for (std::size_t k = 0; k < awake.size(); ++k) {
-        if (k + contacts_ahead < awake.size()) {
-            prefetch_line(&contacts[awake[k + contacts_ahead]]);
+    for (std::size_t k = 0; k < solvable.size(); ++k) {
+        if (k + contacts_ahead < solvable.size()) {
+            prefetch_line(&contacts[solvable[k + contacts_ahead]]);
         }
-        const Contact& contact = contacts[awake[k]];
+        const Contact& contact = contacts[solvable[k]];
         if ((contact.flags & contact_sensor) != 0 || contact.point_count == 0) {
             continue;
         }
@@ -448,7 +447,7 @@ void Solver::color_contacts() {
         const bool single_after_pairs = color != ConstraintColors::overflow && contact.point_count == 1;
         const int32_t key = 2 * color + (single_after_pairs ? 1 : 0);
         ++key_starts_[std::size_t(key) + 1];
-        colored_contacts_.push_back({awake[k], key});
+        colored_contacts_.push_back({solvable[k], key});
     }
     for (int32_t key = 0; key < key_count; ++key) {
         key_starts_[std::size_t(key) + 1] += key_starts_[std::size_t(key)];
