@@ -191,11 +191,15 @@ void ContactSolver::lay_out(const ContactLayout& layout) {
 template <int W>
 void ContactSolver::pack_range(const ContactLayout& layout, int32_t begin, int32_t end) {
     ContactBlock<W>* out = blocks<W>().data();
-    std::memset(static_cast<void*>(out + begin), 0, std::size_t(end - begin) * sizeof(ContactBlock<W>));
     const int32_t lane_end = end * W;
     uint8_t uses = 0;
     for (int32_t lane = begin * W; lane < lane_end; ++lane) {
         ContactBlock<W>& block = out[lane / W];
+        if (lane % W == 0) {
+            // Zeroed while its lanes are written: zeroing the whole range first streamed a
+            // large world's blocks (8.8 MB in many_pyramids) through memory twice.
+            std::memset(static_cast<void*>(&block), 0, sizeof(ContactBlock<W>));
+        }
         const int32_t contact = lane_contacts_[std::size_t(lane)];
         if (contact >= 0) {
             prefetch_ahead(layout, lane_contacts_.data(), lane, lane_end);
