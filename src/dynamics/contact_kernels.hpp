@@ -13,8 +13,8 @@
 // that a block may skip work no lane needs and still give every lane the same bits: a
 // block of single points skips point 2, a block where no point is still approaching
 // skips the impact tracking, and a block skips what none of its lanes uses (its
-// BlockUses: rolling, moving surfaces, impact speeds, the largest push). The lane types live in anonymous namespaces, so each
-// translation unit's kernels are its own.
+// BlockUses: rolling, moving surfaces, impact speeds, the largest push). The lane types
+// live in anonymous namespaces, so each translation unit's kernels are its own.
 #pragma once
 
 #include <cstdint>
