@@ -237,6 +237,7 @@ void ContactSet::destroy_contacts_between(int32_t body_a, int32_t body_b) {
 }
 
 void ContactSet::mix_materials_of_shape(int32_t shape) {
+    ++layout_version_;  // the colouring notes whether any contact is elastic
     visit_contacts(shapes_[shape].body, [&](int32_t contact, int32_t) {
         Contact& c = contacts_[contact];
         if (c.shape_a == shape || c.shape_b == shape) {

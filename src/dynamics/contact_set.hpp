@@ -56,7 +56,8 @@ public:
     /// of a tumbling heap have none, and need not be read again.
     const std::vector<int32_t>& solvable() const { return solvable_; }
     /// Changes whenever what the solver's colouring reads changes: the awake list, a
-    /// contact's point count, its bodies' solver states. Equal versions, equal colours.
+    /// contact's point count, its bodies' solver states, its material (whether any
+    /// contact is elastic). Equal versions, equal colours.
     uint64_t layout_version() const { return layout_version_; }
 
     /// New pairs from the broadphase's moved proxies; pairs that may not collide (one
