@@ -114,13 +114,16 @@ struct JointImpulses {
     float lower = 0.0f, upper = 0.0f;
 };
 
-struct Joint {
-    JointDef def;
-    JointEdge edges[2];
+// Line-aligned, with what every step writes first: the solver's prepare and store then
+// touch the first two lines of a plain hinge (its impulses, kind, bodies, anchors,
+// thresholds and settings flags) and no other.
+struct alignas(64) Joint {
     JointImpulses impulses;
     Vec2 reaction_force;           // on body B over the last step, N
     float reaction_torque = 0.0f;  // N m
     float motor_output = 0.0f;     // the motor's force (N) or torque (N m) over the last step
+    JointDef def;
+    JointEdge edges[2];
     int32_t solver_index = null_index;  // in this step's solver list; null when not solved
     bool island_link = false;  // joins the islands of its two bodies
 };

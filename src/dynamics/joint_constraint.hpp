@@ -41,6 +41,7 @@ struct JointConstraint {
     uint8_t rows = 0;  // JointRows
     uint8_t exact_rows = 0;  // ExactRows (joint_tree.hpp): rows the exact tree solve holds,
                              // which the sweep then leaves alone; set by JointTrees::build
+    bool breakable = false;  // a threshold below FLT_MAX (never): store checks the reaction
     int32_t state_a = 0, state_b = 0;  // solver states; the fixed one for a body that cannot move
     bool moves_a = false, moves_b = false;  // whether this joint may change the body's velocity
     float inv_mass_a = 0.0f, inv_mass_b = 0.0f;
@@ -225,8 +226,10 @@ constexpr float joint_runaway_factor = 16.0f;
 /// this much, and stopping it there would tear ragdolls landing fast.
 inline bool within_limits(const JointBodies& j, const JointStep& step) {
     const float v = joint_runaway_factor * step.max_speed, w = joint_runaway_factor * step.max_spin;
-    return length_squared(j.va) <= v * v && length_squared(j.vb) <= v * v && (j.wa < 0.0f ? -j.wa : j.wa) <= w &&
-           (j.wb < 0.0f ? -j.wb : j.wb) <= w;
+    // Combined without short circuits: one branch per pass, not four.
+    const int within = int(length_squared(j.va) <= v * v) & int(length_squared(j.vb) <= v * v) &
+                       int((j.wa < 0.0f ? -j.wa : j.wa) <= w) & int((j.wb < 0.0f ? -j.wb : j.wb) <= w);
+    return within != 0;
 }
 
 /// One joint's pass over its bodies' states: load, `pass`, store; a pass that would

@@ -2,6 +2,7 @@
 // JointSolver: the common part of preparing a joint, and the dispatch to its kind.
 #include "dynamics/joint_solver.hpp"
 
+#include <cfloat>
 #include <cmath>
 
 #include "core/prefetch.hpp"
@@ -33,23 +34,31 @@ JointFrame frame_of(const JointDef& d) {
 // asked for a few joints ahead.
 constexpr int32_t prefetch_settings_ahead = 4;
 
-I2D_FORCE_INLINE const void* kind_settings(const JointDef& d) {
-    switch (d.type) {
-        case JointType::revolute: return &d.revolute;
-        case JointType::prismatic: return &d.prismatic;
-        case JointType::distance: return &d.distance;
-        case JointType::weld: return &d.weld;
-        case JointType::wheel: return &d.wheel;
-        case JointType::motor: return &d.motor;
-        case JointType::mouse: return &d.mouse;
-        default: return &d;
+// The address only: the kind comes from the constraint, so that asking ahead reads
+// nothing from the joint pool itself.
+I2D_FORCE_INLINE const void* kind_settings(const JointConstraint& c) {
+    const JointDef* d = c.def;
+    switch (c.type) {
+        case JointType::revolute: return &d->revolute;
+        case JointType::prismatic: return &d->prismatic;
+        case JointType::distance: return &d->distance;
+        case JointType::weld: return &d->weld;
+        case JointType::wheel: return &d->wheel;
+        case JointType::motor: return &d->motor;
+        case JointType::mouse: return &d->mouse;
+        default: return d;
     }
+}
+
+// A hinge without spring, motor or limit never reads its settings.
+I2D_FORCE_INLINE bool reads_settings(const JointConstraint& c) {
+    return c.type != JointType::revolute || c.rows != 0;
 }
 
 I2D_FORCE_INLINE void prefetch_settings(const std::vector<JointConstraint>& constraints, int32_t k, int32_t end) {
     const int32_t ahead = k + prefetch_settings_ahead;
-    if (ahead < end) {
-        const char* settings = static_cast<const char*>(kind_settings(*constraints[std::size_t(ahead)].def));
+    if (ahead < end && reads_settings(constraints[std::size_t(ahead)])) {
+        const char* settings = static_cast<const char*>(kind_settings(constraints[std::size_t(ahead)]));
         prefetch_line(settings);
         prefetch_line(settings + 63);  // a kind's settings may straddle two lines
     }
@@ -61,6 +70,7 @@ bool can_move(const Body& b) { return b.type == BodyType::dynamic && b.awake_ind
 }  // namespace
 
 void JointSolver::lay_out(const int32_t* ordered, int32_t count) {
+    breaking_seen_.store(false, std::memory_order_relaxed);
     constraints_.resize(std::size_t(count));
     for (int32_t k = 0; k < count; ++k) {
         constraints_[std::size_t(k)].joint = ordered[k];
@@ -75,6 +85,7 @@ void JointSolver::prepare_one(JointConstraint& c, const Joint& joint, const Pool
     const bool mouse = d.type == JointType::mouse;
     c.def = &d;
     c.type = d.type;
+    c.breakable = d.force_threshold < FLT_MAX || d.torque_threshold < FLT_MAX;
     c.moves_a = !mouse && can_move(a);
     c.moves_b = can_move(b);
     // Kinematic bodies are read from their own state (they move); static and sleeping
@@ -95,8 +106,13 @@ void JointSolver::prepare_one(JointConstraint& c, const Joint& joint, const Pool
                              (d.type == JointType::revolute && (d.revolute.enable_limit || d.revolute.enable_spring));
     c.delta_angle =
         reads_angle ? unwind_angle(exact_relative_angle(a.transform.q, b.transform.q) - f.reference_angle) : 0.0f;
-    const Vec2 local_axis = d.type == JointType::prismatic ? d.prismatic.local_axis_a : d.wheel.local_axis_a;
-    c.axis = rotate(a.transform.q, local_axis);
+    // Only the sliding kinds have an axis: reading another kind's would cost a cache line.
+    c.axis = Vec2{};
+    if (d.type == JointType::prismatic) {
+        c.axis = rotate(a.transform.q, d.prismatic.local_axis_a);
+    } else if (d.type == JointType::wheel) {
+        c.axis = rotate(a.transform.q, d.wheel.local_axis_a);
+    }
     c.impulses = joint.impulses;
     switch (d.type) {
         case JointType::revolute: prepare_revolute(c, step_); break;
@@ -155,7 +171,17 @@ void JointSolver::solve(int32_t begin, int32_t end, BodyState* states, bool use_
     }
 }
 
-void JointSolver::store(Pool<Joint>& joints, const BodyState* states, int32_t begin, int32_t end) const {
+namespace {
+
+bool passes_threshold(const Joint& joint) {
+    return length(joint.reaction_force) > joint.def.force_threshold ||
+           std::fabs(joint.reaction_torque) > joint.def.torque_threshold;
+}
+
+}  // namespace
+
+void JointSolver::store(Pool<Joint>& joints, const BodyState* states, int32_t begin, int32_t end) {
+    bool breaking = false;
     for (int32_t k = begin; k < end; ++k) {
         const JointConstraint& c = constraints_[std::size_t(k)];
         Joint& joint = joints[c.joint];
@@ -164,16 +190,22 @@ void JointSolver::store(Pool<Joint>& joints, const BodyState* states, int32_t be
         joint.reaction_force = r.force;
         joint.reaction_torque = r.torque;
         joint.motor_output = r.motor;
+        breaking = breaking || (c.breakable && passes_threshold(joint));
+    }
+    if (breaking) {
+        breaking_seen_.store(true, std::memory_order_relaxed);
     }
 }
 
 void JointSolver::report_breaking(const Pool<Joint>& joints, const IdEncoder& ids,
                                   std::vector<JointEvent>& out) const {
+    if (!breaking_seen_.load(std::memory_order_relaxed)) {
+        return;
+    }
     for (const JointConstraint& c : constraints_) {
         const Joint& joint = joints[c.joint];
-        const JointDef& d = joint.def;
-        if (length(joint.reaction_force) > d.force_threshold || std::fabs(joint.reaction_torque) > d.torque_threshold) {
-            out.push_back({ids.joint_id(c.joint, joints.generation(c.joint)), d.user_data});
+        if (c.breakable && passes_threshold(joint)) {
+            out.push_back({ids.joint_id(c.joint, joints.generation(c.joint)), joint.def.user_data});
         }
     }
 }

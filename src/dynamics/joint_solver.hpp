@@ -9,6 +9,7 @@
 // by its kind's functions through a switch.
 #pragma once
 
+#include <atomic>
 #include <cstdint>
 #include <vector>
 
@@ -45,9 +46,11 @@ public:
     void solve_trees(int32_t begin, int32_t end, BodyState* states, const BodyMotion* motions, bool use_bias) {
         trees_.solve(begin, end, constraints_, states, motions, step_, use_bias);
     }
-    /// Impulses back to the joints, and their reactions over the last substep.
-    void store(Pool<Joint>& joints, const BodyState* states, int32_t begin, int32_t end) const;
-    /// Joints whose reaction passed a threshold, in solve order (one thread).
+    /// Impulses back to the joints, and their reactions over the last substep; notes
+    /// whether any passed its threshold.
+    void store(Pool<Joint>& joints, const BodyState* states, int32_t begin, int32_t end);
+    /// Joints whose reaction passed a threshold, in solve order (one thread); nothing to
+    /// read unless store noted one.
     void report_breaking(const Pool<Joint>& joints, const IdEncoder& ids, std::vector<JointEvent>& out) const;
 
 private:
@@ -56,6 +59,8 @@ private:
     std::vector<JointConstraint> constraints_;
     JointTrees trees_;
     JointStep step_;
+    // Set by any worker's store range, read after the stage's barrier.
+    std::atomic<bool> breaking_seen_{false};
 };
 
 }  // namespace i2d
