@@ -232,19 +232,9 @@ inline bool within_limits(const JointBodies& j, const JointStep& step) {
     return within != 0;
 }
 
-/// One joint's pass over its bodies' states: load, `pass`, store.
-template <class Pass>
-inline void joint_pass(JointConstraint& c, BodyState* states, Pass&& pass) {
-    JointBodies j = load_bodies(c, states);
-    pass(j);
-    store_bodies(c, j, states);
-}
-
-/// The warm start's pass, guarded: one that would leave a body running away is undone
-/// and the joint gives up its impulses, starting over. What runs away is the impulse
-/// carried from pass to pass, and each substep's warm start applies all of it, so one
-/// guard per substep stops it; the solve and relax passes between two warm starts go
-/// unguarded (the guard cost a tenth of a joint_grid step there).
+/// One joint's pass over its bodies' states: load, `pass`, store; a pass that would
+/// leave a body running away is undone and the joint gives up its impulses, starting
+/// over.
 template <class Pass>
 inline void guarded_pass(JointConstraint& c, BodyState* states, const JointStep& step, Pass&& pass) {
     JointBodies j = load_bodies(c, states);
@@ -257,8 +247,8 @@ inline void guarded_pass(JointConstraint& c, BodyState* states, const JointStep&
 }
 
 // The kinds (joint_<kind>.cpp). prepare fills what the kind needs beyond the common
-// fields; warm start runs one guarded pass, solve one plain pass (use_bias: the pass
-// that pushes errors out).
+// fields; warm start and solve run one guarded pass (use_bias: the pass that pushes
+// errors out).
 void prepare_revolute(JointConstraint& c, const JointStep& step);
 void warm_start_revolute(JointConstraint& c, BodyState* states, const JointStep& step);
 void solve_revolute(JointConstraint& c, BodyState* states, const JointStep& step, bool use_bias);

@@ -90,7 +90,7 @@ void warm_start_distance(JointConstraint& c, BodyState* states, const JointStep&
 }
 
 void solve_distance(JointConstraint& c, BodyState* states, const JointStep& step, bool use_bias) {
-    joint_pass(c, states, [&](JointBodies& j) { solve_distance_bodies(c, j, step, use_bias); });
+    guarded_pass(c, states, step, [&](JointBodies& j) { solve_distance_bodies(c, j, step, use_bias); });
 }
 
 }  // namespace i2d

@@ -47,7 +47,7 @@ void warm_start_mouse(JointConstraint& c, BodyState* states, const JointStep& st
 }
 
 void solve_mouse(JointConstraint& c, BodyState* states, const JointStep& step, bool use_bias) {
-    joint_pass(c, states, [&](JointBodies& j) { solve_mouse_bodies(c, j, step, use_bias); });
+    guarded_pass(c, states, step, [&](JointBodies& j) { solve_mouse_bodies(c, j, step, use_bias); });
 }
 
 }  // namespace i2d

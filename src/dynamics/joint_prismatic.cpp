@@ -68,7 +68,7 @@ void warm_start_prismatic(JointConstraint& c, BodyState* states, const JointStep
 }
 
 void solve_prismatic(JointConstraint& c, BodyState* states, const JointStep& step, bool use_bias) {
-    joint_pass(c, states, [&](JointBodies& j) { solve_prismatic_bodies(c, j, step, use_bias); });
+    guarded_pass(c, states, step, [&](JointBodies& j) { solve_prismatic_bodies(c, j, step, use_bias); });
 }
 
 }  // namespace i2d

@@ -69,7 +69,7 @@ void warm_start_revolute(JointConstraint& c, BodyState* states, const JointStep&
 }
 
 void solve_revolute(JointConstraint& c, BodyState* states, const JointStep& step, bool use_bias) {
-    joint_pass(c, states, [&](JointBodies& j) { solve_revolute_bodies(c, j, step, use_bias); });
+    guarded_pass(c, states, step, [&](JointBodies& j) { solve_revolute_bodies(c, j, step, use_bias); });
 }
 
 }  // namespace i2d

@@ -134,10 +134,10 @@ void JointSolver::prepare(const Pool<Joint>& joints, const Pool<Body>& bodies, i
     }
 }
 
-// Each kind runs its passes (joint_pass, guarded_pass: joint_constraint.hpp) in its own
-// file, so that the bodies' velocities stay in registers from load to store: passed to a
-// kind's functions by reference, they went through memory between the call and the
-// guard, a third of a joint_grid step's joint time.
+// Each kind runs its pass through guarded_pass (joint_constraint.hpp) in its own file, so
+// that the bodies' velocities stay in registers from load to store: passed to a kind's
+// functions by reference, they went through memory between the call and the guard, a
+// third of a joint_grid step's joint time.
 void JointSolver::warm_start(int32_t begin, int32_t end, BodyState* states) {
     for (int32_t k = begin; k < end; ++k) {
         JointConstraint& c = constraints_[std::size_t(k)];

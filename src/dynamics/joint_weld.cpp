@@ -60,7 +60,7 @@ void warm_start_weld(JointConstraint& c, BodyState* states, const JointStep& ste
 }
 
 void solve_weld(JointConstraint& c, BodyState* states, const JointStep& step, bool use_bias) {
-    joint_pass(c, states, [&](JointBodies& j) { solve_weld_bodies(c, j, step, use_bias); });
+    guarded_pass(c, states, step, [&](JointBodies& j) { solve_weld_bodies(c, j, step, use_bias); });
 }
 
 }  // namespace i2d

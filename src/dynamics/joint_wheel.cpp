@@ -55,7 +55,7 @@ void warm_start_wheel(JointConstraint& c, BodyState* states, const JointStep& st
 }
 
 void solve_wheel(JointConstraint& c, BodyState* states, const JointStep& step, bool use_bias) {
-    joint_pass(c, states, [&](JointBodies& j) { solve_wheel_bodies(c, j, step, use_bias); });
+    guarded_pass(c, states, step, [&](JointBodies& j) { solve_wheel_bodies(c, j, step, use_bias); });
 }
 
 }  // namespace i2d
