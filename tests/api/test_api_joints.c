@@ -1131,5 +1131,11 @@ I2D_TEST(api_joint_events_threshold) {
     I2D_REQUIRE(i2d_world_step(world, k_time_step, k_substeps) == I2D_OK);
     I2D_CHECK(i2d_world_get_joint_events(world).count == 0);
     I2D_CHECK(i2d_world_get_joint_count(world) == 1);
+    /* A threshold set between steps counts from the next step on. */
+    I2D_CHECK_STATUS(i2d_joint_set_force_threshold(joints[1], 1.0f), I2D_OK);
+    I2D_REQUIRE(i2d_world_step(world, k_time_step, k_substeps) == I2D_OK);
+    const i2d_joint_events later = i2d_world_get_joint_events(world);
+    I2D_REQUIRE(later.count == 1);
+    I2D_CHECK(later.events[0].joint.bits == joints[1].bits);
     i2d_world_destroy(world);
 }
