@@ -251,7 +251,7 @@ void ContactSet::body_woke(int32_t body) {
         Contact& c = contacts_[contact];
         if (c.awake_index == null_index) {
             add_awake(contact);
-            if (is_solid(c) && c.point_count > 0) {
+            if (is_solvable(c)) {
                 solvable_.push_back(contact);
             }
         }
@@ -409,7 +409,7 @@ uint8_t ContactSet::collide_one(int32_t k, float time_step) {
         }
     }
     uint8_t flags = is_solid(c) ? point_change_flags(c, had_points) : 0;
-    if (is_solid(c) && c.point_count > 0) {
+    if (is_solvable(c)) {
         flags |= has_points;
     }
     if (state_a_changed || state_b_changed || c.point_count != old_point_count) {
@@ -493,7 +493,7 @@ void ContactSet::update_links() {
     std::size_t next = 0;
     for (const int32_t index : awake_) {
         const Contact& c = contacts_[index];
-        if (is_solid(c) && c.point_count > 0) {
+        if (is_solvable(c)) {
             I2D_ASSERT(next < solvable_.size() && solvable_[next] == index);
             ++next;
         }

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/assert.hpp"
 #include "core/prefetch.hpp"
 #include "dynamics/constants.hpp"
 #include "dynamics/contact_set.hpp"
@@ -437,9 +438,7 @@ void Solver::color_contacts() {
             prefetch_line(&contacts[solvable[k + contacts_ahead]]);
         }
         const Contact& contact = contacts[solvable[k]];
-        if ((contact.flags & contact_sensor) != 0 || contact.point_count == 0) {
-            continue;
-        }
+        I2D_ASSERT(is_solvable(contact));
         const int32_t color =
             colors_.assign((contact.flags & contact_moves_a) ? contact.state_a : ConstraintColors::null_state,
                            (contact.flags & contact_moves_b) ? contact.state_b : ConstraintColors::null_state);
