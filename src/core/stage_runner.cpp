@@ -42,17 +42,30 @@ void StageRunner::run(TaskSystem& tasks, const std::vector<Stage>& stages, bool 
     if (active_.empty()) {
         return;
     }
+    workers_ = tasks.worker_count();
     const int32_t count = int32_t(active_.size());
-    if (count > progress_capacity_) {
-        progress_capacity_ = count + count / 2;
-        progress_ = std::make_unique<Progress[]>(std::size_t(progress_capacity_));
-    }
+    reserve(count);
     for (int32_t s = 0; s < count; ++s) {
-        progress_[s].next_block.store(0, std::memory_order_relaxed);
-        progress_[s].done_blocks.store(0, std::memory_order_relaxed);
+        const int32_t blocks = active_[std::size_t(s)].block_count();
+        Share* shares = &shares_[std::size_t(s) * std::size_t(workers_)];
+        for (int32_t w = 0; w < workers_; ++w) {
+            shares[w].next.store(int32_t(int64_t(blocks) * w / workers_), std::memory_order_relaxed);
+            shares[w].end = int32_t(int64_t(blocks) * (w + 1) / workers_);
+        }
+        done_[s].blocks.store(0, std::memory_order_relaxed);
     }
     current_.store(0, std::memory_order_release);
     tasks.run_on_workers(&work_on, this);
+}
+
+void StageRunner::reserve(int32_t stage_count) {
+    if (stage_count <= capacity_ && workers_ == capacity_workers_) {
+        return;
+    }
+    capacity_ = stage_count + stage_count / 2;
+    capacity_workers_ = workers_;
+    shares_ = std::make_unique<Share[]>(std::size_t(capacity_) * std::size_t(workers_));
+    done_ = std::make_unique<Done[]>(std::size_t(capacity_));
 }
 
 void StageRunner::work_on(int32_t worker, void* runner) { static_cast<StageRunner*>(runner)->work(worker); }
@@ -62,22 +75,12 @@ void StageRunner::work(int32_t worker) {
     int32_t s = current_.load(std::memory_order_acquire);
     while (s < count) {
         const Stage& stage = active_[std::size_t(s)];
-        Progress& progress = progress_[s];
-        const int32_t blocks = stage.block_count();
-        for (;;) {
-            const int32_t block = progress.next_block.fetch_add(1, std::memory_order_relaxed);
-            if (block >= blocks) {
-                break;
-            }
-            const int32_t begin = block * stage.items_per_block;
-            const int32_t end = begin + stage.items_per_block < stage.item_count ? begin + stage.items_per_block
-                                                                                  : stage.item_count;
-            stage.fn(stage.owner, stage, begin, end, worker);
-            // The release half publishes this block's writes; the stage's last block
-            // acquires them all before it opens the next stage.
-            if (progress.done_blocks.fetch_add(1, std::memory_order_acq_rel) + 1 == blocks) {
-                current_.store(s + 1, std::memory_order_release);
-            }
+        const int32_t done_here = claim_blocks(stage, &shares_[std::size_t(s) * std::size_t(workers_)], worker);
+        // The release half publishes this worker's blocks; the count's last addition
+        // acquires them all before it opens the next stage.
+        if (done_here > 0 &&
+            done_[s].blocks.fetch_add(done_here, std::memory_order_acq_rel) + done_here == stage.block_count()) {
+            current_.store(s + 1, std::memory_order_release);
         }
         SpinWait spin;
         int32_t next = current_.load(std::memory_order_acquire);
@@ -87,6 +90,31 @@ void StageRunner::work(int32_t worker) {
         }
         s = next;
     }
+}
+
+// The worker's own share first, then the others' in turn; returns how many blocks it did.
+int32_t StageRunner::claim_blocks(const Stage& stage, Share* shares, int32_t worker) {
+    int32_t done_here = 0;
+    for (int32_t i = 0; i < workers_; ++i) {
+        const int32_t owner = worker + i < workers_ ? worker + i : worker + i - workers_;
+        Share& share = shares[owner];
+        // A plain read first: a finished share is not written to again.
+        if (share.next.load(std::memory_order_relaxed) >= share.end) {
+            continue;
+        }
+        for (;;) {
+            const int32_t block = share.next.fetch_add(1, std::memory_order_relaxed);
+            if (block >= share.end) {
+                break;
+            }
+            const int32_t begin = block * stage.items_per_block;
+            const int32_t end = begin + stage.items_per_block < stage.item_count ? begin + stage.items_per_block
+                                                                                  : stage.item_count;
+            stage.fn(stage.owner, stage, begin, end, worker);
+            ++done_here;
+        }
+    }
+    return done_here;
 }
 
 }  // namespace i2d
