@@ -27,7 +27,7 @@ Stage make_stage(Stage::Fn fn, void* owner, int32_t item_count, int32_t workers,
 void StageRunner::run(TaskSystem& tasks, const std::vector<Stage>& stages, bool parallel) {
     if (!parallel || tasks.worker_count() == 1) {
         for (const Stage& stage : stages) {
-            if (stage.item_count > 0) {
+            if (stage.runs()) {
                 stage.fn(stage.owner, stage, 0, stage.item_count, 0);
             }
         }
@@ -54,7 +54,7 @@ void StageRunner::run(TaskSystem& tasks, const std::vector<Stage>& stages, bool 
         }
         done_[s].blocks.store(0, std::memory_order_relaxed);
     }
-    current_.store(0, std::memory_order_release);
+    current_.store(next_to_run(-1), std::memory_order_release);
     tasks.run_on_workers(&work_on, this);
 }
 
@@ -66,6 +66,16 @@ void StageRunner::reserve(int32_t stage_count) {
     capacity_workers_ = workers_;
     shares_ = std::make_unique<Share[]>(std::size_t(capacity_) * std::size_t(workers_));
     done_ = std::make_unique<Done[]>(std::size_t(capacity_));
+}
+
+// Called by whoever opens a stage, after every stage before it is done: a stage's run_if
+// is final by then.
+int32_t StageRunner::next_to_run(int32_t after) const {
+    int32_t s = after + 1;
+    while (s < int32_t(active_.size()) && !active_[std::size_t(s)].runs()) {
+        ++s;
+    }
+    return s;
 }
 
 void StageRunner::work_on(int32_t worker, void* runner) { static_cast<StageRunner*>(runner)->work(worker); }
@@ -80,7 +90,7 @@ void StageRunner::work(int32_t worker) {
         // acquires them all before it opens the next stage.
         if (done_here > 0 &&
             done_[s].blocks.fetch_add(done_here, std::memory_order_acq_rel) + done_here == stage.block_count()) {
-            current_.store(s + 1, std::memory_order_release);
+            current_.store(next_to_run(s), std::memory_order_release);
         }
         SpinWait spin;
         int32_t next = current_.load(std::memory_order_acquire);

@@ -41,6 +41,11 @@ struct Stage {
     int32_t item_count = 0;
     int32_t items_per_block = 1;  // a stage that must run as a whole: item_count
     int32_t arg0 = 0, arg1 = 0;   // the owner's own (which colour, which substep)
+    /// When set, the stage runs only if this is true once the stages before it are done
+    /// (an earlier stage decides it): skipping costs no wait between workers.
+    const bool* run_if = nullptr;
+
+    bool runs() const { return item_count > 0 && (run_if == nullptr || *run_if); }
 
     int32_t block_count() const { return (item_count + items_per_block - 1) / items_per_block; }
 };
@@ -72,6 +77,7 @@ private:
     void work(int32_t worker);
     int32_t claim_blocks(const Stage& stage, Share* shares, int32_t worker);
     void reserve(int32_t stage_count);
+    int32_t next_to_run(int32_t after) const;
 
     std::vector<Stage> active_;  // the run's stages that have items
     int32_t workers_ = 1;

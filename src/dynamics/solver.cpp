@@ -107,7 +107,7 @@ void Solver::add_stage(Stage::Fn fn, int32_t item_count, int32_t min_items_per_b
 
 // One stage per colour, in solve order, over its joints and then its contacts; the
 // overflow colour whole, on one worker. Restitution passes leave the joints out.
-void Solver::add_color_stages(Stage::Fn fn, int32_t pass, bool with_joints) {
+void Solver::add_color_stages(Stage::Fn fn, int32_t pass, bool with_joints, const bool* run_if) {
     const int32_t min_blocks = (contacts_per_work_block + contact_solver_.kernels().width - 1) /
                                contact_solver_.kernels().width;
     for (int32_t run = 0; run < int32_t(color_runs_.size()); ++run) {
@@ -119,6 +119,7 @@ void Solver::add_color_stages(Stage::Fn fn, int32_t pass, bool with_joints) {
         }
         const int32_t min_items = r.sequential ? items : (r.contact_items > 0 ? min_blocks : joints_per_work_block);
         add_stage(fn, items, min_items, run, pass);
+        stages_.back().run_if = run_if;
     }
 }
 
@@ -209,7 +210,7 @@ void Solver::build_stages(int32_t substep_count) {
     add_stage(&Solver::check_bounce, 1, 1);
     constexpr int32_t restitution_iterations = 4;
     for (int32_t iteration = 0; iteration < restitution_iterations; ++iteration) {
-        add_color_stages(&Solver::restitution, 0, false);
+        add_color_stages(&Solver::restitution, 0, false, &bounce_);
     }
     add_stage(&Solver::store_impulses, contact_solver_.block_count(), min_blocks);
     add_stage(&Solver::store_overflow, contact_solver_.overflow_count() > 0 ? 1 : 0, 1);
@@ -317,14 +318,13 @@ void Solver::check_bounce(void* solver, const Stage&, int32_t, int32_t, int32_t)
     self.bounce_ = self.contact_solver_.any_bounce(self.links_.settings.restitution_threshold);
 }
 
-// Only when something bounces, and then over every contact that pushed, a few times.
+// Only when something bounces (the stages run if bounce_), and then over every contact
+// that pushed, a few times.
 void Solver::restitution(void* solver, const Stage& stage, int32_t begin, int32_t end, int32_t) {
     Solver& self = *static_cast<Solver*>(solver);
-    if (self.bounce_) {
-        const int32_t run = self.color_runs_[std::size_t(stage.arg0)].contact_run;
-        self.contact_solver_.apply_restitution(run, begin, end, self.states_.data(),
-                                               self.links_.settings.restitution_threshold);
-    }
+    const int32_t run = self.color_runs_[std::size_t(stage.arg0)].contact_run;
+    self.contact_solver_.apply_restitution(run, begin, end, self.states_.data(),
+                                           self.links_.settings.restitution_threshold);
 }
 
 void Solver::store_impulses(void* solver, const Stage&, int32_t begin, int32_t end, int32_t) {

@@ -91,7 +91,7 @@ private:
     bool stages_changed(int32_t substep_count);
     void add_stage(Stage::Fn fn, int32_t item_count, int32_t min_items_per_block, int32_t arg0 = 0,
                    int32_t arg1 = 0);
-    void add_color_stages(Stage::Fn fn, int32_t pass, bool with_joints);
+    void add_color_stages(Stage::Fn fn, int32_t pass, bool with_joints, const bool* run_if = nullptr);
     ContactLayout contact_layout() const;
     void finish_bodies();
     // Items [begin, end) of a colour run: its joints first, then its contact items.
