@@ -45,16 +45,16 @@ void StageRunner::run(TaskSystem& tasks, const std::vector<Stage>& stages, bool 
     workers_ = tasks.worker_count();
     const int32_t count = int32_t(active_.size());
     reserve(count);
-    for (int32_t s = 0; s < count; ++s) {
-        const int32_t blocks = active_[std::size_t(s)].block_count();
-        Share* shares = &shares_[std::size_t(s) * std::size_t(workers_)];
-        for (int32_t w = 0; w < workers_; ++w) {
-            shares[w].next.store(int32_t(int64_t(blocks) * w / workers_), std::memory_order_relaxed);
-            shares[w].end = int32_t(int64_t(blocks) * (w + 1) / workers_);
+    for (int32_t w = 0; w < workers_; ++w) {
+        for (int32_t s = 0; s < count; ++s) {
+            const int64_t blocks = active_[std::size_t(s)].block_count();
+            Share& mine = share(w, s);
+            mine.next.store(int32_t(blocks * w / workers_), std::memory_order_relaxed);
+            mine.end = int32_t(blocks * (w + 1) / workers_);
         }
-        done_[s].blocks.store(0, std::memory_order_relaxed);
+        arrivals_[w].arrived.store(false, std::memory_order_relaxed);
     }
-    current_.store(next_to_run(-1), std::memory_order_release);
+    blocks_done_.store(0, std::memory_order_release);
     tasks.run_on_workers(&work_on, this);
 }
 
@@ -62,69 +62,68 @@ void StageRunner::reserve(int32_t stage_count) {
     if (stage_count <= capacity_ && workers_ == capacity_workers_) {
         return;
     }
-    capacity_ = stage_count + stage_count / 2;
+    const int32_t wanted = stage_count + stage_count / 2;
+    capacity_ = (wanted + shares_per_line - 1) / shares_per_line * shares_per_line;
     capacity_workers_ = workers_;
-    shares_ = std::make_unique<Share[]>(std::size_t(capacity_) * std::size_t(workers_));
-    done_ = std::make_unique<Done[]>(std::size_t(capacity_));
-}
-
-// Called by whoever opens a stage, after every stage before it is done: a stage's run_if
-// is final by then.
-int32_t StageRunner::next_to_run(int32_t after) const {
-    int32_t s = after + 1;
-    while (s < int32_t(active_.size()) && !active_[std::size_t(s)].runs()) {
-        ++s;
-    }
-    return s;
+    share_lines_ = std::make_unique<ShareLine[]>(std::size_t(capacity_ / shares_per_line) * std::size_t(workers_));
+    arrivals_ = std::make_unique<Arrival[]>(std::size_t(workers_));
 }
 
 void StageRunner::work_on(int32_t worker, void* runner) { static_cast<StageRunner*>(runner)->work(worker); }
 
+// Every worker walks every stage; whether a stage runs (its run_if) is read only after
+// the stages before it are done, so all workers skip the same ones.
 void StageRunner::work(int32_t worker) {
-    const int32_t count = int32_t(active_.size());
-    int32_t s = current_.load(std::memory_order_acquire);
-    while (s < count) {
+    arrivals_[worker].arrived.store(true, std::memory_order_relaxed);
+    int32_t blocks_before_next = 0;
+    for (int32_t s = 0; s < int32_t(active_.size()); ++s) {
         const Stage& stage = active_[std::size_t(s)];
-        const int32_t done_here = claim_blocks(stage, &shares_[std::size_t(s) * std::size_t(workers_)], worker);
-        // The release half publishes this worker's blocks; the count's last addition
-        // acquires them all before it opens the next stage.
-        if (done_here > 0 &&
-            done_[s].blocks.fetch_add(done_here, std::memory_order_acq_rel) + done_here == stage.block_count()) {
-            current_.store(next_to_run(s), std::memory_order_release);
+        if (!stage.runs()) {
+            continue;
         }
+        blocks_before_next += stage.block_count();
+        const int32_t done_here = claim_blocks(stage, s, worker);
+        // The release half publishes this worker's blocks; whoever reads the total that
+        // ends the stage acquires them all.
+        int32_t done = done_here > 0 ? blocks_done_.fetch_add(done_here, std::memory_order_acq_rel) + done_here
+                                     : blocks_done_.load(std::memory_order_acquire);
         SpinWait spin;
-        int32_t next = current_.load(std::memory_order_acquire);
-        while (next == s) {
+        while (done < blocks_before_next) {
             spin.once();
-            next = current_.load(std::memory_order_acquire);
+            done = blocks_done_.load(std::memory_order_acquire);
         }
-        s = next;
     }
 }
 
-// The worker's own share first, then the others' in turn; returns how many blocks it did.
-int32_t StageRunner::claim_blocks(const Stage& stage, Share* shares, int32_t worker) {
-    int32_t done_here = 0;
-    for (int32_t i = 0; i < workers_; ++i) {
-        const int32_t owner = worker + i < workers_ ? worker + i : worker + i - workers_;
-        Share& share = shares[owner];
-        // A plain read first: a finished share is not written to again.
-        if (share.next.load(std::memory_order_relaxed) >= share.end) {
-            continue;
-        }
-        for (;;) {
-            const int32_t block = share.next.fetch_add(1, std::memory_order_relaxed);
-            if (block >= share.end) {
-                break;
-            }
-            const int32_t begin = block * stage.items_per_block;
-            const int32_t end = begin + stage.items_per_block < stage.item_count ? begin + stage.items_per_block
-                                                                                  : stage.item_count;
-            stage.fn(stage.owner, stage, begin, end, worker);
-            ++done_here;
+// The worker's own share, then the shares of workers that have not arrived; returns how
+// many blocks it did.
+int32_t StageRunner::claim_blocks(const Stage& stage, int32_t s, int32_t worker) {
+    int32_t done_here = claim_share(stage, share(worker, s), worker);
+    for (int32_t other = 0; other < workers_; ++other) {
+        if (other != worker && !arrivals_[other].arrived.load(std::memory_order_relaxed)) {
+            done_here += claim_share(stage, share(other, s), worker);
         }
     }
     return done_here;
+}
+
+int32_t StageRunner::claim_share(const Stage& stage, Share& share, int32_t worker) {
+    int32_t done_here = 0;
+    // A plain read first: a share used up is not written to again.
+    if (share.next.load(std::memory_order_relaxed) >= share.end) {
+        return 0;
+    }
+    for (;;) {
+        const int32_t block = share.next.fetch_add(1, std::memory_order_relaxed);
+        if (block >= share.end) {
+            return done_here;
+        }
+        const int32_t begin = block * stage.items_per_block;
+        const int32_t end = begin + stage.items_per_block < stage.item_count ? begin + stage.items_per_block
+                                                                              : stage.item_count;
+        stage.fn(stage.owner, stage, begin, end, worker);
+        ++done_here;
+    }
 }
 
 }  // namespace i2d

@@ -5,19 +5,21 @@
 // Design note (after Box2D v3's solver stages): one run hands each worker a single task
 // that lasts through every stage, so a step with a hundred stages pays for waking its
 // workers once, and the stages are separated by a counter, not by a task round trip.
-// No worker leads: a worker claims blocks of the current stage until none are left, and
-// whoever completes a stage's last block opens the next stage. So any subset of the
-// workers, even one, finishes the run: a job system that starts some tasks late, out of
-// order, or runs them one after another cannot deadlock it.
 //
-// Each worker owns a contiguous share of every stage's blocks and claims its own first,
-// through a counter on a cache line of its own; only then does it take what is left of
-// the others' shares. Two reasons. The same items go to the same worker in every stage
-// and substep, so a body's state stays in one core's cache instead of crossing to the
-// other core each colour. And a worker that only claims its own share touches no line
-// another core writes, except once per stage to count its blocks done: on a machine
-// whose cores trade a cache line in hundreds of nanoseconds, a shared claim counter
-// cost more per stage than the work of a small stage.
+// Each worker owns a contiguous share of every stage's blocks and claims them through a
+// counter in memory of its own. The same items go to the same worker in every stage and
+// substep, so a body's state stays in one core's cache rather than crossing to the other
+// core each colour. A stage ends when the run's count of blocks done reaches the sum of
+// the blocks of the stages so far; each worker adds to it once per stage and then waits
+// for it. So a stage costs each worker one write to a shared line and one read of it: on
+// a machine whose cores trade a cache line in hundreds of nanoseconds, that wait, not the
+// work, is what a small stage costs.
+//
+// A worker takes another's share only while that worker has not arrived. A worker that
+// has arrived claims its own share of every stage in turn and never blocks inside one,
+// so waiting for it is always finite; and any subset of the workers, even one, finishes
+// the run: a job system that starts some tasks late, out of order, or runs them one after
+// another cannot deadlock it.
 //
 // The split into blocks never changes a result: a stage's items must be independent of
 // one another (each writes only what is its own), which is what makes a world's results
@@ -66,26 +68,36 @@ public:
 
 private:
     // A worker's share of one stage's blocks: [next, end) are still unclaimed.
-    struct alignas(64) Share {
+    struct Share {
         std::atomic<int32_t> next{0};
         int32_t end = 0;
     };
-    struct alignas(64) Done {
-        std::atomic<int32_t> blocks{0};
+    static constexpr int32_t shares_per_line = 8;
+    struct alignas(64) ShareLine {
+        Share shares[shares_per_line];
+    };
+    struct alignas(64) Arrival {
+        std::atomic<bool> arrived{false};
     };
     static void work_on(int32_t worker, void* runner);
     void work(int32_t worker);
-    int32_t claim_blocks(const Stage& stage, Share* shares, int32_t worker);
+    int32_t claim_blocks(const Stage& stage, int32_t s, int32_t worker);
+    int32_t claim_share(const Stage& stage, Share& share, int32_t worker);
+    Share& share(int32_t worker, int32_t s) {
+        const std::size_t k = std::size_t(worker) * std::size_t(capacity_) + std::size_t(s);
+        return share_lines_[k / shares_per_line].shares[k % shares_per_line];
+    }
     void reserve(int32_t stage_count);
-    int32_t next_to_run(int32_t after) const;
 
     std::vector<Stage> active_;  // the run's stages that have items
     int32_t workers_ = 1;
-    std::unique_ptr<Share[]> shares_;  // workers_ per active stage
-    std::unique_ptr<Done[]> done_;     // one per active stage
-    int32_t capacity_ = 0;             // stages the arrays hold, for capacity_workers_ workers
+    // Per worker, its shares of every stage, one after the other (capacity_ of them, a
+    // whole number of cache lines): a worker claiming its own writes only its own lines.
+    std::unique_ptr<ShareLine[]> share_lines_;
+    std::unique_ptr<Arrival[]> arrivals_;  // per worker, whether it has started this run
+    int32_t capacity_ = 0;                 // stages per worker the shares hold
     int32_t capacity_workers_ = 0;
-    alignas(64) std::atomic<int32_t> current_{0};  // the open stage; the stage count when done
+    alignas(64) std::atomic<int32_t> blocks_done_{0};  // over the run's stages so far
 };
 
 }  // namespace i2d

@@ -1,0 +1,173 @@
+// SPDX-License-Identifier: MIT
+// StageRunner: every item of every stage is done once, after every item of the stages
+// before it, for any worker count and block size; a stage whose run_if an earlier stage
+// cleared is skipped by every worker; and a run finishes however a job system schedules
+// the workers' tasks: inline inside enqueue, or only when the engine waits for them.
+#include <atomic>
+#include <vector>
+
+#include "check.h"
+#include "core/stage_runner.hpp"
+#include "core/task_system.hpp"
+
+namespace {
+
+using i2d::Stage;
+
+// Stage k writes k + 1 into each of its items, having checked that the stage before left
+// k there: an item done twice, out of order, or not at all shows in the counts.
+struct Ledger {
+    std::vector<std::atomic<int32_t>> items;
+    std::atomic<int32_t> out_of_order{0};
+    std::atomic<int32_t> bad_worker{0};
+    int32_t workers = 1;
+    bool skip_flag_stage_runs = true;  // cleared by the stage that decides it
+
+    explicit Ledger(int32_t item_count) : items(std::size_t(item_count)) {}
+};
+
+void advance(void* owner, const Stage& stage, int32_t begin, int32_t end, int32_t worker) {
+    Ledger& ledger = *static_cast<Ledger*>(owner);
+    if (worker < 0 || worker >= ledger.workers) {
+        ledger.bad_worker.fetch_add(1);
+    }
+    for (int32_t i = begin; i < end; ++i) {
+        int32_t expected = stage.arg0;
+        if (!ledger.items[std::size_t(i)].compare_exchange_strong(expected, stage.arg0 + 1)) {
+            ledger.out_of_order.fetch_add(1);
+        }
+    }
+}
+
+void clear_skip_flag(void* owner, const Stage&, int32_t, int32_t, int32_t) {
+    static_cast<Ledger*>(owner)->skip_flag_stage_runs = false;
+}
+
+std::vector<Stage> advancing_stages(Ledger& ledger, int32_t stage_count, int32_t item_count, int32_t workers,
+                                    int32_t min_items_per_block) {
+    std::vector<Stage> stages;
+    for (int32_t k = 0; k < stage_count; ++k) {
+        Stage stage = i2d::make_stage(&advance, &ledger, item_count, workers, true, min_items_per_block);
+        stage.arg0 = k;
+        stages.push_back(stage);
+    }
+    return stages;
+}
+
+int32_t items_left_behind(const Ledger& ledger, int32_t final_value) {
+    int32_t count = 0;
+    for (const std::atomic<int32_t>& item : ledger.items) {
+        count += item.load() != final_value ? 1 : 0;
+    }
+    return count;
+}
+
+// A job system that runs each task only when the engine waits for it: worker 0 does its
+// part (and, finding the others absent, theirs) before any other task starts.
+struct DeferredJobs {
+    struct Job {
+        i2d::TaskFn task;
+        int32_t item_count;
+        void* context;
+    };
+    std::vector<Job> jobs;
+    int32_t next = 0;
+
+    static void* enqueue(i2d::TaskFn task, int32_t item_count, int32_t, void* task_context, void* self) {
+        DeferredJobs& deferred = *static_cast<DeferredJobs*>(self);
+        deferred.jobs.push_back(Job{task, item_count, task_context});
+        return self;  // any non-null handle: finish runs whatever is queued
+    }
+    static void finish(void*, void* self) {
+        DeferredJobs& deferred = *static_cast<DeferredJobs*>(self);
+        while (deferred.next < int32_t(deferred.jobs.size())) {
+            const Job job = deferred.jobs[std::size_t(deferred.next++)];
+            job.task(0, job.item_count, 0, job.context);
+        }
+    }
+};
+
+// Runs tasks at once, inside enqueue: the other workers finish the run before worker 0
+// has started.
+void* run_inline(i2d::TaskFn task, int32_t item_count, int32_t, void* task_context, void*) {
+    task(0, item_count, 0, task_context);
+    return nullptr;
+}
+void finish_nothing(void*, void*) {}
+
+}  // namespace
+
+I2D_TEST(unit_stage_runner_does_every_item_once_in_stage_order) {
+    const int32_t worker_counts[] = {1, 2, 3, 4, 8};
+    const int32_t item_counts[] = {1, 3, 17, 1000};
+    const int32_t min_items[] = {1, 4, 64};
+    constexpr int32_t stage_count = 12;
+    constexpr int32_t runs = 3;
+    for (const int32_t workers : worker_counts) {
+        i2d::TaskSystem tasks(workers, i2d::TaskCallbacks{});
+        i2d::StageRunner runner;
+        for (const int32_t item_count : item_counts) {
+            for (const int32_t min_per_block : min_items) {
+                for (int32_t run = 0; run < runs; ++run) {
+                    Ledger ledger(item_count);
+                    ledger.workers = workers;
+                    runner.run(tasks, advancing_stages(ledger, stage_count, item_count, workers, min_per_block), true);
+                    I2D_CHECK(ledger.out_of_order.load() == 0);
+                    I2D_CHECK(ledger.bad_worker.load() == 0);
+                    I2D_CHECK(items_left_behind(ledger, stage_count) == 0);
+                }
+            }
+        }
+    }
+}
+
+I2D_TEST(unit_stage_runner_skips_a_stage_an_earlier_stage_turned_off) {
+    for (const int32_t workers : {1, 2, 4}) {
+        i2d::TaskSystem tasks(workers, i2d::TaskCallbacks{});
+        i2d::StageRunner runner;
+        constexpr int32_t item_count = 200;
+        Ledger ledger(item_count);
+        ledger.workers = workers;
+        // Stage 0 advances every item to 1; the decider clears the flag; the guarded stage
+        // would advance to 2 and the last stage expects 1, so it finds every item out of
+        // order if the guarded stage ran, for any worker.
+        std::vector<Stage> stages = advancing_stages(ledger, 1, item_count, workers, 8);
+        stages.push_back(i2d::make_stage(&clear_skip_flag, &ledger, 1, workers, true, 1));
+        Stage guarded = i2d::make_stage(&advance, &ledger, item_count, workers, true, 8);
+        guarded.arg0 = 1;
+        guarded.run_if = &ledger.skip_flag_stage_runs;
+        stages.push_back(guarded);
+        Stage last = guarded;
+        last.run_if = nullptr;
+        stages.push_back(last);
+        runner.run(tasks, stages, true);
+        I2D_CHECK(!ledger.skip_flag_stage_runs);
+        I2D_CHECK(ledger.out_of_order.load() == 0);
+        I2D_CHECK(items_left_behind(ledger, 2) == 0);
+    }
+}
+
+I2D_TEST(unit_stage_runner_finishes_with_tasks_deferred_or_inline) {
+    constexpr int32_t workers = 4, item_count = 500, stage_count = 20;
+    {
+        DeferredJobs deferred;
+        deferred.jobs.reserve(workers);
+        i2d::TaskSystem tasks(workers, i2d::TaskCallbacks{&DeferredJobs::enqueue, &DeferredJobs::finish, &deferred});
+        i2d::StageRunner runner;
+        Ledger ledger(item_count);
+        ledger.workers = workers;
+        runner.run(tasks, advancing_stages(ledger, stage_count, item_count, workers, 16), true);
+        I2D_CHECK(deferred.next == workers - 1);  // every task ran, after worker 0
+        I2D_CHECK(ledger.out_of_order.load() == 0);
+        I2D_CHECK(items_left_behind(ledger, stage_count) == 0);
+    }
+    {
+        i2d::TaskSystem tasks(workers, i2d::TaskCallbacks{&run_inline, &finish_nothing, nullptr});
+        i2d::StageRunner runner;
+        Ledger ledger(item_count);
+        ledger.workers = workers;
+        runner.run(tasks, advancing_stages(ledger, stage_count, item_count, workers, 16), true);
+        I2D_CHECK(ledger.out_of_order.load() == 0);
+        I2D_CHECK(items_left_behind(ledger, stage_count) == 0);
+    }
+}
