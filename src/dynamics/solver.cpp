@@ -106,21 +106,64 @@ void Solver::add_stage(Stage::Fn fn, int32_t item_count, int32_t min_items_per_b
 }
 
 // One stage per colour, in solve order, over its joints and then its contacts; the
-// overflow colour whole, on one worker. Restitution passes leave the joints out.
-void Solver::add_color_stages(Stage::Fn fn, int32_t pass, bool with_joints, const bool* run_if) {
-    const int32_t min_blocks = (contacts_per_work_block + contact_solver_.kernels().width - 1) /
-                               contact_solver_.kernels().width;
-    for (int32_t run = 0; run < int32_t(color_runs_.size()); ++run) {
+// overflow colour whole, on one worker. Restitution passes leave the joints out. The
+// colours at the end that each fit in one block (with the overflow, if any) share one
+// stage: a scene's last colours often hold a few contacts each, and a stage apiece cost
+// a wait between workers (hundreds of nanoseconds) for tens of nanoseconds of work.
+template <Stage::Fn fn, bool with_joints>
+void Solver::add_color_stages(int32_t pass, const bool* run_if) {
+    const int32_t runs = int32_t(color_runs_.size());
+    int32_t tail = runs;
+    while (tail > 0 && run_fits_one_block(tail - 1, with_joints)) {
+        --tail;
+    }
+    const int32_t separate = runs - tail >= 2 ? tail : runs;
+    for (int32_t run = 0; run < separate; ++run) {
         const ColorRun& r = color_runs_[std::size_t(run)];
-        const int32_t joints = with_joints ? r.joint_count : 0;
-        const int32_t items = joints + r.contact_items;
+        const int32_t items = run_items(run, with_joints);
         if (items == 0) {
             continue;
         }
-        const int32_t min_items = r.sequential ? items : (r.contact_items > 0 ? min_blocks : joints_per_work_block);
+        const int32_t min_items = r.sequential ? items : (r.contact_items > 0 ? min_contact_items() : joints_per_work_block);
         add_stage(fn, items, min_items, run, pass);
         stages_.back().run_if = run_if;
     }
+    if (separate < runs) {
+        add_stage(&Solver::run_tail<fn, with_joints>, 1, 1, separate, pass);
+        stages_.back().run_if = run_if;
+    }
+}
+
+// The colours from stage.arg0 on, each whole and in order, as their own stages would.
+template <Stage::Fn fn, bool with_joints>
+void Solver::run_tail(void* solver, const Stage& stage, int32_t, int32_t, int32_t worker) {
+    Solver& self = *static_cast<Solver*>(solver);
+    Stage one = stage;
+    for (int32_t run = stage.arg0; run < int32_t(self.color_runs_.size()); ++run) {
+        const int32_t items = self.run_items(run, with_joints);
+        if (items > 0) {
+            one.arg0 = run;
+            one.item_count = items;
+            fn(solver, one, 0, items, worker);
+        }
+    }
+}
+
+int32_t Solver::run_items(int32_t run, bool with_joints) const {
+    const ColorRun& r = color_runs_[std::size_t(run)];
+    return (with_joints ? r.joint_count : 0) + r.contact_items;
+}
+
+bool Solver::run_fits_one_block(int32_t run, bool with_joints) const {
+    const ColorRun& r = color_runs_[std::size_t(run)];
+    const int32_t min_items = r.contact_items > 0 ? min_contact_items() : joints_per_work_block;
+    return r.sequential || run_items(run, with_joints) <= min_items;
+}
+
+// SIMD blocks of contacts per work block.
+int32_t Solver::min_contact_items() const {
+    const int32_t width = contact_solver_.kernels().width;
+    return (contacts_per_work_block + width - 1) / width;
 }
 
 Solver::RunSplit Solver::split_run(int32_t run, int32_t begin, int32_t end) const {
@@ -187,8 +230,7 @@ void Solver::build_stages(int32_t substep_count) {
         return;  // a steady scene: the same stages over the same counts as last step
     }
     const int32_t bodies = int32_t(states_.size()) - 1;
-    const int32_t min_blocks = (contacts_per_work_block + contact_solver_.kernels().width - 1) /
-                               contact_solver_.kernels().width;
+    const int32_t min_blocks = min_contact_items();
     stages_.clear();
     add_stage(&Solver::gather_bodies, bodies, bodies_per_work_block);
     add_stage(&Solver::prepare_joints, joint_solver_.count(), joints_per_work_block);
@@ -197,20 +239,20 @@ void Solver::build_stages(int32_t substep_count) {
     add_stage(&Solver::pack_overflow, contact_solver_.overflow_count(), contacts_per_work_block);
     for (int32_t i = 0; i < substep_count; ++i) {
         add_stage(&Solver::integrate_velocities, bodies, bodies_per_work_block);
-        add_color_stages(&Solver::warm_start, 0, true);
-        add_color_stages(&Solver::solve, 2 * i, true);
+        add_color_stages<&Solver::warm_start, true>(0);
+        add_color_stages<&Solver::solve, true>(2 * i);
         add_stage(&Solver::solve_joint_trees, trees, joint_trees_per_work_block, 0, 2 * i);
         add_stage(&Solver::integrate_positions, bodies, bodies_per_work_block);
-        add_color_stages(&Solver::solve, 2 * i + 1, true);
+        add_color_stages<&Solver::solve, true>(2 * i + 1);
         add_stage(&Solver::solve_joint_trees, trees, joint_trees_per_work_block, 0, 2 * i + 1);
     }
-    add_color_stages(&Solver::solve, 2 * substep_count - 1, true);
+    add_color_stages<&Solver::solve, true>(2 * substep_count - 1);
     add_stage(&Solver::solve_joint_trees, trees, joint_trees_per_work_block, 0, 2 * substep_count - 1);
 
     add_stage(&Solver::check_bounce, 1, 1);
     constexpr int32_t restitution_iterations = 4;
     for (int32_t iteration = 0; iteration < restitution_iterations; ++iteration) {
-        add_color_stages(&Solver::restitution, 0, false, &bounce_);
+        add_color_stages<&Solver::restitution, false>(0, &bounce_);
     }
     add_stage(&Solver::store_impulses, contact_solver_.block_count(), min_blocks);
     add_stage(&Solver::store_overflow, contact_solver_.overflow_count() > 0 ? 1 : 0, 1);

@@ -91,7 +91,13 @@ private:
     bool stages_changed(int32_t substep_count);
     void add_stage(Stage::Fn fn, int32_t item_count, int32_t min_items_per_block, int32_t arg0 = 0,
                    int32_t arg1 = 0);
-    void add_color_stages(Stage::Fn fn, int32_t pass, bool with_joints, const bool* run_if = nullptr);
+    template <Stage::Fn fn, bool with_joints>
+    void add_color_stages(int32_t pass, const bool* run_if = nullptr);
+    template <Stage::Fn fn, bool with_joints>
+    static void run_tail(void* solver, const Stage& stage, int32_t begin, int32_t end, int32_t worker);
+    int32_t run_items(int32_t run, bool with_joints) const;
+    bool run_fits_one_block(int32_t run, bool with_joints) const;
+    int32_t min_contact_items() const;
     ContactLayout contact_layout() const;
     void finish_bodies();
     // Items [begin, end) of a colour run: its joints first, then its contact items.
