@@ -1,10 +1,17 @@
 // SPDX-License-Identifier: MIT
-// StageRunner: claim blocks, and open the next stage on completing the last one.
+// StageRunner: claim blocks from the front of one's share and the back of the others',
+// count them done, wait for the stage's total.
 #include "core/stage_runner.hpp"
 
 #include "core/spin_wait.hpp"
 
 namespace i2d {
+
+namespace {
+int32_t front_of(uint64_t range) { return int32_t(range & 0xffffffffu); }
+int32_t end_of(uint64_t range) { return int32_t(range >> 32); }
+uint64_t range_of(int32_t front, int32_t end) { return uint64_t(uint32_t(front)) | uint64_t(uint32_t(end)) << 32; }
+}  // namespace
 
 int32_t items_per_block(int32_t items, int32_t workers, int32_t min_items) {
     constexpr int32_t blocks_per_worker = 4;
@@ -48,11 +55,9 @@ void StageRunner::run(TaskSystem& tasks, const std::vector<Stage>& stages, bool 
     for (int32_t w = 0; w < workers_; ++w) {
         for (int32_t s = 0; s < count; ++s) {
             const int64_t blocks = active_[std::size_t(s)].block_count();
-            Share& mine = share(w, s);
-            mine.next.store(int32_t(blocks * w / workers_), std::memory_order_relaxed);
-            mine.end = int32_t(blocks * (w + 1) / workers_);
+            share(w, s).range.store(range_of(int32_t(blocks * w / workers_), int32_t(blocks * (w + 1) / workers_)),
+                                    std::memory_order_relaxed);
         }
-        arrivals_[w].arrived.store(false, std::memory_order_relaxed);
     }
     blocks_done_.store(0, std::memory_order_release);
     tasks.run_on_workers(&work_on, this);
@@ -66,7 +71,6 @@ void StageRunner::reserve(int32_t stage_count) {
     capacity_ = (wanted + shares_per_line - 1) / shares_per_line * shares_per_line;
     capacity_workers_ = workers_;
     share_lines_ = std::make_unique<ShareLine[]>(std::size_t(capacity_ / shares_per_line) * std::size_t(workers_));
-    arrivals_ = std::make_unique<Arrival[]>(std::size_t(workers_));
 }
 
 void StageRunner::work_on(int32_t worker, void* runner) { static_cast<StageRunner*>(runner)->work(worker); }
@@ -74,7 +78,6 @@ void StageRunner::work_on(int32_t worker, void* runner) { static_cast<StageRunne
 // Every worker walks every stage; whether a stage runs (its run_if) is read only after
 // the stages before it are done, so all workers skip the same ones.
 void StageRunner::work(int32_t worker) {
-    arrivals_[worker].arrived.store(true, std::memory_order_relaxed);
     int32_t blocks_before_next = 0;
     for (int32_t s = 0; s < int32_t(active_.size()); ++s) {
         const Stage& stage = active_[std::size_t(s)];
@@ -95,35 +98,52 @@ void StageRunner::work(int32_t worker) {
     }
 }
 
-// The worker's own share, then the shares of workers that have not arrived; returns how
-// many blocks it did.
+// The worker's own share, then what is left of the others'; returns how many blocks it did.
 int32_t StageRunner::claim_blocks(const Stage& stage, int32_t s, int32_t worker) {
-    int32_t done_here = claim_share(stage, share(worker, s), worker);
+    int32_t done_here = 0;
+    for (int32_t block = claim_front(share(worker, s)); block >= 0; block = claim_front(share(worker, s))) {
+        run_block(stage, block, worker);
+        ++done_here;
+    }
     for (int32_t other = 0; other < workers_; ++other) {
-        if (other != worker && !arrivals_[other].arrived.load(std::memory_order_relaxed)) {
-            done_here += claim_share(stage, share(other, s), worker);
+        if (other == worker) {
+            continue;
+        }
+        Share& theirs = share(other, s);
+        for (int32_t block = claim_back(theirs); block >= 0; block = claim_back(theirs)) {
+            run_block(stage, block, worker);
+            ++done_here;
         }
     }
     return done_here;
 }
 
-int32_t StageRunner::claim_share(const Stage& stage, Share& share, int32_t worker) {
-    int32_t done_here = 0;
-    // A plain read first: a share used up is not written to again.
-    if (share.next.load(std::memory_order_relaxed) >= share.end) {
-        return 0;
-    }
-    for (;;) {
-        const int32_t block = share.next.fetch_add(1, std::memory_order_relaxed);
-        if (block >= share.end) {
-            return done_here;
+int32_t StageRunner::claim_front(Share& share) {
+    uint64_t range = share.range.load(std::memory_order_relaxed);
+    while (front_of(range) < end_of(range)) {
+        if (share.range.compare_exchange_weak(range, range_of(front_of(range) + 1, end_of(range)),
+                                              std::memory_order_relaxed)) {
+            return front_of(range);
         }
-        const int32_t begin = block * stage.items_per_block;
-        const int32_t end = begin + stage.items_per_block < stage.item_count ? begin + stage.items_per_block
-                                                                              : stage.item_count;
-        stage.fn(stage.owner, stage, begin, end, worker);
-        ++done_here;
     }
+    return -1;
+}
+
+int32_t StageRunner::claim_back(Share& share) {
+    uint64_t range = share.range.load(std::memory_order_relaxed);
+    while (front_of(range) < end_of(range)) {
+        if (share.range.compare_exchange_weak(range, range_of(front_of(range), end_of(range) - 1),
+                                              std::memory_order_relaxed)) {
+            return end_of(range) - 1;
+        }
+    }
+    return -1;
+}
+
+void StageRunner::run_block(const Stage& stage, int32_t block, int32_t worker) {
+    const int32_t begin = block * stage.items_per_block;
+    const int32_t end = begin + stage.items_per_block < stage.item_count ? begin + stage.items_per_block : stage.item_count;
+    stage.fn(stage.owner, stage, begin, end, worker);
 }
 
 }  // namespace i2d

@@ -6,20 +6,20 @@
 // that lasts through every stage, so a step with a hundred stages pays for waking its
 // workers once, and the stages are separated by a counter, not by a task round trip.
 //
-// Each worker owns a contiguous share of every stage's blocks and claims them through a
-// counter in memory of its own. The same items go to the same worker in every stage and
-// substep, so a body's state stays in one core's cache rather than crossing to the other
-// core each colour. A stage ends when the run's count of blocks done reaches the sum of
-// the blocks of the stages so far; each worker adds to it once per stage and then waits
-// for it. So a stage costs each worker one write to a shared line and one read of it: on
-// a machine whose cores trade a cache line in hundreds of nanoseconds, that wait, not the
-// work, is what a small stage costs.
+// Each worker owns a contiguous share of every stage's blocks and claims them from the
+// front, through a counter in memory of its own. The same items go to the same worker in
+// every stage and substep, so a body's state stays in one core's cache rather than
+// crossing to the other core each colour. A worker done with its share takes blocks from
+// the back of the others' shares: when one core runs slower for a while (a shared machine,
+// an interrupt), the other takes over its last blocks and the owners keep the rest. A
+// stage ends when the run's count of blocks done reaches the sum of the blocks of the
+// stages so far; each worker adds to it once per stage and then waits for it. On a
+// machine whose cores trade a cache line in hundreds of nanoseconds, that wait, not the
+// work, is what a small stage costs, so it is kept to one shared write and read.
 //
-// A worker takes another's share only while that worker has not arrived. A worker that
-// has arrived claims its own share of every stage in turn and never blocks inside one,
-// so waiting for it is always finite; and any subset of the workers, even one, finishes
-// the run: a job system that starts some tasks late, out of order, or runs them one after
-// another cannot deadlock it.
+// A worker never blocks inside a stage, and any subset of the workers, even one, finishes
+// the run: a job system that starts some tasks late, out of order, or runs them one
+// after another cannot deadlock it.
 //
 // The split into blocks never changes a result: a stage's items must be independent of
 // one another (each writes only what is its own), which is what makes a world's results
@@ -67,22 +67,22 @@ public:
     void run(TaskSystem& tasks, const std::vector<Stage>& stages, bool parallel);
 
 private:
-    // A worker's share of one stage's blocks: [next, end) are still unclaimed.
+    // A worker's share of one stage's blocks: [front, end) are still unclaimed, front in
+    // the low half, end in the high half. The owner claims from the front; a worker done
+    // with its own share takes from the back, so the owner keeps all but the last blocks.
     struct Share {
-        std::atomic<int32_t> next{0};
-        int32_t end = 0;
+        std::atomic<uint64_t> range{0};
     };
     static constexpr int32_t shares_per_line = 8;
     struct alignas(64) ShareLine {
         Share shares[shares_per_line];
     };
-    struct alignas(64) Arrival {
-        std::atomic<bool> arrived{false};
-    };
     static void work_on(int32_t worker, void* runner);
     void work(int32_t worker);
     int32_t claim_blocks(const Stage& stage, int32_t s, int32_t worker);
-    int32_t claim_share(const Stage& stage, Share& share, int32_t worker);
+    static int32_t claim_front(Share& share);
+    static int32_t claim_back(Share& share);
+    static void run_block(const Stage& stage, int32_t block, int32_t worker);
     Share& share(int32_t worker, int32_t s) {
         const std::size_t k = std::size_t(worker) * std::size_t(capacity_) + std::size_t(s);
         return share_lines_[k / shares_per_line].shares[k % shares_per_line];
@@ -94,8 +94,7 @@ private:
     // Per worker, its shares of every stage, one after the other (capacity_ of them, a
     // whole number of cache lines): a worker claiming its own writes only its own lines.
     std::unique_ptr<ShareLine[]> share_lines_;
-    std::unique_ptr<Arrival[]> arrivals_;  // per worker, whether it has started this run
-    int32_t capacity_ = 0;                 // stages per worker the shares hold
+    int32_t capacity_ = 0;  // stages per worker the shares hold
     int32_t capacity_workers_ = 0;
     alignas(64) std::atomic<int32_t> blocks_done_{0};  // over the run's stages so far
 };
