@@ -85,32 +85,51 @@ void StageRunner::work(int32_t worker) {
             continue;
         }
         blocks_before_next += stage.block_count();
-        const int32_t done_here = claim_blocks(stage, s, worker);
-        // The release half publishes this worker's blocks; whoever reads the total that
-        // ends the stage acquires them all.
-        int32_t done = done_here > 0 ? blocks_done_.fetch_add(done_here, std::memory_order_acq_rel) + done_here
-                                     : blocks_done_.load(std::memory_order_acquire);
+        int32_t done = count_done(claim_own(stage, s, worker));
         SpinWait spin;
-        while (done < blocks_before_next) {
+        for (int32_t spins = 1; done < blocks_before_next; ++spins) {
+            // Late blocks are taken over only after a short wait: most stages end within
+            // it, and looking at another worker's share costs a cache line from its core.
+            // A worker's last block is left to it (it is likely working on the one before)
+            // unless the wait goes on long: the worker may not have started at all.
+            if (spins % spins_before_taking_over == 0) {
+                const int32_t taken = take_over(stage, s, worker, spins < spins_before_taking_all ? 1 : 0);
+                if (taken > 0) {
+                    done = count_done(taken);
+                    continue;
+                }
+            }
             spin.once();
             done = blocks_done_.load(std::memory_order_acquire);
         }
     }
 }
 
-// The worker's own share, then what is left of the others'; returns how many blocks it did.
-int32_t StageRunner::claim_blocks(const Stage& stage, int32_t s, int32_t worker) {
+// The release half publishes this worker's blocks; whoever reads the total that ends the
+// stage acquires them all.
+int32_t StageRunner::count_done(int32_t blocks) {
+    return blocks > 0 ? blocks_done_.fetch_add(blocks, std::memory_order_acq_rel) + blocks
+                      : blocks_done_.load(std::memory_order_acquire);
+}
+
+int32_t StageRunner::claim_own(const Stage& stage, int32_t s, int32_t worker) {
     int32_t done_here = 0;
     for (int32_t block = claim_front(share(worker, s)); block >= 0; block = claim_front(share(worker, s))) {
         run_block(stage, block, worker);
         ++done_here;
     }
+    return done_here;
+}
+
+// Blocks from the back of the other workers' shares, while more than `leave` are left.
+int32_t StageRunner::take_over(const Stage& stage, int32_t s, int32_t worker, int32_t leave) {
+    int32_t done_here = 0;
     for (int32_t other = 0; other < workers_; ++other) {
         if (other == worker) {
             continue;
         }
         Share& theirs = share(other, s);
-        for (int32_t block = claim_back(theirs); block >= 0; block = claim_back(theirs)) {
+        for (int32_t block = claim_back(theirs, leave); block >= 0; block = claim_back(theirs, leave)) {
             run_block(stage, block, worker);
             ++done_here;
         }
@@ -129,9 +148,9 @@ int32_t StageRunner::claim_front(Share& share) {
     return -1;
 }
 
-int32_t StageRunner::claim_back(Share& share) {
+int32_t StageRunner::claim_back(Share& share, int32_t leave) {
     uint64_t range = share.range.load(std::memory_order_relaxed);
-    while (front_of(range) < end_of(range)) {
+    while (front_of(range) + leave < end_of(range)) {
         if (share.range.compare_exchange_weak(range, range_of(front_of(range), end_of(range) - 1),
                                               std::memory_order_relaxed)) {
             return end_of(range) - 1;

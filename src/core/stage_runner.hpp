@@ -74,14 +74,21 @@ private:
         std::atomic<uint64_t> range{0};
     };
     static constexpr int32_t shares_per_line = 8;
+    // Pauses a worker waits for a stage's end before it takes over another's blocks:
+    // about a microsecond.
+    static constexpr int32_t spins_before_taking_over = 32;
+    // ... and before it takes a worker's last block too: tens of microseconds.
+    static constexpr int32_t spins_before_taking_all = 1024;
     struct alignas(64) ShareLine {
         Share shares[shares_per_line];
     };
     static void work_on(int32_t worker, void* runner);
     void work(int32_t worker);
-    int32_t claim_blocks(const Stage& stage, int32_t s, int32_t worker);
+    int32_t claim_own(const Stage& stage, int32_t s, int32_t worker);
+    int32_t take_over(const Stage& stage, int32_t s, int32_t worker, int32_t leave);
+    int32_t count_done(int32_t blocks);
     static int32_t claim_front(Share& share);
-    static int32_t claim_back(Share& share);
+    static int32_t claim_back(Share& share, int32_t leave);
     static void run_block(const Stage& stage, int32_t block, int32_t worker);
     Share& share(int32_t worker, int32_t s) {
         const std::size_t k = std::size_t(worker) * std::size_t(capacity_) + std::size_t(s);
