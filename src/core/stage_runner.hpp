@@ -42,7 +42,7 @@ struct Stage {
     void* owner = nullptr;
     int32_t item_count = 0;
     int32_t items_per_block = 1;  // a stage that must run as a whole: item_count
-    int32_t arg0 = 0, arg1 = 0;   // the owner's own (which colour, which substep)
+    int32_t arg0 = 0, arg1 = 0, arg2 = 0;  // the owner's own (which colours, which substep)
     /// When set, the stage runs only if this is true once the stages before it are done
     /// (an earlier stage decides it): skipping costs no wait between workers.
     const bool* run_if = nullptr;

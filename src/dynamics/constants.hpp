@@ -115,6 +115,9 @@ constexpr int32_t parallel_min_moved_proxies = 64;
 constexpr int32_t bodies_per_work_block = 64;
 constexpr int32_t contacts_per_work_block = 64;
 constexpr int32_t joints_per_work_block = 32;
+// A colour of at most this many work blocks is solved on one worker, in one stage with the
+// small colours beside it: shared out, it would cost more in waiting than it saves.
+constexpr int32_t small_color_blocks = 2;
 constexpr int32_t joint_trees_per_work_block = 8;
 constexpr int32_t proxies_per_work_block = 16;
 

@@ -106,40 +106,45 @@ void Solver::add_stage(Stage::Fn fn, int32_t item_count, int32_t min_items_per_b
 }
 
 // One stage per colour, in solve order, over its joints and then its contacts; the
-// overflow colour whole, on one worker. Restitution passes leave the joints out. The
-// colours at the end that each fit in one block (with the overflow, if any) share one
-// stage: a scene's last colours often hold a few contacts each, and a stage apiece cost
-// a wait between workers (hundreds of nanoseconds) for tens of nanoseconds of work.
+// overflow colour whole, on one worker. Restitution passes leave the joints out. Small
+// colours next to each other (the overflow counts as one) share one stage that solves them
+// in order on one worker: a scene's last colours often hold a few constraints each, and
+// a stage apiece cost a wait between workers (hundreds of nanoseconds) for tens of
+// nanoseconds of work.
 template <Stage::Fn fn, bool with_joints>
 void Solver::add_color_stages(int32_t pass, const bool* run_if) {
     const int32_t runs = int32_t(color_runs_.size());
-    int32_t tail = runs;
-    while (tail > 0 && run_fits_one_block(tail - 1, with_joints)) {
-        --tail;
-    }
-    const int32_t separate = runs - tail >= 2 ? tail : runs;
-    for (int32_t run = 0; run < separate; ++run) {
-        const ColorRun& r = color_runs_[std::size_t(run)];
-        const int32_t items = run_items(run, with_joints);
-        if (items == 0) {
+    for (int32_t run = 0; run < runs;) {
+        int32_t group_end = run;
+        int32_t group_stages = 0;
+        while (group_end < runs && run_is_small(group_end, with_joints)) {
+            group_stages += run_items(group_end, with_joints) > 0 ? 1 : 0;
+            ++group_end;
+        }
+        if (group_stages >= 2) {
+            add_stage(&Solver::run_group<fn, with_joints>, 1, 1, run, pass);
+            stages_.back().arg2 = group_end;
+            stages_.back().run_if = run_if;
+            run = group_end;
             continue;
         }
-        const int32_t min_items = r.sequential ? items : (r.contact_items > 0 ? min_contact_items() : joints_per_work_block);
-        add_stage(fn, items, min_items, run, pass);
-        stages_.back().run_if = run_if;
-    }
-    if (separate < runs) {
-        add_stage(&Solver::run_tail<fn, with_joints>, 1, 1, separate, pass);
-        stages_.back().run_if = run_if;
+        const ColorRun& r = color_runs_[std::size_t(run)];
+        const int32_t items = run_items(run, with_joints);
+        if (items > 0) {
+            const int32_t min_items = r.sequential ? items : min_items_of(run);
+            add_stage(fn, items, min_items, run, pass);
+            stages_.back().run_if = run_if;
+        }
+        ++run;
     }
 }
 
-// The colours from stage.arg0 on, each whole and in order, as their own stages would.
+// The colours [stage.arg0, stage.arg2), each whole and in order, as their own stages would.
 template <Stage::Fn fn, bool with_joints>
-void Solver::run_tail(void* solver, const Stage& stage, int32_t, int32_t, int32_t worker) {
+void Solver::run_group(void* solver, const Stage& stage, int32_t, int32_t, int32_t worker) {
     Solver& self = *static_cast<Solver*>(solver);
     Stage one = stage;
-    for (int32_t run = stage.arg0; run < int32_t(self.color_runs_.size()); ++run) {
+    for (int32_t run = stage.arg0; run < stage.arg2; ++run) {
         const int32_t items = self.run_items(run, with_joints);
         if (items > 0) {
             one.arg0 = run;
@@ -154,10 +159,18 @@ int32_t Solver::run_items(int32_t run, bool with_joints) const {
     return (with_joints ? r.joint_count : 0) + r.contact_items;
 }
 
-bool Solver::run_fits_one_block(int32_t run, bool with_joints) const {
+// At most small_color_blocks work blocks of joints and as many of contacts: too little to
+// share out between workers.
+bool Solver::run_is_small(int32_t run, bool with_joints) const {
     const ColorRun& r = color_runs_[std::size_t(run)];
-    const int32_t min_items = r.contact_items > 0 ? min_contact_items() : joints_per_work_block;
-    return r.sequential || run_items(run, with_joints) <= min_items;
+    const int32_t joints = with_joints ? r.joint_count : 0;
+    return r.sequential || (joints <= small_color_blocks * joints_per_work_block &&
+                            r.contact_items <= small_color_blocks * min_contact_items());
+}
+
+// Items per work block at least: SIMD blocks of contacts where the colour has contacts.
+int32_t Solver::min_items_of(int32_t run) const {
+    return color_runs_[std::size_t(run)].contact_items > 0 ? min_contact_items() : joints_per_work_block;
 }
 
 // SIMD blocks of contacts per work block.

@@ -94,9 +94,10 @@ private:
     template <Stage::Fn fn, bool with_joints>
     void add_color_stages(int32_t pass, const bool* run_if = nullptr);
     template <Stage::Fn fn, bool with_joints>
-    static void run_tail(void* solver, const Stage& stage, int32_t begin, int32_t end, int32_t worker);
+    static void run_group(void* solver, const Stage& stage, int32_t begin, int32_t end, int32_t worker);
     int32_t run_items(int32_t run, bool with_joints) const;
-    bool run_fits_one_block(int32_t run, bool with_joints) const;
+    bool run_is_small(int32_t run, bool with_joints) const;
+    int32_t min_items_of(int32_t run) const;
     int32_t min_contact_items() const;
     ContactLayout contact_layout() const;
     void finish_bodies();
