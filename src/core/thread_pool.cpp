@@ -2,6 +2,8 @@
 // ThreadPool: one slot per thread, spin then sleep.
 #include "core/thread_pool.hpp"
 
+#include <chrono>
+
 #include "core/spin_wait.hpp"
 
 namespace i2d {
@@ -67,9 +69,12 @@ void ThreadPool::serve(int32_t thread) {
     Slot& slot = *slots_[std::size_t(thread)];
     for (;;) {
         SpinWait spin;
+        const auto sleep_at = std::chrono::steady_clock::now() + std::chrono::microseconds(idle_spin_microseconds);
         int32_t state = slot.state.load(std::memory_order_acquire);
-        while (state != ready && state != stopping) {
-            if (spin.long_wait()) {
+        for (int32_t spins = 1; state != ready && state != stopping; ++spins) {
+            // The clock is read now and then: a read costs as much as tens of pauses.
+            constexpr int32_t spins_per_clock_read = 64;
+            if (spins % spins_per_clock_read == 0 && std::chrono::steady_clock::now() >= sleep_at) {
                 std::unique_lock<std::mutex> lock(slot.mutex);
                 slot.wake.wait(lock, [&] {
                     state = slot.state.load(std::memory_order_acquire);
