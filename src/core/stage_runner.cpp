@@ -87,7 +87,7 @@ void StageRunner::work(int32_t worker) {
         blocks_before_next += stage.block_count();
         int32_t done = count_done(claim_own(stage, s, worker));
         SpinWait spin;
-        for (int32_t spins = 1; done < blocks_before_next; ++spins) {
+        for (int64_t spins = 1; done < blocks_before_next; ++spins) {
             // Late blocks are taken over only after a short wait: most stages end within
             // it, and looking at another worker's share costs a cache line from its core.
             // A worker's last block is left to it (it is likely working on the one before)

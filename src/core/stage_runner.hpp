@@ -13,9 +13,10 @@
 // the back of the others' shares: when one core runs slower for a while (a shared machine,
 // an interrupt), the other takes over its last blocks and the owners keep the rest. A
 // stage ends when the run's count of blocks done reaches the sum of the blocks of the
-// stages so far; each worker adds to it once per stage and then waits for it. On a
-// machine whose cores trade a cache line in hundreds of nanoseconds, that wait, not the
-// work, is what a small stage costs, so it is kept to one shared write and read.
+// stages so far; each worker adds what it did (once, or again for blocks it took over)
+// and waits for it. On a machine whose cores trade a cache line in hundreds of
+// nanoseconds, that wait, not the work, is what a small stage costs, so it is kept to one
+// shared write and read.
 //
 // A worker never blocks inside a stage, and any subset of the workers, even one, finishes
 // the run: a job system that starts some tasks late, out of order, or runs them one
