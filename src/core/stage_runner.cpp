@@ -114,7 +114,8 @@ int32_t StageRunner::count_done(int32_t blocks) {
 
 int32_t StageRunner::claim_own(const Stage& stage, int32_t s, int32_t worker) {
     int32_t done_here = 0;
-    for (int32_t block = claim_front(share(worker, s)); block >= 0; block = claim_front(share(worker, s))) {
+    Share& mine = share(worker, s);
+    for (int32_t block = claim_front(mine); block >= 0; block = claim_front(mine)) {
         run_block(stage, block, worker);
         ++done_here;
     }

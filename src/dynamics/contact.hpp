@@ -94,8 +94,11 @@ struct alignas(64) Contact {
 static_assert(offsetof(Contact, points) + sizeof(ContactPoint[2]) <= 128, "solver data in two cache lines");
 static_assert(offsetof(Contact, hit_point) + sizeof(int32_t) <= 64, "the end of the step reads one line");
 
-/// What the solver takes: a contact between solid shapes (no sensor) with points.
-inline bool is_solvable(const Contact& c) { return (c.flags & contact_sensor) == 0 && c.point_count > 0; }
+/// A contact between solid shapes: no sensor among them.
+inline bool is_solid(const Contact& c) { return (c.flags & contact_sensor) == 0; }
+
+/// What the solver takes: a contact between solid shapes with points.
+inline bool is_solvable(const Contact& c) { return is_solid(c) && c.point_count > 0; }
 
 /// Replaces the contact's points by those of a fresh world-space manifold, anchored at the
 /// bodies' centres of mass, and carries each point's impulses over from the old point

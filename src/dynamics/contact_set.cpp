@@ -48,8 +48,6 @@ bool is_moving(const Body& b) {
 
 bool is_asleep(const Body& b) { return b.island != null_index && b.awake_index == null_index; }
 
-bool is_solid(const Contact& c) { return (c.flags & contact_sensor) == 0; }
-
 // The solver moves a body only while it is dynamic and awake.
 uint32_t moves_flag(const Body& b, int32_t edge) {
     const bool moves = b.type == BodyType::dynamic && b.awake_index != null_index;

@@ -682,8 +682,7 @@ void Solver::share_kinematic_rest(int32_t body) {
     links_.contacts.visit_contacts(body, [&](int32_t contact, int32_t other) {
         const Contact& c = contacts[contact];
         const Body& o = links_.bodies[other];
-        if ((c.flags & contact_sensor) == 0 && c.point_count > 0 && o.type == BodyType::dynamic &&
-            o.awake_index != null_index) {
+        if (is_solvable(c) && o.type == BodyType::dynamic && o.awake_index != null_index) {
             links_.islands.note_rest_time(other, rest);
         }
     });
