@@ -15,6 +15,10 @@
  * - Query callbacks run on the calling thread while the world is locked: inside them,
  *   calls that change the world (create, destroy, step, every setter but user data,
  *   forces and impulses) answer I2D_ERR_WORLD_LOCKED; getters and queries work.
+ * - A job system's enqueue_task and finish_task (types.h) run inside the step, while the
+ *   world's other workers may be changing any of it: there every call that names the
+ *   world or anything in it, getters and i2d_*_is_valid included, answers
+ *   I2D_ERR_WORLD_LOCKED. Other worlds may be used.
  * - A world is used from one thread at a time; different worlds may be used from
  *   different threads at once.
  * - Limits: 256 worlds alive at once (created and destroyed without limit: an id of a

@@ -77,7 +77,9 @@ typedef void i2d_task_fn(int32_t start_index, int32_t end_index, int32_t worker_
  *  one after another: the step never waits for a task that has not started. */
 typedef void* i2d_enqueue_task_fn(i2d_task_fn* task, int32_t item_count, int32_t min_range, void* task_context,
                                   void* user_task_context);
-/** Waits until the task behind the handle has run to its end. */
+/** Waits until the task behind the handle has run to its end. Both callbacks run inside
+ *  i2d_world_step: calls naming that world or anything in it are refused there
+ *  (I2D_ERR_WORLD_LOCKED). */
 typedef void i2d_finish_task_fn(void* user_task, void* user_task_context);
 
 /** World settings. Obtain with i2d_default_world_def(), then edit. */

@@ -169,6 +169,9 @@ public:
         return profile_;
     }
     bool is_locked() const { return lock_depth_ > 0; }
+    /// Inside step: only a job system's enqueue and finish callbacks run user code then,
+    /// and the C API refuses them every call that names this world.
+    bool is_stepping() const { return stepping_; }
     /// Aborts on a broken internal invariant; does nothing unless built with I2D_VALIDATE.
     /// Runs after every step (a whole-world check per creation would make building a
     /// large scene quadratic in validating builds).
@@ -217,6 +220,7 @@ private:
     StepProfile profile_;
     mutable bool profiling_ = false;
     mutable int32_t lock_depth_ = 0;
+    bool stepping_ = false;
 };
 
 /// Locks the world while a query's callbacks run, so that they cannot change it.

@@ -7,7 +7,24 @@
 
 namespace i2d {
 
+namespace {
+
+// Marks the world as stepping for as long as step runs, even when it leaves by throwing.
+class SteppingMark {
+public:
+    explicit SteppingMark(bool& stepping) : stepping_(stepping) { stepping_ = true; }
+    ~SteppingMark() { stepping_ = false; }
+    SteppingMark(const SteppingMark&) = delete;
+    SteppingMark& operator=(const SteppingMark&) = delete;
+
+private:
+    bool& stepping_;
+};
+
+}  // namespace
+
 void World::step(float time_step, int32_t substep_count) {
+    const SteppingMark mark(stepping_);
     Timer total(profiling_), timer(profiling_);
     profile_ = StepProfile{};
     events_.begin_step();

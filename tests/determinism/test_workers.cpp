@@ -286,3 +286,98 @@ I2D_TEST(det_workers_bad_settings_are_refused_and_start_nothing) {
     I2D_CHECK(!I2D_IS_NULL(world));
     i2d_world_destroy(world);
 }
+
+namespace {
+
+// A job system that, before it runs each task inline, calls into the library as a
+// careless game might: with the stepping world's ids, which must all be refused, and
+// with another world's, which may be used.
+struct IntrudingJobs {
+    i2d_world_id world = I2D_NULL_WORLD_ID, other = I2D_NULL_WORLD_ID;
+    i2d_body_id body = I2D_NULL_BODY_ID;
+    int tasks = 0, refused = 0, accepted = 0, other_steps = 0;
+
+    void expect_refused(bool refused_call, const char* what) {
+        const bool locked = i2d_last_status() == I2D_ERR_WORLD_LOCKED &&
+                            std::strstr(i2d_last_error_message(), "inside the world's step") != nullptr;
+        if (refused_call && locked) {
+            ++refused;
+        } else {
+            ++accepted;
+            fprintf(stderr, "    %s inside the step: %s\n", what, i2d_last_error_message());
+        }
+    }
+
+    void intrude() {
+        i2d_body_def def = i2d_default_body_def();
+        expect_refused(i2d_world_step(world, det::time_step, det::substeps) == I2D_ERR_WORLD_LOCKED, "step");
+        expect_refused(i2d_body_set_linear_velocity(body, i2d_vec2{5.0f, 0.0f}) == I2D_ERR_WORLD_LOCKED,
+                       "set velocity");
+        expect_refused(I2D_IS_NULL(i2d_body_create(world, &def)), "create body");
+        const i2d_vec2 p = i2d_body_get_position(body);
+        expect_refused(p.x == 0.0f && p.y == 0.0f, "get position");
+        expect_refused(!i2d_world_is_valid(world), "is valid");
+        expect_refused(i2d_body_destroy(body) == I2D_ERR_WORLD_LOCKED, "destroy body");
+        expect_refused(i2d_world_destroy(world) == I2D_ERR_WORLD_LOCKED, "destroy world");
+        other_steps += i2d_world_step(other, det::time_step, det::substeps) == I2D_OK;
+    }
+
+    static void* enqueue(i2d_task_fn* task, int32_t item_count, int32_t, void* task_context, void* self) {
+        IntrudingJobs& jobs = *static_cast<IntrudingJobs*>(self);
+        jobs.intrude();
+        task(0, item_count, 0, task_context);
+        ++jobs.tasks;
+        return nullptr;
+    }
+    static void finish(void*, void*) {}
+};
+
+// The bin with a bodiless static body placed away from it: a target for the intruder
+// that changes nothing in the bin.
+i2d_world_id bin_with_marker(const i2d_world_def& def, i2d_body_id& marker) {
+    const i2d_world_id world = det::sleeping_bin(def);
+    marker = det::add_body(world, I2D_BODY_STATIC, i2d_vec2{100.0f, 100.0f});
+    return world;
+}
+
+}  // namespace
+
+// A job system's callbacks run inside the step: every call that names the stepping
+// world or one of its bodies is refused there with a message, and the step goes on to
+// the same bits as a world nobody called into; another world may be stepped meanwhile.
+I2D_TEST(det_workers_calls_from_inside_the_job_system_are_refused) {
+    constexpr int steps = 10;
+    i2d_body_id marker = I2D_NULL_BODY_ID;
+    const i2d_world_id quiet = bin_with_marker(i2d_default_world_def(), marker);
+    I2D_REQUIRE(!I2D_IS_NULL(quiet));
+    for (int s = 0; s < steps; ++s) {
+        i2d_world_step(quiet, det::time_step, det::substeps);
+    }
+    const uint64_t expected = i2d_world_get_state_hash(quiet);
+    i2d_world_destroy(quiet);
+
+    IntrudingJobs jobs;
+    i2d_world_def def = i2d_default_world_def();
+    def.worker_count = 3;
+    def.enqueue_task = &IntrudingJobs::enqueue;
+    def.finish_task = &IntrudingJobs::finish;
+    def.user_task_context = &jobs;
+    jobs.world = bin_with_marker(def, jobs.body);
+    I2D_REQUIRE(!I2D_IS_NULL(jobs.world));
+    const i2d_world_def other_def = i2d_default_world_def();
+    jobs.other = i2d_world_create(&other_def);
+    det::add_body(jobs.other, I2D_BODY_DYNAMIC, i2d_vec2{0.0f, 0.0f});
+    for (int s = 0; s < steps; ++s) {
+        I2D_CHECK_STATUS(i2d_world_step(jobs.world, det::time_step, det::substeps), I2D_OK);
+    }
+    fprintf(stderr, "    %d tasks, %d calls refused, %d accepted, other world stepped %d times\n", jobs.tasks,
+            jobs.refused, jobs.accepted, jobs.other_steps);
+    I2D_CHECK(jobs.tasks > 0);
+    I2D_CHECK(jobs.accepted == 0);
+    I2D_CHECK(jobs.refused == 7 * jobs.tasks);
+    I2D_CHECK(jobs.other_steps == jobs.tasks);
+    I2D_CHECK(i2d_world_get_state_hash(jobs.world) == expected);
+    I2D_CHECK(i2d_body_is_valid(jobs.body));
+    i2d_world_destroy(jobs.other);
+    i2d_world_destroy(jobs.world);
+}
