@@ -106,6 +106,16 @@ constexpr float min_contact_hertz = 1.0e-3f;
 // Threads. Handing work to other workers costs microseconds per stage, so a world
 // smaller than this runs its step on the calling thread alone (same bits either way);
 // and no worker claims less than a block of this many items at a time.
+#if defined(I2D_FUZZ_SHARES_SMALL_WORLDS)
+// The API fuzzer's build: its programs hold at most 48 bodies, and with these their steps
+// still go through the shared stages, in blocks of a few items.
+constexpr int32_t parallel_min_bodies = 2;
+constexpr int32_t parallel_min_contacts = 2;
+constexpr int32_t parallel_min_moved_proxies = 2;
+constexpr int32_t bodies_per_work_block = 4;
+constexpr int32_t contacts_per_work_block = 4;
+constexpr int32_t joints_per_work_block = 2;
+#else
 /// Awake bodies below which the solver runs inline.
 constexpr int32_t parallel_min_bodies = 256;
 /// Awake contacts below which the narrowphase runs inline.
@@ -115,6 +125,7 @@ constexpr int32_t parallel_min_moved_proxies = 64;
 constexpr int32_t bodies_per_work_block = 64;
 constexpr int32_t contacts_per_work_block = 64;
 constexpr int32_t joints_per_work_block = 32;
+#endif
 // A colour of at most this many work blocks is solved on one worker, in one stage with the
 // small colours beside it: shared out, it would cost more in waiting than it saves.
 constexpr int32_t small_color_blocks = 2;

@@ -162,13 +162,157 @@ void check_all_finite() {
     }
 }
 
+// ---- A job system of the harness's own, for worlds with workers ----------------------
+// Single threaded, so that a finding replays: it runs each of the engine's tasks as soon
+// as it is enqueued, or holds it until finish_task (tasks then run late, in order or the
+// newest first), or first calls back into the library from inside the step. The fuzz
+// build shares the work of worlds this small (constants.hpp), so the stages run in
+// blocks, with the workers' take-over of tasks that start late.
+
+enum class JobOrder : uint8_t { inline_now, at_finish, newest_first, intruding };
+
+struct HeldTask {
+    i2d_task_fn* task;
+    int32_t item_count;
+    void* context;
+    bool done;
+};
+
+struct FuzzJobs {
+    JobOrder order;
+    // A stack: steps nest (an intruding task steps another world) and each finishes its
+    // own tasks before its caller's.
+    HeldTask held[2 * I2D_MAX_WORKERS];
+    int held_count;
+};
+
+FuzzJobs g_jobs[] = {{JobOrder::inline_now, {}, 0}, {JobOrder::at_finish, {}, 0},
+                     {JobOrder::newest_first, {}, 0}, {JobOrder::intruding, {}, 0}};
+FuzzInput* g_in = nullptr;  // the program, for the intruding job system's choices
+
+// The worlds inside i2d_world_step on this thread, innermost last.
+constexpr int max_nested_steps = 8;
+i2d_world_id g_stepping[max_nested_steps];
+int g_stepping_count = 0;
+
+bool is_stepping(i2d_world_id w) {
+    for (int i = 0; i < g_stepping_count; ++i) {
+        if (g_stepping[i].bits == w.bits) {
+            return true;
+        }
+    }
+    return false;
+}
+
+i2d_status step_world(i2d_world_id w, float dt, int32_t substeps) {
+    if (g_stepping_count == max_nested_steps) {
+        return I2D_ERR_WORLD_LOCKED;  // deep enough: the harness declines, not the library
+    }
+    g_stepping[g_stepping_count++] = w;
+    const i2d_status status = i2d_world_step(w, dt, substeps);
+    --g_stepping_count;
+    return status;
+}
+
+// Calls from inside a step's task: every one naming a stepping world, or a body of one,
+// must be refused as such.
+void intrude(FuzzInput& in) {
+    const i2d_world_id w = pick_world(in);
+    const i2d_body_id b = pick_body(in);
+    i2d_body_get_world(b);
+    const bool body_locked = i2d_last_status() == I2D_ERR_WORLD_LOCKED;
+    bool on_body = false;
+    i2d_status status = I2D_OK;
+    switch (in.byte() % 6) {
+        case 0: status = step_world(w, 1.0f / 60.0f, 1 + in.byte() % 4); break;
+        case 1: status = i2d_world_destroy(w); break;
+        case 2: {
+            const i2d_body_def def = i2d_default_body_def();
+            status = I2D_IS_NULL(i2d_body_create(w, &def)) ? i2d_last_status() : I2D_OK;
+            break;
+        }
+        case 3: i2d_world_get_counters(w); status = i2d_last_status(); break;
+        case 4: status = i2d_body_set_linear_velocity(b, in.vec2()); on_body = true; break;
+        default: status = i2d_body_destroy(b); on_body = true; break;
+    }
+    const bool locked = on_body ? body_locked : is_stepping(w);
+    if (g_trace) {
+        std::fprintf(stderr, "  from a task: %s on a %sstepping world: %s\n", on_body ? "body call" : "world call",
+                     locked ? "" : "not ", i2d_status_string(status));
+    }
+    if (locked && status != I2D_ERR_WORLD_LOCKED) {
+        fail("a call naming a world inside its step was accepted from its job system", double(status), 0.0);
+    }
+}
+
+void run_held(HeldTask& t) {
+    if (!t.done) {
+        t.done = true;
+        t.task(0, t.item_count, 0, t.context);
+    }
+}
+
+void* enqueue_job(i2d_task_fn* task, int32_t item_count, int32_t, void* task_context, void* user_context) {
+    FuzzJobs& jobs = *static_cast<FuzzJobs*>(user_context);
+    if (jobs.order == JobOrder::intruding && g_in != nullptr) {
+        intrude(*g_in);
+    }
+    if (jobs.order == JobOrder::inline_now || jobs.order == JobOrder::intruding ||
+        jobs.held_count == 2 * I2D_MAX_WORKERS) {
+        task(0, item_count, 0, task_context);
+        return nullptr;
+    }
+    HeldTask& t = jobs.held[jobs.held_count++];
+    t = {task, item_count, task_context, false};
+    return &t;
+}
+
+void finish_job(void* handle, void* user_context) {
+    FuzzJobs& jobs = *static_cast<FuzzJobs*>(user_context);
+    HeldTask* t = static_cast<HeldTask*>(handle);
+    if (jobs.order == JobOrder::newest_first) {
+        for (HeldTask* newer = jobs.held + jobs.held_count - 1; newer > t; --newer) {
+            run_held(*newer);
+        }
+    }
+    run_held(*t);
+    while (jobs.held_count > 0 && jobs.held[jobs.held_count - 1].done) {
+        --jobs.held_count;
+    }
+}
+
+// A worker count (mostly 1 to 8, sometimes any int) and who runs the work: a job system
+// above, half of one (refused), or the built-in threads (2 workers at most, as threads
+// that spin between tasks would starve the fuzzer).
+void worker_settings(FuzzInput& in, i2d_world_def& def) {
+    const uint8_t k = in.byte();
+    def.worker_count = k < 240 ? 1 + k % 8 : static_cast<int32_t>(in.u32());
+    const uint8_t who = in.byte() % 7;
+    if (who < 4) {
+        def.enqueue_task = &enqueue_job;
+        def.finish_task = &finish_job;
+        def.user_task_context = &g_jobs[who];
+    } else if (who == 4) {
+        def.enqueue_task = &enqueue_job;  // half a job system
+    } else if (who == 5) {
+        def.finish_task = &finish_job;
+    } else if (def.worker_count > 2) {
+        def.worker_count = 2;
+    }
+}
+
 // ---- Definitions: from the default function, then edited; sometimes not initialised ----
+
+// Edit bytes from this one on set the workers; the ones below keep the meaning they had
+// before workers existed, so that older inputs still build the same worlds.
+constexpr uint8_t worker_edit_first = 248;
 
 i2d_world_def world_def(FuzzInput& in) {
     i2d_world_def def = i2d_default_world_def();
     const uint8_t edits = in.byte() % 6;
     for (uint8_t e = 0; e < edits; ++e) {
-        switch (in.byte() % 12) {
+        const uint8_t edit = in.byte();
+        switch (edit >= worker_edit_first ? 12 : edit % 12) {
             case 0: def.gravity = in.vec2(); break;
             case 1: def.contact_slop = in.real(); break;
             case 2: def.contact_hertz = in.real(); break;
@@ -180,7 +324,8 @@ i2d_world_def world_def(FuzzInput& in) {
             case 8: def.enable_sleep = in.flag(); def.sleep_speed_threshold = in.real(); break;
             case 9: def.time_to_sleep = in.real(); def.enable_contact_recycling = in.flag(); break;
             case 10: in.raw_enum(&def.simd_path); break;
-            default: def.internal_cookie = in.u32(); break;  // an uninitialised def
+            case 11: def.internal_cookie = in.u32(); break;  // an uninitialised def
+            default: worker_settings(in, def); break;
         }
     }
     return def;
@@ -381,11 +526,12 @@ void run_world_call(FuzzInput& in, uint8_t op) {
             if (g_trace) {
                 std::fprintf(stderr,
                              "  world def: gravity (%g, %g) slop %g hertz %g damping %g push %g restitution_threshold %g "
-                             "max_speed %g sleep %d %g %g recycling %d\n",
+                             "max_speed %g sleep %d %g %g recycling %d workers %d jobs %d\n",
                              def.gravity.x, def.gravity.y, def.contact_slop, def.contact_hertz,
                              def.contact_damping_ratio, def.contact_push_max_speed, def.restitution_threshold,
                              def.maximum_linear_speed, int(def.enable_sleep), def.sleep_speed_threshold,
-                             def.time_to_sleep, int(def.enable_contact_recycling));
+                             def.time_to_sleep, int(def.enable_contact_recycling), def.worker_count,
+                             def.user_task_context ? int(static_cast<FuzzJobs*>(def.user_task_context)->order) : -1);
             }
             const i2d_world_id w = i2d_world_create(maybe_null(in, def));
             if (!I2D_IS_NULL(w) && g_held->created_count < 256) {
@@ -400,7 +546,7 @@ void run_world_call(FuzzInput& in, uint8_t op) {
             const float dt = in.byte() < 200 ? 1.0f / 60.0f : in.real();
             const int32_t substeps = in.byte() < 200 ? 4 : static_cast<int32_t>(in.u32());
             trace_bodies();
-            if (i2d_world_step(w, dt, substeps) == I2D_OK) {
+            if (step_world(w, dt, substeps) == I2D_OK) {
                 check_all_finite();
             }
             read_events(w);
@@ -1037,11 +1183,13 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     Held held;
     g_held = &held;
     FuzzInput in(data, size);
+    g_in = &in;
     run_program(in);
     check_all_finite();
     for (int i = 0; i < held.created_count; ++i) {
         i2d_world_destroy(held.created[i]);  // live ones are freed, destroyed ones refused
     }
     g_held = nullptr;
+    g_in = nullptr;
     return 0;
 }

@@ -18,6 +18,12 @@ def world_create():
     return [0, 0, 0, 0]  # op, no edits, def not null, table slot
 
 
+def world_create_workers(workers, who):
+    """One edit: the worker edit byte (248 and up), the count, who runs the tasks (0 at
+    once, 1 at finish, 2 newest first, 3 intruding, 6 the built-in threads)."""
+    return [0, 1, 248, workers - 1, who, 0, 0]
+
+
 def body_create(body_type, x, y):
     return [1, 0, body_type] + small(x) + small(y) + [0, 0, 0]
 
@@ -49,8 +55,8 @@ def ray_query():
     return [4 + 6 * 4, 0] + small(-4) + small(-4) + small(1.5) + small(1.5) + small(-3) + small(1) + small(1.9) + small(0) + [0, 0] + [7, 2] * 8
 
 
-def pile():
-    p = world_create() + body_create(0, 0, -1) + box(0, 1.9, 0.25)
+def pile(world=None):
+    p = (world or world_create()) + body_create(0, 0, -1) + box(0, 1.9, 0.25)
     for i in range(4):
         p += body_create(2, -1 + 0.6 * i, 0.5 * i)
         p += [box, circle, capsule, box][i](i + 1, 0.25)
@@ -85,6 +91,11 @@ seeds = {
     "pile_destroy": pile() + step(5) + [7, 2] + step(5) + [1 + 6 * 1, 3] + step(5),
     "pile_joints": pile() + joints() + step(20) + [joint_op(10), 0, 0] + [joint_op(11), 0] + [joint_op(2), 1] + step(10),
     "pure_calls": [5 + 6 * k for k in range(20)] * 2,
+    "pile_workers_inline": pile(world_create_workers(8, 0)) + step(10),
+    "pile_workers_at_finish": pile(world_create_workers(3, 1)) + joints() + step(10),
+    "pile_workers_newest_first": pile(world_create_workers(4, 2)) + step(10),
+    "pile_workers_intruding": pile(world_create_workers(2, 3)) + step(10),
+    "pile_workers_built_in": pile(world_create_workers(2, 6)) + step(10),
 }
 here = os.path.dirname(os.path.abspath(__file__))
 for name, program in seeds.items():
