@@ -237,8 +237,8 @@ void Solver::build_stages(int32_t substep_count) {
         }
     }
     const float joint_hertz = min_of(s.joint_hertz, 0.25f / h);
-    joint_solver_.set_step(JointStep{h, inv_h, make_softness(joint_hertz, s.joint_damping_ratio, h),
-                                     s.maximum_linear_speed, max_rotation_per_substep / h});
+    joint_solver_.set_step(JointStep(h, inv_h, make_softness(joint_hertz, s.joint_damping_ratio, h),
+                                     s.maximum_linear_speed, max_rotation_per_substep / h));
     if (!stages_changed(substep_count)) {
         return;  // a steady scene: the same stages over the same counts as last step
     }
