@@ -70,6 +70,17 @@ void trace_bodies() {
                              int(i2d_shape_get_type(shapes[k])), int(i2d_shape_is_sensor(shapes[k])), box.min.x,
                              box.min.y, box.max.x, box.max.y, (unsigned long long)f.category_bits,
                              (unsigned long long)f.mask_bits, f.group_index);
+                if (i2d_shape_get_type(shapes[k]) == I2D_SHAPE_POLYGON) {
+                    const i2d_polygon p = i2d_shape_get_polygon(shapes[k]);
+                    std::fprintf(stderr, "      radius %.9g vertices", p.radius);
+                    for (int32_t v = 0; v < p.count && v < I2D_MAX_POLYGON_VERTICES; ++v) {
+                        std::fprintf(stderr, " (%.9g, %.9g)", p.vertices[v].x, p.vertices[v].y);
+                    }
+                    std::fprintf(stderr, "\n");
+                } else if (i2d_shape_get_type(shapes[k]) == I2D_SHAPE_CIRCLE) {
+                    const i2d_circle c = i2d_shape_get_circle(shapes[k]);
+                    std::fprintf(stderr, "      centre (%.9g, %.9g) radius %.9g\n", c.center.x, c.center.y, c.radius);
+                }
             }
         }
     }
@@ -932,6 +943,17 @@ i2d_joint_id create_joint(FuzzInput& in) {
         }
     }
     const bool null_def = in.byte() >= 245;
+    if (g_trace) {
+        const i2d_body_id held_a = base.body_a, held_b = base.body_b;
+        int a = -1, b = -1;
+        for (int i = 0; i < g_held->body_count; ++i) {
+            a = g_held->bodies[i].bits == held_a.bits ? i : a;
+            b = g_held->bodies[i].bits == held_b.bits ? i : b;
+        }
+        std::fprintf(stderr, "  joint def: kind %d bodies %d %d anchors (%g, %g) (%g, %g) collide %d null %d\n", kind, a,
+                     b, base.local_anchor_a.x, base.local_anchor_a.y, base.local_anchor_b.x, base.local_anchor_b.y,
+                     int(base.collide_connected), int(null_def));
+    }
     switch (kind) {
         case I2D_JOINT_DISTANCE: return i2d_joint_create_distance(w, null_def ? nullptr : &def.distance);
         case I2D_JOINT_FILTER: return i2d_joint_create_filter(w, null_def ? nullptr : &def.filter);
