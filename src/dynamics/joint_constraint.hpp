@@ -249,6 +249,12 @@ inline bool within_limits(const JointBodies& j, const JointStep& step) {
     return (int(speeds <= step.runaway_speed_sum) & int(spins <= step.runaway_spin_sum)) != 0;
 }
 
+/// The same for one body, as the exact tree pass checks its bodies: half of each sum.
+inline bool body_within_limits(Vec2 v, float w, const JointStep& step) {
+    const float speeds = std::fabs(v.x) + std::fabs(v.y);
+    return (int(2.0f * speeds <= step.runaway_speed_sum) & int(2.0f * std::fabs(w) <= step.runaway_spin_sum)) != 0;
+}
+
 /// One joint's pass over its bodies' states: load, `pass`, store; a pass that would
 /// leave a body running away is undone and the joint gives up its impulses, starting
 /// over.

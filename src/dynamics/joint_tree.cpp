@@ -218,6 +218,7 @@ void JointTrees::build(std::vector<JointConstraint>& constraints, const Pool<Joi
     inverse_pivots_.resize(nodes_.size());
     gains_.resize(nodes_.size());
     work_.resize(nodes_.size());
+    saved_.resize(nodes_.size());
 }
 
 // Breadth first from the root joint: a joint's moving bodies but the one it hangs from,
@@ -322,28 +323,78 @@ void JointTrees::solve(int32_t begin, int32_t end, std::vector<JointConstraint>&
             }
             work_[std::size_t(n)] = x;
         }
-        // The impulses (the joints' unknowns, negated) act through the anchors where the
-        // bodies are now, as the sweep's do: the factors are the step start's, and a
-        // body's own unknowns, which follow them, would let a turned joint do work (a
-        // swinging pendulum gained four times its energy in a minute).
-        for (int32_t n = first; n < last; ++n) {
-            const Node& node = nodes_[std::size_t(n)];
-            if (!node.is_joint) {
-                continue;
-            }
-            const Vec3& x = work_[std::size_t(n)];
-            JointConstraint& c = constraints[std::size_t(node.item)];
-            JointBodies j = load_bodies(c, states);
-            if (c.exact_rows & exact_point_rows) {
-                const Vec2 impulse{-x.x, -x.y};
-                c.impulses.linear += impulse;
-                apply_linear(c, j, rotate(j.dqa, c.anchor_a), rotate(j.dqb, c.anchor_b), impulse);
-            }
-            if (c.exact_rows & exact_angle_row) {
-                c.impulses.angular -= x.z;
-                apply_angular(c, j, -x.z);
-            }
-            store_bodies(c, j, states);
+        apply(t, constraints, states, step);
+    }
+}
+
+// The impulses (the joints' unknowns, negated) act through the anchors where the bodies
+// are now, as the sweep's do: the factors are the step start's, and a body's own
+// unknowns, which follow them, would let a turned joint do work (a swinging pendulum
+// gained four times its energy in a minute). Guarded as the sweep's passes are: a tree
+// whose factors are too ill-conditioned for floats (masses and lever arms apart by a
+// dozen orders of magnitude) can throw a body from a few m/s to 1e19 in one pass; then
+// the pass is undone and the tree's joints give up their impulses.
+void JointTrees::apply(int32_t tree, std::vector<JointConstraint>& constraints, BodyState* states,
+                       const JointStep& step) {
+    const int32_t first = tree_starts_[std::size_t(tree)], last = tree_starts_[std::size_t(tree) + 1];
+    save_velocities(first, last, states);
+    for (int32_t n = first; n < last; ++n) {
+        const Node& node = nodes_[std::size_t(n)];
+        if (!node.is_joint) {
+            continue;
+        }
+        const Vec3& x = work_[std::size_t(n)];
+        JointConstraint& c = constraints[std::size_t(node.item)];
+        JointBodies j = load_bodies(c, states);
+        if (c.exact_rows & exact_point_rows) {
+            const Vec2 impulse{-x.x, -x.y};
+            c.impulses.linear += impulse;
+            apply_linear(c, j, rotate(j.dqa, c.anchor_a), rotate(j.dqb, c.anchor_b), impulse);
+        }
+        if (c.exact_rows & exact_angle_row) {
+            c.impulses.angular -= x.z;
+            apply_angular(c, j, -x.z);
+        }
+        store_bodies(c, j, states);
+    }
+    if (!bodies_within_limits(first, last, states, step)) {
+        undo_pass(first, last, constraints, states);
+    }
+}
+
+void JointTrees::save_velocities(int32_t first, int32_t last, const BodyState* states) {
+    for (int32_t n = first; n < last; ++n) {
+        const Node& node = nodes_[std::size_t(n)];
+        if (!node.is_joint) {
+            const BodyState& s = states[node.item];
+            saved_[std::size_t(n)] = {s.linear_velocity.x, s.linear_velocity.y, s.angular_velocity};
+        }
+    }
+}
+
+bool JointTrees::bodies_within_limits(int32_t first, int32_t last, const BodyState* states,
+                                      const JointStep& step) const {
+    bool within = true;
+    for (int32_t n = first; n < last; ++n) {
+        const Node& node = nodes_[std::size_t(n)];
+        if (!node.is_joint) {
+            const BodyState& s = states[node.item];
+            within = within && body_within_limits(s.linear_velocity, s.angular_velocity, step);
+        }
+    }
+    return within;
+}
+
+void JointTrees::undo_pass(int32_t first, int32_t last, std::vector<JointConstraint>& constraints,
+                           BodyState* states) const {
+    for (int32_t n = first; n < last; ++n) {
+        const Node& node = nodes_[std::size_t(n)];
+        if (node.is_joint) {
+            constraints[std::size_t(node.item)].impulses = {};
+        } else {
+            const Vec3& v = saved_[std::size_t(n)];
+            states[node.item].linear_velocity = {v.x, v.y};
+            states[node.item].angular_velocity = v.z;
         }
     }
 }

@@ -77,6 +77,11 @@ private:
     // Per constraint: [joint, state A or null when A cannot move, the same for B, rows].
     static constexpr int32_t key_width = 4;
     void add_tree(int32_t root_joint);
+    void apply(int32_t tree, std::vector<JointConstraint>& constraints, BodyState* states, const JointStep& step);
+    // The exact pass's guard, over the body nodes [first, last) of one tree.
+    void save_velocities(int32_t first, int32_t last, const BodyState* states);
+    bool bodies_within_limits(int32_t first, int32_t last, const BodyState* states, const JointStep& step) const;
+    void undo_pass(int32_t first, int32_t last, std::vector<JointConstraint>& constraints, BodyState* states) const;
 
     // The layout the trees were built for: per constraint its states and exact rows.
     std::vector<int32_t> built_key_;
@@ -86,6 +91,7 @@ private:
     std::vector<Mat33> inverse_pivots_;  // per node: the inverse of its pivot block
     std::vector<Mat33> gains_;           // per node: inverse pivot x the block to its parent
     std::vector<Vec3> work_;             // per node: right side, then solution
+    std::vector<Vec3> saved_;            // per body node: its velocities before the pass
     // Build scratch: union-find over states with each group's flags, and each state's
     // exact joints.
     enum GroupFlags : uint8_t { group_held = 1, group_looped = 2 };

@@ -259,6 +259,53 @@ I2D_TEST(api_extreme_collide_sane_within_range) {
 /* A denormal time step (1e-45 s) was accepted: the solver's rates (substeps / step)
  * became infinite and a body resting on another turned NaN within the step. Positive
  * steps below 1e-6 s are refused now and change nothing; 1e-6 s itself is stepped. */
+/* The fuzzer's joint tree: a disc hinged to a static body and welded to a triangle whose
+ * far corner lies 100 km out (5e9 kg, its centre of mass 47 km from the disc). The exact
+ * tree solve's factors are then too ill-conditioned for floats, and a pass threw the disc
+ * from rest to 1e19 m/s and NaN the step after; the pass is now undone like a runaway
+ * sweep's, and the bodies stay finite and never quarantined. */
+I2D_TEST(api_extreme_joint_tree_with_far_mass_stays_finite) {
+    i2d_world_def wdef = i2d_default_world_def();
+    i2d_world_id world = i2d_world_create(&wdef);
+    i2d_body_def def = i2d_default_body_def();
+    def.position = (i2d_vec2){0.0f, -1.0f};
+    i2d_body_id ground = i2d_body_create(world, &def);
+    def.type = I2D_BODY_DYNAMIC;
+    def.position = (i2d_vec2){-1.0f, -3.95532f};
+    i2d_body_id disc = i2d_body_create(world, &def);
+    def.position = (i2d_vec2){0.1875f, 1.0f};
+    i2d_body_id far = i2d_body_create(world, &def);
+    i2d_shape_def shape = i2d_default_shape_def();
+    i2d_circle circle = {{-4.0f, -3.97290039f}, 1.08227539f};
+    I2D_REQUIRE(!I2D_IS_NULL(i2d_shape_create_circle(disc, &shape, &circle)));
+    const i2d_vec2 corners[3] = {{-3.24707031f, -3.24707031f}, {100000.0f, -3.80957031f}, {1.40129846e-45f, 100000.0f}};
+    I2D_REQUIRE(!I2D_IS_NULL(i2d_shape_create_polygon(far, &shape, corners, 3)));
+    i2d_revolute_joint_def hinge = i2d_default_revolute_joint_def();
+    hinge.base.body_a = ground;
+    hinge.base.body_b = disc;
+    I2D_REQUIRE(!I2D_IS_NULL(i2d_joint_create_revolute(world, &hinge)));
+    i2d_weld_joint_def weld = i2d_default_weld_joint_def();
+    weld.base.body_a = far;
+    weld.base.body_b = disc;
+    I2D_REQUIRE(!I2D_IS_NULL(i2d_joint_create_weld(world, &weld)));
+    int quarantined = 0, non_finite = 0;
+    for (int step = 0; step < 60; ++step) {
+        I2D_CHECK_STATUS(i2d_world_step(world, 1.0f / 60.0f, 4), I2D_OK);
+        quarantined += i2d_world_get_body_events(world).quarantine_count;
+        i2d_body_id bodies[2] = {disc, far};
+        for (int k = 0; k < 2; ++k) {
+            non_finite += !vec_finite(i2d_body_get_linear_velocity(bodies[k])) ||
+                          !vec_finite(i2d_body_get_position(bodies[k])) ||
+                          !isfinite(i2d_body_get_angular_velocity(bodies[k]));
+        }
+    }
+    fprintf(stderr, "    quarantined %d, non-finite readings %d, disc at (%g, %g)\n", quarantined, non_finite,
+            (double)i2d_body_get_position(disc).x, (double)i2d_body_get_position(disc).y);
+    I2D_CHECK(quarantined == 0);
+    I2D_CHECK(non_finite == 0);
+    i2d_world_destroy(world);
+}
+
 I2D_TEST(api_extreme_tiny_time_step_refused) {
     const float tiny[] = {1.4e-45f, 1.1754944e-38f, 1e-30f, 9.9e-7f};
     for (size_t k = 0; k < sizeof tiny / sizeof tiny[0]; ++k) {
