@@ -6,10 +6,11 @@
 
 namespace i2d {
 
-int32_t BroadPhase::create_proxy(const AABB& fat_aabb, uint64_t category_bits, int32_t shape, ProxyKind kind,
-                                 bool query_now) {
+int32_t BroadPhase::create_proxy(const AABB& fat_aabb, const AABB& ahead_aabb, uint64_t category_bits,
+                                 int32_t shape, ProxyKind kind, bool query_now) {
     const int32_t proxy = tree(kind).create_proxy(fat_aabb, category_bits, shape);
     const int32_t key = make_proxy_key(proxy, kind);
+    set_ahead(key, ahead_aabb);
     if (kind != ProxyKind::static_proxy || query_now) {
         buffer_move(key);
     }
@@ -41,7 +42,20 @@ int32_t& BroadPhase::pending_slot(int32_t key) {
     return pending_slot_[key];
 }
 
-void BroadPhase::move_proxy(int32_t key, const AABB& fat_aabb) {
+// Queries read the box ahead only after the commit, so it changes at once.
+void BroadPhase::set_ahead(int32_t key, const AABB& ahead_aabb) {
+    if (proxy_kind(key) != ProxyKind::dynamic_proxy) {
+        return;
+    }
+    const std::size_t proxy = std::size_t(proxy_id(key));
+    if (proxy >= ahead_.size()) {
+        ahead_.resize(proxy + 1);
+    }
+    ahead_[proxy] = ahead_aabb;
+}
+
+void BroadPhase::move_proxy(int32_t key, const AABB& fat_aabb, const AABB& ahead_aabb) {
+    set_ahead(key, ahead_aabb);
     int32_t& slot = pending_slot(key);
     if (slot == null_index) {
         slot = int32_t(pending_moves_.size());
@@ -53,6 +67,10 @@ void BroadPhase::move_proxy(int32_t key, const AABB& fat_aabb) {
 }
 
 void BroadPhase::enlarge_proxy(int32_t key, const AABB& fat_aabb) {
+    if (proxy_kind(key) == ProxyKind::dynamic_proxy) {
+        AABB& ahead = ahead_[std::size_t(proxy_id(key))];
+        ahead = union_of(ahead, fat_aabb);
+    }
     const int32_t slot = pending_slot(key);
     if (slot == null_index) {
         tree(proxy_kind(key)).enlarge_proxy(proxy_id(key), fat_aabb);

@@ -5,8 +5,11 @@
 // static level costs nothing per step; only proxies whose tight box left their fat box
 // (the move buffer) are queried, against the trees they can collide with (a moved
 // dynamic proxy against all three trees, a moved kinematic or static one against the
-// dynamic tree). Pairs come out in the storage order of the moved proxies (below) and,
-// per proxy, in tree order: the same inputs give the same pairs in the same order.
+// dynamic tree). A dynamic proxy has a second box, stretched along its coming motion
+// (shape_bounds.hpp), which it meets the static and kinematic trees with; two dynamic
+// proxies meet by their fat boxes. Pairs come out in the storage order of the moved
+// proxies (below) and, per proxy, in tree order: the same inputs give the same pairs in
+// the same order.
 // Existing pairs are skipped through a caller's test (the world keeps the set of shape
 // pairs that have a contact).
 #pragma once
@@ -34,14 +37,21 @@ struct ShapePairCandidate {
 class BroadPhase {
 public:
     /// Adds a proxy; it is queried for pairs at the next update_pairs unless it is
-    /// static and `query_now` is false (static against static never pairs).
+    /// static and `query_now` is false (static against static never pairs). A dynamic
+    /// proxy meets static and kinematic ones by `ahead_aabb`, which holds its fat box;
+    /// without it, by the fat box.
+    int32_t create_proxy(const AABB& fat_aabb, const AABB& ahead_aabb, uint64_t category_bits, int32_t shape,
+                         ProxyKind kind, bool query_now);
     int32_t create_proxy(const AABB& fat_aabb, uint64_t category_bits, int32_t shape, ProxyKind kind,
-                         bool query_now);
+                         bool query_now) {
+        return create_proxy(fat_aabb, fat_aabb, category_bits, shape, kind, query_now);
+    }
     void destroy_proxy(int32_t key);
     /// Queues a re-insertion with a new fat box (done by commit_moves; a second move
     /// before then replaces the box) and queues the proxy for pair finding. Until the
     /// commit the trees and fat_aabb() still show the old box.
-    void move_proxy(int32_t key, const AABB& fat_aabb);
+    void move_proxy(int32_t key, const AABB& fat_aabb, const AABB& ahead_aabb);
+    void move_proxy(int32_t key, const AABB& fat_aabb) { move_proxy(key, fat_aabb, fat_aabb); }
     /// Performs the queued moves in the order their leaves lie in the tree's node array
     /// (see storage order below), each a re-insertion: for a few moves at a time (a
     /// caller placing bodies one by one).
@@ -49,8 +59,8 @@ public:
     /// The same for the many moves of a step: in a tree where many proxies moved, each
     /// leaf takes its box where it is and the grown part of the tree is rebuilt once.
     void commit_moves_in_place();
-    /// Grows the fat box in place (or the queued box of a pending move) and queues the
-    /// proxy for pair finding.
+    /// Grows the fat box in place (or the queued box of a pending move), and the box
+    /// ahead with it, and queues the proxy for pair finding.
     void enlarge_proxy(int32_t key, const AABB& fat_aabb);
     /// Queues the proxy for pair finding where it is: a pair it was refused may now be
     /// wanted (a joint that kept two bodies apart went).
@@ -77,11 +87,16 @@ public:
     const DynamicTree& tree(ProxyKind kind) const { return trees_[int32_t(kind)]; }
     DynamicTree& tree(ProxyKind kind) { return trees_[int32_t(kind)]; }
     const AABB& fat_aabb(int32_t key) const { return tree(proxy_kind(key)).fat_aabb(proxy_id(key)); }
+    /// The box the proxy meets static and kinematic ones by (its fat box unless dynamic).
+    const AABB& ahead_aabb(int32_t key) const {
+        return proxy_kind(key) == ProxyKind::dynamic_proxy ? ahead_[std::size_t(proxy_id(key))] : fat_aabb(key);
+    }
     /// Proxies waiting for pair finding (destroyed ones no longer count).
     int32_t move_count() const { return move_set_.count(); }
 
 private:
     void buffer_move(int32_t key);
+    void set_ahead(int32_t key, const AABB& ahead_aabb);
     void order_pending_moves();
     void finish_commit();
     int32_t& pending_slot(int32_t key);
@@ -106,6 +121,7 @@ private:
     }
 
     DynamicTree trees_[int32_t(ProxyKind::count)];
+    std::vector<AABB> ahead_;           // dynamic proxy id -> its box ahead
     std::vector<int32_t> move_buffer_;  // proxy keys, in the order they moved
     BitSet move_set_;                   // the same keys, for "did the other one move too"
     std::vector<MoveEntry> pending_moves_;  // re-insertions waiting for commit_moves

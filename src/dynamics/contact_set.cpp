@@ -13,6 +13,7 @@
 #include "core/reserve.hpp"
 #include "dynamics/constants.hpp"
 #include "dynamics/island.hpp"
+#include "dynamics/shape_bounds.hpp"
 #include "dynamics/joint_set.hpp"
 #include "math/math.hpp"
 
@@ -398,7 +399,7 @@ uint8_t ContactSet::collide_one(int32_t k, float time_step) {
     const int32_t old_point_count = c.point_count;
     const bool had_points = old_point_count > 0;
     c.hit_speed = 0.0f;
-    if (!overlaps(a.fat_aabb, b.fat_aabb)) {
+    if (!proxies_meet(a, b)) {
         c.flags |= contact_disjoint;
         c.point_count = 0;
     } else if (is_solid(c)) {

@@ -35,23 +35,24 @@ struct ShapeDef {
 };
 
 // Design note: what the narrowphase and the bounds update read every step comes first,
-// in one cache line (body, proxy, boxes, material); the geometry, hundreds of bytes for
-// a polygon, follows. The fat box is the broadphase proxy's, kept here too so that
-// neither step walks the tree to read it.
+// in one cache line (body, proxy, boxes, flags); the material, read when a contact is
+// made, and the geometry, hundreds of bytes for a polygon, follow. The proxy's boxes are
+// kept here too so that neither step walks the tree to read them.
 struct Shape {
     int32_t body = null_index;
     int32_t proxy_key = null_index;  // in the broadphase
-    AABB aabb;      // tight world bounds, current after every step and every move
-    AABB fat_aabb;  // the proxy's box (as of the broadphase's next commit)
-    float friction = 0.0f, restitution = 0.0f;
-    float rolling_resistance = 0.0f;  // coefficient, times the shape's radius at contacts
-    float tangent_speed = 0.0f;       // m/s, counter-clockwise along the outline
+    AABB aabb;        // tight world bounds, current after every step and every move
+    AABB fat_aabb;    // the proxy's box (as of the broadphase's next commit)
+    AABB ahead_aabb;  // the fat box stretched over the coming step (shape_bounds.hpp)
     bool is_sensor = false;
     bool enable_contact_events = true;
     bool enable_sensor_events = true;
     bool enable_hit_events = false;
-    bool enlarged = false;  // the step gave it a new fat box; its proxy moves at the step's end
+    bool enlarged = false;  // the step gave it new boxes; its proxy moves at the step's end
     float aabb_margin = 0.0f;  // how far the fat box reaches beyond the tight box, m
+    float friction = 0.0f, restitution = 0.0f;
+    float rolling_resistance = 0.0f;  // coefficient, times the shape's radius at contacts
+    float tangent_speed = 0.0f;       // m/s, counter-clockwise along the outline
     int32_t prev_in_body = null_index, next_in_body = null_index;
     int32_t chain = null_index;  // the chain this segment belongs to, if any
     float density = 0.0f;

@@ -22,17 +22,24 @@ float aabb_margin_of(const Geometry& geometry) {
     return min_of(max_aabb_margin, aabb_margin_fraction * half_diagonal);
 }
 
-AABB fatten(const Shape& shape, BodyType type, Vec2 displacement, float reach) {
+ProxyBoxes fatten(const Shape& shape, const Body& body, Vec2 displacement, float reach) {
     const AABB& box = shape.aabb;
-    if (type == BodyType::static_body) {
-        return box;
+    if (body.type == BodyType::static_body) {
+        return {box, box};
     }
     const Vec2 margin{shape.aabb_margin + reach, shape.aabb_margin + reach};
-    return {min(box.lower, box.lower + displacement) - margin, max(box.upper, box.upper + displacement) + margin};
+    const AABB ahead{min(box.lower, box.lower + displacement) - margin,
+                     max(box.upper, box.upper + displacement) + margin};
+    if (stretches_fat_box(body)) {
+        return {ahead, ahead};
+    }
+    const Vec2 own_margin{shape.aabb_margin, shape.aabb_margin};
+    return {{box.lower - own_margin, box.upper + own_margin}, ahead};
 }
 
 bool refit_shape_bounds(const Body& body, Pool<Shape>& shapes, Vec2 displacement, bool ahead, float reach) {
     bool any = false;
+    const bool stretches = stretches_fat_box(body);
     const Vec2 turn{reach, reach};
     for (int32_t s = body.head_shape; s != null_index; s = shapes[s].next_in_body) {
         Shape& shape = shapes[s];
@@ -40,8 +47,10 @@ bool refit_shape_bounds(const Body& body, Pool<Shape>& shapes, Vec2 displacement
         const AABB needed = ahead ? union_of({shape.aabb.lower - turn, shape.aabb.upper + turn},
                                              {shape.aabb.lower + displacement, shape.aabb.upper + displacement})
                                   : shape.aabb;
-        if (!contains(shape.fat_aabb, needed)) {
-            shape.fat_aabb = fatten(shape, body.type, displacement, reach);
+        if (!contains(shape.fat_aabb, stretches ? needed : shape.aabb) || !contains(shape.ahead_aabb, needed)) {
+            const ProxyBoxes boxes = fatten(shape, body, displacement, reach);
+            shape.fat_aabb = boxes.fat;
+            shape.ahead_aabb = boxes.ahead;
             shape.enlarged = true;
             any = true;
         }
@@ -54,7 +63,7 @@ void move_enlarged_proxies(const Body& body, Pool<Shape>& shapes, BroadPhase& br
         Shape& shape = shapes[s];
         if (shape.enlarged) {
             shape.enlarged = false;
-            broad_phase.move_proxy(shape.proxy_key, shape.fat_aabb);
+            broad_phase.move_proxy(shape.proxy_key, shape.fat_aabb, shape.ahead_aabb);
         }
     }
 }

@@ -110,10 +110,12 @@ void World::set_type(int32_t body, BodyType type) {
 
 void World::create_proxy(int32_t shape, bool query_now) {
     Shape& s = shapes[shape];
-    const BodyType type = bodies[s.body].type;
-    s.fat_aabb = fatten(s, type, Vec2{});
-    s.proxy_key = broad_phase_.create_proxy(s.fat_aabb, s.filter.category_bits, shape,
-                                            proxy_kind_of(type), query_now);
+    const Body& body = bodies[s.body];
+    const ProxyBoxes boxes = fatten(s, body, Vec2{});
+    s.fat_aabb = boxes.fat;
+    s.ahead_aabb = boxes.ahead;
+    s.proxy_key = broad_phase_.create_proxy(s.fat_aabb, s.ahead_aabb, s.filter.category_bits, shape,
+                                            proxy_kind_of(body.type), query_now);
     mark_for_cover(s.body);  // the new box is not stretched along the body's motion
 }
 

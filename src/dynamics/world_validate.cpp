@@ -58,6 +58,9 @@ void World::validate() const {
         I2D_ASSERT(s.aabb.lower.x <= s.aabb.upper.x && s.aabb.lower.y <= s.aabb.upper.y);
         const AABB& fat = broad_phase_.fat_aabb(s.proxy_key);
         I2D_ASSERT(fat.lower == s.fat_aabb.lower && fat.upper == s.fat_aabb.upper);
+        const AABB& ahead = broad_phase_.ahead_aabb(s.proxy_key);
+        I2D_ASSERT(ahead.lower == s.ahead_aabb.lower && ahead.upper == s.ahead_aabb.upper);
+        I2D_ASSERT(contains(s.ahead_aabb, s.fat_aabb));
         I2D_ASSERT(fat.lower.x <= s.aabb.lower.x && fat.lower.y <= s.aabb.lower.y);
         I2D_ASSERT(s.aabb.upper.x <= fat.upper.x && s.aabb.upper.y <= fat.upper.y);
         I2D_ASSERT(broad_phase_.tree(proxy_kind(s.proxy_key)).user_value(proxy_id(s.proxy_key)) == i);

@@ -505,6 +505,50 @@ I2D_TEST(unit_broad_phase_no_pairs_without_a_dynamic_side) {
     I2D_CHECK(out.size() == 40);
 }
 
+// A dynamic proxy meets static and kinematic proxies by its box ahead and other dynamic ones
+// by its fat box only: a falling body's stretch pairs it with the floor it is about to reach,
+// not with every body along its way (shape_bounds.hpp). Each pair is found once.
+I2D_TEST(unit_broad_phase_box_ahead_meets_static_and_kinematic_only) {
+    BroadPhase bp;
+    std::vector<ShapePairCandidate> out;
+    auto accept_all = [](int32_t, int32_t) { return true; };
+    const AABB fat{{0.0f, 0.0f}, {1.0f, 1.0f}};
+    const AABB ahead{{0.0f, -3.0f}, {1.0f, 1.0f}};          // stretched 3 m down
+    const AABB in_the_way{{0.0f, -2.5f}, {1.0f, -1.5f}};   // inside the stretch, clear of the fat box
+    bp.create_proxy(in_the_way, 1, 1, ProxyKind::static_proxy, false);
+    bp.create_proxy(in_the_way, 1, 2, ProxyKind::kinematic_proxy, true);
+    bp.create_proxy(in_the_way, 1, 3, ProxyKind::dynamic_proxy, true);
+    const auto new_pairs = [&]() {
+        out.clear();
+        bp.update_pairs(accept_all, out);
+        std::vector<Pair> got;
+        for (const ShapePairCandidate& p : out) {
+            got.push_back({p.shape_a, p.shape_b});
+        }
+        std::sort(got.begin(), got.end());
+        return got;
+    };
+    I2D_CHECK(new_pairs() == (std::vector<Pair>{{1, 3}, {2, 3}}));  // the dynamic one meets the others
+
+    const int32_t falling = bp.create_proxy(fat, ahead, 1, 0, ProxyKind::dynamic_proxy, true);
+    I2D_CHECK(same_box(bp.fat_aabb(falling), fat));
+    I2D_CHECK(same_box(bp.ahead_aabb(falling), ahead));
+    I2D_CHECK(new_pairs() == (std::vector<Pair>{{0, 1}, {0, 2}}));
+
+    // A static proxy that appears in the stretch as the dynamic one moves: both are queried,
+    // and only the dynamic one's box ahead reaches the other, so it must report the pair
+    // (the static proxy's key is the lower).
+    bp.move_proxy(falling, fat, ahead);
+    const int32_t appearing = bp.create_proxy(in_the_way, 1, 4, ProxyKind::static_proxy, true);
+    I2D_CHECK(appearing < falling);
+    I2D_CHECK(new_pairs() == (std::vector<Pair>{{0, 1}, {0, 2}, {0, 4}, {3, 4}}));
+
+    // Moved without a stretch, its box ahead is its fat box again.
+    bp.move_proxy(falling, fat);
+    I2D_CHECK(same_box(bp.ahead_aabb(falling), fat));
+    I2D_CHECK(new_pairs().empty());
+}
+
 // Both proxies of a pair moved: reported once; accept asked once. Accept saying no leaves the
 // pair out, and it comes back only when one of the two moves again.
 I2D_TEST(unit_broad_phase_pair_once_and_rejected_pairs_return_on_move) {
