@@ -13,8 +13,8 @@
 #include "core/reserve.hpp"
 #include "dynamics/constants.hpp"
 #include "dynamics/island.hpp"
-#include "dynamics/shape_bounds.hpp"
 #include "dynamics/joint_set.hpp"
+#include "dynamics/shape_bounds.hpp"
 #include "math/math.hpp"
 
 namespace i2d {

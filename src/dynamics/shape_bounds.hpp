@@ -61,8 +61,8 @@ inline float turn_reach(const Body& b, float time_step) {
 /// Recomputes the tight boxes of the body's shapes from its transform; a shape whose fat
 /// box no longer holds its tight box, or whose box ahead no longer holds it moved by
 /// `displacement` as well if ahead is true, is re-inserted (at the broadphase's next
-/// commit) with new boxes. `reach` grows the
-/// box ahead by what the body's turn may add (turn_reach).
+/// commit) with new boxes. `reach` grows the box ahead by what the body's turn may add
+/// (turn_reach).
 void update_shape_bounds(const Body& body, Pool<Shape>& shapes, BroadPhase& broad_phase, Vec2 displacement,
                          bool ahead, float reach = 0.0f);
 
