@@ -151,19 +151,49 @@ void BroadPhase::buffer_move(int32_t key) {
     }
 }
 
+namespace {
+
+// The dynamic tree is searched against itself, rather than queried by each moved dynamic
+// proxy, when at least this share (1 / n) of its proxies moved and at least this many.
+// The self search meets every overlapping pair once (the queries meet a pair of two
+// moved proxies from both sides) and tests each node pair once for all the leaves below
+// it, but it also walks the pairs that did not move. In the tumbler (1,940 of its 2,029
+// boxes move each step) the pair stage took 0.89 ms a step with the queries and 0.51
+// with the search, which descends both nodes of a pair at once (0.55 descending the
+// taller one only).
+constexpr int32_t self_search_share_denominator = 2;
+#if defined(I2D_FUZZ_SHARES_SMALL_WORLDS)
+constexpr int32_t self_search_min_moved = 2;  // the fuzzer's worlds are small: search them too
+#else
+constexpr int32_t self_search_min_moved = 64;
+#endif
+// Parts the self search is cut into, for workers to share: about a dozen per worker.
+constexpr int32_t self_search_parts = 32;
+
+}  // namespace
+
 int32_t BroadPhase::begin_pair_queries() {
     commit_moves_in_place();
     queries_.clear();
+    int32_t moved_dynamic = 0;
     for (const int32_t key : move_buffer_) {
         if (key != null_index) {  // blank: destroyed after it moved
             queries_.push_back({storage_order(key), key});
+            moved_dynamic += proxy_kind(key) == ProxyKind::dynamic_proxy ? 1 : 0;
         }
     }
     radix_sort(queries_, query_scratch_, [](const QueryEntry& e) { return e.order; });
+    DynamicTree& dynamic = tree(ProxyKind::dynamic_proxy);
+    dynamic_pairs_by_self_search_ = moved_dynamic >= self_search_min_moved &&
+                                    self_search_share_denominator * moved_dynamic >= dynamic.proxy_count();
+    if (dynamic_pairs_by_self_search_) {
+        dynamic.split_self_overlaps(self_search_parts, self_parts_);
+    }
     return int32_t(queries_.size());
 }
 
 void BroadPhase::end_pair_queries() {
+    dynamic_pairs_by_self_search_ = false;
     for (const int32_t key : move_buffer_) {
         if (key != null_index) {
             move_set_.remove(key);

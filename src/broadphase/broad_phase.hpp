@@ -5,11 +5,14 @@
 // static level costs nothing per step; only proxies whose tight box left their fat box
 // (the move buffer) are queried, against the trees they can collide with (a moved
 // dynamic proxy against all three trees, a moved kinematic or static one against the
-// dynamic tree). A dynamic proxy has a second box, stretched along its coming motion
-// (shape_bounds.hpp), which it meets the static and kinematic trees with; two dynamic
-// proxies meet by their fat boxes. Pairs come out in the storage order of the moved
-// proxies (below) and, per proxy, in tree order: the same inputs give the same pairs in
-// the same order.
+// dynamic tree). When most dynamic proxies moved, one search of the dynamic tree against
+// itself replaces their queries of it: each overlapping pair is met once, not once from
+// each side, and neighbouring leaves share the tests of their ancestors. A dynamic
+// proxy has a second box, stretched along its coming motion (shape_bounds.hpp), which
+// it meets the static and kinematic trees with; two dynamic proxies meet by their fat
+// boxes. Pairs come out in the storage order of the moved
+// proxies (below) and, per proxy, in tree order, after those of the self search in its
+// order: the same inputs give the same pairs in the same order.
 // Existing pairs are skipped through a caller's test (the world keeps the set of shape
 // pairs that have a contact).
 #pragma once
@@ -72,13 +75,20 @@ public:
     template <class Accept>
     void update_pairs(Accept&& accept, std::vector<ShapePairCandidate>& out);
 
-    // update_pairs in three parts, so that workers can share the queries: begin (one
-    // thread) commits the moves and orders the queued proxies, returning how many there
-    // are; query_pairs does queries [begin, end) and may run on several threads at once
-    // over disjoint ranges, reading only; end_pair_queries (one thread) clears the queue.
-    // Each range's pairs come out in the order update_pairs gives them. `ahead(a, b)` is
-    // called for each candidate as it is found, some time before accept(a, b) is.
+    // update_pairs in parts, so that workers can share the queries: begin (one thread)
+    // commits the moves and orders the queued proxies, returning how many there are;
+    // self_pairs does parts [begin, end) of the dynamic tree's search against itself
+    // (self_part_count() of them, none unless most dynamic proxies moved, see the .cpp)
+    // and query_pairs queries [begin, end); both may run on several threads at once over
+    // disjoint ranges, reading only. end_pair_queries (one thread) clears the queue. The
+    // self parts' pairs in order, then the queries', are the pairs update_pairs gives.
+    // `ahead(a, b)` is called for each candidate as it is found, some time before
+    // accept(a, b) is.
     int32_t begin_pair_queries();
+    int32_t self_part_count() const { return dynamic_pairs_by_self_search_ ? int32_t(self_parts_.size()) : 0; }
+    template <class Accept, class Ahead>
+    void self_pairs(int32_t begin, int32_t end, Accept&& accept, std::vector<ShapePairCandidate>& out,
+                    Ahead&& ahead) const;
     template <class Accept, class Ahead>
     void query_pairs(int32_t begin, int32_t end, Accept&& accept, std::vector<ShapePairCandidate>& out,
                      Ahead&& ahead) const;
@@ -91,6 +101,8 @@ public:
     const AABB& ahead_aabb(int32_t key) const {
         return proxy_kind(key) == ProxyKind::dynamic_proxy ? ahead_[std::size_t(proxy_id(key))] : fat_aabb(key);
     }
+    /// Where the proxy's leaf lies in its tree's node array (see storage order below).
+    uint32_t storage_order_of(int32_t key) const { return storage_order(key); }
     /// Proxies waiting for pair finding (destroyed ones no longer count).
     int32_t move_count() const { return move_set_.count(); }
 
@@ -129,6 +141,9 @@ private:
     std::vector<MoveEntry> move_scratch_;
     std::vector<QueryEntry> queries_;       // the move buffer in storage order
     std::vector<QueryEntry> query_scratch_;
+    // Set by begin_pair_queries when the dynamic tree's pairs come from self_pairs.
+    bool dynamic_pairs_by_self_search_ = false;
+    std::vector<TreeNodePair> self_parts_;
 };
 
 }  // namespace i2d

@@ -338,6 +338,31 @@ void DynamicTree::rebuild() {
 
 int32_t DynamicTree::rebuild_grown() { return rebuild_marked(Split::midpoint); }
 
+// Level by level from the root with itself: each round expands every part that is not a
+// single leaf pair, keeping the order, until there are enough parts or none can expand.
+void DynamicTree::split_self_overlaps(int32_t target, std::vector<TreeNodePair>& out) {
+    out.clear();
+    if (root_ == null_index) {
+        return;
+    }
+    out.push_back({root_, root_});
+    std::vector<TreeNodePair>& next = split_scratch_;
+    bool expanded = true;
+    while (expanded && int32_t(out.size()) < target) {
+        expanded = false;
+        next.clear();
+        for (const TreeNodePair pair : out) {
+            if (pair.a != pair.b && nodes_[pair.a].is_leaf() && nodes_[pair.b].is_leaf()) {
+                next.push_back(pair);
+            } else {
+                expand_pair(pair, [&](TreeNodePair child) { next.push_back(child); });
+                expanded = true;
+            }
+        }
+        out.swap(next);
+    }
+}
+
 // The marked nodes are freed; what hangs below them unmarked (leaves, and subtrees no
 // moved leaf reached) becomes the items of one build.
 int32_t DynamicTree::rebuild_marked(Split rule) {

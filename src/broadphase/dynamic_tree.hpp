@@ -60,6 +60,12 @@ private:
 };
 static_assert(sizeof(TreeNode) == 32, "tree nodes are the hot data of every query: keep them small");
 
+/// Two nodes whose leaves are to be paired with each other; a == b pairs one node's
+/// leaves among themselves.
+struct TreeNodePair {
+    int32_t a, b;
+};
+
 struct TreeRayInput {
     Vec2 origin;
     Vec2 translation;
@@ -106,6 +112,16 @@ public:
     template <class Visit>
     void query(const AABB& box, uint64_t mask_bits, Visit&& visit) const;
 
+    /// The search for every two leaves whose boxes overlap, cut into independent parts:
+    /// node pairs that between them hold each such leaf pair once, at least `target` of
+    /// them where the tree has that many. The same tree gives the same parts in the same
+    /// order, so results put together part by part do not depend on who searched which.
+    void split_self_overlaps(int32_t target, std::vector<TreeNodePair>& out);
+    /// Calls visit(proxy_a, user_a, proxy_b, user_b) for each two distinct leaves of
+    /// `part` whose boxes overlap (touching included), each pair once.
+    template <class Visit>
+    void self_overlaps(TreeNodePair part, Visit&& visit) const;
+
     /// Calls visit(input, proxy, user_value) -> float for every leaf whose box the ray
     /// (origin + t translation, t up to the current max fraction) crosses and whose
     /// category bits meet `mask_bits`. The returned value: 0 stops, a value in (0, max)
@@ -138,6 +154,11 @@ private:
         (void)node;
 #endif
     }
+    /// Hands push() the node pairs one level down from `pair` that can still hold an
+    /// overlapping leaf pair: a node with itself gives its children with themselves and
+    /// with each other; two nodes give the taller one's children with the other.
+    template <class Push>
+    void expand_pair(TreeNodePair pair, Push&& push) const;
     int32_t allocate_node();
     void free_node(int32_t node);
     /// Inserts below `start`, which must contain the leaf's box (or be the root).
@@ -190,6 +211,7 @@ private:
     std::vector<BuildTask> build_tasks_;
     std::vector<int32_t> built_nodes_;  // internal nodes in the order the build made them
     std::vector<int32_t> collect_stack_;
+    std::vector<TreeNodePair> split_scratch_;  // split_self_overlaps
 };
 
 }  // namespace i2d

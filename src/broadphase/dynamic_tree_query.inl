@@ -52,6 +52,78 @@ void DynamicTree::query(const AABB& box, Visit&& visit) const {
     }
 }
 
+template <class Push>
+void DynamicTree::expand_pair(TreeNodePair pair, Push&& push) const {
+    const TreeNode& a = nodes_[pair.a];
+    if (pair.a == pair.b) {
+        if (a.is_leaf()) {
+            return;
+        }
+        const int32_t first = a.child1(), second = a.child2();
+        if (!nodes_[first].is_leaf()) {
+            push(TreeNodePair{first, first});
+        }
+        if (!nodes_[second].is_leaf()) {
+            push(TreeNodePair{second, second});
+        }
+        if (overlaps(nodes_[first].aabb, nodes_[second].aabb)) {
+            push(TreeNodePair{first, second});
+        }
+        return;
+    }
+    const TreeNode& b = nodes_[pair.b];
+    if (!a.is_leaf() && !b.is_leaf()) {
+        for (const int32_t child_a : {a.child1(), a.child2()}) {
+            for (const int32_t child_b : {b.child1(), b.child2()}) {
+                if (overlaps(nodes_[child_a].aabb, nodes_[child_b].aabb)) {
+                    push(TreeNodePair{child_a, child_b});
+                }
+            }
+        }
+    } else if (!a.is_leaf()) {
+        for (const int32_t child : {a.child1(), a.child2()}) {
+            if (overlaps(nodes_[child].aabb, b.aabb)) {
+                push(TreeNodePair{child, pair.b});
+            }
+        }
+    } else {
+        for (const int32_t child : {b.child1(), b.child2()}) {
+            if (overlaps(a.aabb, nodes_[child].aabb)) {
+                push(TreeNodePair{pair.a, child});
+            }
+        }
+    }
+}
+
+// Depth first over node pairs. A pair is taken only once its two boxes are known to
+// overlap, and two overlapping leaves are reported as they are found rather than pushed.
+template <class Visit>
+void DynamicTree::self_overlaps(TreeNodePair part, Visit&& visit) const {
+    const auto report = [&](int32_t a, int32_t b) {
+        visit(nodes_[a].proxy(), nodes_[a].user_value(), nodes_[b].proxy(), nodes_[b].user_value());
+    };
+    if (part.a != part.b && nodes_[part.a].is_leaf() && nodes_[part.b].is_leaf()) {
+        report(part.a, part.b);
+        return;
+    }
+    GrowableStack<TreeNodePair, 256> stack;
+    const auto take = [&](TreeNodePair pair) {
+        if (pair.a != pair.b && nodes_[pair.a].is_leaf() && nodes_[pair.b].is_leaf()) {
+            report(pair.a, pair.b);
+        } else {
+            stack.push(pair);
+        }
+    };
+    TreeNodePair pair = part;
+    for (;;) {
+        expand_pair(pair, take);
+        if (stack.empty()) {
+            return;
+        }
+        pair = stack.pop();
+    }
+}
+
 template <class Visit>
 void DynamicTree::query(const AABB& box, uint64_t mask_bits, Visit&& visit) const {
     query(box, [&](int32_t proxy, int32_t user_value) {

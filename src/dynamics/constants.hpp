@@ -131,5 +131,6 @@ constexpr int32_t joints_per_work_block = 32;
 constexpr int32_t small_color_blocks = 2;
 constexpr int32_t joint_trees_per_work_block = 8;
 constexpr int32_t proxies_per_work_block = 16;
+constexpr int32_t self_search_parts_per_work_block = 2;
 
 }  // namespace i2d

@@ -284,31 +284,65 @@ bool ContactSet::may_pair(int32_t shape_a, int32_t shape_b) const {
     return should_collide(a.filter, b.filter) && !joints_.keeps_apart(a.body, b.body);
 }
 
+void ContactSet::self_search_range(void* set, const Stage& stage, int32_t begin, int32_t end, int32_t) {
+    ContactSet& self = *static_cast<ContactSet*>(set);
+    std::vector<ShapePairCandidate>& out = self.block_pairs_[0][std::size_t(begin / stage.items_per_block)];
+    out.clear();
+    self.querying_->self_pairs(
+        begin, end, [&self](int32_t a, int32_t b) { return self.may_pair(a, b); }, out,
+        [&self](int32_t a, int32_t b) { self.pair_set_.prefetch(pair_key(a, b)); });
+}
+
 void ContactSet::query_range(void* set, const Stage& stage, int32_t begin, int32_t end, int32_t) {
     ContactSet& self = *static_cast<ContactSet*>(set);
-    std::vector<ShapePairCandidate>& out = self.block_pairs_[std::size_t(begin / stage.items_per_block)];
+    std::vector<ShapePairCandidate>& out = self.block_pairs_[1][std::size_t(begin / stage.items_per_block)];
     out.clear();
     self.querying_->query_pairs(
         begin, end, [&self](int32_t a, int32_t b) { return self.may_pair(a, b); }, out,
         [&self](int32_t a, int32_t b) { self.pair_set_.prefetch(pair_key(a, b)); });
 }
 
-// New pairs, block by block in query order, become contacts on this thread.
+// New pairs, block by block in the broadphase's order, become contacts on this thread.
+// Creation order is the awake list's order, which the colouring follows, and so the order
+// of solving: the self search's pairs are first put in the order of their earlier leaf
+// in the tree's storage, close to the order the queries give. Made as the search found
+// them, many_pyramids' step took 8 % longer (its solve 10 %); sorted by shape ids (row by
+// row), the 70-row pyramid crept 5.9 cm sideways in 2000 steps instead of 0.35 cm (row
+// order gives every box's contacts the same pattern of colours: a bias to one side).
 void ContactSet::find_new_contacts(BroadPhase& broad_phase) {
     const int32_t queries = broad_phase.begin_pair_queries();
-    const bool parallel = tasks_.worker_count() > 1 && queries >= parallel_min_moved_proxies;
-    stages_.assign(1, make_stage(&ContactSet::query_range, this, queries, tasks_.worker_count(), parallel,
-                                 proxies_per_work_block));
-    const int32_t blocks = stages_[0].block_count();
-    if (int32_t(block_pairs_.size()) < blocks) {
-        block_pairs_.resize(std::size_t(blocks));
+    const int32_t self_parts = broad_phase.self_part_count();
+    const int32_t workers = tasks_.worker_count();
+    const bool parallel = workers > 1 && (queries >= parallel_min_moved_proxies || self_parts > 0);
+    stages_.clear();
+    stages_.push_back(make_stage(&ContactSet::self_search_range, this, self_parts, workers, parallel,
+                                 self_search_parts_per_work_block));
+    stages_.push_back(make_stage(&ContactSet::query_range, this, queries, workers, parallel, proxies_per_work_block));
+    for (int32_t s = 0; s < 2; ++s) {
+        const std::size_t blocks = std::size_t(stages_[std::size_t(s)].block_count());
+        if (block_pairs_[s].size() < blocks) {
+            block_pairs_[s].resize(blocks);
+        }
     }
     querying_ = &broad_phase;
     runner_.run(tasks_, stages_, parallel);
     querying_ = nullptr;
     broad_phase.end_pair_queries();
-    for (int32_t b = 0; b < (queries > 0 ? blocks : 0); ++b) {
-        for (const ShapePairCandidate& pair : block_pairs_[std::size_t(b)]) {
+    for (int32_t s = 0; s < 2; ++s) {
+        new_pairs_.clear();
+        const Stage& stage = stages_[std::size_t(s)];
+        for (int32_t b = 0; b < (stage.item_count > 0 ? stage.block_count() : 0); ++b) {
+            const std::vector<ShapePairCandidate>& found = block_pairs_[s][std::size_t(b)];
+            new_pairs_.insert(new_pairs_.end(), found.begin(), found.end());
+        }
+        if (s == 0) {
+            radix_sort(new_pairs_, new_pairs_scratch_, [&](const ShapePairCandidate& p) {
+                const uint32_t a = broad_phase.storage_order_of(shapes_[p.shape_a].proxy_key);
+                const uint32_t b = broad_phase.storage_order_of(shapes_[p.shape_b].proxy_key);
+                return a < b ? a : b;
+            });
+        }
+        for (const ShapePairCandidate& pair : new_pairs_) {
             create_contact(pair.shape_a, pair.shape_b);
         }
     }

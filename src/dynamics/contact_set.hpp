@@ -123,6 +123,7 @@ private:
     void prefetch_for_collide(int32_t k, int32_t count) const;
     uint8_t collide_one(int32_t k, float time_step);
     static void collide_range(void* set, const Stage& stage, int32_t begin, int32_t end, int32_t worker);
+    static void self_search_range(void* set, const Stage& stage, int32_t begin, int32_t end, int32_t worker);
     static void query_range(void* set, const Stage& stage, int32_t begin, int32_t end, int32_t worker);
     static void end_range(void* set, const Stage& stage, int32_t begin, int32_t end, int32_t worker);
     void run_over_awake(Stage::Fn fn);
@@ -153,7 +154,9 @@ private:
     enum CollideFlags : uint8_t { layout_changed = 1, points_changed = 2, wakes_a = 4, wakes_b = 8, has_points = 16 };
     enum EndFlags : uint8_t { ends = 1, reports = 2, hits = 4 };
     std::vector<uint8_t> collide_flags_;
-    std::vector<std::vector<ShapePairCandidate>> block_pairs_;  // per block of pair queries
+    // New pairs per block of each pair-finding stage: [0] the self search, [1] the queries.
+    std::vector<std::vector<ShapePairCandidate>> block_pairs_[2];
+    std::vector<ShapePairCandidate> new_pairs_scratch_;
     BroadPhase* querying_ = nullptr;  // while the pair queries run
     float time_step_ = 0.0f;
     std::vector<Stage> stages_;

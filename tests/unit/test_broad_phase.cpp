@@ -58,6 +58,8 @@ struct Options {
     float world = 45.0f;     // shapes live in [-world, world]^2
     bool filter = false;     // accept also rejects pairs with (a + b) % 5 == 0 (a custom filter)
     bool rebuild_static = false;  // rebuild the static tree after creating the level
+    bool in_parts = false;   // find pairs through the parts API, each range split in two as workers would
+    bool calm_even_rounds = false;  // even rounds move at a tenth of the speed: few proxies leave their boxes
 };
 
 // What went wrong, counted; and the sequence of every update's pairs for the determinism test.
@@ -74,6 +76,7 @@ struct Report {
     int32_t max_known = 0;
     std::vector<Pair> sequence;     // every pair appended to out, in order
     std::vector<int32_t> per_update;
+    int32_t self_search_updates = 0;  // in_parts only: updates that searched the dynamic tree against itself
 };
 
 class Harness {
@@ -194,7 +197,7 @@ private:
                 }
                 continue;
             }
-            Vec2 d = s.velocity;
+            Vec2 d = opt_.calm_even_rounds && round % 2 == 0 ? 0.1f * s.velocity : s.velocity;
             if (rng_.below(100) == 0) {
                 d = {rng_.uniform(-8.0f, 8.0f), rng_.uniform(-8.0f, 8.0f)};
             }
@@ -235,8 +238,7 @@ private:
         std::set<Pair> called;
         std::vector<ShapePairCandidate> accepted, out;
         out.push_back({-7, -3});  // update_pairs appends: what is there must stay
-        bp_.update_pairs(
-            [&](int32_t a, int32_t b) {
+        const auto accept = [&](int32_t a, int32_t b) {
                 ++report_.accept_calls;
                 const int32_t n = int32_t(shapes_.size());
                 if (a < 0 || b < 0 || a >= n || b >= n || !shapes_[a].alive || !shapes_[b].alive) {
@@ -266,8 +268,12 @@ private:
                     accepted.push_back({a, b});
                 }
                 return ok;
-            },
-            out);
+            };
+        if (opt_.in_parts) {
+            find_pairs_in_parts(accept, out);
+        } else {
+            bp_.update_pairs(accept, out);
+        }
 
         // out holds the old entry and then exactly the accepted pairs, in order.
         bool same = out.size() == accepted.size() + 1 && out[0].shape_a == -7 && out[0].shape_b == -3;
@@ -293,6 +299,25 @@ private:
         report_.max_known = std::max(report_.max_known, int32_t(known_.size()));
         check_against_brute_force();
         check_storage();
+    }
+
+    // As two workers would: each half of each range into a list of its own, the lists
+    // then appended in order.
+    template <class Accept>
+    void find_pairs_in_parts(Accept& accept, std::vector<ShapePairCandidate>& out) {
+        const int32_t queries = bp_.begin_pair_queries();
+        const int32_t parts = bp_.self_part_count();
+        report_.self_search_updates += parts > 0 ? 1 : 0;
+        const auto no_ahead = [](int32_t, int32_t) {};
+        std::vector<ShapePairCandidate> lists[4];
+        bp_.self_pairs(0, parts / 2, accept, lists[0], no_ahead);
+        bp_.self_pairs(parts / 2, parts, accept, lists[1], no_ahead);
+        bp_.query_pairs(0, queries / 2, accept, lists[2], no_ahead);
+        bp_.query_pairs(queries / 2, queries, accept, lists[3], no_ahead);
+        bp_.end_pair_queries();
+        for (const std::vector<ShapePairCandidate>& list : lists) {
+            out.insert(out.end(), list.begin(), list.end());
+        }
     }
 
     void check_against_brute_force() {
@@ -407,6 +432,27 @@ I2D_TEST(unit_broad_phase_pairs_match_brute_force_over_rounds) {
     r = Harness(filtered).run();
     I2D_CHECK(report_ok(r, "filtered, rebuilt static tree"));
     I2D_CHECK(r.pairs_reported > 1000);
+}
+
+// When most dynamic proxies moved, their pairs come from the dynamic tree searched against
+// itself, cut into parts: the rounds alternate between that and the queries, both against
+// brute force, and the parts shared as two workers would share them give update_pairs'
+// sequence.
+I2D_TEST(unit_broad_phase_self_search_matches_brute_force_and_queries) {
+    Options o;
+    o.seed = 21;
+    o.initial = 1500;
+    o.world = 20.0f;
+    o.calm_even_rounds = true;
+    o.in_parts = true;
+    const Report parts = Harness(o).run();
+    I2D_CHECK(report_ok(parts, "self search in parts"));
+    I2D_CHECK(parts.self_search_updates >= o.rounds / 3);
+    I2D_CHECK(parts.self_search_updates < int32_t(parts.per_update.size()) - o.rounds / 3);
+    I2D_CHECK(parts.pairs_reported > 5000);
+    o.in_parts = false;
+    const Report whole = Harness(o).run();
+    I2D_CHECK(whole.sequence == parts.sequence);
 }
 
 // Same inputs, same pairs in the same order.
