@@ -352,7 +352,7 @@ void DynamicTree::split_self_overlaps(int32_t target, std::vector<TreeNodePair>&
         expanded = false;
         next.clear();
         for (const TreeNodePair pair : out) {
-            if (pair.a != pair.b && nodes_[pair.a].is_leaf() && nodes_[pair.b].is_leaf()) {
+            if (is_leaf_pair(pair)) {
                 next.push_back(pair);
             } else {
                 expand_pair(pair, [&](TreeNodePair child) { next.push_back(child); });

@@ -159,6 +159,10 @@ private:
     /// with each other; two nodes give the taller one's children with the other.
     template <class Push>
     void expand_pair(TreeNodePair pair, Push&& push) const;
+    /// Two distinct leaves: a pair to report, not to expand.
+    bool is_leaf_pair(TreeNodePair pair) const {
+        return pair.a != pair.b && nodes_[pair.a].is_leaf() && nodes_[pair.b].is_leaf();
+    }
     int32_t allocate_node();
     void free_node(int32_t node);
     /// Inserts below `start`, which must contain the leaf's box (or be the root).

@@ -102,13 +102,13 @@ void DynamicTree::self_overlaps(TreeNodePair part, Visit&& visit) const {
     const auto report = [&](int32_t a, int32_t b) {
         visit(nodes_[a].proxy(), nodes_[a].user_value(), nodes_[b].proxy(), nodes_[b].user_value());
     };
-    if (part.a != part.b && nodes_[part.a].is_leaf() && nodes_[part.b].is_leaf()) {
+    if (is_leaf_pair(part)) {
         report(part.a, part.b);
         return;
     }
     GrowableStack<TreeNodePair, 256> stack;
     const auto take = [&](TreeNodePair pair) {
-        if (pair.a != pair.b && nodes_[pair.a].is_leaf() && nodes_[pair.b].is_leaf()) {
+        if (is_leaf_pair(pair)) {
             report(pair.a, pair.b);
         } else {
             stack.push(pair);

@@ -284,22 +284,20 @@ bool ContactSet::may_pair(int32_t shape_a, int32_t shape_b) const {
     return should_collide(a.filter, b.filter) && !joints_.keeps_apart(a.body, b.body);
 }
 
-void ContactSet::self_search_range(void* set, const Stage& stage, int32_t begin, int32_t end, int32_t) {
+// One pair-finding stage's range: the self search's parts, or the queries.
+template <bool SelfSearch>
+void ContactSet::pair_range(void* set, const Stage& stage, int32_t begin, int32_t end, int32_t) {
     ContactSet& self = *static_cast<ContactSet*>(set);
-    std::vector<ShapePairCandidate>& out = self.block_pairs_[0][std::size_t(begin / stage.items_per_block)];
+    std::vector<ShapePairCandidate>& out =
+        self.block_pairs_[SelfSearch ? 0 : 1][std::size_t(begin / stage.items_per_block)];
     out.clear();
-    self.querying_->self_pairs(
-        begin, end, [&self](int32_t a, int32_t b) { return self.may_pair(a, b); }, out,
-        [&self](int32_t a, int32_t b) { self.pair_set_.prefetch(pair_key(a, b)); });
-}
-
-void ContactSet::query_range(void* set, const Stage& stage, int32_t begin, int32_t end, int32_t) {
-    ContactSet& self = *static_cast<ContactSet*>(set);
-    std::vector<ShapePairCandidate>& out = self.block_pairs_[1][std::size_t(begin / stage.items_per_block)];
-    out.clear();
-    self.querying_->query_pairs(
-        begin, end, [&self](int32_t a, int32_t b) { return self.may_pair(a, b); }, out,
-        [&self](int32_t a, int32_t b) { self.pair_set_.prefetch(pair_key(a, b)); });
+    const auto accept = [&self](int32_t a, int32_t b) { return self.may_pair(a, b); };
+    const auto ahead = [&self](int32_t a, int32_t b) { self.pair_set_.prefetch(pair_key(a, b)); };
+    if constexpr (SelfSearch) {
+        self.querying_->self_pairs(begin, end, accept, out, ahead);
+    } else {
+        self.querying_->query_pairs(begin, end, accept, out, ahead);
+    }
 }
 
 // New pairs, block by block in the broadphase's order, become contacts on this thread.
@@ -315,9 +313,9 @@ void ContactSet::find_new_contacts(BroadPhase& broad_phase) {
     const int32_t workers = tasks_.worker_count();
     const bool parallel = workers > 1 && (queries >= parallel_min_moved_proxies || self_parts > 0);
     stages_.clear();
-    stages_.push_back(make_stage(&ContactSet::self_search_range, this, self_parts, workers, parallel,
+    stages_.push_back(make_stage(&ContactSet::pair_range<true>, this, self_parts, workers, parallel,
                                  self_search_parts_per_work_block));
-    stages_.push_back(make_stage(&ContactSet::query_range, this, queries, workers, parallel, proxies_per_work_block));
+    stages_.push_back(make_stage(&ContactSet::pair_range<false>, this, queries, workers, parallel, proxies_per_work_block));
     for (int32_t s = 0; s < 2; ++s) {
         const std::size_t blocks = std::size_t(stages_[std::size_t(s)].block_count());
         if (block_pairs_[s].size() < blocks) {

@@ -123,8 +123,8 @@ private:
     void prefetch_for_collide(int32_t k, int32_t count) const;
     uint8_t collide_one(int32_t k, float time_step);
     static void collide_range(void* set, const Stage& stage, int32_t begin, int32_t end, int32_t worker);
-    static void self_search_range(void* set, const Stage& stage, int32_t begin, int32_t end, int32_t worker);
-    static void query_range(void* set, const Stage& stage, int32_t begin, int32_t end, int32_t worker);
+    template <bool SelfSearch>
+    static void pair_range(void* set, const Stage& stage, int32_t begin, int32_t end, int32_t worker);
     static void end_range(void* set, const Stage& stage, int32_t begin, int32_t end, int32_t worker);
     void run_over_awake(Stage::Fn fn);
     bool may_pair(int32_t shape_a, int32_t shape_b) const;
