@@ -19,6 +19,8 @@
 
 #include <cstdint>
 
+#include "dynamics/hinge_columns.hpp"
+
 namespace i2d {
 
 template <int W>
@@ -75,7 +77,8 @@ struct SolvePass {
 
 struct BodyState;
 
-/// One instruction set's contact kernels over `count` blocks of its width.
+/// One instruction set's contact kernels over `count` blocks of its width, and its
+/// kernels for plain hinges (hinge_kernels.hpp), which the joint solver borrows.
 struct ContactKernels {
     int32_t width;
     const char* name;
@@ -83,6 +86,8 @@ struct ContactKernels {
     void (*warm_start)(void* blocks, const uint8_t* uses, int32_t count, BodyState* states);
     void (*solve)(void* blocks, const uint8_t* uses, int32_t count, BodyState* states, const SolvePass& pass);
     void (*restitution)(void* blocks, int32_t count, BodyState* states, float threshold);
+    HingeKernel warm_start_hinges;
+    HingeKernel solve_hinges;
 };
 
 /// Always there: one lane at a time, plain C++. The overflow colour always uses it.

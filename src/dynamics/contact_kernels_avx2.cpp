@@ -8,13 +8,15 @@
 
 #if defined(__AVX2__)
 #include "dynamics/contact_kernels.hpp"
+#include "dynamics/hinge_kernels.hpp"
 #include "math/lanes_avx2.hpp"
 
 namespace i2d {
 
 const ContactKernels* avx2_contact_kernels() {
     static const ContactKernels kernels{8, "avx2", &KernelsOf<LanesAvx2>::warm_start, &KernelsOf<LanesAvx2>::solve,
-                                        &KernelsOf<LanesAvx2>::restitution};
+                                        &KernelsOf<LanesAvx2>::restitution,
+                                        &HingeKernelsOf<LanesAvx2>::warm_start, &HingeKernelsOf<LanesAvx2>::solve};
     return &kernels;
 }
 

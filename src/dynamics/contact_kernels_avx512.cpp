@@ -11,13 +11,15 @@
 #pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
 #endif
 #include "dynamics/contact_kernels.hpp"
+#include "dynamics/hinge_kernels.hpp"
 #include "math/lanes_avx512.hpp"
 
 namespace i2d {
 
 const ContactKernels* avx512_contact_kernels() {
     static const ContactKernels kernels{16, "avx512", &KernelsOf<LanesAvx512>::warm_start,
-                                        &KernelsOf<LanesAvx512>::solve, &KernelsOf<LanesAvx512>::restitution};
+                                        &KernelsOf<LanesAvx512>::solve, &KernelsOf<LanesAvx512>::restitution,
+                                        &HingeKernelsOf<LanesAvx512>::warm_start, &HingeKernelsOf<LanesAvx512>::solve};
     return &kernels;
 }
 

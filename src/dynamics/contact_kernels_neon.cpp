@@ -4,13 +4,15 @@
 
 #if defined(__aarch64__) || defined(_M_ARM64)
 #include "dynamics/contact_kernels.hpp"
+#include "dynamics/hinge_kernels.hpp"
 #include "math/lanes_neon.hpp"
 
 namespace i2d {
 
 const ContactKernels* neon_contact_kernels() {
     static const ContactKernels kernels{4, "neon", &KernelsOf<LanesNeon>::warm_start, &KernelsOf<LanesNeon>::solve,
-                                        &KernelsOf<LanesNeon>::restitution};
+                                        &KernelsOf<LanesNeon>::restitution,
+                                        &HingeKernelsOf<LanesNeon>::warm_start, &HingeKernelsOf<LanesNeon>::solve};
     return &kernels;
 }
 

@@ -4,13 +4,15 @@
 
 #if defined(__SSE2__) || defined(_M_X64)
 #include "dynamics/contact_kernels.hpp"
+#include "dynamics/hinge_kernels.hpp"
 #include "math/lanes_sse2.hpp"
 
 namespace i2d {
 
 const ContactKernels* sse2_contact_kernels() {
     static const ContactKernels kernels{4, "sse2", &KernelsOf<LanesSse2>::warm_start, &KernelsOf<LanesSse2>::solve,
-                                        &KernelsOf<LanesSse2>::restitution};
+                                        &KernelsOf<LanesSse2>::restitution,
+                                        &HingeKernelsOf<LanesSse2>::warm_start, &HingeKernelsOf<LanesSse2>::solve};
     return &kernels;
 }
 

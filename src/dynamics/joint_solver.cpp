@@ -64,6 +64,15 @@ I2D_FORCE_INLINE void prefetch_settings(const std::vector<JointConstraint>& cons
     }
 }
 
+// The columns of HingeColumns that hold floats, in its order.
+constexpr std::size_t hinge_float_columns = 14;
+
+// A revolute joint with none of its optional rows, whose anchors the sweep holds (not a
+// tree's exact pass): all its pass does is the anchor row the hinge kernels solve.
+bool is_plain_hinge(const JointConstraint& c) {
+    return c.type == JointType::revolute && c.rows == 0 && (c.exact_rows & exact_point_rows) == 0;
+}
+
 // A side the joint can move: a dynamic body that is awake.
 bool can_move(const Body& b) { return b.type == BodyType::dynamic && b.awake_index != null_index; }
 
@@ -71,10 +80,58 @@ bool can_move(const Body& b) { return b.type == BodyType::dynamic && b.awake_ind
 
 void JointSolver::lay_out(const int32_t* ordered, int32_t count) {
     breaking_seen_.store(false, std::memory_order_relaxed);
-    constraints_.resize(std::size_t(count));
+    const std::size_t n = std::size_t(count);
+    constraints_.resize(n);
     for (int32_t k = 0; k < count; ++k) {
         constraints_[std::size_t(k)].joint = ordered[k];
     }
+    plain_hinge_.resize(n);
+    hinge_states_.resize(2 * n);
+    hinge_values_.resize(hinge_float_columns * n);
+    float* column = hinge_values_.data();
+    const auto next = [&column, n]() {
+        float* c = column;
+        column += n;
+        return c;
+    };
+    hinges_.state_a = hinge_states_.data();
+    hinges_.state_b = hinge_states_.data() + n;
+    hinges_.inv_mass_a = next();
+    hinges_.inv_mass_b = next();
+    hinges_.inv_inertia_a = next();
+    hinges_.inv_inertia_b = next();
+    hinges_.anchor_ax = next();
+    hinges_.anchor_ay = next();
+    hinges_.anchor_bx = next();
+    hinges_.anchor_by = next();
+    hinges_.center_x = next();
+    hinges_.center_y = next();
+    hinges_.impulse_x = next();
+    hinges_.impulse_y = next();
+    hinges_.angular_impulse = next();
+    hinges_.reset = next();
+}
+
+void JointSolver::load_hinge(int32_t k, const JointConstraint& c) {
+    const std::size_t i = std::size_t(k);
+    const JointImpulses& p = c.impulses;
+    hinges_.state_a[i] = c.state_a;
+    hinges_.state_b[i] = c.state_b;
+    hinges_.inv_mass_a[i] = c.inv_mass_a;
+    hinges_.inv_mass_b[i] = c.inv_mass_b;
+    hinges_.inv_inertia_a[i] = c.inv_inertia_a;
+    hinges_.inv_inertia_b[i] = c.inv_inertia_b;
+    hinges_.anchor_ax[i] = c.anchor_a.x;
+    hinges_.anchor_ay[i] = c.anchor_a.y;
+    hinges_.anchor_bx[i] = c.anchor_b.x;
+    hinges_.anchor_by[i] = c.anchor_b.y;
+    hinges_.center_x[i] = c.delta_center.x;
+    hinges_.center_y[i] = c.delta_center.y;
+    hinges_.impulse_x[i] = p.linear.x;
+    hinges_.impulse_y[i] = p.linear.y;
+    // What warm_start_revolute applies for the rows, in its order.
+    hinges_.angular_impulse[i] = p.spring + p.motor + p.lower - p.upper;
+    hinges_.reset[i] = 0.0f;
 }
 
 void JointSolver::prepare_one(JointConstraint& c, const Joint& joint, const Pool<Body>& bodies,
@@ -131,6 +188,38 @@ void JointSolver::prepare(const Pool<Joint>& joints, const Pool<Body>& bodies, i
     for (int32_t k = begin; k < end; ++k) {
         JointConstraint& c = constraints_[std::size_t(k)];
         prepare_one(c, joints[c.joint], bodies, fixed_state);
+        const bool hinge = is_plain_hinge(c);
+        plain_hinge_[std::size_t(k)] = hinge ? 1 : 0;
+        if (hinge) {
+            load_hinge(k, c);
+        }
+    }
+}
+
+int32_t JointSolver::hinge_run_end(int32_t begin, int32_t end) const {
+    int32_t k = begin;
+    while (k < end && plain_hinge_[std::size_t(k)] != 0) {
+        ++k;
+    }
+    return k;
+}
+
+HingePass JointSolver::hinge_pass(bool use_bias) const {
+    const Softness soft = rigid_pass(step_, use_bias);
+    return {soft.bias_rate,   soft.mass_scale, soft.impulse_scale, use_bias, step_.runaway_speed_sum,
+            step_.runaway_spin_sum};
+}
+
+void JointSolver::run_hinges(HingeKernel ContactKernels::*kernel, int32_t begin, int32_t end, BodyState* states,
+                             const HingePass& pass, bool independent) const {
+    const ContactKernels& scalar = scalar_contact_kernels();
+    const ContactKernels& wide = independent ? *kernels_ : scalar;
+    const int32_t whole = (end - begin) / wide.width * wide.width;
+    if (whole > 0) {
+        (wide.*kernel)(hinges_, begin, whole, states, pass);
+    }
+    if (begin + whole < end) {
+        (scalar.*kernel)(hinges_, begin + whole, end - begin - whole, states, pass);
     }
 }
 
@@ -138,8 +227,15 @@ void JointSolver::prepare(const Pool<Joint>& joints, const Pool<Body>& bodies, i
 // that the bodies' velocities stay in registers from load to store: passed to a kind's
 // functions by reference, they went through memory between the call and the guard, a
 // third of a joint_grid step's joint time.
-void JointSolver::warm_start(int32_t begin, int32_t end, BodyState* states) {
+void JointSolver::warm_start(int32_t begin, int32_t end, BodyState* states, bool independent) {
+    const HingePass pass = hinge_pass(true);
     for (int32_t k = begin; k < end; ++k) {
+        if (plain_hinge_[std::size_t(k)] != 0) {
+            const int32_t run_end = hinge_run_end(k, end);
+            run_hinges(&ContactKernels::warm_start_hinges, k, run_end, states, pass, independent);
+            k = run_end - 1;
+            continue;
+        }
         JointConstraint& c = constraints_[std::size_t(k)];
         switch (c.type) {
             case JointType::revolute: warm_start_revolute(c, states, step_); break;
@@ -154,8 +250,15 @@ void JointSolver::warm_start(int32_t begin, int32_t end, BodyState* states) {
     }
 }
 
-void JointSolver::solve(int32_t begin, int32_t end, BodyState* states, bool use_bias) {
+void JointSolver::solve(int32_t begin, int32_t end, BodyState* states, bool use_bias, bool independent) {
+    const HingePass pass = hinge_pass(use_bias);
     for (int32_t k = begin; k < end; ++k) {
+        if (plain_hinge_[std::size_t(k)] != 0) {
+            const int32_t run_end = hinge_run_end(k, end);
+            run_hinges(&ContactKernels::solve_hinges, k, run_end, states, pass, independent);
+            k = run_end - 1;
+            continue;
+        }
         prefetch_settings(constraints_, k, end);
         JointConstraint& c = constraints_[std::size_t(k)];
         switch (c.type) {
@@ -171,6 +274,15 @@ void JointSolver::solve(int32_t begin, int32_t end, BodyState* states, bool use_
     }
 }
 
+// The impulses the hinge's kernels left in the columns.
+void JointSolver::take_hinge_impulses(int32_t k, JointConstraint& c) const {
+    const std::size_t i = std::size_t(k);
+    if (hinges_.reset[i] != 0.0f) {
+        c.impulses = {};  // the guard undid a pass: the joint gave up every impulse
+    }
+    c.impulses.linear = {hinges_.impulse_x[i], hinges_.impulse_y[i]};
+}
+
 namespace {
 
 bool passes_threshold(const Joint& joint) {
@@ -183,7 +295,10 @@ bool passes_threshold(const Joint& joint) {
 void JointSolver::store(Pool<Joint>& joints, const BodyState* states, int32_t begin, int32_t end) {
     bool breaking = false;
     for (int32_t k = begin; k < end; ++k) {
-        const JointConstraint& c = constraints_[std::size_t(k)];
+        JointConstraint& c = constraints_[std::size_t(k)];
+        if (plain_hinge_[std::size_t(k)] != 0) {
+            take_hinge_impulses(k, c);
+        }
         Joint& joint = joints[c.joint];
         joint.impulses = c.impulses;
         const JointReaction r = joint_reaction(c, load_bodies(c, states), step_.inv_h);

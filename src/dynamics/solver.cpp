@@ -350,7 +350,8 @@ void Solver::pack_overflow(void* solver, const Stage&, int32_t begin, int32_t en
 void Solver::warm_start(void* solver, const Stage& stage, int32_t begin, int32_t end, int32_t) {
     Solver& self = *static_cast<Solver*>(solver);
     const RunSplit split = self.split_run(stage.arg0, begin, end);
-    self.joint_solver_.warm_start(split.joint_begin, split.joint_end, self.states_.data());
+    const bool independent = !self.color_runs_[std::size_t(stage.arg0)].sequential;
+    self.joint_solver_.warm_start(split.joint_begin, split.joint_end, self.states_.data(), independent);
     if (split.contact_begin < split.contact_end) {
         const int32_t run = self.color_runs_[std::size_t(stage.arg0)].contact_run;
         self.contact_solver_.warm_start(run, split.contact_begin, split.contact_end, self.states_.data());
@@ -361,7 +362,8 @@ void Solver::solve(void* solver, const Stage& stage, int32_t begin, int32_t end,
     Solver& self = *static_cast<Solver*>(solver);
     const SolvePass& pass = self.passes_[std::size_t(stage.arg1)];
     const RunSplit split = self.split_run(stage.arg0, begin, end);
-    self.joint_solver_.solve(split.joint_begin, split.joint_end, self.states_.data(), pass.use_bias);
+    const bool independent = !self.color_runs_[std::size_t(stage.arg0)].sequential;
+    self.joint_solver_.solve(split.joint_begin, split.joint_end, self.states_.data(), pass.use_bias, independent);
     if (split.contact_begin < split.contact_end) {
         const int32_t run = self.color_runs_[std::size_t(stage.arg0)].contact_run;
         self.contact_solver_.solve(run, split.contact_begin, split.contact_end, self.states_.data(), pass);

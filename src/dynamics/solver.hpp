@@ -67,6 +67,7 @@ public:
         : links_(links),
           simd_path_(links.settings.simd_path == SimdPath::automatic ? widest_simd_path() : links.settings.simd_path) {
         contact_solver_.set_kernels(contact_kernels_for(simd_path_));
+        joint_solver_.set_kernels(contact_kernels_for(simd_path_));
     }
     SimdPath simd_path() const { return simd_path_; }
 

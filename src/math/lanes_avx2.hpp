@@ -50,6 +50,8 @@ struct LanesAvx2 {
 
     static F load(const float* p) { return {_mm256_load_ps(p)}; }
     static void store(float* p, F a) { _mm256_store_ps(p, a.v); }
+    static F load_unaligned(const float* p) { return {_mm256_loadu_ps(p)}; }
+    static void store_unaligned(float* p, F a) { _mm256_storeu_ps(p, a.v); }
     static F splat(float s) { return {_mm256_set1_ps(s)}; }
     static F sqrt(F a) { return {_mm256_sqrt_ps(a.v)}; }
     static F min(F a, F b) { return {_mm256_min_ps(a.v, b.v)}; }

@@ -26,6 +26,8 @@ struct LanesAvx512 {
 
     static F load(const float* p) { return {_mm512_load_ps(p)}; }
     static void store(float* p, F a) { _mm512_store_ps(p, a.v); }
+    static F load_unaligned(const float* p) { return {_mm512_loadu_ps(p)}; }
+    static void store_unaligned(float* p, F a) { _mm512_storeu_ps(p, a.v); }
     static F splat(float s) { return {_mm512_set1_ps(s)}; }
     static F sqrt(F a) { return {_mm512_sqrt_ps(a.v)}; }
     static F min(F a, F b) { return {_mm512_min_ps(a.v, b.v)}; }

@@ -24,6 +24,8 @@ struct LanesNeon {
 
     static F load(const float* p) { return {vld1q_f32(p)}; }
     static void store(float* p, F a) { vst1q_f32(p, a.v); }
+    static F load_unaligned(const float* p) { return {vld1q_f32(p)}; }
+    static void store_unaligned(float* p, F a) { vst1q_f32(p, a.v); }
     static F splat(float s) { return {vdupq_n_f32(s)}; }
     static F sqrt(F a) { return {vsqrtq_f32(a.v)}; }
     static F min(F a, F b) { return {vbslq_f32(vcltq_f32(a.v, b.v), a.v, b.v)}; }

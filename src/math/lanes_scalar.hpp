@@ -30,6 +30,9 @@ struct Lanes1 {
 
     static F load(const float* p) { return {*p}; }
     static void store(float* p, F a) { *p = a.v; }
+    /// Any float address (load and store ask for the width's alignment).
+    static F load_unaligned(const float* p) { return {*p}; }
+    static void store_unaligned(float* p, F a) { *p = a.v; }
     static F splat(float s) { return {s}; }
     static F sqrt(F a) { return {std::sqrt(a.v)}; }
     static F min(F a, F b) { return {a.v < b.v ? a.v : b.v}; }

@@ -23,6 +23,8 @@ struct LanesSse2 {
 
     static F load(const float* p) { return {_mm_load_ps(p)}; }
     static void store(float* p, F a) { _mm_store_ps(p, a.v); }
+    static F load_unaligned(const float* p) { return {_mm_loadu_ps(p)}; }
+    static void store_unaligned(float* p, F a) { _mm_storeu_ps(p, a.v); }
     static F splat(float s) { return {_mm_set1_ps(s)}; }
     static F sqrt(F a) { return {_mm_sqrt_ps(a.v)}; }
     static F min(F a, F b) { return {_mm_min_ps(a.v, b.v)}; }

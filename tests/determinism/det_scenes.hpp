@@ -15,6 +15,13 @@
 // ragdoll_heap drops 60 of the bench's ragdolls (bench/ragdoll.c: 660 bodies, 600 revolute
 // joints with limits, springs and motors) onto a ground in overlapping layers, so that
 // joints are solved in every stage the workers share.
+//
+// hinge_net is made of plain hinges (revolute joints with no spring, motor or limit),
+// which the hinge kernels solve W at a time: a net of 280 boxes and circles hung from a
+// static bar and a moving kinematic one, a hub whose 30 spokes overflow the colours (the
+// overflow colour solves its hinges one at a time), a body held at two places at once
+// (two hinges that cannot both hold: the guard undoes their passes), and boxes falling
+// onto the net.
 #pragma once
 
 #include <impulse2d/impulse2d.h>
@@ -184,6 +191,82 @@ inline i2d_world_id bullet_room(const i2d_world_def& wd) {
             const i2d_circle circle{i2d_vec2{0, 0}, 0.05f};
             i2d_shape_create_circle(body, &shape, &circle);
         }
+    }
+    return world;
+}
+
+// A plain hinge holding the world point at_a of a on the world point at_b of b.
+inline void add_hinge(i2d_world_id world, i2d_body_id a, i2d_body_id b, i2d_vec2 at_a, i2d_vec2 at_b) {
+    i2d_revolute_joint_def def = i2d_default_revolute_joint_def();
+    def.base.body_a = a;
+    def.base.body_b = b;
+    def.base.local_anchor_a = i2d_body_get_local_point(a, at_a);
+    def.base.local_anchor_b = i2d_body_get_local_point(b, at_b);
+    i2d_joint_create_revolute(world, &def);
+}
+
+inline void add_hinge(i2d_world_id world, i2d_body_id a, i2d_body_id b, i2d_vec2 at) { add_hinge(world, a, b, at, at); }
+
+inline i2d_world_id hinge_net(const i2d_world_def& wd) {
+    constexpr int columns = 20, rows = 14, spokes = 30;
+    constexpr float spacing = 0.5f, top = 12.0f, left = -5.0f;
+    const i2d_world_id world = i2d_world_create(&wd);
+    if (I2D_IS_NULL(world)) {
+        return world;
+    }
+    const i2d_shape_def shape = material(0.6f, 0.0f);
+    const i2d_body_id ground = add_body(world, I2D_BODY_STATIC, i2d_vec2{0, 0});
+    i2d_shape_create_offset_box(ground, &shape, 30.0f, 0.5f, i2d_vec2{0, -0.5f}, i2d_make_rot(0));
+    const i2d_body_id bar = add_body(world, I2D_BODY_STATIC, i2d_vec2{0, top + spacing});
+    const i2d_body_id carrier = add_body(world, I2D_BODY_KINEMATIC, i2d_vec2{left + spacing * columns, top + spacing});
+    i2d_shape_create_box(carrier, &shape, 0.3f, 0.3f);
+    i2d_body_set_linear_velocity(carrier, i2d_vec2{0.4f, 0.0f});
+    i2d_body_set_angular_velocity(carrier, 0.3f);
+    // Held at two places 2 m apart: neither hinge can hold. Made first, so that its
+    // hinges start their colours' runs and the wide kernels meet the guard too.
+    const i2d_vec2 torn_at{-9.0f, 8.0f};
+    const i2d_body_id torn = add_body(world, I2D_BODY_DYNAMIC, torn_at);
+    add_mixed_shape(torn, 0, &shape);
+    add_hinge(world, ground, torn, torn_at);
+    add_hinge(world, bar, torn, i2d_vec2{torn_at.x + 2.0f, torn_at.y}, torn_at);
+    i2d_body_id net[rows][columns];
+    for (int r = 0; r < rows; ++r) {
+        for (int c = 0; c < columns; ++c) {
+            net[r][c] = add_body(world, I2D_BODY_DYNAMIC, i2d_vec2{left + spacing * float(c), top - spacing * float(r)});
+            add_mixed_shape(net[r][c], (r + c) % 2, &shape);
+        }
+    }
+    for (int r = 0; r < rows; ++r) {
+        for (int c = 0; c < columns; ++c) {
+            const i2d_vec2 at = i2d_body_get_position(net[r][c]);
+            if (c + 1 < columns) {
+                add_hinge(world, net[r][c], net[r][c + 1], i2d_vec2{at.x + 0.5f * spacing, at.y});
+            }
+            if (r + 1 < rows) {
+                add_hinge(world, net[r][c], net[r + 1][c], i2d_vec2{at.x, at.y - 0.5f * spacing});
+            }
+        }
+    }
+    for (int c = 0; c < columns; c += 4) {
+        const i2d_vec2 at = i2d_body_get_position(net[0][c]);
+        add_hinge(world, bar, net[0][c], i2d_vec2{at.x, at.y + 0.5f * spacing});
+    }
+    add_hinge(world, carrier, net[0][columns - 1], i2d_body_get_position(carrier));
+    // The hub and its spokes, to the right of the net.
+    const i2d_vec2 hub_at{9.0f, 6.0f};
+    const i2d_body_id hub = add_body(world, I2D_BODY_DYNAMIC, hub_at);
+    add_mixed_shape(hub, 1, &shape);
+    add_hinge(world, ground, hub, hub_at);
+    for (int k = 0; k < spokes; ++k) {
+        const float angle = 6.2831853f * float(k) / float(spokes);
+        const i2d_vec2 tip{hub_at.x + 1.5f * std::cos(angle), hub_at.y + 1.5f * std::sin(angle)};
+        const i2d_body_id spoke = add_body(world, I2D_BODY_DYNAMIC, tip);
+        add_mixed_shape(spoke, k, &shape);
+        add_hinge(world, hub, spoke, hub_at);
+    }
+    for (int k = 0; k < 24; ++k) {
+        const i2d_body_id box = add_body(world, I2D_BODY_DYNAMIC, i2d_vec2{left + 0.4f * float(k), top + 3.0f});
+        add_mixed_shape(box, k, &shape);
     }
     return world;
 }
