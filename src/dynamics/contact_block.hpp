@@ -78,7 +78,7 @@ struct SolvePass {
 struct BodyState;
 
 /// One instruction set's contact kernels over `count` blocks of its width, and its
-/// kernels for plain hinges (hinge_kernels.hpp), which the joint solver borrows.
+/// kernels for hinges (hinge_kernels.hpp), which the joint solver borrows.
 struct ContactKernels {
     int32_t width;
     const char* name;

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// The contact kernels eight lanes at a time in AVX2. This file alone is built with
+// The contact and hinge kernels eight lanes at a time in AVX2. This file alone is built with
 // -mavx2 (see src/CMakeLists.txt), and it is called only after the CPU said it has AVX2,
 // so that one library serves every x86-64 CPU. It shares no inline code with the rest
 // of the library: everything it instantiates has internal linkage (lanes_avx2.hpp), so
@@ -14,9 +14,13 @@
 namespace i2d {
 
 const ContactKernels* avx2_contact_kernels() {
-    static const ContactKernels kernels{8, "avx2", &KernelsOf<LanesAvx2>::warm_start, &KernelsOf<LanesAvx2>::solve,
+    static const ContactKernels kernels{8,
+                                        "avx2",
+                                        &KernelsOf<LanesAvx2>::warm_start,
+                                        &KernelsOf<LanesAvx2>::solve,
                                         &KernelsOf<LanesAvx2>::restitution,
-                                        &HingeKernelsOf<LanesAvx2>::warm_start, &HingeKernelsOf<LanesAvx2>::solve};
+                                        &HingeKernelsOf<LanesAvx2>::warm_start,
+                                        &HingeKernelsOf<LanesAvx2>::solve};
     return &kernels;
 }
 

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// The contact kernels sixteen lanes at a time in AVX-512F. Like the AVX2 file, this one
+// The contact and hinge kernels sixteen lanes at a time in AVX-512F. Like the AVX2 file, this one
 // alone is built for its instruction set (-mavx512f, see src/CMakeLists.txt), called only
 // after the CPU said it has it, and shares no inline code with the rest of the library.
 #include "dynamics/contact_block.hpp"
@@ -17,9 +17,13 @@
 namespace i2d {
 
 const ContactKernels* avx512_contact_kernels() {
-    static const ContactKernels kernels{16, "avx512", &KernelsOf<LanesAvx512>::warm_start,
-                                        &KernelsOf<LanesAvx512>::solve, &KernelsOf<LanesAvx512>::restitution,
-                                        &HingeKernelsOf<LanesAvx512>::warm_start, &HingeKernelsOf<LanesAvx512>::solve};
+    static const ContactKernels kernels{16,
+                                        "avx512",
+                                        &KernelsOf<LanesAvx512>::warm_start,
+                                        &KernelsOf<LanesAvx512>::solve,
+                                        &KernelsOf<LanesAvx512>::restitution,
+                                        &HingeKernelsOf<LanesAvx512>::warm_start,
+                                        &HingeKernelsOf<LanesAvx512>::solve};
     return &kernels;
 }
 

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// The contact kernels four lanes at a time in NEON, on every AArch64 CPU.
+// The contact and hinge kernels four lanes at a time in NEON, on every AArch64 CPU.
 #include "dynamics/contact_block.hpp"
 
 #if defined(__aarch64__) || defined(_M_ARM64)
@@ -10,9 +10,13 @@
 namespace i2d {
 
 const ContactKernels* neon_contact_kernels() {
-    static const ContactKernels kernels{4, "neon", &KernelsOf<LanesNeon>::warm_start, &KernelsOf<LanesNeon>::solve,
+    static const ContactKernels kernels{4,
+                                        "neon",
+                                        &KernelsOf<LanesNeon>::warm_start,
+                                        &KernelsOf<LanesNeon>::solve,
                                         &KernelsOf<LanesNeon>::restitution,
-                                        &HingeKernelsOf<LanesNeon>::warm_start, &HingeKernelsOf<LanesNeon>::solve};
+                                        &HingeKernelsOf<LanesNeon>::warm_start,
+                                        &HingeKernelsOf<LanesNeon>::solve};
     return &kernels;
 }
 

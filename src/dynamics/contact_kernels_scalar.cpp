@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// The contact kernels one lane at a time: the path every platform has, and the one the
+// The contact and hinge kernels one lane at a time: the path every platform has, and the one the
 // overflow colour takes on every path.
 #include "dynamics/contact_kernels.hpp"
 #include "dynamics/hinge_kernels.hpp"
@@ -8,9 +8,13 @@
 namespace i2d {
 
 const ContactKernels& scalar_contact_kernels() {
-    static const ContactKernels kernels{1, "scalar", &KernelsOf<Lanes1>::warm_start, &KernelsOf<Lanes1>::solve,
+    static const ContactKernels kernels{1,
+                                        "scalar",
+                                        &KernelsOf<Lanes1>::warm_start,
+                                        &KernelsOf<Lanes1>::solve,
                                         &KernelsOf<Lanes1>::restitution,
-                                        &HingeKernelsOf<Lanes1>::warm_start, &HingeKernelsOf<Lanes1>::solve};
+                                        &HingeKernelsOf<Lanes1>::warm_start,
+                                        &HingeKernelsOf<Lanes1>::solve};
     return kernels;
 }
 

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// The contact kernels four lanes at a time in SSE2, on every x86-64 CPU.
+// The contact and hinge kernels four lanes at a time in SSE2, on every x86-64 CPU.
 #include "dynamics/contact_block.hpp"
 
 #if defined(__SSE2__) || defined(_M_X64)
@@ -10,9 +10,13 @@
 namespace i2d {
 
 const ContactKernels* sse2_contact_kernels() {
-    static const ContactKernels kernels{4, "sse2", &KernelsOf<LanesSse2>::warm_start, &KernelsOf<LanesSse2>::solve,
+    static const ContactKernels kernels{4,
+                                        "sse2",
+                                        &KernelsOf<LanesSse2>::warm_start,
+                                        &KernelsOf<LanesSse2>::solve,
                                         &KernelsOf<LanesSse2>::restitution,
-                                        &HingeKernelsOf<LanesSse2>::warm_start, &HingeKernelsOf<LanesSse2>::solve};
+                                        &HingeKernelsOf<LanesSse2>::warm_start,
+                                        &HingeKernelsOf<LanesSse2>::solve};
     return &kernels;
 }
 

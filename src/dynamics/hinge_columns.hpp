@@ -1,13 +1,14 @@
 // SPDX-License-Identifier: MIT
-// HingeColumns: the step's plain hinges (revolute joints with no spring, motor or limit,
-// whose only row holds the two anchors together) as columns, one float per joint, so
-// that the hinge kernels (hinge_kernels.hpp) load W joints' worth with one instruction.
+// HingeColumns: the step's hinges (revolute joints, with or without their spring, motor
+// and limit rows) as columns, one float per joint, so that the hinge kernels
+// (hinge_kernels.hpp) load W joints' worth with one instruction.
 //
-// Design note: a grid or chain of hinges spends most of its step in this one row, and
-// solved one joint at a time it is a chain of dependent scalar operations. The columns
-// are indexed like the joint solver's constraints (solve order), so a colour's run of
-// consecutive plain hinges is solved W at a time; while the step runs, the columns hold
-// the hinge's impulses, and the joint solver copies them back when it stores. Plain data
+// Design note: grids, chains and ragdolls spend most of their step in revolute joints,
+// and solved one joint at a time each is a chain of dependent scalar operations. The
+// columns are indexed like the joint solver's constraints (solve order), so a colour's
+// run of consecutive hinges is solved W at a time; a row some lanes lack is computed
+// for all and kept only where the joint has it. While the step runs, the columns hold
+// the hinges' impulses, and the joint solver copies them back when it stores. Plain data
 // only: the kernels are compiled with other instruction-set flags (see contact_block.hpp).
 #pragma once
 
@@ -30,15 +31,35 @@ struct HingeColumns {
     float* anchor_by;
     float* center_x;  // centre B - centre A at the step's start
     float* center_y;
-    float* impulse_x;  // the anchor row's accumulated impulse, N s
+    // The rows: 1 where the joint has the row this step, else 0 (JointConstraint::rows).
+    float* has_spring;
+    float* has_motor;
+    float* has_limit;
+    float* delta_angle;  // angle B - angle A - reference at the step's start, unwound
+    float* axial_mass;   // effective mass of the angular rows
+    float* spring_position_rate;  // the spring (SpringRow)
+    float* spring_speed_scale;
+    float* spring_impulse_scale;
+    float* spring_relaxes;  // 1 when it also acts in the relax pass
+    float* target_angle;
+    float* motor_speed;
+    float* max_motor_impulse;  // substep times the largest torque, N m s
+    float* lower_angle;
+    float* upper_angle;
+    // Accumulated impulses: the anchor row's (N s) and the angular rows' (N m s).
+    float* impulse_x;
     float* impulse_y;
-    float* angular_impulse;  // warm start only: the sum the revolute rows kept from earlier steps
-    float* reset;            // 1 once the guard undid a pass: the joint gave up every impulse
+    float* spring_impulse;
+    float* motor_impulse;
+    float* lower_impulse;
+    float* upper_impulse;
+    float* reset;  // 1 once the guard undid a pass: the joint gave up every impulse
 };
 
-/// One pass over the hinges: how the rigid row acts (softness.hpp; plainly rigid, no
-/// bias, when relaxing) and the guard's limits (JointStep).
+/// One pass over the hinges: the substep, how the rigid rows act (softness.hpp; plainly
+/// rigid, no bias, when relaxing) and the guard's limits (JointStep).
 struct HingePass {
+    float inv_h;
     float bias_rate, mass_scale, impulse_scale;
     bool use_bias;
     float runaway_speed_sum, runaway_spin_sum;

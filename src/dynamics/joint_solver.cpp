@@ -65,13 +65,11 @@ I2D_FORCE_INLINE void prefetch_settings(const std::vector<JointConstraint>& cons
 }
 
 // The columns of HingeColumns that hold floats, in its order.
-constexpr std::size_t hinge_float_columns = 14;
+constexpr std::size_t hinge_float_columns = 31;
 
-// A revolute joint with none of its optional rows, whose anchors the sweep holds (not a
-// tree's exact pass): all its pass does is the anchor row the hinge kernels solve.
-bool is_plain_hinge(const JointConstraint& c) {
-    return c.type == JointType::revolute && c.rows == 0 && (c.exact_rows & exact_point_rows) == 0;
-}
+// A revolute joint none of whose rows a tree's exact pass holds: its whole pass is the
+// hinge kernels'.
+bool is_lane_hinge(const JointConstraint& c) { return c.type == JointType::revolute && c.exact_rows == 0; }
 
 // A side the joint can move: a dynamic body that is awake.
 bool can_move(const Body& b) { return b.type == BodyType::dynamic && b.awake_index != null_index; }
@@ -85,7 +83,7 @@ void JointSolver::lay_out(const int32_t* ordered, int32_t count) {
     for (int32_t k = 0; k < count; ++k) {
         constraints_[std::size_t(k)].joint = ordered[k];
     }
-    plain_hinge_.resize(n);
+    lane_hinge_.resize(n);
     hinge_states_.resize(2 * n);
     hinge_values_.resize(hinge_float_columns * n);
     float* column = hinge_values_.data();
@@ -106,9 +104,26 @@ void JointSolver::lay_out(const int32_t* ordered, int32_t count) {
     hinges_.anchor_by = next();
     hinges_.center_x = next();
     hinges_.center_y = next();
+    hinges_.has_spring = next();
+    hinges_.has_motor = next();
+    hinges_.has_limit = next();
+    hinges_.delta_angle = next();
+    hinges_.axial_mass = next();
+    hinges_.spring_position_rate = next();
+    hinges_.spring_speed_scale = next();
+    hinges_.spring_impulse_scale = next();
+    hinges_.spring_relaxes = next();
+    hinges_.target_angle = next();
+    hinges_.motor_speed = next();
+    hinges_.max_motor_impulse = next();
+    hinges_.lower_angle = next();
+    hinges_.upper_angle = next();
     hinges_.impulse_x = next();
     hinges_.impulse_y = next();
-    hinges_.angular_impulse = next();
+    hinges_.spring_impulse = next();
+    hinges_.motor_impulse = next();
+    hinges_.lower_impulse = next();
+    hinges_.upper_impulse = next();
     hinges_.reset = next();
 }
 
@@ -127,10 +142,28 @@ void JointSolver::load_hinge(int32_t k, const JointConstraint& c) {
     hinges_.anchor_by[i] = c.anchor_b.y;
     hinges_.center_x[i] = c.delta_center.x;
     hinges_.center_y[i] = c.delta_center.y;
+    const RevoluteSettings& s = c.def->revolute;
+    const auto flag = [](bool on) { return on ? 1.0f : 0.0f; };
+    hinges_.has_spring[i] = flag((c.rows & spring_row) != 0);
+    hinges_.has_motor[i] = flag((c.rows & motor_row) != 0);
+    hinges_.has_limit[i] = flag((c.rows & limit_row) != 0);
+    hinges_.delta_angle[i] = c.delta_angle;
+    hinges_.axial_mass[i] = c.axial_mass;
+    hinges_.spring_position_rate[i] = c.spring.position_rate;
+    hinges_.spring_speed_scale[i] = c.spring.speed_scale;
+    hinges_.spring_impulse_scale[i] = c.spring.impulse_scale;
+    hinges_.spring_relaxes[i] = flag(c.spring.relaxes);
+    hinges_.target_angle[i] = s.target_angle;
+    hinges_.motor_speed[i] = s.motor_speed;
+    hinges_.max_motor_impulse[i] = step_.h * s.max_motor_torque;
+    hinges_.lower_angle[i] = s.lower_angle;
+    hinges_.upper_angle[i] = s.upper_angle;
     hinges_.impulse_x[i] = p.linear.x;
     hinges_.impulse_y[i] = p.linear.y;
-    // What warm_start_revolute applies for the rows, in its order.
-    hinges_.angular_impulse[i] = p.spring + p.motor + p.lower - p.upper;
+    hinges_.spring_impulse[i] = p.spring;
+    hinges_.motor_impulse[i] = p.motor;
+    hinges_.lower_impulse[i] = p.lower;
+    hinges_.upper_impulse[i] = p.upper;
     hinges_.reset[i] = 0.0f;
 }
 
@@ -188,8 +221,8 @@ void JointSolver::prepare(const Pool<Joint>& joints, const Pool<Body>& bodies, i
     for (int32_t k = begin; k < end; ++k) {
         JointConstraint& c = constraints_[std::size_t(k)];
         prepare_one(c, joints[c.joint], bodies, fixed_state);
-        const bool hinge = is_plain_hinge(c);
-        plain_hinge_[std::size_t(k)] = hinge ? 1 : 0;
+        const bool hinge = is_lane_hinge(c);
+        lane_hinge_[std::size_t(k)] = hinge ? 1 : 0;
         if (hinge) {
             load_hinge(k, c);
         }
@@ -198,7 +231,7 @@ void JointSolver::prepare(const Pool<Joint>& joints, const Pool<Body>& bodies, i
 
 int32_t JointSolver::hinge_run_end(int32_t begin, int32_t end) const {
     int32_t k = begin;
-    while (k < end && plain_hinge_[std::size_t(k)] != 0) {
+    while (k < end && lane_hinge_[std::size_t(k)] != 0) {
         ++k;
     }
     return k;
@@ -206,8 +239,8 @@ int32_t JointSolver::hinge_run_end(int32_t begin, int32_t end) const {
 
 HingePass JointSolver::hinge_pass(bool use_bias) const {
     const Softness soft = rigid_pass(step_, use_bias);
-    return {soft.bias_rate,   soft.mass_scale, soft.impulse_scale, use_bias, step_.runaway_speed_sum,
-            step_.runaway_spin_sum};
+    return {step_.inv_h, soft.bias_rate,          soft.mass_scale,        soft.impulse_scale,
+            use_bias,    step_.runaway_speed_sum, step_.runaway_spin_sum};
 }
 
 void JointSolver::run_hinges(HingeKernel ContactKernels::*kernel, int32_t begin, int32_t end, BodyState* states,
@@ -230,7 +263,7 @@ void JointSolver::run_hinges(HingeKernel ContactKernels::*kernel, int32_t begin,
 void JointSolver::warm_start(int32_t begin, int32_t end, BodyState* states, bool independent) {
     const HingePass pass = hinge_pass(true);
     for (int32_t k = begin; k < end; ++k) {
-        if (plain_hinge_[std::size_t(k)] != 0) {
+        if (lane_hinge_[std::size_t(k)] != 0) {
             const int32_t run_end = hinge_run_end(k, end);
             run_hinges(&ContactKernels::warm_start_hinges, k, run_end, states, pass, independent);
             k = run_end - 1;
@@ -253,7 +286,7 @@ void JointSolver::warm_start(int32_t begin, int32_t end, BodyState* states, bool
 void JointSolver::solve(int32_t begin, int32_t end, BodyState* states, bool use_bias, bool independent) {
     const HingePass pass = hinge_pass(use_bias);
     for (int32_t k = begin; k < end; ++k) {
-        if (plain_hinge_[std::size_t(k)] != 0) {
+        if (lane_hinge_[std::size_t(k)] != 0) {
             const int32_t run_end = hinge_run_end(k, end);
             run_hinges(&ContactKernels::solve_hinges, k, run_end, states, pass, independent);
             k = run_end - 1;
@@ -281,6 +314,10 @@ void JointSolver::take_hinge_impulses(int32_t k, JointConstraint& c) const {
         c.impulses = {};  // the guard undid a pass: the joint gave up every impulse
     }
     c.impulses.linear = {hinges_.impulse_x[i], hinges_.impulse_y[i]};
+    c.impulses.spring = hinges_.spring_impulse[i];
+    c.impulses.motor = hinges_.motor_impulse[i];
+    c.impulses.lower = hinges_.lower_impulse[i];
+    c.impulses.upper = hinges_.upper_impulse[i];
 }
 
 namespace {
@@ -296,7 +333,7 @@ void JointSolver::store(Pool<Joint>& joints, const BodyState* states, int32_t be
     bool breaking = false;
     for (int32_t k = begin; k < end; ++k) {
         JointConstraint& c = constraints_[std::size_t(k)];
-        if (plain_hinge_[std::size_t(k)] != 0) {
+        if (lane_hinge_[std::size_t(k)] != 0) {
             take_hinge_impulses(k, c);
         }
         Joint& joint = joints[c.joint];

@@ -6,8 +6,8 @@
 // (stage_runner.hpp): the joints of one colour share no body the solver moves, so any
 // split of a colour's range gives the same bits; the overflow colour's joints are done
 // in order on one worker. Each joint is a JointConstraint (joint_constraint.hpp), solved
-// by its kind's functions through a switch, except the plain hinges: their one row is
-// solved from columns (hinge_columns.hpp) by the world's SIMD kernels, W consecutive
+// by its kind's functions through a switch, except the revolute joints (hinges): they
+// are solved from columns (hinge_columns.hpp) by the world's SIMD kernels, W consecutive
 // hinges of a colour at a time, one at a time in the overflow colour.
 #pragma once
 
@@ -32,14 +32,14 @@ public:
     void lay_out(const int32_t* ordered, int32_t count);
     int32_t count() const { return int32_t(constraints_.size()); }
     void set_step(const JointStep& step) { step_ = step; }
-    /// The instruction set's kernels for the plain hinges (the contacts' path).
+    /// The instruction set's kernels for the hinges (the contacts' path).
     void set_kernels(const ContactKernels& kernels) { kernels_ = &kernels; }
 
     /// Anchors, masses, softness and last step's impulses of joints [begin, end).
     void prepare(const Pool<Joint>& joints, const Pool<Body>& bodies, int32_t fixed_state, int32_t begin,
                  int32_t end);
     /// `independent`: the range's joints share no body the solver moves (any colour but
-    /// the overflow), so that plain hinges may be solved side by side.
+    /// the overflow), so that hinges may be solved side by side.
     void warm_start(int32_t begin, int32_t end, BodyState* states, bool independent);
     void solve(int32_t begin, int32_t end, BodyState* states, bool use_bias, bool independent);
 
@@ -63,19 +63,19 @@ public:
 private:
     void prepare_one(JointConstraint& c, const Joint& joint, const Pool<Body>& bodies, int32_t fixed_state) const;
     void load_hinge(int32_t k, const JointConstraint& c);
-    /// The run of plain hinges [begin, end): whole chunks of the kernels' width, the rest
+    /// The run of hinges [begin, end): whole chunks of the kernels' width, the rest
     /// one at a time.
     void run_hinges(HingeKernel ContactKernels::*kernel, int32_t begin, int32_t end, BodyState* states,
                     const HingePass& pass, bool independent) const;
-    /// Where the run of plain hinges from `begin` ends, at most at `end`.
+    /// Where the run of hinges from `begin` ends, at most at `end`.
     int32_t hinge_run_end(int32_t begin, int32_t end) const;
     HingePass hinge_pass(bool use_bias) const;
     void take_hinge_impulses(int32_t k, JointConstraint& c) const;
 
     std::vector<JointConstraint> constraints_;
-    // Per constraint: whether it is a plain hinge this step (set by prepare), and the
+    // Per constraint: whether the hinge kernels solve it this step (set by prepare), and the
     // columns (HingeColumns) that hold what its kernels read, column by column.
-    std::vector<uint8_t> plain_hinge_;
+    std::vector<uint8_t> lane_hinge_;
     std::vector<int32_t> hinge_states_;
     std::vector<float> hinge_values_;
     HingeColumns hinges_{};

@@ -16,12 +16,12 @@
 // joints with limits, springs and motors) onto a ground in overlapping layers, so that
 // joints are solved in every stage the workers share.
 //
-// hinge_net is made of plain hinges (revolute joints with no spring, motor or limit),
-// which the hinge kernels solve W at a time: a net of 280 boxes and circles hung from a
-// static bar and a moving kinematic one, a hub whose 30 spokes overflow the colours (the
-// overflow colour solves its hinges one at a time), a body held at two places at once
-// (two hinges that cannot both hold: the guard undoes their passes), and boxes falling
-// onto the net.
+// hinge_net is made of revolute joints, which the hinge kernels solve W at a time: a net
+// of 280 boxes and circles hung from a static bar and a moving kinematic one, some of its
+// hinges with a limit or a spring; a hub whose 30 spokes (limits, motors, springs that
+// relax or not) overflow the colours (the overflow colour solves its hinges one at a
+// time); a body held at two places at once (two hinges that cannot both hold: the guard
+// undoes their passes); and boxes falling onto the net.
 #pragma once
 
 #include <impulse2d/impulse2d.h>
@@ -195,9 +195,42 @@ inline i2d_world_id bullet_room(const i2d_world_def& wd) {
     return world;
 }
 
-// A plain hinge holding the world point at_a of a on the world point at_b of b.
-inline void add_hinge(i2d_world_id world, i2d_body_id a, i2d_body_id b, i2d_vec2 at_a, i2d_vec2 at_b) {
+// The rows a hinge of hinge_net has, by number: none, a limit, a motor, a spring that
+// relaxes (stiff for the substep), one that does not (soft).
+inline i2d_revolute_joint_def hinge_rows(int kind) {
     i2d_revolute_joint_def def = i2d_default_revolute_joint_def();
+    switch (kind % 5) {
+        case 1:
+            def.enable_limit = true;
+            def.lower_angle = -0.3f;
+            def.upper_angle = 0.2f;
+            break;
+        case 2:
+            def.enable_motor = true;
+            def.motor_speed = 1.5f;
+            def.max_motor_torque = 4.0f;
+            break;
+        case 3:
+            def.enable_spring = true;
+            def.hertz = 60.0f;
+            def.damping_ratio = 0.7f;
+            def.target_angle = 0.25f;
+            break;
+        case 4:
+            def.enable_spring = true;
+            def.hertz = 1.5f;
+            def.damping_ratio = 0.1f;
+            def.target_angle = -0.4f;
+            break;
+        default: break;
+    }
+    return def;
+}
+
+// A hinge holding the world point at_a of a on the world point at_b of b.
+inline void add_hinge(i2d_world_id world, i2d_body_id a, i2d_body_id b, i2d_vec2 at_a, i2d_vec2 at_b,
+                      int kind = 0) {
+    i2d_revolute_joint_def def = hinge_rows(kind);
     def.base.body_a = a;
     def.base.body_b = b;
     def.base.local_anchor_a = i2d_body_get_local_point(a, at_a);
@@ -205,7 +238,9 @@ inline void add_hinge(i2d_world_id world, i2d_body_id a, i2d_body_id b, i2d_vec2
     i2d_joint_create_revolute(world, &def);
 }
 
-inline void add_hinge(i2d_world_id world, i2d_body_id a, i2d_body_id b, i2d_vec2 at) { add_hinge(world, a, b, at, at); }
+inline void add_hinge(i2d_world_id world, i2d_body_id a, i2d_body_id b, i2d_vec2 at, int kind = 0) {
+    add_hinge(world, a, b, at, at, kind);
+}
 
 inline i2d_world_id hinge_net(const i2d_world_def& wd) {
     constexpr int columns = 20, rows = 14, spokes = 30;
@@ -232,15 +267,18 @@ inline i2d_world_id hinge_net(const i2d_world_def& wd) {
     i2d_body_id net[rows][columns];
     for (int r = 0; r < rows; ++r) {
         for (int c = 0; c < columns; ++c) {
-            net[r][c] = add_body(world, I2D_BODY_DYNAMIC, i2d_vec2{left + spacing * float(c), top - spacing * float(r)});
+            const i2d_vec2 at{left + spacing * float(c), top - spacing * float(r)};
+            net[r][c] = add_body(world, I2D_BODY_DYNAMIC, at);
             add_mixed_shape(net[r][c], (r + c) % 2, &shape);
         }
     }
     for (int r = 0; r < rows; ++r) {
         for (int c = 0; c < columns; ++c) {
             const i2d_vec2 at = i2d_body_get_position(net[r][c]);
+            // One hinge in seven with a limit or a spring; the rest plain.
+            const int kind = (r * columns + c) % 7 == 0 ? 1 + (r + c) % 4 : 0;
             if (c + 1 < columns) {
-                add_hinge(world, net[r][c], net[r][c + 1], i2d_vec2{at.x + 0.5f * spacing, at.y});
+                add_hinge(world, net[r][c], net[r][c + 1], i2d_vec2{at.x + 0.5f * spacing, at.y}, kind == 2 ? 0 : kind);
             }
             if (r + 1 < rows) {
                 add_hinge(world, net[r][c], net[r + 1][c], i2d_vec2{at.x, at.y - 0.5f * spacing});
@@ -262,7 +300,7 @@ inline i2d_world_id hinge_net(const i2d_world_def& wd) {
         const i2d_vec2 tip{hub_at.x + 1.5f * std::cos(angle), hub_at.y + 1.5f * std::sin(angle)};
         const i2d_body_id spoke = add_body(world, I2D_BODY_DYNAMIC, tip);
         add_mixed_shape(spoke, k, &shape);
-        add_hinge(world, hub, spoke, hub_at);
+        add_hinge(world, hub, spoke, hub_at, k);
     }
     for (int k = 0; k < 24; ++k) {
         const i2d_body_id box = add_body(world, I2D_BODY_DYNAMIC, i2d_vec2{left + 0.4f * float(k), top + 3.0f});
