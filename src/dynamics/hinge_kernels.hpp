@@ -22,25 +22,22 @@
 
 namespace i2d {
 
-/// One chunk of hinges: their masses, and the anchors turned by the bodies' rotations.
+/// One chunk of hinges: their masses and anchors as the contact kernels hold a contact's
+/// (there is no normal), the anchors turned by the bodies' rotations.
 template <class L>
 struct HingeLanes {
     using F = typename L::F;
-    F ma, mb, ia, ib;
-    F rax, ray, rbx, rby;
+    PairLanes<L> masses;
+    PointLanes<L> anchors;
 
     I2D_FORCE_INLINE static HingeLanes load(const HingeColumns& h, int32_t k, const BodyLanes<L>& a,
                                             const BodyLanes<L>& b) {
         const F ax = L::load_unaligned(h.anchor_ax + k), ay = L::load_unaligned(h.anchor_ay + k);
         const F bx = L::load_unaligned(h.anchor_bx + k), by = L::load_unaligned(h.anchor_by + k);
-        return {L::load_unaligned(h.inv_mass_a + k),
-                L::load_unaligned(h.inv_mass_b + k),
-                L::load_unaligned(h.inv_inertia_a + k),
-                L::load_unaligned(h.inv_inertia_b + k),
-                a.dqc * ax - a.dqs * ay,
-                a.dqs * ax + a.dqc * ay,
-                b.dqc * bx - b.dqs * by,
-                b.dqs * bx + b.dqc * by};
+        const F zero = L::splat(0.0f);
+        return {{L::load_unaligned(h.inv_mass_a + k), L::load_unaligned(h.inv_mass_b + k),
+                 L::load_unaligned(h.inv_inertia_a + k), L::load_unaligned(h.inv_inertia_b + k), zero, zero},
+                {a.dqc * ax - a.dqs * ay, a.dqs * ax + a.dqc * ay, b.dqc * bx - b.dqs * by, b.dqs * bx + b.dqc * by}};
     }
 };
 
@@ -64,24 +61,12 @@ struct HingeImpulses {
     }
 };
 
-// -P on A at its anchor, +P on B at its anchor (apply_linear).
-template <class L>
-I2D_FORCE_INLINE void apply_hinge_impulse(Velocities<L>& v, const HingeLanes<L>& c, typename L::F px,
-                                          typename L::F py) {
-    v.vax = v.vax - c.ma * px;
-    v.vay = v.vay - c.ma * py;
-    v.wa = v.wa - c.ia * (c.rax * py - c.ray * px);
-    v.vbx = v.vbx + c.mb * px;
-    v.vby = v.vby + c.mb * py;
-    v.wb = v.wb + c.ib * (c.rbx * py - c.rby * px);
-}
-
 // apply_angular, on the lanes that have the row.
 template <class L>
 I2D_FORCE_INLINE void apply_hinge_spin(Velocities<L>& v, const HingeLanes<L>& c, typename L::M has,
                                        typename L::F impulse) {
-    v.wa = L::blend(has, v.wa, v.wa - c.ia * impulse);
-    v.wb = L::blend(has, v.wb, v.wb + c.ib * impulse);
+    v.wa = L::blend(has, v.wa, v.wa - c.masses.ia * impulse);
+    v.wb = L::blend(has, v.wb, v.wb + c.masses.ib * impulse);
 }
 
 // unwind_angle: into (-pi, pi].
@@ -228,12 +213,13 @@ I2D_FORCE_INLINE void warm_start_hinges(const HingeColumns& h, int32_t k, BodySt
     const Velocities<L> loaded = Velocities<L>::of(a, b);
     Velocities<L> v = loaded;
     const HingeImpulses<L> p = HingeImpulses<L>::load(h, k);
-    apply_hinge_impulse(v, c, p.x, p.y);
+    // apply_linear: -P on A at its anchor, +P on B at its anchor, as a contact's impulse.
+    apply_impulse(v, c.masses, c.anchors, p.x, p.y);
     // The rows' impulses whether or not the joint has the rows this step, in
     // warm_start_revolute's order.
     const typename L::F spin = ((p.spring + p.motor) + p.lower) - p.upper;
-    v.wa = v.wa - c.ia * spin;
-    v.wb = v.wb + c.ib * spin;
+    v.wa = v.wa - c.masses.ia * spin;
+    v.wb = v.wb + c.masses.ib * spin;
     finish_hinges<L>(h, k, states, pass, a, b, loaded, v, p);
 }
 
@@ -248,22 +234,23 @@ I2D_FORCE_INLINE void solve_hinges(const HingeColumns& h, int32_t k, BodyState* 
     HingeImpulses<L> p = HingeImpulses<L>::load(h, k);
     solve_hinge_rows<L>(h, k, a, b, c, v, p, pass);
     // The anchor row last: it is the one that must hold.
+    const PointLanes<L>& r = c.anchors;
     const F zero = L::splat(0.0f);
     F bias_x = zero, bias_y = zero;
     if (pass.use_bias) {
         // current_separation: (dpB - dpA) + (centre B - centre A) + (rB - rA).
         const F rate = L::splat(pass.bias_rate);
-        bias_x = rate * (((b.dpx - a.dpx) + L::load_unaligned(h.center_x + k)) + (c.rbx - c.rax));
-        bias_y = rate * (((b.dpy - a.dpy) + L::load_unaligned(h.center_y + k)) + (c.rby - c.ray));
+        bias_x = rate * (((b.dpx - a.dpx) + L::load_unaligned(h.center_x + k)) + (r.rbx - r.rax));
+        bias_y = rate * (((b.dpy - a.dpy) + L::load_unaligned(h.center_y + k)) + (r.rby - r.ray));
     }
     // relative_velocity: (vB + wB x rB) - (vA + wA x rA), w x r = (-w r.y, w r.x).
-    const F cdot_x = ((v.vbx + (-v.wb) * c.rby) - (v.vax + (-v.wa) * c.ray)) + bias_x;
-    const F cdot_y = ((v.vby + v.wb * c.rbx) - (v.vay + v.wa * c.rax)) + bias_y;
+    const F cdot_x = ((v.vbx + (-v.wb) * r.rby) - (v.vax + (-v.wa) * r.ray)) + bias_x;
+    const F cdot_y = ((v.vby + v.wb * r.rbx) - (v.vay + v.wa * r.rax)) + bias_y;
     // point_mass_matrix and solve22.
-    const F m = c.ma + c.mb;
-    const F k11 = (m + (c.ray * c.ray) * c.ia) + (c.rby * c.rby) * c.ib;
-    const F k12 = (((-c.ray) * c.rax) * c.ia) - ((c.rby * c.rbx) * c.ib);
-    const F k22 = (m + (c.rax * c.rax) * c.ia) + (c.rbx * c.rbx) * c.ib;
+    const F m = c.masses.ma + c.masses.mb;
+    const F k11 = (m + (r.ray * r.ray) * c.masses.ia) + (r.rby * r.rby) * c.masses.ib;
+    const F k12 = (((-r.ray) * r.rax) * c.masses.ia) - ((r.rby * r.rbx) * c.masses.ib);
+    const F k22 = (m + (r.rax * r.rax) * c.masses.ia) + (r.rbx * r.rbx) * c.masses.ib;
     const F det = k11 * k22 - k12 * k12;
     const F inv_det = L::blend(L::eq(det, zero), L::splat(1.0f) / det, zero);
     const F solved_x = inv_det * (k22 * cdot_x - k12 * cdot_y);
@@ -273,7 +260,7 @@ I2D_FORCE_INLINE void solve_hinges(const HingeColumns& h, int32_t k, BodyState* 
     const F iy = minus_mass_scale * solved_y - impulse_scale * p.y;
     p.x = p.x + ix;
     p.y = p.y + iy;
-    apply_hinge_impulse(v, c, ix, iy);
+    apply_impulse(v, c.masses, c.anchors, ix, iy);
     finish_hinges<L>(h, k, states, pass, a, b, loaded, v, p);
 }
 
