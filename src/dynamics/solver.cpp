@@ -65,6 +65,13 @@ void Solver::step(float time_step, int32_t substep_count) {
     const int32_t awake = int32_t(links_.islands.awake_bodies().size());
     time_step_ = time_step;
     substep_ = time_step / float(substep_count);
+    if (awake == 0) {
+        // Nothing moves, so no contact or joint is solved (each needs an awake body): an
+        // empty or sleeping world's step skips the layouts and stages, half its cost.
+        fast_bodies_.clear();
+        non_finite_bodies_.clear();
+        return;
+    }
     states_.resize(std::size_t(awake) + 1);
     motions_.resize(std::size_t(awake) + 1);
     states_[std::size_t(awake)] = BodyState{};
