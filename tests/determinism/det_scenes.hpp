@@ -296,8 +296,10 @@ inline i2d_world_id hinge_net(const i2d_world_def& wd) {
     add_mixed_shape(hub, 1, &shape);
     add_hinge(world, ground, hub, hub_at);
     for (int k = 0; k < spokes; ++k) {
-        const float angle = 6.2831853f * float(k) / float(spokes);
-        const i2d_vec2 tip{hub_at.x + 1.5f * std::cos(angle), hub_at.y + 1.5f * std::sin(angle)};
+        // The engine's own trigonometry: the same bits on every platform, as the recorded
+        // hash needs.
+        const i2d_rot turn = i2d_make_rot(6.2831853f * float(k) / float(spokes));
+        const i2d_vec2 tip{hub_at.x + 1.5f * turn.c, hub_at.y + 1.5f * turn.s};
         const i2d_body_id spoke = add_body(world, I2D_BODY_DYNAMIC, tip);
         add_mixed_shape(spoke, k, &shape);
         add_hinge(world, hub, spoke, hub_at, k);

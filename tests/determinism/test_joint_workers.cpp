@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Joints keep the step's determinism: a heap of ragdolls (revolute joints with limits,
-// springs and motors, coloured with the contacts) and a net of plain hinges (solved W at a
-// time, in chunks the workers cut differently) give the same state hash at every step
+// springs and motors, coloured with the contacts) and a net of hinges (solved W at a time,
+// in chunks the workers cut differently) give the same state hash at every step
 // with 1 and 2 workers, and with 2 workers on a job system that runs the tasks shuffled.
 #include <impulse2d/impulse2d.h>
 
