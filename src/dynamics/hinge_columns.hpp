@@ -16,8 +16,7 @@
 
 namespace i2d {
 
-// The joint solver fills every column in prepare; the kernels write only the impulses
-// and reset.
+// The joint solver fills every column in prepare; the kernels write only the impulses.
 struct HingeColumns {
     int32_t* state_a;  // in the state array; the fixed state for a fixed body
     int32_t* state_b;
@@ -53,7 +52,6 @@ struct HingeColumns {
     float* motor_impulse;
     float* lower_impulse;
     float* upper_impulse;
-    float* reset;  // 1 once the guard undid a pass: the joint gave up every impulse
 };
 
 /// One pass over the hinges: the substep, how the rigid rows act (softness.hpp; plainly

@@ -195,9 +195,9 @@ I2D_FORCE_INLINE void finish_hinges(const HingeColumns& h, int32_t k, BodyState*
     if (!L::all(ok)) {
         const typename L::F zero = L::splat(0.0f);
         v = Velocities<L>::select(ok, loaded, v);
+        // Every impulse a revolute joint has (it never uses JointImpulses' angular or axial).
         p = {L::blend(ok, zero, p.x),     L::blend(ok, zero, p.y),     L::blend(ok, zero, p.spring),
              L::blend(ok, zero, p.motor), L::blend(ok, zero, p.lower), L::blend(ok, zero, p.upper)};
-        L::store_unaligned(h.reset + k, L::blend(ok, L::splat(1.0f), L::load_unaligned(h.reset + k)));
     }
     p.store(h, k);
     v.write_to(a, b);

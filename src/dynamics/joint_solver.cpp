@@ -50,9 +50,14 @@ I2D_FORCE_INLINE const void* kind_settings(const JointConstraint& c) {
     }
 }
 
-// A hinge without spring, motor or limit never reads its settings.
+// A revolute joint none of whose rows a tree's exact pass holds: its whole pass is the
+// hinge kernels'.
+bool is_lane_hinge(const JointConstraint& c) { return c.type == JointType::revolute && c.exact_rows == 0; }
+
+// A revolute joint reads its settings in the pass only when it has rows and a tree holds
+// it: the hinge kernels read theirs from the columns.
 I2D_FORCE_INLINE bool reads_settings(const JointConstraint& c) {
-    return c.type != JointType::revolute || c.rows != 0;
+    return c.type != JointType::revolute || (c.rows != 0 && !is_lane_hinge(c));
 }
 
 I2D_FORCE_INLINE void prefetch_settings(const std::vector<JointConstraint>& constraints, int32_t k, int32_t end) {
@@ -65,11 +70,7 @@ I2D_FORCE_INLINE void prefetch_settings(const std::vector<JointConstraint>& cons
 }
 
 // The columns of HingeColumns that hold floats, in its order.
-constexpr std::size_t hinge_float_columns = 31;
-
-// A revolute joint none of whose rows a tree's exact pass holds: its whole pass is the
-// hinge kernels'.
-bool is_lane_hinge(const JointConstraint& c) { return c.type == JointType::revolute && c.exact_rows == 0; }
+constexpr std::size_t hinge_float_columns = 30;
 
 // A side the joint can move: a dynamic body that is awake.
 bool can_move(const Body& b) { return b.type == BodyType::dynamic && b.awake_index != null_index; }
@@ -124,7 +125,6 @@ void JointSolver::lay_out(const int32_t* ordered, int32_t count) {
     hinges_.motor_impulse = next();
     hinges_.lower_impulse = next();
     hinges_.upper_impulse = next();
-    hinges_.reset = next();
 }
 
 void JointSolver::load_hinge(int32_t k, const JointConstraint& c) {
@@ -164,7 +164,6 @@ void JointSolver::load_hinge(int32_t k, const JointConstraint& c) {
     hinges_.motor_impulse[i] = p.motor;
     hinges_.lower_impulse[i] = p.lower;
     hinges_.upper_impulse[i] = p.upper;
-    hinges_.reset[i] = 0.0f;
 }
 
 void JointSolver::prepare_one(JointConstraint& c, const Joint& joint, const Pool<Body>& bodies,
@@ -307,12 +306,10 @@ void JointSolver::solve(int32_t begin, int32_t end, BodyState* states, bool use_
     }
 }
 
-// The impulses the hinge's kernels left in the columns.
+// The impulses the hinge's kernels left in the columns: all a revolute joint has (a pass
+// the guard undid left them zero).
 void JointSolver::take_hinge_impulses(int32_t k, JointConstraint& c) const {
     const std::size_t i = std::size_t(k);
-    if (hinges_.reset[i] != 0.0f) {
-        c.impulses = {};  // the guard undid a pass: the joint gave up every impulse
-    }
     c.impulses.linear = {hinges_.impulse_x[i], hinges_.impulse_y[i]};
     c.impulses.spring = hinges_.spring_impulse[i];
     c.impulses.motor = hinges_.motor_impulse[i];
