@@ -268,8 +268,14 @@ void ContactSolver::apply_restitution(int32_t run, int32_t begin, int32_t end, B
 }
 
 template <int W>
-bool ContactSolver::bounces(const ContactBlock<W>* blocks, std::size_t count, float threshold) const {
+bool ContactSolver::bounces(const ContactBlock<W>* blocks, const uint8_t* uses, std::size_t count,
+                            float threshold) const {
     for (std::size_t b = 0; b < count; ++b) {
+        // A block whose lanes are all inelastic cannot bounce: its uses say so in a byte,
+        // where reading its restitution costs a cache line.
+        if ((uses[b] & block_tracks_impact) == 0) {
+            continue;
+        }
         const ContactBlock<W>& block = blocks[b];
         for (int lane = 0; lane < W; ++lane) {
             for (int i = 0; i < 2; ++i) {
@@ -285,11 +291,12 @@ bool ContactSolver::bounces(const ContactBlock<W>* blocks, std::size_t count, fl
 }
 
 bool ContactSolver::any_bounce(float threshold) const {
-    const bool colored = kernels_->width == 16  ? bounces(blocks16_.data(), blocks16_.size(), threshold)
-                         : kernels_->width == 8 ? bounces(blocks8_.data(), blocks8_.size(), threshold)
-                         : kernels_->width == 4 ? bounces(blocks4_.data(), blocks4_.size(), threshold)
-                                                : bounces(blocks1_.data(), blocks1_.size(), threshold);
-    return colored || bounces(overflow_.data(), overflow_.size(), threshold);
+    const uint8_t* uses = block_uses_.data();
+    const bool colored = kernels_->width == 16  ? bounces(blocks16_.data(), uses, blocks16_.size(), threshold)
+                         : kernels_->width == 8 ? bounces(blocks8_.data(), uses, blocks8_.size(), threshold)
+                         : kernels_->width == 4 ? bounces(blocks4_.data(), uses, blocks4_.size(), threshold)
+                                                : bounces(blocks1_.data(), uses, blocks1_.size(), threshold);
+    return colored || bounces(overflow_.data(), overflow_uses_.data(), overflow_.size(), threshold);
 }
 
 template <int W>

@@ -102,7 +102,7 @@ private:
     void store_range(const ContactBlock<W>* blocks, const int32_t* contacts_of_lanes, int32_t lane_begin,
                      int32_t lane_end, Pool<Contact>& contacts, const BodyState* states, float slop) const;
     template <int W>
-    bool bounces(const ContactBlock<W>* blocks, std::size_t count, float threshold) const;
+    bool bounces(const ContactBlock<W>* blocks, const uint8_t* uses, std::size_t count, float threshold) const;
     // The kernels and the address of block `first` of the run.
     struct RunBlocks {
         const ContactKernels* kernels;
