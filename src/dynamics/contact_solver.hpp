@@ -84,6 +84,7 @@ public:
     void solve(int32_t run, int32_t begin, int32_t end, BodyState* states, const SolvePass& pass) const;
     /// Whether any point bounces: only then does the restitution pass run.
     bool any_bounce(float threshold) const;
+    int32_t run_first_block(int32_t run) const { return runs_[std::size_t(run)].first_block; }
     void apply_restitution(int32_t run, int32_t begin, int32_t end, BodyState* states, float threshold) const;
     /// Impulses of blocks [begin, end) back to their contacts; contacts with a point
     /// within `slop` of touching where the substeps left the bodies get contact_touching.

@@ -110,19 +110,15 @@ private:
 
     // The stages; `begin` and `end` index the stage's items.
     static void gather_bodies(void* solver, const Stage& stage, int32_t begin, int32_t end, int32_t worker);
-    static void prepare_joints(void* solver, const Stage& stage, int32_t begin, int32_t end, int32_t worker);
     static void solve_joint_trees(void* solver, const Stage& stage, int32_t begin, int32_t end, int32_t worker);
-    static void store_joints(void* solver, const Stage& stage, int32_t begin, int32_t end, int32_t worker);
-    static void pack_contacts(void* solver, const Stage& stage, int32_t begin, int32_t end, int32_t worker);
-    static void pack_overflow(void* solver, const Stage& stage, int32_t begin, int32_t end, int32_t worker);
+    static void prepare_color(void* solver, const Stage& stage, int32_t begin, int32_t end, int32_t worker);
+    static void store_color(void* solver, const Stage& stage, int32_t begin, int32_t end, int32_t worker);
     static void integrate_velocities(void* solver, const Stage& stage, int32_t begin, int32_t end, int32_t worker);
     static void warm_start(void* solver, const Stage& stage, int32_t begin, int32_t end, int32_t worker);
     static void solve(void* solver, const Stage& stage, int32_t begin, int32_t end, int32_t worker);
     static void integrate_positions(void* solver, const Stage& stage, int32_t begin, int32_t end, int32_t worker);
     static void check_bounce(void* solver, const Stage& stage, int32_t begin, int32_t end, int32_t worker);
     static void restitution(void* solver, const Stage& stage, int32_t begin, int32_t end, int32_t worker);
-    static void store_impulses(void* solver, const Stage& stage, int32_t begin, int32_t end, int32_t worker);
-    static void store_overflow(void* solver, const Stage& stage, int32_t begin, int32_t end, int32_t worker);
     static void finalize_bodies(void* solver, const Stage& stage, int32_t begin, int32_t end, int32_t worker);
     static void number_move_events(void* solver, const Stage& stage, int32_t begin, int32_t end, int32_t worker);
     static void write_move_events(void* solver, const Stage& stage, int32_t begin, int32_t end, int32_t worker);
