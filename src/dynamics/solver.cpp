@@ -492,10 +492,11 @@ void Solver::color_joints() {
 }
 
 // A colour for every awake contact the solver will see, then the contacts laid out
-// colour by colour (a counting sort that keeps awake order), the order they are solved
-// in. Within a colour, whose contacts are independent, two-point contacts come first,
-// so that SIMD blocks hold one kind and blocks of single points skip the second; the
-// overflow colour is solved in sequence and keeps awake order. A body the contact
+// colour by colour, the order they are solved in. Within a colour, whose contacts are
+// independent, two-point contacts come first, so that SIMD blocks hold one kind and
+// blocks of single points skip the second, and each kind is in the order of the lowest
+// body it moves (order_by_body); the overflow colour is solved in sequence and keeps
+// awake order. A body the contact
 // cannot move (static, kinematic, asleep) takes no colour slot. The sort's key is the
 // colour and the kind of contact in one. Only contacts with points are read
 // (ContactSet::solvable): most of a tumbling heap's have none.
@@ -521,7 +522,9 @@ void Solver::color_contacts() {
         const bool single_after_pairs = color != ConstraintColors::overflow && contact.point_count == 1;
         const int32_t key = 2 * color + (single_after_pairs ? 1 : 0);
         ++key_starts_[std::size_t(key) + 1];
-        colored_contacts_.push_back({solvable[k], key});
+        const int32_t a = (contact.flags & contact_moves_a) ? contact.state_a : colored_body_count_;
+        const int32_t b = (contact.flags & contact_moves_b) ? contact.state_b : colored_body_count_;
+        colored_contacts_.push_back({solvable[k], key, a < b ? a : b});
     }
     for (int32_t key = 0; key < key_count; ++key) {
         key_starts_[std::size_t(key) + 1] += key_starts_[std::size_t(key)];
@@ -531,10 +534,40 @@ void Solver::color_contacts() {
         color_starts_[std::size_t(color)] = key_starts_[std::size_t(2 * color)];
     }
     ordered_contacts_.resize(colored_contacts_.size());
+    order_by_body();
     std::vector<int32_t>& next = scratch_starts_;
     next.assign(key_starts_.begin(), key_starts_.end() - 1);
+    constexpr int32_t overflow_key = 2 * ConstraintColors::overflow;
+    for (const ColoredContact& c : body_ordered_) {
+        if (c.key != overflow_key) {
+            ordered_contacts_[std::size_t(next[std::size_t(c.key)]++)] = c.contact;
+        }
+    }
     for (const ColoredContact& c : colored_contacts_) {
-        ordered_contacts_[std::size_t(next[std::size_t(c.key)]++)] = c.contact;
+        if (c.key == overflow_key) {
+            ordered_contacts_[std::size_t(next[std::size_t(c.key)]++)] = c.contact;
+        }
+    }
+}
+
+// The coloured contacts by the lowest body each moves (a counting sort). Each worker
+// solves a contiguous share of every colour, so in this order its shares of all colours
+// move mostly the same bodies, whose states then stay in its core's cache. In awake
+// order, 2 workers both moved 1237 of the tumbler's 1969 touched bodies, 4285 of the
+// spinner's 6013 and 1233 of rain's 2739; in this order 170, 1235 and 181. The spinner
+// steps 4 % faster with 1 worker and with 2 (paired runs).
+void Solver::order_by_body() {
+    const int32_t states = colored_body_count_ + 1;  // the last: a contact that moves no body
+    body_starts_.assign(std::size_t(states) + 1, 0);
+    for (const ColoredContact& c : colored_contacts_) {
+        ++body_starts_[std::size_t(c.body) + 1];
+    }
+    for (int32_t k = 0; k < states; ++k) {
+        body_starts_[std::size_t(k) + 1] += body_starts_[std::size_t(k)];
+    }
+    body_ordered_.resize(colored_contacts_.size());
+    for (const ColoredContact& c : colored_contacts_) {
+        body_ordered_[std::size_t(body_starts_[std::size_t(c.body)]++)] = c;
     }
 }
 

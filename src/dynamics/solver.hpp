@@ -102,6 +102,7 @@ private:
     int32_t min_contact_items() const;
     ContactLayout contact_layout() const;
     void finish_bodies();
+    void order_by_body();
     // Items [begin, end) of a colour run: its joints first, then its contact items.
     struct RunSplit {
         int32_t joint_begin, joint_end, contact_begin, contact_end;
@@ -150,10 +151,13 @@ private:
     std::vector<ColorRun> color_runs_;
     struct ColoredContact {
         int32_t contact;
-        int32_t key;  // 2 x colour, + 1 for a single point (solved after the pairs)
+        int32_t key;   // 2 x colour, + 1 for a single point (solved after the pairs)
+        int32_t body;  // the lowest state it moves
     };
     std::vector<ColoredContact> colored_contacts_;  // in awake order
+    std::vector<ColoredContact> body_ordered_;      // the same, by body
     std::vector<int32_t> key_starts_;               // per sort key: its first slot
+    std::vector<int32_t> body_starts_;              // per state: its first slot in body_ordered_
     std::vector<int32_t> color_starts_;   // per colour: its first slot in ordered_contacts_
     std::vector<int32_t> ordered_contacts_;  // the contacts to solve, colour by colour
     std::vector<int32_t> scratch_starts_;
