@@ -152,7 +152,7 @@ private:
     struct ColoredContact {
         int32_t contact;
         int32_t key;   // 2 x colour, + 1 for a single point (solved after the pairs)
-        int32_t body;  // the lowest state it moves
+        int32_t body;  // the lowest state it moves; the state count if it moves none
     };
     std::vector<ColoredContact> colored_contacts_;  // in awake order
     std::vector<ColoredContact> body_ordered_;      // the same, by body
