@@ -215,12 +215,17 @@ void ContactSolver::pack_range(const ContactLayout& layout, int32_t begin, int32
     }
 }
 
-void ContactSolver::pack_blocks(const ContactLayout& layout, int32_t begin, int32_t end) {
+void ContactSolver::pack(const ContactLayout& layout, int32_t run, int32_t begin, int32_t end) {
+    if (run_is_sequential(run)) {
+        pack_overflow(layout, begin, end);
+        return;
+    }
+    const int32_t first = runs_[std::size_t(run)].first_block;
     switch (kernels_->width) {
-        case 16: pack_range<16>(layout, begin, end); break;
-        case 8: pack_range<8>(layout, begin, end); break;
-        case 4: pack_range<4>(layout, begin, end); break;
-        default: pack_range<1>(layout, begin, end); break;
+        case 16: pack_range<16>(layout, first + begin, first + end); break;
+        case 8: pack_range<8>(layout, first + begin, first + end); break;
+        case 4: pack_range<4>(layout, first + begin, first + end); break;
+        default: pack_range<1>(layout, first + begin, first + end); break;
     }
 }
 
@@ -334,20 +339,22 @@ void ContactSolver::store_range(const ContactBlock<W>* blocks, const int32_t* co
     }
 }
 
-void ContactSolver::store_blocks(Pool<Contact>& contacts, const BodyState* states, float slop, int32_t begin,
-                                 int32_t end) const {
+void ContactSolver::store(Pool<Contact>& contacts, const BodyState* states, float slop, int32_t run, int32_t begin,
+                          int32_t end) const {
+    if (run_is_sequential(run)) {
+        store_range(overflow_.data(), overflow_contacts_.data(), begin, end, contacts, states, slop);
+        return;
+    }
     const int32_t* lanes = lane_contacts_.data();
     const int32_t W = kernels_->width;
+    const int32_t lane_begin = (runs_[std::size_t(run)].first_block + begin) * W;
+    const int32_t lane_end = (runs_[std::size_t(run)].first_block + end) * W;
     switch (W) {
-        case 16: store_range(blocks16_.data(), lanes, begin * W, end * W, contacts, states, slop); break;
-        case 8: store_range(blocks8_.data(), lanes, begin * W, end * W, contacts, states, slop); break;
-        case 4: store_range(blocks4_.data(), lanes, begin * W, end * W, contacts, states, slop); break;
-        default: store_range(blocks1_.data(), lanes, begin * W, end * W, contacts, states, slop); break;
+        case 16: store_range(blocks16_.data(), lanes, lane_begin, lane_end, contacts, states, slop); break;
+        case 8: store_range(blocks8_.data(), lanes, lane_begin, lane_end, contacts, states, slop); break;
+        case 4: store_range(blocks4_.data(), lanes, lane_begin, lane_end, contacts, states, slop); break;
+        default: store_range(blocks1_.data(), lanes, lane_begin, lane_end, contacts, states, slop); break;
     }
-}
-
-void ContactSolver::store_overflow(Pool<Contact>& contacts, const BodyState* states, float slop) const {
-    store_range(overflow_.data(), overflow_contacts_.data(), 0, int32_t(overflow_.size()), contacts, states, slop);
 }
 
 }  // namespace i2d

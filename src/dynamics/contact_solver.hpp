@@ -67,32 +67,31 @@ public:
 
     /// Places the contacts in blocks, colour by colour (one thread).
     void lay_out(const ContactLayout& layout);
-    /// Blocks of the colours, and contacts of the overflow colour, to pack.
+    /// Blocks of the colours, and contacts of the overflow colour.
     int32_t block_count() const { return int32_t(lane_contacts_.size()) / kernels_->width; }
     int32_t overflow_count() const { return int32_t(overflow_contacts_.size()); }
-    /// Packs blocks [begin, end): effective masses, anchors, the restitution speeds from
-    /// the velocities before the step, last step's impulses.
-    void pack_blocks(const ContactLayout& layout, int32_t begin, int32_t end);
-    void pack_overflow(const ContactLayout& layout, int32_t begin, int32_t end);
 
     int32_t run_count() const { return int32_t(runs_.size()) + (overflow_.empty() ? 0 : 1); }
     /// The run's items: blocks of a colour, or the overflow's contacts.
     int32_t run_items(int32_t run) const;
     bool run_is_sequential(int32_t run) const { return run == int32_t(runs_.size()); }
+    /// Packs the run's items [begin, end): effective masses, anchors, the restitution
+    /// speeds from the velocities before the step, last step's impulses.
+    void pack(const ContactLayout& layout, int32_t run, int32_t begin, int32_t end);
     void warm_start(int32_t run, int32_t begin, int32_t end, BodyState* states) const;
     /// One pass; pass.use_bias pushes overlap out, without it the pass relaxes.
     void solve(int32_t run, int32_t begin, int32_t end, BodyState* states, const SolvePass& pass) const;
     /// Whether any point bounces: only then does the restitution pass run.
     bool any_bounce(float threshold) const;
-    int32_t run_first_block(int32_t run) const { return runs_[std::size_t(run)].first_block; }
     void apply_restitution(int32_t run, int32_t begin, int32_t end, BodyState* states, float threshold) const;
-    /// Impulses of blocks [begin, end) back to their contacts; contacts with a point
-    /// within `slop` of touching where the substeps left the bodies get contact_touching.
-    void store_blocks(Pool<Contact>& contacts, const BodyState* states, float slop, int32_t begin,
-                      int32_t end) const;
-    void store_overflow(Pool<Contact>& contacts, const BodyState* states, float slop) const;
+    /// Impulses of the run's items [begin, end) back to their contacts; contacts with a
+    /// point within `slop` of touching where the substeps left the bodies get
+    /// contact_touching.
+    void store(Pool<Contact>& contacts, const BodyState* states, float slop, int32_t run, int32_t begin,
+               int32_t end) const;
 
 private:
+    void pack_overflow(const ContactLayout& layout, int32_t begin, int32_t end);
     template <int W>
     std::vector<ContactBlock<W>>& blocks();
     template <int W>

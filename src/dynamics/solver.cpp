@@ -338,37 +338,23 @@ void Solver::solve_joint_trees(void* solver, const Stage& stage, int32_t begin, 
 void Solver::prepare_color(void* solver, const Stage& stage, int32_t begin, int32_t end, int32_t) {
     Solver& self = *static_cast<Solver*>(solver);
     const RunSplit split = self.split_run(stage.arg0, begin, end);
-    const ColorRun& r = self.color_runs_[std::size_t(stage.arg0)];
     self.joint_solver_.prepare(self.links_.joints, self.links_.bodies, int32_t(self.states_.size()) - 1,
                                split.joint_begin, split.joint_end);
-    if (split.contact_begin >= split.contact_end) {
-        return;
+    if (split.contact_begin < split.contact_end) {
+        const int32_t run = self.color_runs_[std::size_t(stage.arg0)].contact_run;
+        self.contact_solver_.pack(self.contact_layout(), run, split.contact_begin, split.contact_end);
     }
-    if (r.sequential) {
-        self.contact_solver_.pack_overflow(self.contact_layout(), split.contact_begin, split.contact_end);
-        return;
-    }
-    const int32_t first = self.contact_solver_.run_first_block(r.contact_run);
-    self.contact_solver_.pack_blocks(self.contact_layout(), first + split.contact_begin, first + split.contact_end);
 }
 
 void Solver::store_color(void* solver, const Stage& stage, int32_t begin, int32_t end, int32_t) {
     Solver& self = *static_cast<Solver*>(solver);
     const RunSplit split = self.split_run(stage.arg0, begin, end);
-    const ColorRun& r = self.color_runs_[std::size_t(stage.arg0)];
     self.joint_solver_.store(self.links_.joints, self.states_.data(), split.joint_begin, split.joint_end);
-    if (split.contact_begin >= split.contact_end) {
-        return;
+    if (split.contact_begin < split.contact_end) {
+        const int32_t run = self.color_runs_[std::size_t(stage.arg0)].contact_run;
+        self.contact_solver_.store(self.links_.contacts.pool(), self.states_.data(), self.links_.settings.contact_slop,
+                                   run, split.contact_begin, split.contact_end);
     }
-    Pool<Contact>& contacts = self.links_.contacts.pool();
-    const float slop = self.links_.settings.contact_slop;
-    if (r.sequential) {
-        self.contact_solver_.store_overflow(contacts, self.states_.data(), slop);
-        return;
-    }
-    const int32_t first = self.contact_solver_.run_first_block(r.contact_run);
-    self.contact_solver_.store_blocks(contacts, self.states_.data(), slop, first + split.contact_begin,
-                                      first + split.contact_end);
 }
 
 void Solver::warm_start(void* solver, const Stage& stage, int32_t begin, int32_t end, int32_t) {
