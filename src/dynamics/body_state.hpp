@@ -28,8 +28,9 @@ struct alignas(32) BodyState {
 
 static_assert(sizeof(BodyState) == 32, "a body state is one 32-byte load for 8-wide lanes");
 
-/// What integrating velocities needs, fixed for the whole step.
-struct BodyMotion {
+/// What integrating velocities and packing contacts need, fixed for the whole step; one
+/// cache line, as packing reads two at random per contact.
+struct alignas(64) BodyMotion {
     Vec2 force;  // N, accumulated by the caller
     float torque = 0.0f;
     float inv_mass = 0.0f, inv_inertia = 0.0f;
@@ -39,7 +40,13 @@ struct BodyMotion {
     // rather than once a substep, where they cost as much as the rest of the integration.
     float linear_damping_factor = 1.0f, angular_damping_factor = 1.0f;
     Vec2 free_acceleration;  // gravity and force over mass, m/s^2; zero unless dynamic
+    // The velocities the step began with, for the restitution speeds packing measures:
+    // by then the first substep has integrated the states' (the two share a stage).
+    Vec2 start_linear_velocity;
+    float start_angular_velocity = 0.0f;
     bool is_dynamic = false;
 };
+
+static_assert(sizeof(BodyMotion) == 64, "a body motion is one cache line");
 
 }  // namespace i2d

@@ -19,19 +19,21 @@ float effective_mass(const BodyMotion& a, const BodyMotion& b, Vec2 r_a, Vec2 r_
     return k > 0.0f ? 1.0f / k : 0.0f;
 }
 
-Vec2 relative_velocity(const BodyState& a, const BodyState& b, Vec2 r_a, Vec2 r_b) {
-    return (b.linear_velocity + cross(b.angular_velocity, r_b)) - (a.linear_velocity + cross(a.angular_velocity, r_a));
+// At the start of the step.
+Vec2 relative_velocity(const BodyMotion& a, const BodyMotion& b, Vec2 r_a, Vec2 r_b) {
+    return (b.start_linear_velocity + cross(b.start_angular_velocity, r_b)) -
+           (a.start_linear_velocity + cross(a.start_angular_velocity, r_a));
 }
 
 template <int W>
-void pack_point(ContactPointLanes<W>& p, int lane, const ContactPoint& cp, Vec2 normal, const BodyState& sa,
-                const BodyState& sb, const BodyMotion& ma, const BodyMotion& mb) {
+void pack_point(ContactPointLanes<W>& p, int lane, const ContactPoint& cp, Vec2 normal, const BodyMotion& ma,
+                const BodyMotion& mb) {
     p.anchor_ax[lane] = cp.anchor_a.x;
     p.anchor_ay[lane] = cp.anchor_a.y;
     p.anchor_bx[lane] = cp.anchor_b.x;
     p.anchor_by[lane] = cp.anchor_b.y;
     p.base_separation[lane] = cp.separation - dot(cp.anchor_b - cp.anchor_a, normal);
-    const float speed = dot(relative_velocity(sa, sb, cp.anchor_a, cp.anchor_b), normal);
+    const float speed = dot(relative_velocity(ma, mb, cp.anchor_a, cp.anchor_b), normal);
     p.relative_velocity[lane] = speed;
     p.start_speed[lane] = speed;
     p.normal_mass[lane] = effective_mass(ma, mb, cp.anchor_a, cp.anchor_b, normal);
@@ -67,8 +69,6 @@ void pack_lane(ContactBlock<W>& block, int lane, const Contact& contact, const C
     const int32_t state_b = contact.state_b != null_index ? contact.state_b : layout.fixed_state;
     const BodyMotion& ma = layout.motions[state_a];
     const BodyMotion& mb = layout.motions[state_b];
-    const BodyState& sa = layout.states[state_a];
-    const BodyState& sb = layout.states[state_b];
     block.state_a[lane] = state_a;
     block.state_b[lane] = state_b;
     block.inv_mass_a[lane] = ma.inv_mass;
@@ -85,13 +85,13 @@ void pack_lane(ContactBlock<W>& block, int lane, const Contact& contact, const C
     const Vec2 relative_acceleration = mb.free_acceleration - ma.free_acceleration;
     block.approach_acceleration[lane] = max_of(-dot(relative_acceleration, contact.normal), 0.0f);
     for (int32_t i = 0; i < contact.point_count; ++i) {
-        pack_point(block.points[i], lane, contact.points[i], contact.normal, sa, sb, ma, mb);
+        pack_point(block.points[i], lane, contact.points[i], contact.normal, ma, mb);
     }
 }
 
 // Contacts are read in colour order, which jumps through the contact pool: each one is
-// a cache miss unless asked for ahead. The bodies' states and motions are asked for
-// once the contact itself is close.
+// a cache miss unless asked for ahead. The bodies' motions are asked for once the
+// contact itself is close.
 constexpr int32_t prefetch_contacts_ahead = 16;
 constexpr int32_t prefetch_bodies_ahead = 4;
 
@@ -104,8 +104,7 @@ I2D_FORCE_INLINE void prefetch_solver_data(const Contact& c) {
 I2D_FORCE_INLINE void prefetch_bodies(const Contact& c, const ContactLayout& layout) {
     for (const int32_t state : {c.state_a, c.state_b}) {
         if (state != null_index) {
-            prefetch_line(layout.states + state);
-            prefetch_line(layout.motions + state);
+            prefetch_object(layout.motions[state]);
         }
     }
 }

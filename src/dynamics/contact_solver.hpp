@@ -49,8 +49,7 @@ struct ContactLayout {
     const int32_t* ordered;       // contact indices, colour by colour, in solve order
     const int32_t* color_starts;  // per colour: its first slot in `ordered`; one more at the end
     int32_t color_count;          // the last colour is the overflow colour
-    const BodyState* states;      // velocities before the step
-    const BodyMotion* motions;
+    const BodyMotion* motions;    // with the velocities before the step
     int32_t fixed_state;          // index of the shared fixed state
     bool any_elastic;             // some contact has restitution: the restitution pass may run
 };

@@ -101,8 +101,8 @@ void Solver::step(float time_step, int32_t substep_count) {
 
 ContactLayout Solver::contact_layout() const {
     return ContactLayout{links_.contacts.pool(), ordered_contacts_.data(), color_starts_.data(),
-                         ConstraintColors::count, states_.data(),      motions_.data(),
-                         int32_t(states_.size()) - 1, any_elastic_contact_};
+                         ConstraintColors::count, motions_.data(),          int32_t(states_.size()) - 1,
+                         any_elastic_contact_};
 }
 
 void Solver::add_stage(Stage::Fn fn, int32_t item_count, int32_t min_items_per_block, int32_t arg0, int32_t arg1) {
@@ -222,6 +222,13 @@ void Solver::lay_out_color_runs() {
 // sweep per substep leaves a tall stack's last velocities unconverged, and the residue
 // kept a 100-row pyramid vibrating and wandering at centimetres per second; the second
 // sweep lets it rest. Then restitution, impulses back to the contacts, final poses.
+//
+// Stages that touch the same items one after the other share a stage where nothing in
+// between needs them: each stage boundary is a wait between workers, and each stage
+// reads its items again. Gathering a body integrates its first substep's velocity; a
+// colour's constraints are warm started as they are prepared; and when no contact is
+// elastic (the restitution pass cannot run) a colour's contacts are stored as its last
+// relax leaves them. The arithmetic and its order per body are unchanged: the same bits.
 void Solver::build_stages(int32_t substep_count) {
     const WorldDef& s = links_.settings;
     const float h = substep_, inv_h = float(substep_count) / time_step_;
@@ -250,28 +257,37 @@ void Solver::build_stages(int32_t substep_count) {
         return;  // a steady scene: the same stages over the same counts as last step
     }
     const int32_t bodies = int32_t(states_.size()) - 1;
+    const int32_t trees = joint_solver_.tree_count();
+    const int32_t last_pass = 2 * substep_count - 1;
     stages_.clear();
     add_stage(&Solver::gather_bodies, bodies, bodies_per_work_block);
-    add_color_stages<&Solver::prepare_color, true>(0);
-    const int32_t trees = joint_solver_.tree_count();
     for (int32_t i = 0; i < substep_count; ++i) {
-        add_stage(&Solver::integrate_velocities, bodies, bodies_per_work_block);
-        add_color_stages<&Solver::warm_start, true>(0);
+        if (i == 0) {
+            add_color_stages<&Solver::prepare_and_warm_start, true>(0);
+        } else {
+            add_stage(&Solver::integrate_velocities, bodies, bodies_per_work_block);
+            add_color_stages<&Solver::warm_start, true>(0);
+        }
         add_color_stages<&Solver::solve, true>(2 * i);
         add_stage(&Solver::solve_joint_trees, trees, joint_trees_per_work_block, 0, 2 * i);
         add_stage(&Solver::integrate_positions, bodies, bodies_per_work_block);
         add_color_stages<&Solver::solve, true>(2 * i + 1);
         add_stage(&Solver::solve_joint_trees, trees, joint_trees_per_work_block, 0, 2 * i + 1);
     }
-    add_color_stages<&Solver::solve, true>(2 * substep_count - 1);
-    add_stage(&Solver::solve_joint_trees, trees, joint_trees_per_work_block, 0, 2 * substep_count - 1);
-
-    add_stage(&Solver::check_bounce, 1, 1);
-    constexpr int32_t restitution_iterations = 4;
-    for (int32_t iteration = 0; iteration < restitution_iterations; ++iteration) {
-        add_color_stages<&Solver::restitution, false>(0, &bounce_);
+    if (any_elastic_contact_) {
+        add_color_stages<&Solver::solve, true>(last_pass);
+        add_stage(&Solver::solve_joint_trees, trees, joint_trees_per_work_block, 0, last_pass);
+        add_stage(&Solver::check_bounce, 1, 1);
+        constexpr int32_t restitution_iterations = 4;
+        for (int32_t iteration = 0; iteration < restitution_iterations; ++iteration) {
+            add_color_stages<&Solver::restitution, false>(0, &bounce_);
+        }
+        add_color_stages<&Solver::store_color, true>(0);
+    } else {
+        add_color_stages<&Solver::relax_and_store, true>(last_pass);
+        add_stage(&Solver::solve_joint_trees, trees, joint_trees_per_work_block, 0, last_pass);
+        add_stage(&Solver::store_joints, joint_solver_.count(), joints_per_work_block);
     }
-    add_color_stages<&Solver::store_color, true>(0);
     add_stage(&Solver::finalize_bodies, bodies, bodies_per_work_block);
     add_stage(&Solver::number_move_events, 1, 1);
     add_stage(&Solver::write_move_events, bodies, bodies_per_work_block);
@@ -288,6 +304,7 @@ bool Solver::stages_changed(int32_t substep_count) {
     stage_key_scratch_.push_back(contact_solver_.overflow_count());
     stage_key_scratch_.push_back(joint_solver_.count());
     stage_key_scratch_.push_back(joint_solver_.tree_count());
+    stage_key_scratch_.push_back(any_elastic_contact_ ? 1 : 0);
     for (const ColorRun& r : color_runs_) {
         stage_key_scratch_.push_back(r.joint_count);
         stage_key_scratch_.push_back(r.contact_items);
@@ -299,7 +316,8 @@ bool Solver::stages_changed(int32_t substep_count) {
     return true;
 }
 
-// One state per awake body in awake order (the shared fixed state is set already).
+// One state per awake body in awake order (the shared fixed state is set already), its
+// velocity integrated for the first substep.
 void Solver::gather_bodies(void* solver, const Stage&, int32_t begin, int32_t end, int32_t) {
     Solver& self = *static_cast<Solver*>(solver);
     const std::vector<int32_t>& awake = self.links_.islands.awake_bodies();
@@ -319,7 +337,10 @@ void Solver::gather_bodies(void* solver, const Stage&, int32_t begin, int32_t en
         m.linear_damping_factor = 1.0f / (1.0f + self.substep_ * b.linear_damping);
         m.angular_damping_factor = 1.0f / (1.0f + self.substep_ * b.angular_damping);
         m.free_acceleration = free_acceleration(b, gravity, acceleration_limit);
+        m.start_linear_velocity = b.linear_velocity;
+        m.start_angular_velocity = b.angular_velocity;
         m.is_dynamic = dynamic;
+        self.integrate_velocity(k);
     }
 }
 
@@ -346,14 +367,35 @@ void Solver::prepare_color(void* solver, const Stage& stage, int32_t begin, int3
     }
 }
 
+void Solver::prepare_and_warm_start(void* solver, const Stage& stage, int32_t begin, int32_t end, int32_t worker) {
+    prepare_color(solver, stage, begin, end, worker);
+    warm_start(solver, stage, begin, end, worker);
+}
+
+// The last relax, then the contacts' impulses back (joints wait for their trees' pass).
+void Solver::relax_and_store(void* solver, const Stage& stage, int32_t begin, int32_t end, int32_t worker) {
+    solve(solver, stage, begin, end, worker);
+    Solver& self = *static_cast<Solver*>(solver);
+    self.store_contacts(stage.arg0, self.split_run(stage.arg0, begin, end));
+}
+
+void Solver::store_joints(void* solver, const Stage&, int32_t begin, int32_t end, int32_t) {
+    Solver& self = *static_cast<Solver*>(solver);
+    self.joint_solver_.store(self.links_.joints, self.states_.data(), begin, end);
+}
+
 void Solver::store_color(void* solver, const Stage& stage, int32_t begin, int32_t end, int32_t) {
     Solver& self = *static_cast<Solver*>(solver);
     const RunSplit split = self.split_run(stage.arg0, begin, end);
     self.joint_solver_.store(self.links_.joints, self.states_.data(), split.joint_begin, split.joint_end);
+    self.store_contacts(stage.arg0, split);
+}
+
+void Solver::store_contacts(int32_t color_run, const RunSplit& split) {
     if (split.contact_begin < split.contact_end) {
-        const int32_t run = self.color_runs_[std::size_t(stage.arg0)].contact_run;
-        self.contact_solver_.store(self.links_.contacts.pool(), self.states_.data(), self.links_.settings.contact_slop,
-                                   run, split.contact_begin, split.contact_end);
+        const int32_t run = color_runs_[std::size_t(color_run)].contact_run;
+        contact_solver_.store(links_.contacts.pool(), states_.data(), links_.settings.contact_slop, run,
+                              split.contact_begin, split.contact_end);
     }
 }
 
@@ -550,34 +592,37 @@ void Solver::order_by_body() {
     }
 }
 
-// Gravity, forces and damping for dynamic bodies; the speed limit for every moving body
-// (kinematic ones too: a caller may set any finite velocity).
 void Solver::integrate_velocities(void* solver, const Stage&, int32_t begin, int32_t end, int32_t) {
     Solver& self = *static_cast<Solver*>(solver);
-    const float h = self.substep_;
-    const Vec2 gravity = self.links_.settings.gravity;
-    const float max_speed = self.links_.settings.maximum_linear_speed;
-    const float max_spin = max_rotation_per_substep / h;
     for (int32_t k = begin; k < end; ++k) {
-        const BodyMotion& m = self.motions_[std::size_t(k)];
-        BodyState& s = self.states_[std::size_t(k)];
-        Vec2 v = s.linear_velocity;
-        float w = s.angular_velocity;
-        if (m.is_dynamic) {
-            v += h * (m.gravity_scale * gravity + m.inv_mass * m.force);
-            w += h * m.inv_inertia * m.torque;
-            // Implicit damping: stable for any damping and step.
-            v = m.linear_damping_factor * v;
-            w = m.angular_damping_factor * w;
-        }
-        // NaN-safe: an overflow anywhere above fails this test too.
-        s.linear_velocity = length_squared(v) <= max_speed * max_speed
-                                ? v
-                                : limited_velocity(m, s.linear_velocity, gravity, h, max_speed);
-        // At most a quarter turn per substep: faster spins alias and tunnel. A NaN passes
-        // through, to be quarantined, rather than becoming a full spin.
-        s.angular_velocity = w > max_spin ? max_spin : (w < -max_spin ? -max_spin : w);
+        self.integrate_velocity(k);
     }
+}
+
+// Gravity, forces and damping for dynamic bodies; the speed limit for every moving body
+// (kinematic ones too: a caller may set any finite velocity).
+void Solver::integrate_velocity(int32_t k) {
+    const float h = substep_;
+    const Vec2 gravity = links_.settings.gravity;
+    const float max_speed = links_.settings.maximum_linear_speed;
+    const float max_spin = max_rotation_per_substep / h;
+    const BodyMotion& m = motions_[std::size_t(k)];
+    BodyState& s = states_[std::size_t(k)];
+    Vec2 v = s.linear_velocity;
+    float w = s.angular_velocity;
+    if (m.is_dynamic) {
+        v += h * (m.gravity_scale * gravity + m.inv_mass * m.force);
+        w += h * m.inv_inertia * m.torque;
+        // Implicit damping: stable for any damping and step.
+        v = m.linear_damping_factor * v;
+        w = m.angular_damping_factor * w;
+    }
+    // NaN-safe: an overflow anywhere above fails this test too.
+    s.linear_velocity =
+        length_squared(v) <= max_speed * max_speed ? v : limited_velocity(m, s.linear_velocity, gravity, h, max_speed);
+    // At most a quarter turn per substep: faster spins alias and tunnel. A NaN passes
+    // through, to be quarantined, rather than becoming a full spin.
+    s.angular_velocity = w > max_spin ? max_spin : (w < -max_spin ? -max_spin : w);
 }
 
 void Solver::integrate_positions(void* solver, const Stage&, int32_t begin, int32_t end, int32_t) {

@@ -108,13 +108,19 @@ private:
         int32_t joint_begin, joint_end, contact_begin, contact_end;
     };
     RunSplit split_run(int32_t run, int32_t begin, int32_t end) const;
+    void store_contacts(int32_t color_run, const RunSplit& split);
 
     // The stages; `begin` and `end` index the stage's items.
     static void gather_bodies(void* solver, const Stage& stage, int32_t begin, int32_t end, int32_t worker);
     static void solve_joint_trees(void* solver, const Stage& stage, int32_t begin, int32_t end, int32_t worker);
     static void prepare_color(void* solver, const Stage& stage, int32_t begin, int32_t end, int32_t worker);
+    static void prepare_and_warm_start(void* solver, const Stage& stage, int32_t begin, int32_t end,
+                                       int32_t worker);
+    static void relax_and_store(void* solver, const Stage& stage, int32_t begin, int32_t end, int32_t worker);
     static void store_color(void* solver, const Stage& stage, int32_t begin, int32_t end, int32_t worker);
+    static void store_joints(void* solver, const Stage& stage, int32_t begin, int32_t end, int32_t worker);
     static void integrate_velocities(void* solver, const Stage& stage, int32_t begin, int32_t end, int32_t worker);
+    void integrate_velocity(int32_t awake_index);
     static void warm_start(void* solver, const Stage& stage, int32_t begin, int32_t end, int32_t worker);
     static void solve(void* solver, const Stage& stage, int32_t begin, int32_t end, int32_t worker);
     static void integrate_positions(void* solver, const Stage& stage, int32_t begin, int32_t end, int32_t worker);
