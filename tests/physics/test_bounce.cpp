@@ -189,6 +189,31 @@ I2D_TEST(phys_bounce_restitution_is_min_of_shapes) {
     I2D_CHECK_NEAR(velocity(d).x, 0.5, 0.01);
 }
 
+// The only shape of `body`.
+i2d_shape_id only_shape(i2d_body_id body) {
+    i2d_shape_id shape = I2D_NULL_SHAPE_ID;
+    return i2d_body_get_shapes(body, &shape, 1) == 1 ? shape : I2D_NULL_SHAPE_ID;
+}
+
+I2D_TEST(phys_bounce_restitution_raised_while_touching_takes_effect) {
+    // A ball resting on the ground in a world with no elastic contact, stepped long
+    // enough for the step to settle into its usual stages. Then both shapes become
+    // perfectly elastic and the ball is thrown at the ground at 4 m/s: the same contact,
+    // now elastic, sends it back up at 4 m/s (no gravity, so nothing else changes it).
+    Scene scene(Scene::zero_gravity_def());
+    const float r = 0.5f;
+    i2d_body_id ground = scene.ground(0.0f, 50.0f, with_restitution(0.0f));
+    i2d_body_id ball = scene.dynamic_circle(i2d_vec2{0, r}, r, with_restitution(0.0f));
+    I2D_REQUIRE(!I2D_IS_NULL(ground) && !I2D_IS_NULL(ball));
+    I2D_REQUIRE(scene.step(10));
+    I2D_CHECK_NEAR(velocity(ball).y, 0.0, 1e-6);
+    I2D_REQUIRE(i2d_shape_set_restitution(only_shape(ground), 1.0f) == I2D_OK);
+    I2D_REQUIRE(i2d_shape_set_restitution(only_shape(ball), 1.0f) == I2D_OK);
+    I2D_REQUIRE(i2d_body_set_linear_velocity(ball, i2d_vec2{0, -4}) == I2D_OK);
+    I2D_REQUIRE(scene.step(steps_for(0.25)));
+    I2D_CHECK_NEAR(velocity(ball).y, 4.0, 0.04);
+}
+
 I2D_TEST(phys_bounce_below_threshold_does_not_bounce) {
     // Elastic shapes approaching at 0.5 m/s, below the default threshold of 1 m/s: the
     // collision is perfectly inelastic, so both end with the centre-of-mass velocity.
