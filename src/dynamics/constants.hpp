@@ -112,6 +112,7 @@ constexpr float min_contact_hertz = 1.0e-3f;
 constexpr int32_t parallel_min_bodies = 2;
 constexpr int32_t parallel_min_contacts = 2;
 constexpr int32_t parallel_min_moved_proxies = 2;
+constexpr int32_t parallel_min_fast_bodies = 2;
 constexpr int32_t bodies_per_work_block = 4;
 constexpr int32_t contacts_per_work_block = 4;
 constexpr int32_t joints_per_work_block = 2;
@@ -122,6 +123,8 @@ constexpr int32_t parallel_min_bodies = 256;
 constexpr int32_t parallel_min_contacts = 512;
 /// Moved proxies below which pair finding runs inline.
 constexpr int32_t parallel_min_moved_proxies = 64;
+/// Fast bodies (not bullets) below which the continuous sweeps run inline.
+constexpr int32_t parallel_min_fast_bodies = 32;
 constexpr int32_t bodies_per_work_block = 64;
 constexpr int32_t contacts_per_work_block = 64;
 constexpr int32_t joints_per_work_block = 32;
@@ -131,6 +134,8 @@ constexpr int32_t joints_per_work_block = 32;
 constexpr int32_t small_color_blocks = 2;
 constexpr int32_t joint_trees_per_work_block = 8;
 constexpr int32_t proxies_per_work_block = 16;
+// A continuous sweep takes microseconds (tree queries and times of impact).
+constexpr int32_t fast_bodies_per_work_block = 4;
 constexpr int32_t self_search_parts_per_work_block = 2;
 
 }  // namespace i2d

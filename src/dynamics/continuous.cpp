@@ -3,6 +3,7 @@
 #include "dynamics/continuous.hpp"
 
 #include "collision/geometry.hpp"
+#include "dynamics/constants.hpp"
 #include "dynamics/shape_bounds.hpp"
 #include "math/math.hpp"
 
@@ -68,14 +69,51 @@ bool starts_behind(const ChainSegment& segment, const Transform& xf, Vec2 point)
 void Continuous::run(const std::vector<int32_t>& fast_bodies, float time_step) {
     crossings_.clear();
     time_step_ = time_step;
-    // Bullets last, so that they meet the other fast bodies where these were left.
-    for (int32_t pass = 0; pass < 2; ++pass) {
-        const bool bullet_pass = pass == 1;
-        for (const int32_t body : fast_bodies) {
-            if (bodies_[body].is_bullet == bullet_pass) {
-                sweep_body(body, bullet_pass);
-            }
+    non_bullets_.clear();
+    for (const int32_t body : fast_bodies) {
+        if (!bodies_[body].is_bullet) {
+            non_bullets_.push_back(body);
         }
+    }
+    sweep_non_bullets();
+    // Bullets last, so that they meet the other fast bodies where these were left.
+    std::vector<SensorCandidate>& found = found_[0];
+    for (const int32_t body : fast_bodies) {
+        if (bodies_[body].is_bullet) {
+            found.clear();
+            const Impact first = sweep(body, true, found);
+            apply(body, first, found.data(), found.data() + found.size());
+        }
+    }
+}
+
+void Continuous::sweep_non_bullets() {
+    const int32_t count = int32_t(non_bullets_.size());
+    const int32_t workers = tasks_.worker_count();
+    const bool parallel = workers > 1 && count >= parallel_min_fast_bodies;
+    found_.resize(std::size_t(workers));
+    for (std::vector<SensorCandidate>& found : found_) {
+        found.clear();
+    }
+    results_.resize(std::size_t(count));
+    stages_.assign(1, make_stage(&Continuous::sweep_range, this, count, workers, parallel, fast_bodies_per_work_block));
+    runner_.run(tasks_, stages_, parallel);
+    for (int32_t k = 0; k < count; ++k) {
+        const SweepResult& r = results_[std::size_t(k)];
+        const SensorCandidate* found = found_[std::size_t(r.worker)].data();
+        apply(non_bullets_[std::size_t(k)], r.first, found + r.candidates_begin, found + r.candidates_end);
+    }
+}
+
+void Continuous::sweep_range(void* continuous, const Stage&, int32_t begin, int32_t end, int32_t worker) {
+    Continuous& self = *static_cast<Continuous*>(continuous);
+    std::vector<SensorCandidate>& found = self.found_[std::size_t(worker)];
+    for (int32_t k = begin; k < end; ++k) {
+        SweepResult& r = self.results_[std::size_t(k)];
+        r.worker = worker;
+        r.candidates_begin = int32_t(found.size());
+        r.first = self.sweep(self.non_bullets_[std::size_t(k)], false, found);
+        r.candidates_end = int32_t(found.size());
     }
 }
 
@@ -93,7 +131,8 @@ bool Continuous::swept_against(const Body& fast, const Body& other, bool bullet_
     return &fast != &other && (other.type != BodyType::dynamic || bullet_pass);
 }
 
-void Continuous::sweep_body(int32_t body, bool bullet_pass) {
+// The body's first impact along its sweep; the sensors it crosses go to `found`.
+Continuous::Impact Continuous::sweep(int32_t body, bool bullet_pass, std::vector<SensorCandidate>& found) {
     const Body& b = bodies_[body];
     FastShape fast;
     fast.body = body;
@@ -103,7 +142,6 @@ void Continuous::sweep_body(int32_t body, bool bullet_pass) {
     const bool turned = !(fast.sweep.q1.c == fast.sweep.q2.c && fast.sweep.q1.s == fast.sweep.q2.s);
     const Vec2 travel = fast.sweep.c2 - fast.sweep.c1;
     Impact first;
-    sensor_candidates_.clear();
     const int32_t kinds = bullet_pass ? int32_t(ProxyKind::count) : int32_t(ProxyKind::dynamic_proxy);
     for (int32_t s = b.head_shape; s != null_index; s = shapes_[s].next_in_body) {
         const Shape& shape = shapes_[s];
@@ -118,14 +156,20 @@ void Continuous::sweep_body(int32_t body, bool bullet_pass) {
         const AABB swept_box = union_of(start_box, shape.aabb);
         for (int32_t kind = 0; kind < kinds; ++kind) {
             broad_phase_.tree(ProxyKind(kind)).query(swept_box, [&](int32_t, int32_t other) {
-                test_candidate(fast, other, first);
+                test_candidate(fast, other, first, found);
                 return true;
             });
         }
     }
-    for (const SensorCandidate& c : sensor_candidates_) {
-        if (c.fraction <= first.fraction) {
-            crossings_.push_back(c.crossing);
+    return first;
+}
+
+// The sensors crossed before the impact are listed, and the body goes back to it.
+void Continuous::apply(int32_t body, const Impact& first, const SensorCandidate* found_begin,
+                       const SensorCandidate* found_end) {
+    for (const SensorCandidate* c = found_begin; c != found_end; ++c) {
+        if (c->fraction <= first.fraction) {
+            crossings_.push_back(c->crossing);
         }
     }
     if (first.fraction < 1.0f) {
@@ -141,7 +185,8 @@ void Continuous::sweep_body(int32_t body, bool bullet_pass) {
 
 // One shape the fast shape's sweep may reach: the earliest impact is kept in `first`;
 // a sensor it crosses is remembered.
-void Continuous::test_candidate(const FastShape& fast, int32_t other_index, Impact& first) {
+void Continuous::test_candidate(const FastShape& fast, int32_t other_index, Impact& first,
+                                std::vector<SensorCandidate>& found) {
     const Shape& shape = shapes_[fast.shape];
     const Shape& other = shapes_[other_index];
     if (!swept_against(bodies_[fast.body], bodies_[other.body], fast.bullet_pass) ||
@@ -160,7 +205,7 @@ void Continuous::test_candidate(const FastShape& fast, int32_t other_index, Impa
             const ToiResult r = time_of_impact(other_proxy, other_sweep, fast.proxy, fast.sweep, 1.0f,
                                                other_proxy.radius + fast.proxy.radius, impact_tolerance);
             if (r.state == ToiState::hit) {
-                sensor_candidates_.push_back({{other_index, fast.shape}, r.fraction});
+                found.push_back({{other_index, fast.shape}, r.fraction});
             }
         }
         return;

@@ -20,7 +20,7 @@ World::World(const WorldDef& def)
       islands_(bodies, contacts_, joints_),
       solver_(SolverLinks{settings, bodies, shapes, joints, joints_, contacts_, islands_, broad_phase_, events_,
                           tasks_}),
-      continuous_(bodies, shapes, broad_phase_, events_),
+      continuous_(bodies, shapes, broad_phase_, events_, tasks_),
       profiling_(def.enable_profile) {}
 
 int32_t World::create_body(const BodyDef& def) {

@@ -72,7 +72,7 @@ uint64_t float_bits(float f) {
 // Shapes and bodies by their tags (det_scenes.hpp): the same in every world.
 uint64_t tag(i2d_shape_id shape) { return uint64_t(std::uintptr_t(i2d_shape_get_user_data(shape))); }
 
-// The step's contact begin and end events and body move events, in their order.
+// The step's contact and sensor begin and end events and body move events, in their order.
 void hash_step_events(uint64_t& hash, i2d_world_id world) {
     const i2d_contact_events contacts = i2d_world_get_contact_events(world);
     hash_value(hash, uint64_t(contacts.begin_count));
@@ -82,6 +82,15 @@ void hash_step_events(uint64_t& hash, i2d_world_id world) {
     hash_value(hash, uint64_t(contacts.end_count));
     for (int32_t k = 0; k < contacts.end_count; ++k) {
         hash_value(hash, tag(contacts.end_events[k].shape_a) << 32 | tag(contacts.end_events[k].shape_b));
+    }
+    const i2d_sensor_events sensors = i2d_world_get_sensor_events(world);
+    hash_value(hash, uint64_t(sensors.begin_count));
+    for (int32_t k = 0; k < sensors.begin_count; ++k) {
+        hash_value(hash, tag(sensors.begin_events[k].sensor_shape) << 32 | tag(sensors.begin_events[k].visitor_shape));
+    }
+    hash_value(hash, uint64_t(sensors.end_count));
+    for (int32_t k = 0; k < sensors.end_count; ++k) {
+        hash_value(hash, tag(sensors.end_events[k].sensor_shape) << 32 | tag(sensors.end_events[k].visitor_shape));
     }
     const i2d_body_events bodies = i2d_world_get_body_events(world);
     hash_value(hash, uint64_t(bodies.move_count));
