@@ -69,35 +69,41 @@ bool starts_behind(const ChainSegment& segment, const Transform& xf, Vec2 point)
 void Continuous::run(const std::vector<int32_t>& fast_bodies, float time_step) {
     crossings_.clear();
     time_step_ = time_step;
+    found_.resize(std::size_t(tasks_.worker_count()));
     non_bullets_.clear();
     for (const int32_t body : fast_bodies) {
         if (!bodies_[body].is_bullet) {
             non_bullets_.push_back(body);
         }
     }
-    sweep_non_bullets();
+    const bool parallel = tasks_.worker_count() > 1 && int32_t(non_bullets_.size()) >= parallel_min_fast_bodies;
+    if (parallel) {
+        sweep_non_bullets();
+    }
     // Bullets last, so that they meet the other fast bodies where these were left.
-    std::vector<SensorCandidate>& found = found_[0];
-    for (const int32_t body : fast_bodies) {
-        if (bodies_[body].is_bullet) {
-            found.clear();
-            const Impact first = sweep(body, true, found);
-            apply(body, first, found.data(), found.data() + found.size());
+    for (int32_t pass = parallel ? 1 : 0; pass < 2; ++pass) {
+        const bool bullet_pass = pass == 1;
+        for (const int32_t body : fast_bodies) {
+            if (bodies_[body].is_bullet == bullet_pass) {
+                std::vector<SensorCandidate>& found = found_[0];
+                found.clear();
+                const Impact first = sweep(body, bullet_pass, found);
+                apply(body, first, found.data(), found.data() + found.size());
+            }
         }
     }
 }
 
+// The sweeps shared by the workers, then their results applied in awake order.
 void Continuous::sweep_non_bullets() {
     const int32_t count = int32_t(non_bullets_.size());
     const int32_t workers = tasks_.worker_count();
-    const bool parallel = workers > 1 && count >= parallel_min_fast_bodies;
-    found_.resize(std::size_t(workers));
     for (std::vector<SensorCandidate>& found : found_) {
         found.clear();
     }
     results_.resize(std::size_t(count));
-    stages_.assign(1, make_stage(&Continuous::sweep_range, this, count, workers, parallel, fast_bodies_per_work_block));
-    runner_.run(tasks_, stages_, parallel);
+    stages_.assign(1, make_stage(&Continuous::sweep_range, this, count, workers, true, fast_bodies_per_work_block));
+    runner_.run(tasks_, stages_, true);
     for (int32_t k = 0; k < count; ++k) {
         const SweepResult& r = results_[std::size_t(k)];
         const SensorCandidate* found = found_[std::size_t(r.worker)].data();
