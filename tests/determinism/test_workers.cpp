@@ -72,26 +72,28 @@ uint64_t float_bits(float f) {
 // Shapes and bodies by their tags (det_scenes.hpp): the same in every world.
 uint64_t tag(i2d_shape_id shape) { return uint64_t(std::uintptr_t(i2d_shape_get_user_data(shape))); }
 
+// A list of events about a pair of shapes: its count, then each pair's tags.
+template <class Event>
+void hash_pair_events(uint64_t& hash, const Event* events, int32_t count, i2d_shape_id Event::*first,
+                      i2d_shape_id Event::*second) {
+    hash_value(hash, uint64_t(count));
+    for (int32_t k = 0; k < count; ++k) {
+        hash_value(hash, tag(events[k].*first) << 32 | tag(events[k].*second));
+    }
+}
+
 // The step's contact and sensor begin and end events and body move events, in their order.
 void hash_step_events(uint64_t& hash, i2d_world_id world) {
     const i2d_contact_events contacts = i2d_world_get_contact_events(world);
-    hash_value(hash, uint64_t(contacts.begin_count));
-    for (int32_t k = 0; k < contacts.begin_count; ++k) {
-        hash_value(hash, tag(contacts.begin_events[k].shape_a) << 32 | tag(contacts.begin_events[k].shape_b));
-    }
-    hash_value(hash, uint64_t(contacts.end_count));
-    for (int32_t k = 0; k < contacts.end_count; ++k) {
-        hash_value(hash, tag(contacts.end_events[k].shape_a) << 32 | tag(contacts.end_events[k].shape_b));
-    }
+    hash_pair_events(hash, contacts.begin_events, contacts.begin_count, &i2d_contact_begin_event::shape_a,
+                     &i2d_contact_begin_event::shape_b);
+    hash_pair_events(hash, contacts.end_events, contacts.end_count, &i2d_contact_end_event::shape_a,
+                     &i2d_contact_end_event::shape_b);
     const i2d_sensor_events sensors = i2d_world_get_sensor_events(world);
-    hash_value(hash, uint64_t(sensors.begin_count));
-    for (int32_t k = 0; k < sensors.begin_count; ++k) {
-        hash_value(hash, tag(sensors.begin_events[k].sensor_shape) << 32 | tag(sensors.begin_events[k].visitor_shape));
-    }
-    hash_value(hash, uint64_t(sensors.end_count));
-    for (int32_t k = 0; k < sensors.end_count; ++k) {
-        hash_value(hash, tag(sensors.end_events[k].sensor_shape) << 32 | tag(sensors.end_events[k].visitor_shape));
-    }
+    hash_pair_events(hash, sensors.begin_events, sensors.begin_count, &i2d_sensor_begin_event::sensor_shape,
+                     &i2d_sensor_begin_event::visitor_shape);
+    hash_pair_events(hash, sensors.end_events, sensors.end_count, &i2d_sensor_end_event::sensor_shape,
+                     &i2d_sensor_end_event::visitor_shape);
     const i2d_body_events bodies = i2d_world_get_body_events(world);
     hash_value(hash, uint64_t(bodies.move_count));
     for (int32_t k = 0; k < bodies.move_count; ++k) {
