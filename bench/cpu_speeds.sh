@@ -7,7 +7,10 @@
 # one vCPU can run a third slower than the other for minutes at a time (its physical core
 # busy with another guest), and which one changes; a speed-up read from a side-by-side run
 # means little without this figure taken next to it. Rounds alternate the CPUs so that a
-# change in the machine falls on all of them alike. Needs taskset (util-linux).
+# change in the machine falls on all of them alike. Then bench/core_round_trip (Linux) gives
+# how long a cache line takes between the first two CPUs and back: a shared step pays that
+# at every stage boundary, and on a VM it changes with where the host put the vCPUs (120 or
+# 480 ns on this one). Needs taskset (util-linux).
 set -euo pipefail
 build=${1:-build}; scene=${2:-large_pyramid}; rounds=${3:-3}
 bench=$build/bench/impulse2d_bench
@@ -44,3 +47,6 @@ fast, slow = min(medians.values()), max(medians.values())
 print(f"slowest / fastest: {slow / fast:.2f}; a 2-worker speed-up over the faster CPU is at most "
       f"{1 + fast / slow:.2f} even with no cost of sharing the work")
 PY
+# The other half of what a shared step costs: how far apart the host put the two vCPUs.
+trip=$build/bench/core_round_trip
+if [ -x "$trip" ]; then "$trip"; fi
