@@ -346,8 +346,8 @@ void ContactSolver::store(Pool<Contact>& contacts, const BodyState* states, floa
     }
     const int32_t* lanes = lane_contacts_.data();
     const int32_t W = kernels_->width;
-    const int32_t lane_begin = (runs_[std::size_t(run)].first_block + begin) * W;
-    const int32_t lane_end = (runs_[std::size_t(run)].first_block + end) * W;
+    const int32_t first = runs_[std::size_t(run)].first_block;
+    const int32_t lane_begin = (first + begin) * W, lane_end = (first + end) * W;
     switch (W) {
         case 16: store_range(blocks16_.data(), lanes, lane_begin, lane_end, contacts, states, slop); break;
         case 8: store_range(blocks8_.data(), lanes, lane_begin, lane_end, contacts, states, slop); break;

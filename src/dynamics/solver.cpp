@@ -276,7 +276,11 @@ void Solver::build_stages(int32_t substep_count) {
     }
     if (any_elastic_contact_) {
         add_color_stages<&Solver::solve, true>(last_pass);
-        add_stage(&Solver::solve_joint_trees, trees, joint_trees_per_work_block, 0, last_pass);
+    } else {
+        add_color_stages<&Solver::relax_and_store, true>(last_pass);
+    }
+    add_stage(&Solver::solve_joint_trees, trees, joint_trees_per_work_block, 0, last_pass);
+    if (any_elastic_contact_) {
         add_stage(&Solver::check_bounce, 1, 1);
         constexpr int32_t restitution_iterations = 4;
         for (int32_t iteration = 0; iteration < restitution_iterations; ++iteration) {
@@ -284,8 +288,6 @@ void Solver::build_stages(int32_t substep_count) {
         }
         add_color_stages<&Solver::store_color, true>(0);
     } else {
-        add_color_stages<&Solver::relax_and_store, true>(last_pass);
-        add_stage(&Solver::solve_joint_trees, trees, joint_trees_per_work_block, 0, last_pass);
         add_stage(&Solver::store_joints, joint_solver_.count(), joints_per_work_block);
     }
     add_stage(&Solver::finalize_bodies, bodies, bodies_per_work_block);
@@ -323,6 +325,7 @@ void Solver::gather_bodies(void* solver, const Stage&, int32_t begin, int32_t en
     const std::vector<int32_t>& awake = self.links_.islands.awake_bodies();
     const Vec2 gravity = self.links_.settings.gravity;
     const float acceleration_limit = self.links_.settings.maximum_linear_speed / self.time_step_;
+    const IntegrationTerms terms = self.integration_terms();
     for (int32_t k = begin; k < end; ++k) {
         const Body& b = self.links_.bodies[awake[std::size_t(k)]];
         const bool dynamic = b.type == BodyType::dynamic;
@@ -340,7 +343,7 @@ void Solver::gather_bodies(void* solver, const Stage&, int32_t begin, int32_t en
         m.start_linear_velocity = b.linear_velocity;
         m.start_angular_velocity = b.angular_velocity;
         m.is_dynamic = dynamic;
-        self.integrate_velocity(k);
+        self.integrate_velocity(k, terms);
     }
 }
 
@@ -594,18 +597,24 @@ void Solver::order_by_body() {
 
 void Solver::integrate_velocities(void* solver, const Stage&, int32_t begin, int32_t end, int32_t) {
     Solver& self = *static_cast<Solver*>(solver);
+    const IntegrationTerms terms = self.integration_terms();
     for (int32_t k = begin; k < end; ++k) {
-        self.integrate_velocity(k);
+        self.integrate_velocity(k, terms);
     }
+}
+
+Solver::IntegrationTerms Solver::integration_terms() const {
+    return {substep_, links_.settings.gravity, links_.settings.maximum_linear_speed,
+            max_rotation_per_substep / substep_};
 }
 
 // Gravity, forces and damping for dynamic bodies; the speed limit for every moving body
 // (kinematic ones too: a caller may set any finite velocity).
-void Solver::integrate_velocity(int32_t k) {
-    const float h = substep_;
-    const Vec2 gravity = links_.settings.gravity;
-    const float max_speed = links_.settings.maximum_linear_speed;
-    const float max_spin = max_rotation_per_substep / h;
+void Solver::integrate_velocity(int32_t k, const IntegrationTerms& t) {
+    const float h = t.h;
+    const Vec2 gravity = t.gravity;
+    const float max_speed = t.max_speed;
+    const float max_spin = t.max_spin;
     const BodyMotion& m = motions_[std::size_t(k)];
     BodyState& s = states_[std::size_t(k)];
     Vec2 v = s.linear_velocity;

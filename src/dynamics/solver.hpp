@@ -120,7 +120,14 @@ private:
     static void store_color(void* solver, const Stage& stage, int32_t begin, int32_t end, int32_t worker);
     static void store_joints(void* solver, const Stage& stage, int32_t begin, int32_t end, int32_t worker);
     static void integrate_velocities(void* solver, const Stage& stage, int32_t begin, int32_t end, int32_t worker);
-    void integrate_velocity(int32_t awake_index);
+    // What integrating a velocity reads besides the body, the same for every body.
+    struct IntegrationTerms {
+        float h;  // the substep, s
+        Vec2 gravity;
+        float max_speed, max_spin;  // m/s, rad/s
+    };
+    IntegrationTerms integration_terms() const;
+    void integrate_velocity(int32_t awake_index, const IntegrationTerms& terms);
     static void warm_start(void* solver, const Stage& stage, int32_t begin, int32_t end, int32_t worker);
     static void solve(void* solver, const Stage& stage, int32_t begin, int32_t end, int32_t worker);
     static void integrate_positions(void* solver, const Stage& stage, int32_t begin, int32_t end, int32_t worker);
