@@ -3,6 +3,7 @@
 // count them done, wait for the stage's total.
 #include "core/stage_runner.hpp"
 
+#include "core/assert.hpp"
 #include "core/spin_wait.hpp"
 
 namespace i2d {
@@ -53,17 +54,36 @@ void StageRunner::run(TaskSystem& tasks, const std::vector<Stage>& stages, bool 
         return;
     }
     workers_ = tasks.worker_count();
-    const int32_t count = int32_t(active_.size());
-    reserve(count);
-    for (int32_t w = 0; w < workers_; ++w) {
-        for (int32_t s = 0; s < count; ++s) {
-            const int64_t blocks = active_[std::size_t(s)].block_count();
-            share(w, s).range.store(range_of(int32_t(blocks * w / workers_), int32_t(blocks * (w + 1) / workers_)),
-                                    std::memory_order_relaxed);
-        }
-    }
+    reserve(int32_t(active_.size()));
+    lay_out_shares();
     blocks_done_.store(0, std::memory_order_release);
     tasks.run_on_workers(&work_on, this);
+}
+
+// Each worker's share of every stage: the owner's split, or the blocks split evenly.
+void StageRunner::lay_out_shares() {
+    const std::size_t bounds = std::size_t(workers_) + 1;
+    share_bounds_.resize(active_.size() * bounds);
+    stage_blocks_.resize(active_.size());
+    for (std::size_t s = 0; s < active_.size(); ++s) {
+        const Stage& stage = active_[s];
+        int32_t* first = share_bounds_.data() + s * bounds;
+        const int64_t blocks = stage.block_count();
+        for (int32_t w = 0; w <= workers_; ++w) {
+            const int64_t even = int64_t(stage.items_per_block) * (blocks * w / workers_);
+            first[w] = stage.share_starts != nullptr ? stage.share_starts[w]
+                                                     : int32_t(even < stage.item_count ? even : stage.item_count);
+        }
+        I2D_ASSERT(first[0] == 0 && first[workers_] == stage.item_count);
+        int32_t total = 0;
+        for (int32_t w = 0; w < workers_; ++w) {
+            I2D_ASSERT(first[w] <= first[w + 1]);
+            const int32_t own = stage.blocks_of(first[w + 1] - first[w]);
+            share(w, int32_t(s)).range.store(range_of(0, own), std::memory_order_relaxed);
+            total += own;
+        }
+        stage_blocks_[s] = total;
+    }
 }
 
 void StageRunner::reserve(int32_t stage_count) {
@@ -87,7 +107,7 @@ void StageRunner::work(int32_t worker) {
         if (!stage.runs()) {
             continue;
         }
-        blocks_before_next += stage.block_count();
+        blocks_before_next += stage_blocks_[std::size_t(s)];
         int32_t done = count_done(claim_own(stage, s, worker));
         SpinWait spin;
         for (int64_t spins = 1; done < blocks_before_next; ++spins) {
@@ -119,7 +139,7 @@ int32_t StageRunner::claim_own(const Stage& stage, int32_t s, int32_t worker) {
     int32_t done_here = 0;
     Share& mine = share(worker, s);
     for (int32_t block = claim_front(mine); block >= 0; block = claim_front(mine)) {
-        run_block(stage, block, worker);
+        run_block(stage, s, worker, block, worker);
         ++done_here;
     }
     return done_here;
@@ -134,7 +154,7 @@ int32_t StageRunner::take_over(const Stage& stage, int32_t s, int32_t worker, in
         }
         Share& theirs = share(other, s);
         for (int32_t block = claim_back(theirs, leave); block >= 0; block = claim_back(theirs, leave)) {
-            run_block(stage, block, worker);
+            run_block(stage, s, other, block, worker);
             ++done_here;
         }
     }
@@ -163,9 +183,12 @@ int32_t StageRunner::claim_back(Share& share, int32_t leave) {
     return -1;
 }
 
-void StageRunner::run_block(const Stage& stage, int32_t block, int32_t worker) {
-    const int32_t begin = block * stage.items_per_block;
-    const int32_t end = begin + stage.items_per_block < stage.item_count ? begin + stage.items_per_block : stage.item_count;
+// Block `block` of `owner`'s share of stage s, done by `worker`.
+void StageRunner::run_block(const Stage& stage, int32_t s, int32_t owner, int32_t block, int32_t worker) const {
+    const int32_t* first = share_bounds_.data() + std::size_t(s) * std::size_t(workers_ + 1);
+    const int32_t begin = first[owner] + block * stage.items_per_block;
+    const int32_t share_end = first[owner + 1];
+    const int32_t end = begin + stage.items_per_block < share_end ? begin + stage.items_per_block : share_end;
     stage.fn(stage.owner, stage, begin, end, worker);
 }
 

@@ -47,10 +47,17 @@ struct Stage {
     /// When set, the stage runs only if this is true once the stages before it are done
     /// (an earlier stage decides it): skipping costs no wait between workers.
     const bool* run_if = nullptr;
+    /// When set, the item where each worker's share begins: worker_count + 1 entries,
+    /// rising from 0 to item_count (the owner's memory, read as the run starts). A worker's
+    /// blocks then start at its share's first item, not at multiples of items_per_block.
+    /// An owner that splits every stage at the same items (the same bodies) keeps each
+    /// worker on the same data from stage to stage. When null, the blocks split evenly.
+    const int32_t* share_starts = nullptr;
 
     bool runs() const { return item_count > 0 && (run_if == nullptr || *run_if); }
 
-    int32_t block_count() const { return (item_count + items_per_block - 1) / items_per_block; }
+    int32_t block_count() const { return blocks_of(item_count); }
+    int32_t blocks_of(int32_t items) const { return (items + items_per_block - 1) / items_per_block; }
 };
 
 /// Items per block for `items` spread over `workers`: a few blocks per worker, so that
@@ -68,9 +75,10 @@ public:
     void run(TaskSystem& tasks, const std::vector<Stage>& stages, bool parallel);
 
 private:
-    // A worker's share of one stage's blocks: [front, end) are still unclaimed, front in
-    // the low half, end in the high half. The owner claims from the front; a worker done
-    // with its own share takes from the back, so the owner keeps all but the last blocks.
+    // A worker's share of one stage's blocks, numbered from its share's first item:
+    // [front, end) are still unclaimed, front in the low half, end in the high half. The
+    // owner claims from the front; a worker done with its own share takes from the back,
+    // so the owner keeps all but the last blocks.
     struct Share {
         std::atomic<uint64_t> range{0};
     };
@@ -90,7 +98,8 @@ private:
     int32_t count_done(int32_t blocks);
     static int32_t claim_front(Share& share);
     static int32_t claim_back(Share& share, int32_t leave);
-    static void run_block(const Stage& stage, int32_t block, int32_t worker);
+    void lay_out_shares();
+    void run_block(const Stage& stage, int32_t s, int32_t owner, int32_t block, int32_t worker) const;
     Share& share(int32_t worker, int32_t s) {
         const std::size_t k = std::size_t(worker) * std::size_t(capacity_) + std::size_t(s);
         return share_lines_[k / shares_per_line].shares[k % shares_per_line];
@@ -98,6 +107,10 @@ private:
     void reserve(int32_t stage_count);
 
     std::vector<Stage> active_;  // the run's stages that have items
+    // Per active stage: the first item of each worker's share and the stage's end
+    // (workers_ + 1 entries), then the stage's blocks in all.
+    std::vector<int32_t> share_bounds_;
+    std::vector<int32_t> stage_blocks_;
     int32_t workers_ = 1;
     // Per worker, its shares of every stage, one after the other (capacity_ of them, a
     // whole number of cache lines): a worker claiming its own writes only its own lines.

@@ -80,6 +80,7 @@ void Solver::step(float time_step, int32_t substep_count) {
     rest_islands_.resize(std::size_t(awake));
     rest_times_.resize(std::size_t(awake));
     event_slots_.resize(std::size_t(awake));
+    parallel_ = links_.tasks.worker_count() > 1 && awake >= parallel_min_bodies;
     color_constraints();
     contact_solver_.lay_out(contact_layout());
     joint_solver_.lay_out(ordered_joints_.data(), int32_t(ordered_joints_.size()));
@@ -89,11 +90,12 @@ void Solver::step(float time_step, int32_t substep_count) {
         joint_solver_.build_trees(links_.joints, links_.bodies, awake);
     }
     lay_out_color_runs();
+    split_runs_by_region();
     if (links_.settings.enable_sleep) {
         links_.islands.begin_rest_times();
     }
-    parallel_ = links_.tasks.worker_count() > 1 && awake >= parallel_min_bodies;
     build_stages(substep_count);
+    point_stages_at_shares();
     runner_.run(links_.tasks, stages_, parallel_);
     joint_solver_.report_breaking(links_.joints, links_.events.ids, links_.events.current.joint_events);
     finish_bodies();
@@ -110,6 +112,13 @@ void Solver::add_stage(Stage::Fn fn, int32_t item_count, int32_t min_items_per_b
     stage.arg0 = arg0;
     stage.arg1 = arg1;
     stages_.push_back(stage);
+    stage_shares_.push_back(no_share);
+}
+
+// A stage over the awake bodies, split where the regions are.
+void Solver::add_body_stage(Stage::Fn fn) {
+    add_stage(fn, int32_t(states_.size()) - 1, bodies_per_work_block);
+    stage_shares_.back() = bodies_share;
 }
 
 // One stage per colour, in solve order, over its joints and then its contacts; the
@@ -141,6 +150,7 @@ void Solver::add_color_stages(int32_t pass, const bool* run_if) {
             const int32_t min_items = r.sequential ? items : min_items_of(run);
             add_stage(fn, items, min_items, run, pass);
             stages_.back().run_if = run_if;
+            stage_shares_.back() = run;
         }
         ++run;
     }
@@ -207,6 +217,7 @@ void Solver::lay_out_color_runs() {
         ColorRun r;
         r.joint_begin = joint_color_starts_[std::size_t(color)];
         r.joint_count = joints;
+        r.color = color;
         r.sequential = color == ConstraintColors::overflow;
         if (contacts > 0) {
             r.contact_run = contact_run++;
@@ -256,21 +267,21 @@ void Solver::build_stages(int32_t substep_count) {
     if (!stages_changed(substep_count)) {
         return;  // a steady scene: the same stages over the same counts as last step
     }
-    const int32_t bodies = int32_t(states_.size()) - 1;
     const int32_t trees = joint_solver_.tree_count();
     const int32_t last_pass = 2 * substep_count - 1;
     stages_.clear();
-    add_stage(&Solver::gather_bodies, bodies, bodies_per_work_block);
+    stage_shares_.clear();
+    add_body_stage(&Solver::gather_bodies);
     for (int32_t i = 0; i < substep_count; ++i) {
         if (i == 0) {
             add_color_stages<&Solver::prepare_and_warm_start, true>(0);
         } else {
-            add_stage(&Solver::integrate_velocities, bodies, bodies_per_work_block);
+            add_body_stage(&Solver::integrate_velocities);
             add_color_stages<&Solver::warm_start, true>(0);
         }
         add_color_stages<&Solver::solve, true>(2 * i);
         add_stage(&Solver::solve_joint_trees, trees, joint_trees_per_work_block, 0, 2 * i);
-        add_stage(&Solver::integrate_positions, bodies, bodies_per_work_block);
+        add_body_stage(&Solver::integrate_positions);
         add_color_stages<&Solver::solve, true>(2 * i + 1);
         add_stage(&Solver::solve_joint_trees, trees, joint_trees_per_work_block, 0, 2 * i + 1);
     }
@@ -290,9 +301,9 @@ void Solver::build_stages(int32_t substep_count) {
     } else {
         add_stage(&Solver::store_joints, joint_solver_.count(), joints_per_work_block);
     }
-    add_stage(&Solver::finalize_bodies, bodies, bodies_per_work_block);
+    add_body_stage(&Solver::finalize_bodies);
     add_stage(&Solver::number_move_events, 1, 1);
-    add_stage(&Solver::write_move_events, bodies, bodies_per_work_block);
+    add_body_stage(&Solver::write_move_events);
 }
 
 // The stage list depends only on these counts; a small world's step would otherwise
@@ -459,7 +470,9 @@ void Solver::color_constraints() {
     }
     const uint64_t version = links_.contacts.layout_version();
     const int32_t awake_bodies = int32_t(links_.islands.awake_bodies().size());
-    if (colored_ && version == colored_version_ && awake_bodies == colored_body_count_ && !joints_differ) {
+    const int32_t regions = parallel_ ? links_.tasks.worker_count() : 1;
+    if (colored_ && version == colored_version_ && awake_bodies == colored_body_count_ && !joints_differ &&
+        regions == regions_.count()) {
         return;  // nothing the colours depend on changed: a resting pile keeps them
     }
     colored_ = true;
@@ -467,7 +480,7 @@ void Solver::color_constraints() {
     colored_body_count_ = awake_bodies;
     colors_.reset(awake_bodies);
     color_joints();
-    color_contacts();
+    color_contacts(regions);
 }
 
 // What a joint's colour depends on: which joint, and the states it moves (-1: none).
@@ -518,18 +531,19 @@ void Solver::color_joints() {
 
 // A colour for every awake contact the solver will see, then the contacts laid out
 // colour by colour, the order they are solved in. Within a colour, whose contacts are
-// independent, two-point contacts come first, so that SIMD blocks hold one kind and
-// blocks of single points skip the second, and each kind is in the order of the lowest
-// body it moves (order_by_body); the overflow colour is solved in sequence and keeps
-// awake order. A body the contact cannot move (static, kinematic, asleep) takes no colour
-// slot. The sort's key is the colour and the kind of contact in one. Only contacts with
-// points are read (ContactSet::solvable): most of a tumbling heap's have none.
-void Solver::color_contacts() {
+// independent, the contacts of each worker's region (that of the lowest body a contact
+// moves) come in the order of the regions, so that each worker's share of every colour
+// moves its own bodies. Within a region, two-point contacts come first, so that SIMD
+// blocks hold one kind and blocks of single points skip the second, and each kind is in
+// the order of the lowest body it moves (order_by_body). The order within a colour changes
+// no bit of the result. The overflow colour is solved in sequence and keeps awake order. A
+// body the contact cannot move (static, kinematic, asleep) takes no colour slot. Only
+// contacts with points are read (ContactSet::solvable): most of a tumbling heap's have none.
+void Solver::color_contacts(int32_t regions) {
     const std::vector<int32_t>& solvable = links_.contacts.solvable();
     const Pool<Contact>& contacts = links_.contacts.pool();
-    constexpr int32_t key_count = 2 * ConstraintColors::count;
-    key_starts_.assign(key_count + 1, 0);
     colored_contacts_.clear();
+    body_starts_.assign(std::size_t(colored_body_count_) + 2, 0);
     any_elastic_contact_ = false;
     // The list jumps through the contact pool: ask for contacts ahead.
     constexpr std::size_t contacts_ahead = 32;
@@ -544,24 +558,37 @@ void Solver::color_contacts() {
                            (contact.flags & contact_moves_b) ? contact.state_b : ConstraintColors::null_state);
         any_elastic_contact_ = any_elastic_contact_ || contact.restitution != 0.0f;
         const bool single_after_pairs = color != ConstraintColors::overflow && contact.point_count == 1;
-        const int32_t key = 2 * color + (single_after_pairs ? 1 : 0);
-        ++key_starts_[std::size_t(key) + 1];
         const int32_t a = (contact.flags & contact_moves_a) ? contact.state_a : colored_body_count_;
         const int32_t b = (contact.flags & contact_moves_b) ? contact.state_b : colored_body_count_;
-        colored_contacts_.push_back({solvable[k], key, a < b ? a : b});
+        const int32_t lowest = a < b ? a : b;
+        // The key until the regions are cut: the colour and the kind.
+        colored_contacts_.push_back({solvable[k], 2 * color + (single_after_pairs ? 1 : 0), lowest});
+        ++body_starts_[std::size_t(lowest) + 1];
+    }
+    for (int32_t k = 0; k <= colored_body_count_; ++k) {
+        body_starts_[std::size_t(k) + 1] += body_starts_[std::size_t(k)];
+    }
+    regions_.cut(regions, body_starts_.data(), colored_body_count_);
+    const int32_t key_count = sort_key(ConstraintColors::count, 0, false);
+    key_starts_.assign(std::size_t(key_count) + 1, 0);
+    for (ColoredContact& c : colored_contacts_) {
+        const int32_t color = c.key / 2;
+        const int32_t region = color == ConstraintColors::overflow ? 0 : regions_.region_of(c.body);
+        c.key = sort_key(color, region, (c.key & 1) != 0);
+        ++key_starts_[std::size_t(c.key) + 1];
     }
     for (int32_t key = 0; key < key_count; ++key) {
         key_starts_[std::size_t(key) + 1] += key_starts_[std::size_t(key)];
     }
     color_starts_.resize(ConstraintColors::count + 1);
     for (int32_t color = 0; color <= ConstraintColors::count; ++color) {
-        color_starts_[std::size_t(color)] = key_starts_[std::size_t(2 * color)];
+        color_starts_[std::size_t(color)] = key_starts_[std::size_t(sort_key(color, 0, false))];
     }
     ordered_contacts_.resize(colored_contacts_.size());
     order_by_body();
     std::vector<int32_t>& next = scratch_starts_;
     next.assign(key_starts_.begin(), key_starts_.end() - 1);
-    constexpr int32_t overflow_key = 2 * ConstraintColors::overflow;
+    const int32_t overflow_key = sort_key(ConstraintColors::overflow, 0, false);
     for (const ColoredContact& c : body_ordered_) {
         if (c.key != overflow_key) {
             ordered_contacts_[std::size_t(next[std::size_t(c.key)]++)] = c.contact;
@@ -574,24 +601,60 @@ void Solver::color_contacts() {
     }
 }
 
-// The coloured contacts by the lowest body each moves (a counting sort). Each worker
-// solves a contiguous share of every colour, so in this order its shares of all colours
-// move mostly the same bodies, whose states then stay in its core's cache. In awake
-// order, 2 workers both moved 1237 of the tumbler's 1969 touched bodies, 4285 of the
-// spinner's 6013 and 1233 of rain's 2739; in this order 170, 1235 and 181. The spinner
-// steps 4 % faster with 1 worker and with 2 (paired runs).
+// The coloured contacts by the lowest body each moves (the scatter of a counting sort
+// whose counts color_contacts made). Each worker solves a contiguous share of every
+// colour, so in this order its shares of all colours move mostly the same bodies, whose
+// states then stay in its core's cache. In awake order, 2 workers both moved 1237 of the
+// tumbler's 1969 touched bodies, 4285 of the spinner's 6013 and 1233 of rain's 2739; in
+// this order 170, 1235 and 181. The spinner steps 4 % faster with 1 worker and with 2
+// (paired runs).
 void Solver::order_by_body() {
-    const int32_t states = colored_body_count_ + 1;  // the last: a contact that moves no body
-    body_starts_.assign(std::size_t(states) + 1, 0);
-    for (const ColoredContact& c : colored_contacts_) {
-        ++body_starts_[std::size_t(c.body) + 1];
-    }
-    for (int32_t k = 0; k < states; ++k) {
-        body_starts_[std::size_t(k) + 1] += body_starts_[std::size_t(k)];
-    }
+    std::vector<int32_t>& next = scratch_starts_;
+    next.assign(body_starts_.begin(), body_starts_.end() - 1);
     body_ordered_.resize(colored_contacts_.size());
     for (const ColoredContact& c : colored_contacts_) {
-        body_ordered_[std::size_t(body_starts_[std::size_t(c.body)]++)] = c;
+        body_ordered_[std::size_t(next[std::size_t(c.body)]++)] = c;
+    }
+}
+
+// Where each worker's share of each colour run begins, in the run's items: at the SIMD
+// block nearest the first contact of the worker's region. Runs with joints (ordered by
+// joint, not by body) are split evenly, and so are all when the step runs on one thread.
+void Solver::split_runs_by_region() {
+    const int32_t workers = links_.tasks.worker_count();
+    const std::size_t stride = std::size_t(workers) + 1;
+    run_shares_.assign((color_runs_.size() + 1) * stride, -1);
+    if (!parallel_ || regions_.count() != workers) {
+        return;
+    }
+    const int32_t width = contact_solver_.kernels().width;
+    for (std::size_t run = 0; run < color_runs_.size(); ++run) {
+        const ColorRun& r = color_runs_[run];
+        if (r.sequential || r.joint_count > 0 || r.contact_items == 0) {
+            continue;
+        }
+        int32_t* starts = run_shares_.data() + run * stride;
+        const int32_t first = key_starts_[std::size_t(sort_key(r.color, 0, false))];
+        for (int32_t w = 0; w < workers; ++w) {
+            const int32_t contact = key_starts_[std::size_t(sort_key(r.color, w, false))] - first;
+            starts[w] = std::min((contact + width / 2) / width, r.contact_items);
+        }
+        starts[workers] = r.contact_items;
+    }
+    std::copy(regions_.starts(), regions_.starts() + stride, run_shares_.data() + color_runs_.size() * stride);
+}
+
+// The stages' shares, which follow this step's colours even when the stage list is kept.
+void Solver::point_stages_at_shares() {
+    const std::size_t stride = std::size_t(links_.tasks.worker_count()) + 1;
+    for (std::size_t s = 0; s < stages_.size(); ++s) {
+        const int32_t share = stage_shares_[s];
+        const int32_t* starts = nullptr;
+        if (share != no_share) {
+            const std::size_t run = share == bodies_share ? color_runs_.size() : std::size_t(share);
+            starts = run_shares_.data() + run * stride;
+        }
+        stages_[s].share_starts = starts != nullptr && starts[0] >= 0 ? starts : nullptr;
     }
 }
 

@@ -32,6 +32,7 @@
 #include "core/stage_runner.hpp"
 #include "core/task_system.hpp"
 #include "dynamics/body.hpp"
+#include "dynamics/body_regions.hpp"
 #include "dynamics/body_state.hpp"
 #include "dynamics/constraint_colors.hpp"
 #include "dynamics/contact_solver.hpp"
@@ -86,12 +87,13 @@ private:
     void color_constraints();
     bool joints_changed();
     void color_joints();
-    void color_contacts();
+    void color_contacts(int32_t regions);
     void lay_out_color_runs();
     void build_stages(int32_t substep_count);
     bool stages_changed(int32_t substep_count);
     void add_stage(Stage::Fn fn, int32_t item_count, int32_t min_items_per_block, int32_t arg0 = 0,
                    int32_t arg1 = 0);
+    void add_body_stage(Stage::Fn fn);
     template <Stage::Fn fn, bool with_joints>
     void add_color_stages(int32_t pass, const bool* run_if = nullptr);
     template <Stage::Fn fn, bool with_joints>
@@ -103,6 +105,9 @@ private:
     ContactLayout contact_layout() const;
     void finish_bodies();
     void order_by_body();
+    void cut_regions();
+    void split_runs_by_region();
+    void point_stages_at_shares();
     // Items [begin, end) of a colour run: its joints first, then its contact items.
     struct RunSplit {
         int32_t joint_begin, joint_end, contact_begin, contact_end;
@@ -159,14 +164,18 @@ private:
         int32_t joint_begin = 0, joint_count = 0;  // in ordered_joints_
         int32_t contact_run = -1;                  // the contact solver's run, or -1
         int32_t contact_items = 0;
+        int32_t color = 0;
         bool sequential = false;
     };
     std::vector<ColorRun> color_runs_;
     struct ColoredContact {
         int32_t contact;
-        int32_t key;   // 2 x colour, + 1 for a single point (solved after the pairs)
+        int32_t key;   // sort_key(): colour, then region, then a single point after the pairs
         int32_t body;  // the lowest state it moves; the state count if it moves none
     };
+    int32_t sort_key(int32_t color, int32_t region, bool single_point) const {
+        return 2 * (color * regions_.count() + region) + (single_point ? 1 : 0);
+    }
     std::vector<ColoredContact> colored_contacts_;  // in awake order
     std::vector<ColoredContact> body_ordered_;      // the same, by body
     std::vector<int32_t> key_starts_;               // per sort key: its first slot
@@ -179,6 +188,14 @@ private:
     bool colored_ = false;
     uint64_t colored_version_ = 0;
     int32_t colored_body_count_ = 0;
+    // Each worker's bodies, and in each colour the contacts of the region's lowest bodies
+    // after those of the regions before (one region when the step runs on one thread).
+    BodyRegions regions_;
+    // Per colour run: the item where each worker's share begins, or empty runs when the
+    // run is split evenly; then the same for the body stages.
+    std::vector<int32_t> run_shares_;
+    std::vector<int32_t> stage_shares_;  // per stage: its run, bodies_share, or no_share
+    static constexpr int32_t bodies_share = -1, no_share = -2;
     std::vector<BodyState> states_;       // per awake body, then the fixed state
     std::vector<BodyMotion> motions_;     // the same, the fixed one all zero
     // This step's settings and stages.

@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: MIT
 // StageRunner: every item of every stage is done once, after every item of the stages
 // before it, for any worker count and block size; a stage whose run_if an earlier stage
-// cleared is skipped by every worker; and a run finishes however a job system schedules
-// the workers' tasks: inline inside enqueue, or only when the engine waits for them.
+// cleared is skipped by every worker; a stage split at the owner's share starts gets
+// blocks that never cross them; and a run finishes however a job system schedules the
+// workers' tasks: inline inside enqueue, or only when the engine waits for them.
 #include <atomic>
 #include <vector>
 
@@ -20,7 +21,9 @@ struct Ledger {
     std::vector<std::atomic<int32_t>> items;
     std::atomic<int32_t> out_of_order{0};
     std::atomic<int32_t> bad_worker{0};
+    std::atomic<int32_t> blocks_across_shares{0};
     int32_t workers = 1;
+    const int32_t* share_starts = nullptr;  // the owner's split, when the stages have one
     bool skip_flag_stage_runs = true;  // cleared by the stage that decides it
 
     explicit Ledger(int32_t item_count) : items(std::size_t(item_count)) {}
@@ -30,6 +33,12 @@ void advance(void* owner, const Stage& stage, int32_t begin, int32_t end, int32_
     Ledger& ledger = *static_cast<Ledger*>(owner);
     if (worker < 0 || worker >= ledger.workers) {
         ledger.bad_worker.fetch_add(1);
+    }
+    if (ledger.share_starts != nullptr) {
+        for (int32_t w = 1; w < ledger.workers; ++w) {
+            const int32_t start = ledger.share_starts[w];
+            ledger.blocks_across_shares.fetch_add(begin < start && start < end ? 1 : 0);
+        }
     }
     for (int32_t i = begin; i < end; ++i) {
         int32_t expected = stage.arg0;
@@ -117,6 +126,33 @@ I2D_TEST(unit_stage_runner_does_every_item_once_in_stage_order) {
                     I2D_CHECK(items_left_behind(ledger, stage_count) == 0);
                 }
             }
+        }
+    }
+}
+
+// Shares of any size, empty ones too, starting anywhere: each item still done once in
+// stage order, and no block reaches past its share into the next.
+I2D_TEST(unit_stage_runner_splits_at_the_owners_share_starts) {
+    constexpr int32_t item_count = 1000, stage_count = 8;
+    const std::vector<std::vector<int32_t>> splits = {
+        {0, 1000}, {0, 333, 1000}, {0, 0, 1000}, {0, 1000, 1000}, {0, 7, 7, 700, 1000}, {0, 1, 2, 3, 1000}};
+    for (const std::vector<int32_t>& starts : splits) {
+        const int32_t workers = int32_t(starts.size()) - 1;
+        i2d::TaskSystem tasks(workers, i2d::TaskCallbacks{});
+        i2d::StageRunner runner;
+        for (const int32_t min_per_block : {1, 16, 64}) {
+            Ledger ledger(item_count);
+            ledger.workers = workers;
+            ledger.share_starts = starts.data();
+            std::vector<Stage> stages = advancing_stages(ledger, stage_count, item_count, workers, min_per_block);
+            for (Stage& stage : stages) {
+                stage.share_starts = starts.data();
+            }
+            runner.run(tasks, stages, true);
+            I2D_CHECK(ledger.out_of_order.load() == 0);
+            I2D_CHECK(ledger.bad_worker.load() == 0);
+            I2D_CHECK(ledger.blocks_across_shares.load() == 0);
+            I2D_CHECK(items_left_behind(ledger, stage_count) == 0);
         }
     }
 }

@@ -1,0 +1,99 @@
+// SPDX-License-Identifier: MIT
+// BodyRegions: the cuts split the work (a body 1, a contact contact_weight on its lowest
+// body) as evenly as whole bodies allow, every body falls in the region whose run holds
+// it, and more regions than bodies leave some empty rather than fail.
+#include <algorithm>
+#include <cstdint>
+#include <cstdlib>
+#include <vector>
+
+#include "check.h"
+#include "dynamics/body_regions.hpp"
+
+using i2d::BodyRegions;
+
+namespace {
+
+// contacts_before for `per_body` contacts on each body's lowest slot.
+std::vector<int32_t> contacts_before(const std::vector<int32_t>& per_body) {
+    std::vector<int32_t> before(per_body.size() + 1, 0);
+    for (std::size_t b = 0; b < per_body.size(); ++b) {
+        before[b + 1] = before[b] + per_body[b];
+    }
+    return before;
+}
+
+int64_t work_of(const std::vector<int32_t>& per_body, int32_t begin, int32_t end) {
+    int64_t work = 0;
+    for (int32_t b = begin; b < end; ++b) {
+        work += 1 + BodyRegions::contact_weight * per_body[std::size_t(b)];
+    }
+    return work;
+}
+
+// The heaviest body: no cut can split the work more evenly than that.
+int64_t heaviest_body(const std::vector<int32_t>& per_body) {
+    int64_t heaviest = 0;
+    for (std::size_t b = 0; b < per_body.size(); ++b) {
+        heaviest = std::max<int64_t>(heaviest, work_of(per_body, int32_t(b), int32_t(b) + 1));
+    }
+    return heaviest;
+}
+
+}  // namespace
+
+I2D_TEST(unit_body_regions_share_the_work_within_one_body) {
+    // Contacts crowded at the start (a pile on the ground, then falling bodies).
+    std::vector<int32_t> per_body(1000, 0);
+    for (int32_t b = 0; b < 300; ++b) {
+        per_body[std::size_t(b)] = 3;
+    }
+    const std::vector<int32_t> before = contacts_before(per_body);
+    const int64_t total = work_of(per_body, 0, 1000);
+    for (const int32_t regions : {1, 2, 3, 4, 8}) {
+        BodyRegions cut;
+        cut.cut(regions, before.data(), 1000);
+        I2D_CHECK(cut.count() == regions);
+        I2D_CHECK(cut.starts()[0] == 0 && cut.starts()[regions] == 1000);
+        for (int32_t r = 0; r < regions; ++r) {
+            const int64_t share = work_of(per_body, cut.starts()[r], cut.starts()[r + 1]);
+            I2D_CHECK(std::llabs(share * regions - total) <= int64_t(regions) * (heaviest_body(per_body) + 1));
+        }
+    }
+    // The pile is cut, not shared evenly by body count: with 2 regions the cut is
+    // inside the 300 bodies that carry 3,900 of the 4,600 work.
+    BodyRegions two;
+    two.cut(2, before.data(), 1000);
+    I2D_CHECK(two.starts()[1] > 0 && two.starts()[1] < 300);
+}
+
+I2D_TEST(unit_body_regions_place_every_body_in_the_run_that_holds_it) {
+    const std::vector<int32_t> per_body = {0, 5, 0, 0, 9, 1, 1, 0, 2, 0, 0, 0, 4};
+    const std::vector<int32_t> before = contacts_before(per_body);
+    const int32_t bodies = int32_t(per_body.size());
+    for (const int32_t regions : {1, 2, 3, 5}) {
+        BodyRegions cut;
+        cut.cut(regions, before.data(), bodies);
+        for (int32_t b = 0; b < bodies; ++b) {
+            const int32_t r = cut.region_of(b);
+            I2D_CHECK(r >= 0 && r < regions);
+            I2D_CHECK(cut.starts()[r] <= b && b < cut.starts()[r + 1]);
+        }
+        I2D_CHECK(cut.region_of(bodies) == regions - 1);  // a contact that moves no body
+    }
+}
+
+I2D_TEST(unit_body_regions_leave_regions_empty_when_bodies_are_few) {
+    const std::vector<int32_t> per_body = {2, 0, 1};
+    const std::vector<int32_t> before = contacts_before(per_body);
+    BodyRegions cut;
+    cut.cut(8, before.data(), 3);
+    I2D_CHECK(cut.count() == 8);
+    for (int32_t r = 0; r < 8; ++r) {
+        I2D_CHECK(cut.starts()[r] <= cut.starts()[r + 1]);
+    }
+    I2D_CHECK(cut.starts()[8] == 3);
+    BodyRegions none;
+    none.cut(2, before.data(), 0);
+    I2D_CHECK(none.starts()[0] == 0 && none.starts()[1] == 0 && none.starts()[2] == 0);
+}
