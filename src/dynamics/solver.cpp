@@ -81,8 +81,9 @@ void Solver::step(float time_step, int32_t substep_count) {
     rest_times_.resize(std::size_t(awake));
     event_slots_.resize(std::size_t(awake));
     parallel_ = links_.tasks.worker_count() > 1 && awake >= parallel_min_bodies;
-    color_constraints();
-    contact_solver_.lay_out(contact_layout());
+    if (color_constraints()) {
+        contact_solver_.lay_out(contact_layout());
+    }
     joint_solver_.lay_out(ordered_joints_.data(), int32_t(ordered_joints_.size()));
     if (joints_regathered_) {
         // What the trees depend on (the joints, their settings, their bodies' types, masses
@@ -451,8 +452,10 @@ void Solver::restitution(void* solver, const Stage& stage, int32_t begin, int32_
 }
 
 // Joints and contacts share one colouring, so that a colour's joints and contacts are
-// independent of one another too; kept while nothing it depends on changed.
-void Solver::color_constraints() {
+// independent of one another too; kept while nothing it depends on changed, and then so
+// is the contact solver's layout, which the workers read (rewritten, it would leave their
+// cores for the calling thread's). Returns whether the contacts were coloured anew.
+bool Solver::color_constraints() {
     // The joints to solve change only with the joints or the awake list.
     const uint64_t joint_version = links_.joint_set.version(), awake_version = links_.islands.awake_version();
     bool joints_differ = false;
@@ -473,7 +476,7 @@ void Solver::color_constraints() {
     const int32_t regions = parallel_ ? links_.tasks.worker_count() : 1;
     if (colored_ && version == colored_version_ && awake_bodies == colored_body_count_ && !joints_differ &&
         regions == regions_.count()) {
-        return;  // nothing the colours depend on changed: a resting pile keeps them
+        return false;  // nothing the colours depend on changed: a resting pile keeps them
     }
     colored_ = true;
     colored_version_ = version;
@@ -481,6 +484,7 @@ void Solver::color_constraints() {
     colors_.reset(awake_bodies);
     color_joints();
     color_contacts(regions);
+    return true;
 }
 
 // What a joint's colour depends on: which joint, and the states it moves (-1: none).

@@ -84,7 +84,7 @@ public:
     const std::vector<int32_t>& non_finite_bodies() const { return non_finite_bodies_; }
 
 private:
-    void color_constraints();
+    bool color_constraints();
     bool joints_changed();
     void color_joints();
     void color_contacts(int32_t regions);
