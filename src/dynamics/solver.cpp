@@ -92,6 +92,7 @@ void Solver::step(float time_step, int32_t substep_count) {
     }
     lay_out_color_runs();
     split_runs_by_region();
+    move_starts_.resize(std::size_t(regions_.count()) + 1);
     if (links_.settings.enable_sleep) {
         links_.islands.begin_rest_times();
     }
@@ -303,7 +304,8 @@ void Solver::build_stages(int32_t substep_count) {
         add_stage(&Solver::store_joints, joint_solver_.count(), joints_per_work_block);
     }
     add_body_stage(&Solver::finalize_bodies);
-    add_stage(&Solver::number_move_events, 1, 1);
+    add_stage(&Solver::count_move_events, regions_.count(), 1);
+    add_stage(&Solver::place_move_events, 1, 1);
     add_body_stage(&Solver::write_move_events);
 }
 
@@ -767,17 +769,33 @@ void Solver::finalize_body(int32_t k) {
     final_flags_[std::size_t(k)] = flags;
 }
 
-// Each moved body's event gets the next index in awake order.
-void Solver::number_move_events(void* solver, const Stage&, int32_t, int32_t, int32_t) {
+// Each moved body's event gets the next index in awake order: each region's moved bodies
+// are numbered from 0 on their own worker (regions [begin, end)), the regions' counts
+// then become where their events start, and writing an event adds its region's start.
+// Numbered on one thread, it cost large_pyramid 13 to 16 microseconds a step at 2 workers
+// while the other worker waited.
+void Solver::count_move_events(void* solver, const Stage&, int32_t begin, int32_t end, int32_t) {
+    Solver& self = *static_cast<Solver*>(solver);
+    const int32_t* starts = self.regions_.starts();
+    for (int32_t r = begin; r < end; ++r) {
+        int32_t moved_here = 0;
+        for (int32_t k = starts[r]; k < starts[r + 1]; ++k) {
+            const bool moved = (self.final_flags_[std::size_t(k)] & body_moved) != 0;
+            self.event_slots_[std::size_t(k)] = moved ? moved_here : null_index;
+            moved_here += moved ? 1 : 0;
+        }
+        self.move_starts_[std::size_t(r) + 1] = moved_here;
+    }
+}
+
+void Solver::place_move_events(void* solver, const Stage&, int32_t, int32_t, int32_t) {
     Solver& self = *static_cast<Solver*>(solver);
     std::vector<BodyMoveEvent>& moves = self.links_.events.current.body_moves;
-    int32_t next = int32_t(moves.size());
-    for (std::size_t k = 0; k < self.final_flags_.size(); ++k) {
-        const bool moved = (self.final_flags_[k] & body_moved) != 0;
-        self.event_slots_[k] = moved ? next : null_index;
-        next += moved ? 1 : 0;
+    self.move_starts_[0] = int32_t(moves.size());
+    for (int32_t r = 0; r < self.regions_.count(); ++r) {
+        self.move_starts_[std::size_t(r) + 1] += self.move_starts_[std::size_t(r)];
     }
-    moves.resize(std::size_t(next));
+    moves.resize(std::size_t(self.move_starts_[std::size_t(self.regions_.count())]));
 }
 
 void Solver::write_move_events(void* solver, const Stage&, int32_t begin, int32_t end, int32_t) {
@@ -785,8 +803,14 @@ void Solver::write_move_events(void* solver, const Stage&, int32_t begin, int32_
     const std::vector<int32_t>& awake = self.links_.islands.awake_bodies();
     const EventRecorder& events = self.links_.events;
     BodyMoveEvent* moves = self.links_.events.current.body_moves.data();
+    const int32_t* region_starts = self.regions_.starts();
+    int32_t region = self.regions_.region_of(begin);
     for (int32_t k = begin; k < end; ++k) {
-        const int32_t slot = self.event_slots_[std::size_t(k)];
+        while (k >= region_starts[region + 1]) {
+            ++region;
+        }
+        const int32_t local = self.event_slots_[std::size_t(k)];
+        const int32_t slot = local != null_index ? self.move_starts_[std::size_t(region)] + local : null_index;
         const int32_t index = awake[std::size_t(k)];
         Body& b = self.links_.bodies[index];
         b.move_event = slot;

@@ -139,7 +139,8 @@ private:
     static void check_bounce(void* solver, const Stage& stage, int32_t begin, int32_t end, int32_t worker);
     static void restitution(void* solver, const Stage& stage, int32_t begin, int32_t end, int32_t worker);
     static void finalize_bodies(void* solver, const Stage& stage, int32_t begin, int32_t end, int32_t worker);
-    static void number_move_events(void* solver, const Stage& stage, int32_t begin, int32_t end, int32_t worker);
+    static void count_move_events(void* solver, const Stage& stage, int32_t begin, int32_t end, int32_t worker);
+    static void place_move_events(void* solver, const Stage& stage, int32_t begin, int32_t end, int32_t worker);
     static void write_move_events(void* solver, const Stage& stage, int32_t begin, int32_t end, int32_t worker);
     void finalize_body(int32_t awake_index);
     void share_kinematic_rest(int32_t body);
@@ -219,7 +220,10 @@ private:
     std::vector<uint8_t> final_flags_;
     std::vector<int32_t> rest_islands_;  // the body's island's rest slot (Islands::rest_slot)
     std::vector<float> rest_times_;
-    std::vector<int32_t> event_slots_;  // per awake body: its move event's index, if it moved
+    // Per awake body: its move event's index within its region, if it moved; per region,
+    // the moved bodies, then where their events start (regions_.count() + 1).
+    std::vector<int32_t> event_slots_;
+    std::vector<int32_t> move_starts_;
 };
 
 }  // namespace i2d
