@@ -7,9 +7,10 @@
 // body, and 2 workers handed over 12,400 body states a step in large_pyramid, 8,100 in
 // many_pyramids and 168,000 in the spinner (whose body stages and colours split at
 // unrelated places). Cut once, with a contact going to the region of the lowest body it
-// moves, only the bodies that contacts across a cut reach are handed over: 3,300, 16 and
-// 7,500. On a virtual machine whose cores trade a cache line in 120 to 480 ns, that
-// hand-over, not the arithmetic, is much of what a second worker costs.
+// moves, mostly the bodies that contacts across a cut reach are handed over: 3,500, 1,500
+// and 13,000 (counted from the stages' shares at step 20). On a virtual machine whose
+// cores trade a cache line in 120 to 480 ns, each hand-over costs far more than the
+// arithmetic on the body.
 #pragma once
 
 #include <cstdint>
