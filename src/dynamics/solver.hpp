@@ -105,7 +105,6 @@ private:
     ContactLayout contact_layout() const;
     void finish_bodies();
     void order_by_body();
-    void cut_regions();
     void split_runs_by_region();
     void point_stages_at_shares();
     // Items [begin, end) of a colour run: its joints first, then its contact items.
@@ -192,8 +191,8 @@ private:
     // Each worker's bodies, and in each colour the contacts of the region's lowest bodies
     // after those of the regions before (one region when the step runs on one thread).
     BodyRegions regions_;
-    // Per colour run: the item where each worker's share begins, or empty runs when the
-    // run is split evenly; then the same for the body stages.
+    // Per colour run, worker_count + 1 entries: the item where each worker's share begins,
+    // or -1 throughout where the run is split evenly; then the same for the body stages.
     std::vector<int32_t> run_shares_;
     std::vector<int32_t> stage_shares_;  // per stage: its run, bodies_share, or no_share
     static constexpr int32_t bodies_share = -1, no_share = -2;
