@@ -5,6 +5,7 @@
 
 #include <cstring>
 
+#include "core/assert.hpp"
 #include "core/prefetch.hpp"
 #include "math/math.hpp"
 
@@ -95,6 +96,13 @@ void pack_lane(ContactBlock<W>& block, int lane, const Contact& contact, const C
 constexpr int32_t prefetch_contacts_ahead = 16;
 constexpr int32_t prefetch_bodies_ahead = 4;
 
+// Room between workers' parts of a colour. A core streaming through its part has the
+// hardware prefetcher read on past the end, into the next part, so the worker that starts
+// there finds its first blocks shared with the other core and waits for them. On the
+// 2-vCPU EPYC of scenes.md a gap of 4.8 KB left that wait (a stage's first block took
+// twice as long as the others), 19 KB halved it and 39 KB removed it.
+constexpr std::size_t gap_bytes = 48 * 1024;
+
 // The first two lines of a contact: what packing and storing touch.
 I2D_FORCE_INLINE void prefetch_solver_data(const Contact& c) {
     prefetch_line(&c);
@@ -146,28 +154,68 @@ template <>
 std::vector<ContactBlock<16>>& ContactSolver::blocks<16>() { return blocks16_; }
 
 // Colour by colour, each colour's contacts W to a block, the last block padded: which
-// contact goes in which lane. The blocks are zeroed and filled by pack_range.
+// contact goes in which lane. The blocks are zeroed and filled by pack_range. A colour
+// split between workers has each worker's part followed by gap_bytes of blocks no one
+// uses.
 template <int W>
 void ContactSolver::lay_out_colors(const ContactLayout& layout) {
     const int32_t colors = layout.color_count - 1;
+    const int32_t gap_blocks = int32_t((gap_bytes + sizeof(ContactBlock<W>) - 1) / sizeof(ContactBlock<W>));
     int32_t block_total = 0;
     runs_.clear();
+    parts_.clear();
     for (int32_t c = 0; c < colors; ++c) {
         const int32_t count = layout.color_starts[c + 1] - layout.color_starts[c];
-        if (count > 0) {
-            runs_.push_back({block_total, (count + W - 1) / W});
-            block_total += (count + W - 1) / W;
+        if (count == 0) {
+            continue;
         }
+        const int32_t blocks = (count + W - 1) / W;
+        const int32_t* split = layout.color_parts != nullptr
+                                   ? layout.color_parts + std::size_t(c) * std::size_t(layout.part_stride)
+                                   : nullptr;
+        const bool apart = split != nullptr && split[0] >= 0;
+        const int32_t part_count = apart ? layout.part_stride - 1 : 1;
+        ColorRun run{blocks, int32_t(parts_.size()), 0};
+        for (int32_t k = 0; k < part_count; ++k) {
+            const int32_t first = apart ? split[k] : 0, end = apart ? split[k + 1] : blocks;
+            I2D_ASSERT(first <= end && end <= blocks);
+            if (first < end) {
+                parts_.push_back({first, block_total});
+                ++run.part_count;
+                block_total += end - first + (apart ? gap_blocks : 0);
+            }
+        }
+        runs_.push_back(run);
     }
     blocks<W>().resize(std::size_t(block_total));
-    block_uses_.resize(std::size_t(block_total));
+    // Gap blocks are never packed: uses of 0 keep any_bounce from reading them.
+    block_uses_.assign(std::size_t(block_total), 0);
     lane_contacts_.assign(std::size_t(block_total) * W, -1);
     int32_t run = 0;
     for (int32_t c = 0; c < colors; ++c) {
         const int32_t first = layout.color_starts[c], count = layout.color_starts[c + 1] - first;
-        if (count > 0) {
-            std::memcpy(lane_contacts_.data() + std::size_t(runs_[std::size_t(run++)].first_block) * W,
-                        layout.ordered + first, std::size_t(count) * sizeof(int32_t));
+        if (count == 0) {
+            continue;
+        }
+        for_each_piece(run++, 0, (count + W - 1) / W, [&](int32_t block, int32_t item, int32_t items) {
+            const int32_t lanes = std::min(items * W, count - item * W);
+            std::memcpy(lane_contacts_.data() + std::size_t(block) * W, layout.ordered + first + item * W,
+                        std::size_t(lanes) * sizeof(int32_t));
+        });
+    }
+}
+
+template <class Piece>
+void ContactSolver::for_each_piece(int32_t run, int32_t begin, int32_t end, Piece&& piece) const {
+    const ColorRun& r = runs_[std::size_t(run)];
+    const int32_t last = r.first_part + r.part_count;
+    for (int32_t p = r.first_part; p < last && begin < end; ++p) {
+        const Part& part = parts_[std::size_t(p)];
+        const int32_t part_end = p + 1 < last ? parts_[std::size_t(p) + 1].first_item : r.block_count;
+        if (begin < part_end) {
+            const int32_t stop = std::min(end, part_end);
+            piece(part.first_block + begin - part.first_item, begin, stop - begin);
+            begin = stop;
         }
     }
 }
@@ -219,13 +267,14 @@ void ContactSolver::pack(const ContactLayout& layout, int32_t run, int32_t begin
         pack_overflow(layout, begin, end);
         return;
     }
-    const int32_t first = runs_[std::size_t(run)].first_block;
-    switch (kernels_->width) {
-        case 16: pack_range<16>(layout, first + begin, first + end); break;
-        case 8: pack_range<8>(layout, first + begin, first + end); break;
-        case 4: pack_range<4>(layout, first + begin, first + end); break;
-        default: pack_range<1>(layout, first + begin, first + end); break;
-    }
+    for_each_piece(run, begin, end, [&](int32_t block, int32_t, int32_t count) {
+        switch (kernels_->width) {
+            case 16: pack_range<16>(layout, block, block + count); break;
+            case 8: pack_range<8>(layout, block, block + count); break;
+            case 4: pack_range<4>(layout, block, block + count); break;
+            default: pack_range<1>(layout, block, block + count); break;
+        }
+    });
 }
 
 void ContactSolver::pack_overflow(const ContactLayout& layout, int32_t begin, int32_t end) {
@@ -242,33 +291,55 @@ int32_t ContactSolver::run_items(int32_t run) const {
     return run_is_sequential(run) ? int32_t(overflow_.size()) : runs_[std::size_t(run)].block_count;
 }
 
-ContactSolver::RunBlocks ContactSolver::run_blocks(int32_t run, int32_t first) const {
-    if (run_is_sequential(run)) {
-        return {&scalar_contact_kernels(), const_cast<ContactBlock<1>*>(overflow_.data() + first),
-                overflow_uses_.data() + first};
-    }
-    const std::size_t block = std::size_t(runs_[std::size_t(run)].first_block + first);
-    void* colored = kernels_->width == 16  ? static_cast<void*>(const_cast<ContactBlock<16>*>(blocks16_.data() + block))
-                    : kernels_->width == 8 ? static_cast<void*>(const_cast<ContactBlock<8>*>(blocks8_.data() + block))
-                    : kernels_->width == 4 ? static_cast<void*>(const_cast<ContactBlock<4>*>(blocks4_.data() + block))
-                                           : static_cast<void*>(const_cast<ContactBlock<1>*>(blocks1_.data() + block));
-    return {kernels_, colored, block_uses_.data() + block};
+ContactSolver::RunBlocks ContactSolver::overflow_blocks(int32_t first) const {
+    return {&scalar_contact_kernels(), const_cast<ContactBlock<1>*>(overflow_.data() + first),
+            overflow_uses_.data() + first};
+}
+
+ContactSolver::RunBlocks ContactSolver::colored_blocks(int32_t block) const {
+    const std::size_t b = std::size_t(block);
+    void* colored = kernels_->width == 16  ? static_cast<void*>(const_cast<ContactBlock<16>*>(blocks16_.data() + b))
+                    : kernels_->width == 8 ? static_cast<void*>(const_cast<ContactBlock<8>*>(blocks8_.data() + b))
+                    : kernels_->width == 4 ? static_cast<void*>(const_cast<ContactBlock<4>*>(blocks4_.data() + b))
+                                           : static_cast<void*>(const_cast<ContactBlock<1>*>(blocks1_.data() + b));
+    return {kernels_, colored, block_uses_.data() + b};
 }
 
 void ContactSolver::warm_start(int32_t run, int32_t begin, int32_t end, BodyState* states) const {
-    const RunBlocks r = run_blocks(run, begin);
-    r.kernels->warm_start(r.blocks, r.uses, end - begin, states);
+    if (run_is_sequential(run)) {
+        const RunBlocks r = overflow_blocks(begin);
+        r.kernels->warm_start(r.blocks, r.uses, end - begin, states);
+        return;
+    }
+    for_each_piece(run, begin, end, [&](int32_t block, int32_t, int32_t count) {
+        const RunBlocks r = colored_blocks(block);
+        r.kernels->warm_start(r.blocks, r.uses, count, states);
+    });
 }
 
 void ContactSolver::solve(int32_t run, int32_t begin, int32_t end, BodyState* states, const SolvePass& pass) const {
-    const RunBlocks r = run_blocks(run, begin);
-    r.kernels->solve(r.blocks, r.uses, end - begin, states, pass);
+    if (run_is_sequential(run)) {
+        const RunBlocks r = overflow_blocks(begin);
+        r.kernels->solve(r.blocks, r.uses, end - begin, states, pass);
+        return;
+    }
+    for_each_piece(run, begin, end, [&](int32_t block, int32_t, int32_t count) {
+        const RunBlocks r = colored_blocks(block);
+        r.kernels->solve(r.blocks, r.uses, count, states, pass);
+    });
 }
 
 void ContactSolver::apply_restitution(int32_t run, int32_t begin, int32_t end, BodyState* states,
                                       float threshold) const {
-    const RunBlocks r = run_blocks(run, begin);
-    r.kernels->restitution(r.blocks, end - begin, states, threshold);
+    if (run_is_sequential(run)) {
+        const RunBlocks r = overflow_blocks(begin);
+        r.kernels->restitution(r.blocks, end - begin, states, threshold);
+        return;
+    }
+    for_each_piece(run, begin, end, [&](int32_t block, int32_t, int32_t count) {
+        const RunBlocks r = colored_blocks(block);
+        r.kernels->restitution(r.blocks, count, states, threshold);
+    });
 }
 
 template <int W>
@@ -346,14 +417,15 @@ void ContactSolver::store(Pool<Contact>& contacts, const BodyState* states, floa
     }
     const int32_t* lanes = lane_contacts_.data();
     const int32_t W = kernels_->width;
-    const int32_t first = runs_[std::size_t(run)].first_block;
-    const int32_t lane_begin = (first + begin) * W, lane_end = (first + end) * W;
-    switch (W) {
-        case 16: store_range(blocks16_.data(), lanes, lane_begin, lane_end, contacts, states, slop); break;
-        case 8: store_range(blocks8_.data(), lanes, lane_begin, lane_end, contacts, states, slop); break;
-        case 4: store_range(blocks4_.data(), lanes, lane_begin, lane_end, contacts, states, slop); break;
-        default: store_range(blocks1_.data(), lanes, lane_begin, lane_end, contacts, states, slop); break;
-    }
+    for_each_piece(run, begin, end, [&](int32_t block, int32_t, int32_t count) {
+        const int32_t lane_begin = block * W, lane_end = (block + count) * W;
+        switch (W) {
+            case 16: store_range(blocks16_.data(), lanes, lane_begin, lane_end, contacts, states, slop); break;
+            case 8: store_range(blocks8_.data(), lanes, lane_begin, lane_end, contacts, states, slop); break;
+            case 4: store_range(blocks4_.data(), lanes, lane_begin, lane_end, contacts, states, slop); break;
+            default: store_range(blocks1_.data(), lanes, lane_begin, lane_end, contacts, states, slop); break;
+        }
+    });
 }
 
 }  // namespace i2d

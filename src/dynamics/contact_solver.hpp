@@ -52,6 +52,11 @@ struct ContactLayout {
     const BodyMotion* motions;    // with the velocities before the step
     int32_t fixed_state;          // index of the shared fixed state
     bool any_elastic;             // some contact has restitution: the restitution pass may run
+    /// When set, where each worker's part of each colour begins, in blocks from the
+    /// colour's first: part_stride entries per colour, rising from 0 to its block count,
+    /// or -1 first for a colour kept whole. Parts are placed apart in memory.
+    const int32_t* color_parts = nullptr;
+    int32_t part_stride = 0;
 };
 
 class ContactSolver {
@@ -102,13 +107,19 @@ private:
                      int32_t lane_end, Pool<Contact>& contacts, const BodyState* states, float slop) const;
     template <int W>
     bool bounces(const ContactBlock<W>* blocks, const uint8_t* uses, std::size_t count, float threshold) const;
-    // The kernels and the address of block `first` of the run.
+    // The kernels and the address of a block.
     struct RunBlocks {
         const ContactKernels* kernels;
         void* blocks;
         const uint8_t* uses;
     };
-    RunBlocks run_blocks(int32_t run, int32_t first) const;
+    RunBlocks colored_blocks(int32_t block) const;
+    RunBlocks overflow_blocks(int32_t first) const;
+    /// Calls piece(block, item, count) for the items [begin, end) of a colour run, in
+    /// pieces that each lie within one part: items [item, item + count) are the blocks
+    /// from `block` on.
+    template <class Piece>
+    void for_each_piece(int32_t run, int32_t begin, int32_t end, Piece&& piece) const;
 
     const ContactKernels* kernels_ = &scalar_contact_kernels();
     // The colours' blocks, in the kernels' width; the overflow colour's one per contact.
@@ -119,9 +130,16 @@ private:
     std::vector<ContactBlock<1>> overflow_;
     std::vector<uint8_t> block_uses_, overflow_uses_;  // BlockUses per block
     struct ColorRun {
-        int32_t first_block, block_count;
+        int32_t block_count;
+        int32_t first_part, part_count;  // in parts_
+    };
+    // A run of consecutive blocks of a colour: its first item (block of the colour) and
+    // where it lies in the block arrays.
+    struct Part {
+        int32_t first_item, first_block;
     };
     std::vector<ColorRun> runs_;  // the colours that have contacts, in solve order
+    std::vector<Part> parts_;
     std::vector<int32_t> lane_contacts_;       // per lane of the colours' blocks: its contact, or -1
     std::vector<int32_t> overflow_contacts_;
     int32_t fixed_state_ = 0;

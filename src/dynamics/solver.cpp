@@ -104,9 +104,14 @@ void Solver::step(float time_step, int32_t substep_count) {
 }
 
 ContactLayout Solver::contact_layout() const {
-    return ContactLayout{links_.contacts.pool(), ordered_contacts_.data(), color_starts_.data(),
+    ContactLayout layout{links_.contacts.pool(), ordered_contacts_.data(), color_starts_.data(),
                          ConstraintColors::count, motions_.data(),          int32_t(states_.size()) - 1,
                          any_elastic_contact_};
+    if (!color_parts_.empty()) {
+        layout.color_parts = color_parts_.data();
+        layout.part_stride = links_.tasks.worker_count() + 1;
+    }
+    return layout;
 }
 
 void Solver::add_stage(Stage::Fn fn, int32_t item_count, int32_t min_items_per_block, int32_t arg0, int32_t arg1) {
@@ -486,6 +491,7 @@ bool Solver::color_constraints() {
     colors_.reset(awake_bodies);
     color_joints();
     color_contacts(regions);
+    split_colors_by_region();
     return true;
 }
 
@@ -623,29 +629,51 @@ void Solver::order_by_body() {
     }
 }
 
-// Where each worker's share of each colour run begins, in the run's items: at the SIMD
-// block nearest the first contact of the worker's region. Runs with joints (ordered by
-// joint, not by body) are split evenly, and so are all when the step runs on one thread.
+// Where each worker's part of each colour begins, in its SIMD blocks: at the block nearest
+// the first contact of the worker's region. Colours with joints (their runs are ordered by
+// joint, not by body) and the overflow colour are kept whole, and so are all when the step
+// runs on one thread.
+void Solver::split_colors_by_region() {
+    const int32_t workers = links_.tasks.worker_count();
+    const std::size_t stride = std::size_t(workers) + 1;
+    color_parts_.clear();
+    if (!parallel_ || regions_.count() != workers) {
+        return;
+    }
+    color_parts_.assign(std::size_t(ConstraintColors::count) * stride, -1);
+    const int32_t width = contact_solver_.kernels().width;
+    for (int32_t color = 0; color < ConstraintColors::overflow; ++color) {
+        const int32_t first = key_starts_[std::size_t(sort_key(color, 0, false))];
+        const int32_t count = key_starts_[std::size_t(sort_key(color + 1, 0, false))] - first;
+        const bool has_joints = joint_color_starts_[std::size_t(color) + 1] > joint_color_starts_[std::size_t(color)];
+        if (count == 0 || has_joints) {
+            continue;
+        }
+        const int32_t blocks = (count + width - 1) / width;
+        int32_t* starts = color_parts_.data() + std::size_t(color) * stride;
+        for (int32_t w = 0; w < workers; ++w) {
+            const int32_t contact = key_starts_[std::size_t(sort_key(color, w, false))] - first;
+            starts[w] = std::min((contact + width / 2) / width, blocks);
+        }
+        starts[workers] = blocks;
+    }
+}
+
+// Each stage's shares of each colour run: its colour's parts, or -1 (split evenly).
 void Solver::split_runs_by_region() {
     const int32_t workers = links_.tasks.worker_count();
     const std::size_t stride = std::size_t(workers) + 1;
     run_shares_.assign((color_runs_.size() + 1) * stride, -1);
-    if (!parallel_ || regions_.count() != workers) {
+    if (color_parts_.empty()) {
         return;
     }
-    const int32_t width = contact_solver_.kernels().width;
     for (std::size_t run = 0; run < color_runs_.size(); ++run) {
         const ColorRun& r = color_runs_[run];
         if (r.sequential || r.joint_count > 0 || r.contact_items == 0) {
             continue;
         }
-        int32_t* starts = run_shares_.data() + run * stride;
-        const int32_t first = key_starts_[std::size_t(sort_key(r.color, 0, false))];
-        for (int32_t w = 0; w < workers; ++w) {
-            const int32_t contact = key_starts_[std::size_t(sort_key(r.color, w, false))] - first;
-            starts[w] = std::min((contact + width / 2) / width, r.contact_items);
-        }
-        starts[workers] = r.contact_items;
+        const int32_t* parts = color_parts_.data() + std::size_t(r.color) * stride;
+        std::copy(parts, parts + stride, run_shares_.data() + run * stride);
     }
     std::copy(regions_.starts(), regions_.starts() + stride, run_shares_.data() + color_runs_.size() * stride);
 }

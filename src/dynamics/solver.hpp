@@ -105,6 +105,7 @@ private:
     ContactLayout contact_layout() const;
     void finish_bodies();
     void order_by_body();
+    void split_colors_by_region();
     void split_runs_by_region();
     void point_stages_at_shares();
     // Items [begin, end) of a colour run: its joints first, then its contact items.
@@ -191,6 +192,7 @@ private:
     // Each worker's bodies, and in each colour the contacts of the region's lowest bodies
     // after those of the regions before (one region when the step runs on one thread).
     BodyRegions regions_;
+    std::vector<int32_t> color_parts_;  // per colour, workers + 1: ContactLayout::color_parts
     // Per colour run, worker_count + 1 entries: the item where each worker's share begins,
     // or -1 throughout where the run is split evenly; then the same for the body stages.
     std::vector<int32_t> run_shares_;

@@ -12,6 +12,10 @@
 // (several hundred awake bodies, thousands of contacts) and comes to rest: a bin of
 // mixed shapes, some bouncy, with a heavy plank (the overflow colour), that all sleep.
 //
+// tall_pyramid is large enough that each worker's part of a colour (placed apart from the
+// others in memory, contact_solver.cpp) is longer than the gap after it: 70 rows of boxes,
+// 2485 bodies and about 7000 contacts, about 1000 a colour.
+//
 // ragdoll_heap drops 60 of the bench's ragdolls (bench/ragdoll.c: 660 bodies, 600 revolute
 // joints with limits, springs and motors) onto a ground in overlapping layers, so that
 // joints are solved in every stage the workers share.
@@ -155,6 +159,25 @@ inline i2d_world_id sleeping_bin(const i2d_world_def& wd) {
         def.user_data = reinterpret_cast<void*>(std::intptr_t(i + 1));
         i2d_body_set_user_data(body, def.user_data);
         add_mixed_shape(body, i, &def);
+    }
+    return world;
+}
+
+inline i2d_world_id tall_pyramid(const i2d_world_def& wd) {
+    constexpr int rows = 70;
+    const i2d_world_id world = i2d_world_create(&wd);
+    if (I2D_IS_NULL(world)) {
+        return world;
+    }
+    const i2d_shape_def def = material(0.6f, 0.0f);
+    const i2d_body_id ground = add_body(world, I2D_BODY_STATIC, i2d_vec2{0, -1.0f});
+    i2d_shape_create_box(ground, &def, 0.6f * float(rows), 1.0f);
+    for (int row = 0; row < rows; ++row) {
+        for (int k = 0; k < rows - row; ++k) {
+            const float x = -0.5f * float(rows) + 0.5f * float(row + 1) + float(k);
+            const i2d_body_id box = add_body(world, I2D_BODY_DYNAMIC, i2d_vec2{x, 0.5f + float(row)});
+            i2d_shape_create_box(box, &def, 0.5f, 0.5f);
+        }
     }
     return world;
 }

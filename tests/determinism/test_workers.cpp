@@ -210,6 +210,10 @@ I2D_TEST(det_workers_fast_bullets_give_the_same_bits_for_every_count) {
     check_setups_agree(120, false, det::bullet_room);
 }
 
+I2D_TEST(det_workers_tall_pyramid_gives_the_same_bits_for_every_count) {
+    check_setups_agree(50, false, det::tall_pyramid);
+}
+
 // The hash of a run in this process equals that of the same run in a new process (the
 // test runs itself with I2D_DET_CHILD_WORKERS set, and the child prints its hash).
 I2D_TEST(det_workers_separate_processes_agree) {
