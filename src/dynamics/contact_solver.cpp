@@ -155,8 +155,8 @@ std::vector<ContactBlock<16>>& ContactSolver::blocks<16>() { return blocks16_; }
 
 // Colour by colour, each colour's contacts W to a block, the last block padded: which
 // contact goes in which lane. The blocks are zeroed and filled by pack_range. A colour
-// split between workers has each worker's part followed by gap_bytes of blocks no one
-// uses.
+// split between workers has each worker's part start a block (no block holds two
+// workers' contacts) and end with gap_bytes of blocks no one uses.
 template <int W>
 void ContactSolver::lay_out_colors(const ContactLayout& layout) {
     const int32_t colors = layout.color_count - 1;
@@ -169,21 +169,19 @@ void ContactSolver::lay_out_colors(const ContactLayout& layout) {
         if (count == 0) {
             continue;
         }
-        const int32_t blocks = (count + W - 1) / W;
         const int32_t* split = layout.color_parts != nullptr
                                    ? layout.color_parts + std::size_t(c) * std::size_t(layout.part_stride)
                                    : nullptr;
         const bool apart = split != nullptr && split[0] >= 0;
         const int32_t part_count = apart ? layout.part_stride - 1 : 1;
-        ColorRun run{blocks, int32_t(parts_.size()), 0};
+        ColorRun run{0, int32_t(parts_.size()), part_count, apart};
         for (int32_t k = 0; k < part_count; ++k) {
-            const int32_t first = apart ? split[k] : 0, end = apart ? split[k + 1] : blocks;
-            I2D_ASSERT(first <= end && end <= blocks);
-            if (first < end) {
-                parts_.push_back({first, block_total});
-                ++run.part_count;
-                block_total += end - first + (apart ? gap_blocks : 0);
-            }
+            const int32_t first = apart ? split[k] : 0, end = apart ? split[k + 1] : count;
+            I2D_ASSERT(first <= end && end <= count);
+            const int32_t blocks = (end - first + W - 1) / W;
+            parts_.push_back({run.block_count, block_total, first, end - first});
+            run.block_count += blocks;
+            block_total += blocks + (apart && blocks > 0 ? gap_blocks : 0);
         }
         runs_.push_back(run);
     }
@@ -193,16 +191,22 @@ void ContactSolver::lay_out_colors(const ContactLayout& layout) {
     lane_contacts_.assign(std::size_t(block_total) * W, -1);
     int32_t run = 0;
     for (int32_t c = 0; c < colors; ++c) {
-        const int32_t first = layout.color_starts[c], count = layout.color_starts[c + 1] - first;
-        if (count == 0) {
+        const int32_t first = layout.color_starts[c];
+        if (layout.color_starts[c + 1] == first) {
             continue;
         }
-        for_each_piece(run++, 0, (count + W - 1) / W, [&](int32_t block, int32_t item, int32_t items) {
-            const int32_t lanes = std::min(items * W, count - item * W);
-            std::memcpy(lane_contacts_.data() + std::size_t(block) * W, layout.ordered + first + item * W,
-                        std::size_t(lanes) * sizeof(int32_t));
-        });
+        const ColorRun& r = runs_[std::size_t(run++)];
+        for (int32_t p = r.first_part; p < r.first_part + r.part_count; ++p) {
+            const Part& part = parts_[std::size_t(p)];
+            std::memcpy(lane_contacts_.data() + std::size_t(part.first_block) * W,
+                        layout.ordered + first + part.first_contact, std::size_t(part.contact_count) * sizeof(int32_t));
+        }
     }
+}
+
+int32_t ContactSolver::part_first_item(int32_t run, int32_t part) const {
+    const ColorRun& r = runs_[std::size_t(run)];
+    return r.apart ? parts_[std::size_t(r.first_part + part)].first_item : -1;
 }
 
 template <class Piece>
@@ -214,7 +218,7 @@ void ContactSolver::for_each_piece(int32_t run, int32_t begin, int32_t end, Piec
         const int32_t part_end = p + 1 < last ? parts_[std::size_t(p) + 1].first_item : r.block_count;
         if (begin < part_end) {
             const int32_t stop = std::min(end, part_end);
-            piece(part.first_block + begin - part.first_item, begin, stop - begin);
+            piece(part.first_block + begin - part.first_item, stop - begin);
             begin = stop;
         }
     }
@@ -267,7 +271,7 @@ void ContactSolver::pack(const ContactLayout& layout, int32_t run, int32_t begin
         pack_overflow(layout, begin, end);
         return;
     }
-    for_each_piece(run, begin, end, [&](int32_t block, int32_t, int32_t count) {
+    for_each_piece(run, begin, end, [&](int32_t block, int32_t count) {
         switch (kernels_->width) {
             case 16: pack_range<16>(layout, block, block + count); break;
             case 8: pack_range<8>(layout, block, block + count); break;
@@ -311,7 +315,7 @@ void ContactSolver::warm_start(int32_t run, int32_t begin, int32_t end, BodyStat
         r.kernels->warm_start(r.blocks, r.uses, end - begin, states);
         return;
     }
-    for_each_piece(run, begin, end, [&](int32_t block, int32_t, int32_t count) {
+    for_each_piece(run, begin, end, [&](int32_t block, int32_t count) {
         const RunBlocks r = colored_blocks(block);
         r.kernels->warm_start(r.blocks, r.uses, count, states);
     });
@@ -323,7 +327,7 @@ void ContactSolver::solve(int32_t run, int32_t begin, int32_t end, BodyState* st
         r.kernels->solve(r.blocks, r.uses, end - begin, states, pass);
         return;
     }
-    for_each_piece(run, begin, end, [&](int32_t block, int32_t, int32_t count) {
+    for_each_piece(run, begin, end, [&](int32_t block, int32_t count) {
         const RunBlocks r = colored_blocks(block);
         r.kernels->solve(r.blocks, r.uses, count, states, pass);
     });
@@ -336,7 +340,7 @@ void ContactSolver::apply_restitution(int32_t run, int32_t begin, int32_t end, B
         r.kernels->restitution(r.blocks, end - begin, states, threshold);
         return;
     }
-    for_each_piece(run, begin, end, [&](int32_t block, int32_t, int32_t count) {
+    for_each_piece(run, begin, end, [&](int32_t block, int32_t count) {
         const RunBlocks r = colored_blocks(block);
         r.kernels->restitution(r.blocks, count, states, threshold);
     });
@@ -417,7 +421,7 @@ void ContactSolver::store(Pool<Contact>& contacts, const BodyState* states, floa
     }
     const int32_t* lanes = lane_contacts_.data();
     const int32_t W = kernels_->width;
-    for_each_piece(run, begin, end, [&](int32_t block, int32_t, int32_t count) {
+    for_each_piece(run, begin, end, [&](int32_t block, int32_t count) {
         const int32_t lane_begin = block * W, lane_end = (block + count) * W;
         switch (W) {
             case 16: store_range(blocks16_.data(), lanes, lane_begin, lane_end, contacts, states, slop); break;

@@ -52,9 +52,10 @@ struct ContactLayout {
     const BodyMotion* motions;    // with the velocities before the step
     int32_t fixed_state;          // index of the shared fixed state
     bool any_elastic;             // some contact has restitution: the restitution pass may run
-    /// When set, where each worker's part of each colour begins, in blocks from the
-    /// colour's first: part_stride entries per colour, rising from 0 to its block count,
-    /// or -1 first for a colour kept whole. Parts are placed apart in memory.
+    /// When set, where each worker's part of each colour begins, in contacts from the
+    /// colour's first: part_stride entries per colour, rising from 0 to its contact count,
+    /// or -1 first for a colour kept whole. Each part starts a block of its own, and parts
+    /// are placed apart in memory.
     const int32_t* color_parts = nullptr;
     int32_t part_stride = 0;
 };
@@ -76,6 +77,9 @@ public:
     int32_t overflow_count() const { return int32_t(overflow_contacts_.size()); }
 
     int32_t run_count() const { return int32_t(runs_.size()) + (overflow_.empty() ? 0 : 1); }
+    /// The first item of each part of a colour run laid out in parts (ContactLayout::
+    /// color_parts): part_stride - 1 of them; -1 for a run kept whole.
+    int32_t part_first_item(int32_t run, int32_t part) const;
     /// The run's items: blocks of a colour, or the overflow's contacts.
     int32_t run_items(int32_t run) const;
     bool run_is_sequential(int32_t run) const { return run == int32_t(runs_.size()); }
@@ -115,9 +119,8 @@ private:
     };
     RunBlocks colored_blocks(int32_t block) const;
     RunBlocks overflow_blocks(int32_t first) const;
-    /// Calls piece(block, item, count) for the items [begin, end) of a colour run, in
-    /// pieces that each lie within one part: items [item, item + count) are the blocks
-    /// from `block` on.
+    /// Calls piece(block, count) for the items [begin, end) of a colour run, in pieces
+    /// that each lie within one part: `count` blocks from block `block` on.
     template <class Piece>
     void for_each_piece(int32_t run, int32_t begin, int32_t end, Piece&& piece) const;
 
@@ -132,11 +135,13 @@ private:
     struct ColorRun {
         int32_t block_count;
         int32_t first_part, part_count;  // in parts_
+        bool apart;                      // laid out in the workers' parts
     };
-    // A run of consecutive blocks of a colour: its first item (block of the colour) and
-    // where it lies in the block arrays.
+    // Consecutive blocks of a colour: its first item (block of the colour), where it lies
+    // in the block arrays, and its contacts (from the colour's first).
     struct Part {
         int32_t first_item, first_block;
+        int32_t first_contact, contact_count;
     };
     std::vector<ColorRun> runs_;  // the colours that have contacts, in solve order
     std::vector<Part> parts_;

@@ -581,7 +581,7 @@ void Solver::color_contacts(int32_t regions) {
         body_starts_[std::size_t(k) + 1] += body_starts_[std::size_t(k)];
     }
     regions_.cut(regions, body_starts_.data(), colored_body_count_);
-    const int32_t key_count = sort_key(ConstraintColors::count, 0, false);
+    const int32_t key_count = sort_key(ConstraintColors::count, 0);
     key_starts_.assign(std::size_t(key_count) + 1, 0);
     for (ColoredContact& c : colored_contacts_) {
         const int32_t color = c.key / 2;
@@ -594,13 +594,13 @@ void Solver::color_contacts(int32_t regions) {
     }
     color_starts_.resize(ConstraintColors::count + 1);
     for (int32_t color = 0; color <= ConstraintColors::count; ++color) {
-        color_starts_[std::size_t(color)] = key_starts_[std::size_t(sort_key(color, 0, false))];
+        color_starts_[std::size_t(color)] = key_starts_[std::size_t(sort_key(color, 0))];
     }
     ordered_contacts_.resize(colored_contacts_.size());
     order_by_body();
     std::vector<int32_t>& next = scratch_starts_;
     next.assign(key_starts_.begin(), key_starts_.end() - 1);
-    const int32_t overflow_key = sort_key(ConstraintColors::overflow, 0, false);
+    const int32_t overflow_key = sort_key(ConstraintColors::overflow, 0);
     for (const ColoredContact& c : body_ordered_) {
         if (c.key != overflow_key) {
             ordered_contacts_[std::size_t(next[std::size_t(c.key)]++)] = c.contact;
@@ -629,10 +629,9 @@ void Solver::order_by_body() {
     }
 }
 
-// Where each worker's part of each colour begins, in its SIMD blocks: at the block nearest
-// the first contact of the worker's region. Colours with joints (their runs are ordered by
-// joint, not by body) and the overflow colour are kept whole, and so are all when the step
-// runs on one thread.
+// Where each worker's part of each colour begins, in its contacts: the first contact of
+// the worker's region. Colours with joints (their runs are ordered by joint, not by body)
+// and the overflow colour are kept whole, and so are all when the step runs on one thread.
 void Solver::split_colors_by_region() {
     const int32_t workers = links_.tasks.worker_count();
     const std::size_t stride = std::size_t(workers) + 1;
@@ -641,25 +640,22 @@ void Solver::split_colors_by_region() {
         return;
     }
     color_parts_.assign(std::size_t(ConstraintColors::count) * stride, -1);
-    const int32_t width = contact_solver_.kernels().width;
     for (int32_t color = 0; color < ConstraintColors::overflow; ++color) {
-        const int32_t first = key_starts_[std::size_t(sort_key(color, 0, false))];
-        const int32_t count = key_starts_[std::size_t(sort_key(color + 1, 0, false))] - first;
+        const int32_t first = key_starts_[std::size_t(sort_key(color, 0))];
+        const int32_t count = key_starts_[std::size_t(sort_key(color + 1, 0))] - first;
         const bool has_joints = joint_color_starts_[std::size_t(color) + 1] > joint_color_starts_[std::size_t(color)];
         if (count == 0 || has_joints) {
             continue;
         }
-        const int32_t blocks = (count + width - 1) / width;
         int32_t* starts = color_parts_.data() + std::size_t(color) * stride;
-        for (int32_t w = 0; w < workers; ++w) {
-            const int32_t contact = key_starts_[std::size_t(sort_key(color, w, false))] - first;
-            starts[w] = std::min((contact + width / 2) / width, blocks);
+        for (int32_t w = 0; w <= workers; ++w) {
+            starts[w] = key_starts_[std::size_t(sort_key(color, w))] - first;
         }
-        starts[workers] = blocks;
     }
 }
 
-// Each stage's shares of each colour run: its colour's parts, or -1 (split evenly).
+// Each stage's shares of each colour run: where its colour's parts begin, or -1 (split
+// evenly).
 void Solver::split_runs_by_region() {
     const int32_t workers = links_.tasks.worker_count();
     const std::size_t stride = std::size_t(workers) + 1;
@@ -669,11 +665,15 @@ void Solver::split_runs_by_region() {
     }
     for (std::size_t run = 0; run < color_runs_.size(); ++run) {
         const ColorRun& r = color_runs_[run];
-        if (r.sequential || r.joint_count > 0 || r.contact_items == 0) {
+        if (r.sequential || r.joint_count > 0 || r.contact_items == 0 ||
+            contact_solver_.part_first_item(r.contact_run, 0) < 0) {
             continue;
         }
-        const int32_t* parts = color_parts_.data() + std::size_t(r.color) * stride;
-        std::copy(parts, parts + stride, run_shares_.data() + run * stride);
+        int32_t* starts = run_shares_.data() + run * stride;
+        for (int32_t w = 0; w < workers; ++w) {
+            starts[w] = contact_solver_.part_first_item(r.contact_run, w);
+        }
+        starts[workers] = r.contact_items;
     }
     std::copy(regions_.starts(), regions_.starts() + stride, run_shares_.data() + color_runs_.size() * stride);
 }

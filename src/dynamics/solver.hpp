@@ -174,7 +174,7 @@ private:
         int32_t key;   // sort_key(): colour, then region, then a single point after the pairs
         int32_t body;  // the lowest state it moves; the state count if it moves none
     };
-    int32_t sort_key(int32_t color, int32_t region, bool single_point) const {
+    int32_t sort_key(int32_t color, int32_t region, bool single_point = false) const {
         return 2 * (color * regions_.count() + region) + (single_point ? 1 : 0);
     }
     std::vector<ColoredContact> colored_contacts_;  // in awake order
