@@ -56,7 +56,9 @@ void StageRunner::run(TaskSystem& tasks, const std::vector<Stage>& stages, bool 
     workers_ = tasks.worker_count();
     reserve(int32_t(active_.size()));
     lay_out_shares();
-    blocks_done_.store(0, std::memory_order_release);
+    for (int32_t w = 0; w < workers_; ++w) {
+        done_[std::size_t(w)].blocks.store(0, std::memory_order_relaxed);
+    }
     tasks.run_on_workers(&work_on, this);
 }
 
@@ -94,6 +96,7 @@ void StageRunner::reserve(int32_t stage_count) {
     capacity_ = (wanted + shares_per_line - 1) / shares_per_line * shares_per_line;
     capacity_workers_ = workers_;
     share_lines_ = std::make_unique<ShareLine[]>(std::size_t(capacity_ / shares_per_line) * std::size_t(workers_));
+    done_ = std::make_unique<DoneCount[]>(std::size_t(workers_));
 }
 
 void StageRunner::work_on(int32_t worker, void* runner) { static_cast<StageRunner*>(runner)->work(worker); }
@@ -102,13 +105,14 @@ void StageRunner::work_on(int32_t worker, void* runner) { static_cast<StageRunne
 // the stages before it are done, so all workers skip the same ones.
 void StageRunner::work(int32_t worker) {
     int32_t blocks_before_next = 0;
+    int32_t done_here = 0;  // blocks this worker did in the run
     for (int32_t s = 0; s < int32_t(active_.size()); ++s) {
         const Stage& stage = active_[std::size_t(s)];
         if (!stage.runs()) {
             continue;
         }
         blocks_before_next += stage_blocks_[std::size_t(s)];
-        int32_t done = count_done(claim_own(stage, s, worker));
+        int32_t done = count_done(worker, done_here, claim_own(stage, s, worker));
         SpinWait spin;
         for (int64_t spins = 1; done < blocks_before_next; ++spins) {
             // Late blocks are taken over only after a short wait: most stages end within
@@ -118,21 +122,31 @@ void StageRunner::work(int32_t worker) {
             if (spins % spins_before_taking_over == 0) {
                 const int32_t taken = take_over(stage, s, worker, spins < spins_before_taking_all ? 1 : 0);
                 if (taken > 0) {
-                    done = count_done(taken);
+                    done = count_done(worker, done_here, taken);
                     continue;
                 }
             }
             spin.once();
-            done = blocks_done_.load(std::memory_order_acquire);
+            done = count_done(worker, done_here, 0);
         }
     }
 }
 
-// The release half publishes this worker's blocks; whoever reads the total that ends the
-// stage acquires them all.
-int32_t StageRunner::count_done(int32_t blocks) {
-    return blocks > 0 ? blocks_done_.fetch_add(blocks, std::memory_order_acq_rel) + blocks
-                      : blocks_done_.load(std::memory_order_acquire);
+// Adds `blocks` to this worker's count and returns the run's. Each count has one writer,
+// so a plain store publishes it: the worker goes on at once, where an atomic add to a
+// count the waiting core is reading would stall it for a round trip between the cores at
+// every stage's end. The release store publishes this worker's blocks; whoever reads the
+// counts that end the stage acquires them all.
+int32_t StageRunner::count_done(int32_t worker, int32_t& done_here, int32_t blocks) {
+    if (blocks > 0) {
+        done_here += blocks;
+        done_[std::size_t(worker)].blocks.store(done_here, std::memory_order_release);
+    }
+    int32_t total = 0;
+    for (int32_t w = 0; w < workers_; ++w) {
+        total += w == worker ? done_here : done_[std::size_t(w)].blocks.load(std::memory_order_acquire);
+    }
+    return total;
 }
 
 int32_t StageRunner::claim_own(const Stage& stage, int32_t s, int32_t worker) {

@@ -12,11 +12,11 @@
 // crossing to the other core each colour. A worker done with its share takes blocks from
 // the back of the others' shares: when one core runs slower for a while (a shared machine,
 // an interrupt), the other takes over its last blocks and the owners keep the rest. A
-// stage ends when the run's count of blocks done reaches the sum of the blocks of the
-// stages so far; each worker adds what it did (once, or again for blocks it took over)
-// and waits for it. On a machine whose cores trade a cache line in hundreds of
-// nanoseconds, that wait, not the work, is what a small stage costs, so it is kept to one
-// shared write and read.
+// stage ends when the blocks the workers have done reach the sum of the blocks of the
+// stages so far; each worker counts what it did (once, or again for blocks it took over)
+// and waits for the others' counts. On a machine whose cores trade a cache line in
+// hundreds of nanoseconds, that wait, not the work, is what a small stage costs, so it is
+// kept to one write of a worker's own line and reads of the others'.
 //
 // A worker never blocks inside a stage, and any subset of the workers, even one, finishes
 // the run: a job system that starts some tasks late, out of order, or runs them one
@@ -95,7 +95,7 @@ private:
     void work(int32_t worker);
     int32_t claim_own(const Stage& stage, int32_t s, int32_t worker);
     int32_t take_over(const Stage& stage, int32_t s, int32_t worker, int32_t leave);
-    int32_t count_done(int32_t blocks);
+    int32_t count_done(int32_t worker, int32_t& done_here, int32_t blocks);
     static int32_t claim_front(Share& share);
     static int32_t claim_back(Share& share, int32_t leave);
     void lay_out_shares();
@@ -117,7 +117,11 @@ private:
     std::unique_ptr<ShareLine[]> share_lines_;
     int32_t capacity_ = 0;  // stages per worker the shares hold
     int32_t capacity_workers_ = 0;
-    alignas(64) std::atomic<int32_t> blocks_done_{0};  // over the run's stages so far
+    // Per worker, on a line of its own: the blocks it did in the run so far.
+    struct alignas(64) DoneCount {
+        std::atomic<int32_t> blocks{0};
+    };
+    std::unique_ptr<DoneCount[]> done_;
 };
 
 }  // namespace i2d
