@@ -4,6 +4,7 @@
 #include "core/stage_runner.hpp"
 
 #include "core/assert.hpp"
+#include "core/cycle_clock.hpp"
 #include "core/spin_wait.hpp"
 
 namespace i2d {
@@ -58,6 +59,7 @@ void StageRunner::run(TaskSystem& tasks, const std::vector<Stage>& stages, bool 
     lay_out_shares();
     for (int32_t w = 0; w < workers_; ++w) {
         done_[std::size_t(w)].blocks.store(0, std::memory_order_relaxed);
+        done_[std::size_t(w)].time = WorkerTime{};
     }
     tasks.run_on_workers(&work_on, this);
 }
@@ -104,6 +106,8 @@ void StageRunner::work_on(int32_t worker, void* runner) { static_cast<StageRunne
 // Every worker walks every stage; whether a stage runs (its run_if) is read only after
 // the stages before it are done, so all workers skip the same ones.
 void StageRunner::work(int32_t worker) {
+    const uint64_t start = cycle_now();
+    uint64_t waited = 0;
     int32_t blocks_before_next = 0;
     int32_t done_here = 0;  // blocks this worker did in the run
     for (int32_t s = 0; s < int32_t(active_.size()); ++s) {
@@ -113,6 +117,10 @@ void StageRunner::work(int32_t worker) {
         }
         blocks_before_next += stage_blocks_[std::size_t(s)];
         int32_t done = count_done(worker, done_here, claim_own(stage, s, worker));
+        if (done >= blocks_before_next) {
+            continue;
+        }
+        const uint64_t wait_start = cycle_now();
         SpinWait spin;
         for (int64_t spins = 1; done < blocks_before_next; ++spins) {
             // Late blocks are taken over only after a short wait: most stages end within
@@ -120,8 +128,10 @@ void StageRunner::work(int32_t worker) {
             // A worker's last block is left to it (it is likely working on the one before)
             // unless the wait goes on long: the worker may not have started at all.
             if (spins % spins_before_taking_over == 0) {
+                const uint64_t taking_start = cycle_now();
                 const int32_t taken = take_over(stage, s, worker, spins < spins_before_taking_all ? 1 : 0);
                 if (taken > 0) {
+                    waited -= cycle_now() - taking_start;  // work, not waiting
                     done = count_done(worker, done_here, taken);
                     continue;
                 }
@@ -129,7 +139,9 @@ void StageRunner::work(int32_t worker) {
             spin.once();
             done = count_done(worker, done_here, 0);
         }
+        waited += cycle_now() - wait_start;
     }
+    done_[std::size_t(worker)].time = WorkerTime{done_here, cycle_now() - start - waited};
 }
 
 // Adds `blocks` to this worker's count and returns the run's. Each count has one writer,

@@ -74,6 +74,15 @@ public:
     /// thread (each stage as one block) when `parallel` is false or there is one worker.
     void run(TaskSystem& tasks, const std::vector<Stage>& stages, bool parallel);
 
+    /// What worker `worker` did in the last parallel run: the blocks it ran (its own and
+    /// those it took over) and the time it spent on them, in cycle_now() ticks (waits
+    /// left out). A worker that found nothing to do ran 0 blocks.
+    struct WorkerTime {
+        int32_t blocks = 0;
+        uint64_t busy = 0;
+    };
+    WorkerTime worker_time(int32_t worker) const { return done_[std::size_t(worker)].time; }
+
 private:
     // A worker's share of one stage's blocks, numbered from its share's first item:
     // [front, end) are still unclaimed, front in the low half, end in the high half. The
@@ -117,9 +126,11 @@ private:
     std::unique_ptr<ShareLine[]> share_lines_;
     int32_t capacity_ = 0;  // stages per worker the shares hold
     int32_t capacity_workers_ = 0;
-    // Per worker, on a line of its own: the blocks it did in the run so far.
+    // Per worker, on a line of its own: the blocks it did in the run so far, and its time
+    // when the run ends.
     struct alignas(64) DoneCount {
         std::atomic<int32_t> blocks{0};
+        WorkerTime time;
     };
     std::unique_ptr<DoneCount[]> done_;
 };

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // BodyRegions: the awake bodies cut into one run of consecutive states per worker, so
-// that every stage of the solver gives each worker the same bodies.
+// that every stage of the solver gives each worker the same bodies; RegionBalance: how
+// much of the work each run gets, from the workers' speeds.
 //
 // A shared step hands data from core to core wherever a body one worker moved in a stage
 // is moved by another in the next. Split evenly, each colour's share began at a different
@@ -20,11 +21,12 @@ namespace i2d {
 
 class BodyRegions {
 public:
-    /// Cuts states [0, body_count) into `regions` runs of about the same work: each body
-    /// weighs 1 and each contact contact_weight, on the lowest body it moves.
-    /// contacts_before[b] is the number of contacts whose lowest body is below b, for b
-    /// in [0, body_count].
-    void cut(int32_t regions, const int32_t* contacts_before, int32_t body_count);
+    /// Cuts states [0, body_count) into `regions` runs of work: each body weighs 1 and
+    /// each contact contact_weight, on the lowest body it moves. contacts_before[b] is the
+    /// number of contacts whose lowest body is below b, for b in [0, body_count]. Region r
+    /// gets shares[r] of the work (`regions` shares summing to 1), or an even share when
+    /// shares is null.
+    void cut(int32_t regions, const int32_t* contacts_before, int32_t body_count, const double* shares = nullptr);
 
     int32_t count() const { return int32_t(starts_.size()) - 1; }
     /// The region of state `body`; a state past the last body is in the last region.
@@ -40,6 +42,44 @@ public:
 
 private:
     std::vector<int32_t> starts_{0, 0};
+};
+
+/// Each worker's share of the work, from how fast it ran its blocks. On a shared machine
+/// one vCPU can run a third slower than the other for minutes (its core busy with another
+/// guest), and which one changes. Cut evenly, every stage then waits for the slower
+/// worker, or the faster one takes over its last blocks, whose data it must fetch from the
+/// other core (and hand back in the next colour). Cut by speed, the stages end together.
+/// Timing decides only which worker moves which bodies: the order of a colour's contacts
+/// changes no bit of a result, so the world's results stay the same for any cut.
+class RegionBalance {
+public:
+    /// Notes what each worker did in a run: the blocks it ran and the time it was busy
+    /// (StageRunner::worker_time). Workers that ran no block are left out.
+    void note_run(const int32_t* blocks, const uint64_t* busy, int32_t workers);
+    /// Whether the shares moved far enough from those of the last cut to cut again.
+    bool wants_cut() const;
+    /// Each of `workers` workers' share of the work, summing to 1; null unless the runs
+    /// noted had that many workers.
+    const double* shares(int32_t workers) const {
+        return int32_t(shares_.size()) == workers ? shares_.data() : nullptr;
+    }
+    /// The regions were cut with shares().
+    void cut_made();
+
+    /// The weight of a run's speeds against those before: over about 10 runs.
+    static constexpr double smoothing = 0.1;
+    /// A share moves at most this far from even (of an even share): a worker that was
+    /// descheduled for a run does not lose its region.
+    static constexpr double max_tilt = 0.5;
+    /// A new cut needs a share this far from the last cut's (of the whole work)...
+    static constexpr double cut_threshold = 0.03;
+    /// ... and this many runs since: a cut rewrites the solver's layout.
+    static constexpr int32_t runs_between_cuts = 30;
+
+private:
+    std::vector<double> rates_;  // per worker: blocks per unit of busy time, smoothed
+    std::vector<double> shares_, cut_shares_;
+    int32_t runs_since_cut_ = 0;
 };
 
 }  // namespace i2d

@@ -99,8 +99,24 @@ void Solver::step(float time_step, int32_t substep_count) {
     build_stages(substep_count);
     point_stages_at_shares();
     runner_.run(links_.tasks, stages_, parallel_);
+    if (parallel_) {
+        note_worker_times();
+    }
     joint_solver_.report_breaking(links_.joints, links_.events.ids, links_.events.current.joint_events);
     finish_bodies();
+}
+
+// How fast each worker ran its blocks this step, for the next cut of the regions.
+void Solver::note_worker_times() {
+    const int32_t workers = links_.tasks.worker_count();
+    worker_blocks_.resize(std::size_t(workers));
+    worker_busy_.resize(std::size_t(workers));
+    for (int32_t w = 0; w < workers; ++w) {
+        const StageRunner::WorkerTime time = runner_.worker_time(w);
+        worker_blocks_[std::size_t(w)] = time.blocks;
+        worker_busy_[std::size_t(w)] = time.busy;
+    }
+    balance_.note_run(worker_blocks_.data(), worker_busy_.data(), workers);
 }
 
 ContactLayout Solver::contact_layout() const {
@@ -482,7 +498,7 @@ bool Solver::color_constraints() {
     const int32_t awake_bodies = int32_t(links_.islands.awake_bodies().size());
     const int32_t regions = parallel_ ? links_.tasks.worker_count() : 1;
     if (colored_ && version == colored_version_ && awake_bodies == colored_body_count_ && !joints_differ &&
-        regions == regions_.count()) {
+        regions == regions_.count() && (regions == 1 || !balance_.wants_cut())) {
         return false;  // nothing the colours depend on changed: a resting pile keeps them
     }
     colored_ = true;
@@ -580,7 +596,10 @@ void Solver::color_contacts(int32_t regions) {
     for (int32_t k = 0; k <= colored_body_count_; ++k) {
         body_starts_[std::size_t(k) + 1] += body_starts_[std::size_t(k)];
     }
-    regions_.cut(regions, body_starts_.data(), colored_body_count_);
+    regions_.cut(regions, body_starts_.data(), colored_body_count_, balance_.shares(regions));
+    if (regions > 1) {
+        balance_.cut_made();
+    }
     const int32_t key_count = sort_key(ConstraintColors::count, 0);
     key_starts_.assign(std::size_t(key_count) + 1, 0);
     for (ColoredContact& c : colored_contacts_) {

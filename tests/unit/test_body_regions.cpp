@@ -1,8 +1,11 @@
 // SPDX-License-Identifier: MIT
 // BodyRegions: the cuts split the work (a body 1, a contact contact_weight on its lowest
-// body) as evenly as whole bodies allow, every body falls in the region whose run holds
-// it, and more regions than bodies leave some empty rather than fail.
+// body) as evenly as whole bodies allow, or in the shares asked for, every body falls in
+// the region whose run holds it, and more regions than bodies leave some empty rather than
+// fail. RegionBalance: a faster worker's share grows to its speed, within the tilt allowed,
+// and a new cut is asked for only past the threshold and the runs between cuts.
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <cstdlib>
 #include <vector>
@@ -11,6 +14,7 @@
 #include "dynamics/body_regions.hpp"
 
 using i2d::BodyRegions;
+using i2d::RegionBalance;
 
 namespace {
 
@@ -40,7 +44,77 @@ int64_t heaviest_body(const std::vector<int32_t>& per_body) {
     return heaviest;
 }
 
+// Notes `runs` runs in which each worker ran `blocks` blocks at its own speed (ticks per
+// block).
+void note_runs(RegionBalance& balance, const std::vector<uint64_t>& ticks_per_block, int32_t runs,
+               int32_t blocks = 100) {
+    const int32_t workers = int32_t(ticks_per_block.size());
+    std::vector<int32_t> done(std::size_t(workers), blocks);
+    std::vector<uint64_t> busy(std::size_t(workers), 0);
+    for (int32_t w = 0; w < workers; ++w) {
+        busy[std::size_t(w)] = uint64_t(blocks) * ticks_per_block[std::size_t(w)];
+    }
+    for (int32_t run = 0; run < runs; ++run) {
+        balance.note_run(done.data(), busy.data(), workers);
+    }
+}
+
 }  // namespace
+
+I2D_TEST(unit_body_regions_cut_in_the_shares_asked_for) {
+    const std::vector<int32_t> per_body(2000, 1);
+    const std::vector<int32_t> before = contacts_before(per_body);
+    const int64_t total = work_of(per_body, 0, 2000);
+    const int64_t body = 1 + BodyRegions::contact_weight;
+    const double shares[] = {0.3, 0.5, 0.2};
+    BodyRegions cut;
+    cut.cut(3, before.data(), 2000, shares);
+    for (int32_t r = 0; r < 3; ++r) {
+        const int64_t share = work_of(per_body, cut.starts()[r], cut.starts()[r + 1]);
+        I2D_CHECK(std::llabs(share - int64_t(shares[r] * double(total))) <= 2 * body);
+    }
+    I2D_CHECK(cut.starts()[3] == 2000);
+}
+
+I2D_TEST(unit_region_balance_gives_the_faster_worker_more) {
+    RegionBalance balance;
+    I2D_CHECK(balance.shares(2) == nullptr);  // nothing noted yet
+    // Worker 1 runs a block in half the time of worker 0: two thirds of the work.
+    note_runs(balance, {200, 100}, 60);
+    const double* shares = balance.shares(2);
+    I2D_REQUIRE(shares != nullptr);
+    I2D_CHECK(std::fabs(shares[0] - 1.0 / 3.0) < 0.01);
+    I2D_CHECK(std::fabs(shares[0] + shares[1] - 1.0) < 1e-9);
+    I2D_CHECK(balance.shares(3) == nullptr);
+    I2D_CHECK(balance.wants_cut());
+    balance.cut_made();
+    I2D_CHECK(!balance.wants_cut());
+    // A worker ten times slower keeps the least share allowed.
+    RegionBalance tilted;
+    note_runs(tilted, {1000, 100}, 60);
+    I2D_CHECK(std::fabs(tilted.shares(2)[0] - (1.0 - RegionBalance::max_tilt) / 2.0) < 1e-9);
+}
+
+I2D_TEST(unit_region_balance_waits_for_runs_and_a_real_difference) {
+    RegionBalance same;
+    note_runs(same, {100, 101, 99}, 100);
+    I2D_CHECK(!same.wants_cut());  // within the threshold
+    RegionBalance early;
+    note_runs(early, {300, 100}, RegionBalance::runs_between_cuts - 1);
+    I2D_CHECK(!early.wants_cut());  // not yet
+    note_runs(early, {300, 100}, 1);
+    I2D_CHECK(early.wants_cut());
+    // A worker that ran no block (its task started after the others had finished) says
+    // nothing of its speed: the shares stay where the runs with both put them.
+    RegionBalance idle;
+    note_runs(idle, {100, 100}, 40);
+    const std::vector<int32_t> blocks = {100, 0};
+    const std::vector<uint64_t> busy = {10000, 0};
+    for (int32_t run = 0; run < 40; ++run) {
+        idle.note_run(blocks.data(), busy.data(), 2);
+    }
+    I2D_CHECK(std::fabs(idle.shares(2)[0] - 0.5) < 1e-9);
+}
 
 I2D_TEST(unit_body_regions_share_the_work_within_one_body) {
     // Contacts crowded at the start (a pile on the ground, then falling bodies).

@@ -157,6 +157,33 @@ I2D_TEST(unit_stage_runner_splits_at_the_owners_share_starts) {
     }
 }
 
+// What each worker reports it did adds up to every block of the run, once; a worker that
+// ran blocks was busy for some time.
+I2D_TEST(unit_stage_runner_reports_the_blocks_each_worker_ran) {
+    constexpr int32_t item_count = 1000, stage_count = 10;
+    for (const int32_t workers : {2, 3, 4}) {
+        i2d::TaskSystem tasks(workers, i2d::TaskCallbacks{});
+        i2d::StageRunner runner;
+        Ledger ledger(item_count);
+        ledger.workers = workers;
+        const std::vector<Stage> stages = advancing_stages(ledger, stage_count, item_count, workers, 16);
+        runner.run(tasks, stages, true);
+        int32_t blocks = 0;
+        for (const Stage& stage : stages) {
+            blocks += stage.block_count();
+        }
+        int32_t reported = 0;
+        for (int32_t w = 0; w < workers; ++w) {
+            const i2d::StageRunner::WorkerTime time = runner.worker_time(w);
+            I2D_CHECK(time.blocks >= 0);
+            I2D_CHECK(time.blocks == 0 || time.busy > 0);
+            reported += time.blocks;
+        }
+        I2D_CHECK(reported == blocks);
+        I2D_CHECK(items_left_behind(ledger, stage_count) == 0);
+    }
+}
+
 I2D_TEST(unit_stage_runner_skips_a_stage_an_earlier_stage_turned_off) {
     for (const int32_t workers : {1, 2, 4}) {
         i2d::TaskSystem tasks(workers, i2d::TaskCallbacks{});
