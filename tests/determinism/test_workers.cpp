@@ -211,7 +211,7 @@ I2D_TEST(det_workers_fast_bullets_give_the_same_bits_for_every_count) {
 }
 
 I2D_TEST(det_workers_tall_pyramid_gives_the_same_bits_for_every_count) {
-    check_setups_agree(50, false, det::tall_pyramid);
+    check_setups_agree(30, false, det::tall_pyramid);
 }
 
 // The hash of a run in this process equals that of the same run in a new process (the
