@@ -181,6 +181,9 @@ I2D_TEST(unit_stage_runner_reports_the_blocks_each_worker_ran) {
         }
         I2D_CHECK(reported == blocks);
         I2D_CHECK(items_left_behind(ledger, stage_count) == 0);
+        // A run on the calling thread reports no worker's time.
+        runner.run(tasks, stages, false);
+        I2D_CHECK(runner.worker_time(0).blocks == 0 && runner.worker_time(1).blocks == 0);
     }
 }
 
