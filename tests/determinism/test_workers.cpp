@@ -148,8 +148,10 @@ int first_difference(const BinRun& a, const BinRun& b) {
     return a.hashes.size() == b.hashes.size() ? -1 : 0;
 }
 
+// Runs the scene with 1 worker and with the first setup_count setups (all by default).
 void check_setups_agree(int steps, bool until_asleep,
-                        i2d_world_id (*build)(const i2d_world_def&) = det::sleeping_bin) {
+                        i2d_world_id (*build)(const i2d_world_def&) = det::sleeping_bin,
+                        std::size_t setup_count = sizeof setups / sizeof setups[0]) {
     const BinRun expected = run_bin(reference, steps, until_asleep, build);
     I2D_REQUIRE(!expected.hashes.empty());
     if (until_asleep) {
@@ -157,7 +159,8 @@ void check_setups_agree(int steps, bool until_asleep,
                 expected.hash_asleep);
         I2D_REQUIRE(expected.asleep_at > 0);
     }
-    for (const WorkerSetup& setup : setups) {
+    for (std::size_t k = 0; k < setup_count; ++k) {
+        const WorkerSetup& setup = setups[k];
         const BinRun got = run_bin(setup, steps, until_asleep, build);
         const int differs = first_difference(got, expected);
         fprintf(stderr, "    %s: asleep after %d, hash %016" PRIx64 ", first difference %d, job system ran %d tasks\n",
@@ -210,8 +213,11 @@ I2D_TEST(det_workers_fast_bullets_give_the_same_bits_for_every_count) {
     check_setups_agree(120, false, det::bullet_room);
 }
 
-I2D_TEST(det_workers_tall_pyramid_gives_the_same_bits_for_every_count) {
-    check_setups_agree(30, false, det::tall_pyramid);
+// With 2 and 3 built-in workers only: the parts do not depend on the job system (the bin's
+// test runs every setup), and the suite's largest scene stays short under the sanitizers
+// and the emulator.
+I2D_TEST(det_workers_tall_pyramid_gives_the_same_bits_with_2_and_3_workers) {
+    check_setups_agree(30, false, det::tall_pyramid, 2);
 }
 
 // The hash of a run in this process equals that of the same run in a new process (the
