@@ -37,7 +37,7 @@ Stage make_stage(Stage::Fn fn, void* owner, int32_t item_count, int32_t workers,
 }
 
 void StageRunner::run(TaskSystem& tasks, const std::vector<Stage>& stages, bool parallel) {
-    timed_workers_ = 0;
+    times_.clear();
     if (!parallel || tasks.worker_count() == 1) {
         for (const Stage& stage : stages) {
             if (stage.runs()) {
@@ -63,11 +63,9 @@ void StageRunner::run(TaskSystem& tasks, const std::vector<Stage>& stages, bool 
         done_[std::size_t(w)].time = WorkerTime{};
     }
     tasks.run_on_workers(&work_on, this);
-    timed_workers_ = workers_;
-}
-
-StageRunner::WorkerTime StageRunner::worker_time(int32_t worker) const {
-    return worker < timed_workers_ ? done_[std::size_t(worker)].time : WorkerTime{};
+    for (int32_t w = 0; w < workers_; ++w) {
+        times_.push_back(done_[std::size_t(w)].time);
+    }
 }
 
 // Each worker's share of every stage: the owner's split, or the blocks split evenly.

@@ -74,15 +74,15 @@ public:
     /// thread (each stage as one block) when `parallel` is false or there is one worker.
     void run(TaskSystem& tasks, const std::vector<Stage>& stages, bool parallel);
 
-    /// What worker `worker` did in the last run: the blocks it ran (its own and those it
+    /// What each worker did in the last run: the blocks it ran (its own and those it
     /// took over) and the time it spent on them, in cycle_now() ticks (waits left out).
-    /// A worker that found nothing to do, or a run inline or without stages, gives 0
-    /// blocks.
+    /// A worker that found nothing to do ran 0 blocks; a run inline or without stages
+    /// leaves the list empty.
     struct WorkerTime {
         int32_t blocks = 0;
         uint64_t busy = 0;
     };
-    WorkerTime worker_time(int32_t worker) const;
+    const std::vector<WorkerTime>& worker_times() const { return times_; }
 
 private:
     // A worker's share of one stage's blocks, numbered from its share's first item:
@@ -134,7 +134,7 @@ private:
         WorkerTime time;
     };
     std::unique_ptr<DoneCount[]> done_;
-    int32_t timed_workers_ = 0;  // workers whose time the last run set
+    std::vector<WorkerTime> times_;  // the last run's, gathered from done_
 };
 
 }  // namespace i2d

@@ -35,7 +35,7 @@ void BodyRegions::cut(int32_t regions, const int32_t* contacts_before, int32_t b
     starts_[std::size_t(regions)] = body_count;
 }
 
-void RegionBalance::note_run(const int32_t* blocks, const uint64_t* busy, int32_t workers) {
+void RegionBalance::note_run(const StageRunner::WorkerTime* times, int32_t workers) {
     if (int32_t(rates_.size()) != workers) {
         rates_.assign(std::size_t(workers), 0.0);
         shares_.assign(std::size_t(workers), 1.0 / double(workers));
@@ -44,10 +44,11 @@ void RegionBalance::note_run(const int32_t* blocks, const uint64_t* busy, int32_
     }
     ++runs_since_cut_;
     for (int32_t w = 0; w < workers; ++w) {
-        if (blocks[w] == 0 || busy[w] == 0) {
+        const StageRunner::WorkerTime& time = times[w];
+        if (time.blocks == 0 || time.busy == 0) {
             continue;
         }
-        const double rate = double(blocks[w]) / double(busy[w]);
+        const double rate = double(time.blocks) / double(time.busy);
         double& smoothed = rates_[std::size_t(w)];
         smoothed = smoothed == 0.0 ? rate : smoothed + smoothing * (rate - smoothed);
     }

@@ -17,6 +17,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "core/stage_runner.hpp"
+
 namespace i2d {
 
 class BodyRegions {
@@ -53,9 +55,9 @@ private:
 /// changes no bit of a result, so the world's results stay the same for any cut.
 class RegionBalance {
 public:
-    /// Notes what each worker did in a run: the blocks it ran and the time it was busy
-    /// (StageRunner::worker_time). Workers that ran no block are left out.
-    void note_run(const int32_t* blocks, const uint64_t* busy, int32_t workers);
+    /// Notes what each of `workers` workers did in a run (StageRunner::worker_times).
+    /// Workers that ran no block are left out.
+    void note_run(const StageRunner::WorkerTime* times, int32_t workers);
     /// Whether the shares moved far enough from those of the last cut to cut again.
     bool wants_cut() const;
     /// Each of `workers` workers' share of the work, summing to 1; null unless the runs

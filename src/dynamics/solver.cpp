@@ -99,24 +99,13 @@ void Solver::step(float time_step, int32_t substep_count) {
     build_stages(substep_count);
     point_stages_at_shares();
     runner_.run(links_.tasks, stages_, parallel_);
-    if (parallel_) {
-        note_worker_times();
+    const std::vector<StageRunner::WorkerTime>& times = runner_.worker_times();
+    if (!times.empty()) {
+        // How fast each worker ran its blocks, for the next cut of the regions.
+        balance_.note_run(times.data(), int32_t(times.size()));
     }
     joint_solver_.report_breaking(links_.joints, links_.events.ids, links_.events.current.joint_events);
     finish_bodies();
-}
-
-// How fast each worker ran its blocks this step, for the next cut of the regions.
-void Solver::note_worker_times() {
-    const int32_t workers = links_.tasks.worker_count();
-    worker_blocks_.resize(std::size_t(workers));
-    worker_busy_.resize(std::size_t(workers));
-    for (int32_t w = 0; w < workers; ++w) {
-        const StageRunner::WorkerTime time = runner_.worker_time(w);
-        worker_blocks_[std::size_t(w)] = time.blocks;
-        worker_busy_[std::size_t(w)] = time.busy;
-    }
-    balance_.note_run(worker_blocks_.data(), worker_busy_.data(), workers);
 }
 
 ContactLayout Solver::contact_layout() const {
@@ -684,8 +673,8 @@ void Solver::split_runs_by_region() {
     }
     for (std::size_t run = 0; run < color_runs_.size(); ++run) {
         const ColorRun& r = color_runs_[run];
-        if (r.sequential || r.joint_count > 0 || r.contact_items == 0 ||
-            contact_solver_.part_first_item(r.contact_run, 0) < 0) {
+        // Colours with joints were kept whole (split_colors_by_region): no parts.
+        if (r.sequential || r.contact_items == 0 || contact_solver_.part_first_item(r.contact_run, 0) < 0) {
             continue;
         }
         int32_t* starts = run_shares_.data() + run * stride;

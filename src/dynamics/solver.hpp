@@ -105,7 +105,6 @@ private:
     ContactLayout contact_layout() const;
     void finish_bodies();
     void order_by_body();
-    void note_worker_times();
     void split_colors_by_region();
     void split_runs_by_region();
     void point_stages_at_shares();
@@ -194,8 +193,6 @@ private:
     // after those of the regions before (one region when the step runs on one thread).
     BodyRegions regions_;
     RegionBalance balance_;  // how much of the work each region gets
-    std::vector<int32_t> worker_blocks_;
-    std::vector<uint64_t> worker_busy_;
     std::vector<int32_t> color_parts_;  // per colour, workers + 1: ContactLayout::color_parts
     // Per colour run, worker_count + 1 entries: the item where each worker's share begins,
     // or -1 throughout where the run is split evenly; then the same for the body stages.

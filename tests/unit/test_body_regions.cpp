@@ -48,14 +48,12 @@ int64_t heaviest_body(const std::vector<int32_t>& per_body) {
 // block).
 void note_runs(RegionBalance& balance, const std::vector<uint64_t>& ticks_per_block, int32_t runs,
                int32_t blocks = 100) {
-    const int32_t workers = int32_t(ticks_per_block.size());
-    std::vector<int32_t> done(std::size_t(workers), blocks);
-    std::vector<uint64_t> busy(std::size_t(workers), 0);
-    for (int32_t w = 0; w < workers; ++w) {
-        busy[std::size_t(w)] = uint64_t(blocks) * ticks_per_block[std::size_t(w)];
+    std::vector<i2d::StageRunner::WorkerTime> times;
+    for (const uint64_t ticks : ticks_per_block) {
+        times.push_back({blocks, uint64_t(blocks) * ticks});
     }
     for (int32_t run = 0; run < runs; ++run) {
-        balance.note_run(done.data(), busy.data(), workers);
+        balance.note_run(times.data(), int32_t(times.size()));
     }
 }
 
@@ -108,10 +106,9 @@ I2D_TEST(unit_region_balance_waits_for_runs_and_a_real_difference) {
     // nothing of its speed: the shares stay where the runs with both put them.
     RegionBalance idle;
     note_runs(idle, {100, 100}, 40);
-    const std::vector<int32_t> blocks = {100, 0};
-    const std::vector<uint64_t> busy = {10000, 0};
+    const i2d::StageRunner::WorkerTime times[] = {{100, 10000}, {0, 0}};
     for (int32_t run = 0; run < 40; ++run) {
-        idle.note_run(blocks.data(), busy.data(), 2);
+        idle.note_run(times, 2);
     }
     I2D_CHECK(std::fabs(idle.shares(2)[0] - 0.5) < 1e-9);
 }

@@ -172,9 +172,10 @@ I2D_TEST(unit_stage_runner_reports_the_blocks_each_worker_ran) {
         for (const Stage& stage : stages) {
             blocks += stage.block_count();
         }
+        I2D_REQUIRE(runner.worker_times().size() == std::size_t(workers));
         int32_t reported = 0;
         for (int32_t w = 0; w < workers; ++w) {
-            const i2d::StageRunner::WorkerTime time = runner.worker_time(w);
+            const i2d::StageRunner::WorkerTime time = runner.worker_times()[std::size_t(w)];
             I2D_CHECK(time.blocks >= 0);
             I2D_CHECK(time.blocks == 0 || time.busy > 0);
             reported += time.blocks;
@@ -183,7 +184,7 @@ I2D_TEST(unit_stage_runner_reports_the_blocks_each_worker_ran) {
         I2D_CHECK(items_left_behind(ledger, stage_count) == 0);
         // A run on the calling thread reports no worker's time.
         runner.run(tasks, stages, false);
-        I2D_CHECK(runner.worker_time(0).blocks == 0 && runner.worker_time(1).blocks == 0);
+        I2D_CHECK(runner.worker_times().empty());
     }
 }
 
