@@ -12,7 +12,7 @@
 
 #include <impulse2d/impulse2d.h>
 
-#include "dynamics/world.hpp"
+#include "dynamics/world/world.hpp"
 #include "handles.hpp"
 #include "status.hpp"
 

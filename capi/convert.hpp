@@ -8,8 +8,8 @@
 
 #include "collision/geometry.hpp"
 #include "collision/shapes.hpp"
-#include "dynamics/mixing.hpp"
-#include "dynamics/shape.hpp"
+#include "dynamics/contact/mixing.hpp"
+#include "dynamics/body/shape.hpp"
 #include "math/vec2.hpp"
 
 namespace i2d::capi {

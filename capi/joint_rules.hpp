@@ -15,7 +15,7 @@
 #include "boundary.hpp"
 #include "convert.hpp"
 #include "dynamics/constants.hpp"
-#include "dynamics/joint.hpp"
+#include "dynamics/joint/joint.hpp"
 
 namespace i2d::capi::joint_rules {
 

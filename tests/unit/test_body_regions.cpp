@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "check.h"
-#include "dynamics/body_regions.hpp"
+#include "dynamics/solver/body_regions.hpp"
 
 using i2d::BodyRegions;
 using i2d::RegionBalance;

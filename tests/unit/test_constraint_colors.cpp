@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "check.h"
-#include "dynamics/constraint_colors.hpp"
+#include "dynamics/solver/constraint_colors.hpp"
 #include "test_rng.hpp"
 
 using i2d::ConstraintColors;

@@ -8,7 +8,7 @@
 #include "collision/hull.hpp"
 #include "collision/manifold.hpp"
 #include "dynamics/constants.hpp"
-#include "dynamics/contact.hpp"
+#include "dynamics/contact/contact.hpp"
 
 using namespace i2d;
 

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "check.h"
-#include "dynamics/joint_tree.hpp"
+#include "dynamics/joint/joint_tree.hpp"
 
 using namespace i2d;
 

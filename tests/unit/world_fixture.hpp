@@ -4,7 +4,7 @@
 #define I2D_TESTS_UNIT_WORLD_FIXTURE_HPP
 
 #include "collision/hull.hpp"
-#include "dynamics/world.hpp"
+#include "dynamics/world/world.hpp"
 
 namespace unit {
 

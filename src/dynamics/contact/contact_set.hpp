@@ -1,0 +1,166 @@
+// SPDX-License-Identifier: MIT
+// ContactSet: every contact, the pair set that finds them, the awake contact list and the
+// narrowphase that updates their manifolds.
+//
+// Design note: a contact exists while its shapes' fat boxes overlap; it is in the awake
+// list while one of its bodies is awake, and only awake contacts are updated, so that a
+// sleeping pile costs nothing. The narrowphase runs once per step, before the solver,
+// and records what the islands need to hear (contacts that gained or lost points, bodies
+// asleep that something reached); the world passes that on. Touching, for events,
+// describes where the step left the bodies: the solver reports it per contact at the end
+// of the step, and end_step turns changes into begin and end events.
+//
+// Threads: the narrowphase and the pair queries are shared by the world's workers. A
+// contact's update writes only the contact; what the islands must hear it leaves in a
+// flag byte per awake contact, and the pairs each block of queries finds go to that
+// block's list. One thread then reads the flags and the lists in order, so the results
+// are the same for any number of workers.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "broadphase/broad_phase.hpp"
+#include "core/hash_set.hpp"
+#include "core/pool.hpp"
+#include "core/stage_runner.hpp"
+#include "core/task_system.hpp"
+#include "dynamics/body/body.hpp"
+#include "dynamics/contact/contact.hpp"
+#include "dynamics/world/events.hpp"
+#include "dynamics/body/shape.hpp"
+#include "dynamics/world/world_def.hpp"
+
+namespace i2d {
+
+class Islands;
+class JointSet;
+
+class ContactSet {
+public:
+    ContactSet(const WorldDef& settings, Pool<Body>& bodies, const Pool<Shape>& shapes, const JointSet& joints,
+               Islands& islands, EventRecorder& events, TaskSystem& tasks)
+        : settings_(settings),
+          bodies_(bodies),
+          shapes_(shapes),
+          joints_(joints),
+          islands_(islands),
+          events_(events),
+          tasks_(tasks) {}
+
+    Pool<Contact>& pool() { return contacts_; }
+    const Pool<Contact>& pool() const { return contacts_; }
+    const std::vector<int32_t>& awake() const { return awake_; }
+    /// The awake solid contacts with points, in awake order, from this step's narrowphase
+    /// on (bodies woken after it add theirs): all the solver colours. Most awake contacts
+    /// of a tumbling heap have none, and need not be read again.
+    const std::vector<int32_t>& solvable() const { return solvable_; }
+    /// Changes whenever what the solver's colouring reads changes: the awake list, a
+    /// contact's point count, its bodies' solver states, its material (whether any
+    /// contact is elastic). Equal versions, equal colours.
+    uint64_t layout_version() const { return layout_version_; }
+
+    /// New pairs from the broadphase's moved proxies; pairs that may not collide (one
+    /// body, two bodies that cannot move each other, two sensors, filters) get none.
+    void find_new_contacts(BroadPhase& broad_phase);
+    /// The narrowphase over the awake contacts; time_step predicts how far bodies can
+    /// approach. Afterwards islands_to_wake() and link_changes() say what changed.
+    void collide(float time_step);
+    const std::vector<int32_t>& islands_to_wake() const { return islands_to_wake_; }
+    /// After the islands woke: contacts that gained or lost points join or leave islands.
+    void update_links();
+    /// Begin and end events from the touching flags the solver left, and destruction of
+    /// the contacts whose fat boxes parted.
+    void end_step();
+
+    /// Destroys the shape's contacts between steps (all, or those its filter now forbids).
+    void destroy_contacts_of_shape(int32_t shape, bool only_filtered_out);
+    /// Called between steps when a joint starts keeping two bodies apart.
+    void destroy_contacts_between(int32_t body_a, int32_t body_b);
+    /// The body's centre of mass moved within it (its shapes changed): its manifolds'
+    /// anchors are stale and must be made afresh.
+    void forget_manifolds(int32_t body);
+    /// The shape's friction or restitution changed: its contacts mix them again.
+    void mix_materials_of_shape(int32_t shape);
+    /// A body woke: its contacts join the awake list, with its new solver state.
+    void body_woke(int32_t body);
+    /// A body fell asleep: its contacts with nothing awake leave the awake list.
+    void body_slept(int32_t body);
+    /// Calls visit(contact, other_body) for each contact of the body; visit must not
+    /// destroy contacts.
+    template <class Visit>
+    void visit_contacts(int32_t body, Visit&& visit) const {
+        for (int32_t key = bodies_[body].head_contact_key; key != null_index;) {
+            const Contact& c = contacts_[contact_of_key(key)];
+            const int32_t next = c.edges[edge_of_key(key)].next_key;
+            visit(contact_of_key(key), c.edges[edge_of_key(key) ^ 1].body);
+            key = next;
+        }
+    }
+    /// Calls visit(other_body) for each contact that links the body into its island.
+    template <class Visit>
+    void visit_links(int32_t body, Visit&& visit) const {
+        visit_contacts(body, [&](int32_t contact, int32_t other) {
+            if (contacts_[contact].flags & contact_island_link) {
+                visit(other);
+            }
+        });
+    }
+
+    /// Touching contacts (sensors excluded) after the last step.
+    int32_t touching_count() const;
+    void validate() const;
+
+private:
+    void create_contact(int32_t shape_a, int32_t shape_b);
+    void destroy_contact(int32_t contact, bool during_step);
+    void add_awake(int32_t contact);
+    void remove_awake(int32_t contact);
+    void mix_material(Contact& contact, const Shape& a, const Shape& b) const;
+    bool recycle(Contact& contact, const Body& a, const Body& b) const;
+    void update_contact(Contact& contact, const Shape& a, const Shape& b, float time_step);
+    uint8_t point_change_flags(const Contact& contact, bool had_points) const;
+    void prefetch_for_collide(int32_t k, int32_t count) const;
+    uint8_t collide_one(int32_t k, float time_step);
+    static void collide_range(void* set, const Stage& stage, int32_t begin, int32_t end, int32_t worker);
+    template <bool SelfSearch>
+    static void pair_range(void* set, const Stage& stage, int32_t begin, int32_t end, int32_t worker);
+    static void end_range(void* set, const Stage& stage, int32_t begin, int32_t end, int32_t worker);
+    void run_over_awake(Stage::Fn fn);
+    bool may_pair(int32_t shape_a, int32_t shape_b) const;
+    void report_touch_changes(const Contact& contact, bool touching_now);
+    void report_hit(const Contact& contact);
+    Manifold manifold_of(const Contact& contact) const;
+    ShapePairEvent event_of(const Contact& contact) const;
+
+    const WorldDef& settings_;
+    Pool<Body>& bodies_;
+    const Pool<Shape>& shapes_;
+    const JointSet& joints_;
+    Islands& islands_;
+    EventRecorder& events_;
+    TaskSystem& tasks_;
+    Pool<Contact> contacts_;
+    HashSet pair_set_;  // pair_key of the shapes of every contact
+    std::vector<int32_t> awake_;
+    std::vector<int32_t> solvable_;
+    uint64_t layout_version_ = 0;
+    // Step scratch, kept so that a steady state allocates nothing.
+    std::vector<ShapePairCandidate> new_pairs_;
+    std::vector<int32_t> islands_to_wake_;
+    std::vector<int32_t> point_changes_;  // contacts that gained or lost all their points
+    // Per awake contact, what its update found for the islands (CollideFlags), and at
+    // the end of the step what must happen to it (EndFlags).
+    enum CollideFlags : uint8_t { layout_changed = 1, points_changed = 2, wakes_a = 4, wakes_b = 8, has_points = 16 };
+    enum EndFlags : uint8_t { ends = 1, reports = 2, hits = 4 };
+    std::vector<uint8_t> collide_flags_;
+    // New pairs per block of each pair-finding stage: [0] the self search, [1] the queries.
+    std::vector<std::vector<ShapePairCandidate>> block_pairs_[2];
+    std::vector<ShapePairCandidate> new_pairs_scratch_;
+    BroadPhase* querying_ = nullptr;  // while the pair queries run
+    float time_step_ = 0.0f;
+    std::vector<Stage> stages_;
+    StageRunner runner_;
+};
+
+}  // namespace i2d

@@ -1,0 +1,87 @@
+// SPDX-License-Identifier: MIT
+// JointSet: the joints' links to their bodies, which joints to solve, which bodies may
+// not collide, and the measures and events callers read.
+//
+// Design note: each joint has two edges, one per body, threaded into a list per body
+// (Body::head_joint_key), exactly as contacts are, so that everything a body needs of
+// its joints (destroying them with it, the islands' links, waking, the collision
+// filter) walks its own short list. The joints to solve are gathered each step from
+// the awake bodies in awake order, so a sleeping world with many joints pays nothing
+// and the order is the same whatever the worker count.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "core/pool.hpp"
+#include "dynamics/body/body.hpp"
+#include "dynamics/joint/joint.hpp"
+
+namespace i2d {
+
+/// What a caller reads of a joint as its bodies stand (not as the solver last saw them).
+struct JointMeasures {
+    float angle = 0.0f;        // rad, B relative to A minus the reference, in (-pi, pi]
+    float translation = 0.0f;  // m along the axis (prismatic, wheel)
+    float speed = 0.0f;        // m/s along the axis (prismatic, wheel)
+    float length = 0.0f;       // m between the anchors
+};
+
+class JointSet {
+public:
+    JointSet(Pool<Joint>& joints, Pool<Body>& bodies) : joints_(joints), bodies_(bodies) {}
+
+    /// Creates the joint and links it into both bodies' lists; null_index when full.
+    int32_t create(const JointDef& def);
+    /// Unlinks and frees it (island links are the caller's, see World::destroy_joint).
+    void destroy(int32_t joint);
+
+    /// visit(joint, other_body) for each joint of the body.
+    template <class Visit>
+    void visit_joints(int32_t body, Visit&& visit) const {
+        for (int32_t key = bodies_[body].head_joint_key; key != null_index;) {
+            const Joint& j = joints_[key >> 1];
+            const int32_t next = j.edges[key & 1].next_key;
+            visit(key >> 1, j.edges[(key & 1) ^ 1].body);
+            key = next;
+        }
+    }
+    /// visit(other_body) for each joint of the body that links the two islands.
+    template <class Visit>
+    void visit_links(int32_t body, Visit&& visit) const {
+        visit_joints(body, [&](int32_t joint, int32_t other) {
+            if (joints_[joint].island_link) {
+                visit(other);
+            }
+        });
+    }
+    /// Whether a joint between the two bodies keeps them from colliding.
+    bool keeps_apart(int32_t body_a, int32_t body_b) const;
+    /// Whether this kind of joint joins its bodies' islands when both are dynamic.
+    static bool links_islands(const Joint& joint) { return joint.def.type != JointType::filter; }
+
+    /// The joints to solve this step: each once, gathered from the awake bodies in awake
+    /// order; filter joints and joints with no moving body are left out.
+    void gather_awake(const std::vector<int32_t>& awake_bodies, std::vector<int32_t>& out) const;
+
+    JointMeasures measure(int32_t joint) const;
+
+    int32_t count() const { return joints_.count(); }
+    /// Changes whenever a joint is created or destroyed or a body of one changes type:
+    /// with the islands' awake version, whether the joints to solve can have changed.
+    uint64_t version() const { return version_; }
+    void touch() { ++version_; }
+
+    /// Aborts on a broken list or island link; does nothing unless built with I2D_VALIDATE.
+    void validate() const;
+
+private:
+    void link_edge(int32_t joint, int32_t side);
+    void unlink_edge(int32_t joint, int32_t side);
+
+    Pool<Joint>& joints_;
+    Pool<Body>& bodies_;
+    uint64_t version_ = 0;
+};
+
+}  // namespace i2d

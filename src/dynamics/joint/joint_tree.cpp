@@ -1,0 +1,402 @@
+// SPDX-License-Identifier: MIT
+// JointTrees: finding the trees, factoring them leaves first, and the exact passes.
+#include "dynamics/joint/joint_tree.hpp"
+
+#include <cmath>
+
+namespace i2d {
+
+namespace {
+
+using Vec3 = JointTrees::Vec3;
+using Mat33 = JointTrees::Mat33;
+
+Vec3 mul(const Mat33& a, const Vec3& v) {
+    return {a.m[0] * v.x + a.m[1] * v.y + a.m[2] * v.z, a.m[3] * v.x + a.m[4] * v.y + a.m[5] * v.z,
+            a.m[6] * v.x + a.m[7] * v.y + a.m[8] * v.z};
+}
+
+// Transpose(a) v.
+Vec3 mul_transposed(const Mat33& a, const Vec3& v) {
+    return {a.m[0] * v.x + a.m[3] * v.y + a.m[6] * v.z, a.m[1] * v.x + a.m[4] * v.y + a.m[7] * v.z,
+            a.m[2] * v.x + a.m[5] * v.y + a.m[8] * v.z};
+}
+
+Mat33 mul(const Mat33& a, const Mat33& b) {
+    Mat33 r;
+    for (int i = 0; i < 3; ++i) {
+        for (int j = 0; j < 3; ++j) {
+            r.m[3 * i + j] = a.m[3 * i] * b.m[j] + a.m[3 * i + 1] * b.m[3 + j] + a.m[3 * i + 2] * b.m[6 + j];
+        }
+    }
+    return r;
+}
+
+// a -= transpose(b) c.
+void subtract_transposed_product(Mat33& a, const Mat33& b, const Mat33& c) {
+    for (int i = 0; i < 3; ++i) {
+        for (int j = 0; j < 3; ++j) {
+            a.m[3 * i + j] -= b.m[i] * c.m[j] + b.m[3 + i] * c.m[3 + j] + b.m[6 + i] * c.m[6 + j];
+        }
+    }
+}
+
+Mat33 transposed(const Mat33& a) {
+    return {{a.m[0], a.m[3], a.m[6], a.m[1], a.m[4], a.m[7], a.m[2], a.m[5], a.m[8]}};
+}
+
+// By cofactors; zero when singular or not finite (the node's rows then stay as the sweep
+// left them).
+Mat33 inverse(const Mat33& a) {
+    const float* m = a.m;
+    const float c00 = m[4] * m[8] - m[5] * m[7], c01 = m[5] * m[6] - m[3] * m[8], c02 = m[3] * m[7] - m[4] * m[6];
+    const float det = m[0] * c00 + m[1] * c01 + m[2] * c02;
+    if (!(det != 0.0f && std::isfinite(det))) {
+        return Mat33{};
+    }
+    const float d = 1.0f / det;
+    return {{d * c00, d * (m[2] * m[7] - m[1] * m[8]), d * (m[1] * m[5] - m[2] * m[4]), d * c01,
+             d * (m[0] * m[8] - m[2] * m[6]), d * (m[2] * m[3] - m[0] * m[5]), d * c02,
+             d * (m[1] * m[6] - m[0] * m[7]), d * (m[0] * m[4] - m[1] * m[3])}};
+}
+
+// The joint's velocity rows as one of its bodies moves them, with its anchor where the
+// body is now: rows (point x, point y, angle) over that body's (vx, vy, w); B counts
+// plus, A minus; rows the exact solve does not take are zero, and so is the spin column
+// of a body that cannot turn.
+Mat33 joint_jacobian(const JointConstraint& c, const BodyState* states, bool body_b) {
+    const float s = body_b ? 1.0f : -1.0f;
+    const Vec2 r = rotate(states[body_b ? c.state_b : c.state_a].delta_rotation, body_b ? c.anchor_b : c.anchor_a);
+    const bool turns = (body_b ? c.inv_inertia_b : c.inv_inertia_a) > 0.0f;
+    Mat33 j;
+    if (c.exact_rows & exact_point_rows) {
+        j.m[0] = s;
+        j.m[2] = turns ? -s * r.y : 0.0f;
+        j.m[4] = s;
+        j.m[5] = turns ? s * r.x : 0.0f;
+    }
+    if ((c.exact_rows & exact_angle_row) && turns) {
+        j.m[8] = s;
+    }
+    return j;
+}
+
+// A node's own block: a body's mass (a body that cannot turn gets 1 for its spin, whose
+// coupling column is zero), a joint's rows 0, padding rows -1 (they solve to 0).
+Mat33 own_block(bool is_joint, uint8_t rows, float inv_mass, float inv_inertia) {
+    Mat33 d;
+    if (!is_joint) {
+        const float mass = 1.0f / inv_mass;
+        d.m[0] = mass;
+        d.m[4] = mass;
+        d.m[8] = inv_inertia > 0.0f ? 1.0f / inv_inertia : 1.0f;
+        return d;
+    }
+    d.m[0] = d.m[4] = (rows & exact_point_rows) ? 0.0f : -1.0f;
+    d.m[8] = (rows & exact_angle_row) ? 0.0f : -1.0f;
+    return d;
+}
+
+}  // namespace
+
+uint8_t exact_rows_of(const JointDef& def) {
+    switch (def.type) {
+        case JointType::revolute: return exact_point_rows;
+        case JointType::weld:
+            return uint8_t((def.weld.linear_hertz == 0.0f ? exact_point_rows : 0) |
+                           (def.weld.angular_hertz == 0.0f ? exact_angle_row : 0));
+        default: return 0;
+    }
+}
+
+void JointTrees::build(std::vector<JointConstraint>& constraints, const Pool<Joint>& joints,
+                       const Pool<Body>& bodies, int32_t state_count) {
+    const int32_t count = int32_t(constraints.size());
+    key_scratch_.resize(std::size_t(key_width) * std::size_t(count));
+    const auto state_if_moving = [](const Body& b) {
+        return b.type == BodyType::dynamic && b.awake_index != null_index ? b.awake_index : null_index;
+    };
+    for (int32_t k = 0; k < count; ++k) {
+        const JointDef& d = joints[constraints[std::size_t(k)].joint].def;
+        const Body& a = bodies[d.body_a];
+        const Body& b = bodies[d.body_b];
+        int32_t* key = &key_scratch_[std::size_t(key_width * k)];
+        key[0] = constraints[std::size_t(k)].joint;
+        key[1] = d.type == JointType::mouse ? null_index : state_if_moving(a);
+        key[2] = state_if_moving(b);
+        // An angle row neither body can turn (fixed rotation, or fixed) has nothing to solve.
+        const bool turns =
+            (key[1] != null_index && a.inv_inertia > 0.0f) || (key[2] != null_index && b.inv_inertia > 0.0f);
+        key[3] = exact_rows_of(d) & (turns ? 0xff : ~uint8_t(exact_angle_row));
+    }
+    if (key_scratch_ == built_key_ && !tree_starts_.empty()) {
+        return;  // the same joints between the same states: the trees and marks hold
+    }
+    built_key_.swap(key_scratch_);
+
+    // Which joints form hanging trees: the moving bodies joined by candidate joints make
+    // groups (union-find); a group with a loop (a joint between two bodies it joined
+    // already, or a second joint to a body that does not move: a bridge hung at both
+    // ends, a grid) is left to the sweep whole, and so is a group that no joint holds to
+    // a body that does not move (a ragdoll, a vehicle): those carry their own inertia,
+    // not a weight, through their joints, and soft joints stretch little under it. A
+    // hanging tree has exactly one such joint, which becomes its root, so that every
+    // leaf is a body (the elimination needs it: a joint's own block is zero until a
+    // body below it is eliminated into it).
+    set_of_.resize(std::size_t(state_count));
+    group_flags_.assign(std::size_t(state_count), 0);
+    for (int32_t s = 0; s < state_count; ++s) {
+        set_of_[std::size_t(s)] = s;
+    }
+    const auto find = [this](int32_t s) {
+        while (set_of_[std::size_t(s)] != s) {
+            set_of_[std::size_t(s)] = set_of_[std::size_t(set_of_[std::size_t(s)])];
+            s = set_of_[std::size_t(s)];
+        }
+        return s;
+    };
+    for (int32_t k = 0; k < count; ++k) {
+        const int32_t* key = &built_key_[std::size_t(key_width * k)];
+        if (key[3] == 0 || (key[1] == null_index && key[2] == null_index)) {
+            continue;
+        }
+        if (key[1] == null_index || key[2] == null_index) {
+            uint8_t& flags = group_flags_[std::size_t(find(key[1] != null_index ? key[1] : key[2]))];
+            flags |= (flags & group_held) ? group_looped : group_held;
+            continue;
+        }
+        const int32_t root_a = find(key[1]), root_b = find(key[2]);
+        if (root_a == root_b) {
+            group_flags_[std::size_t(root_a)] |= group_looped;
+            continue;
+        }
+        const uint8_t a = group_flags_[std::size_t(root_a)], b = group_flags_[std::size_t(root_b)];
+        const bool held_twice = (a & group_held) && (b & group_held);
+        set_of_[std::size_t(root_a)] = root_b;
+        group_flags_[std::size_t(root_b)] = uint8_t(a | b | (held_twice ? group_looped : 0));
+    }
+    joint_starts_.assign(std::size_t(state_count) + 1, 0);
+    for (int32_t k = 0; k < count; ++k) {
+        const int32_t* key = &built_key_[std::size_t(key_width * k)];
+        uint8_t rows = 0;
+        if (key[3] != 0 && (key[1] != null_index || key[2] != null_index)) {
+            const uint8_t flags = group_flags_[std::size_t(find(key[1] != null_index ? key[1] : key[2]))];
+            rows = flags == group_held ? uint8_t(key[3]) : 0;
+        }
+        constraints[std::size_t(k)].exact_rows = rows;
+        for (int32_t side = 1; side <= 2 && rows != 0; ++side) {
+            if (key[side] != null_index) {
+                ++joint_starts_[std::size_t(key[side]) + 1];
+            }
+        }
+    }
+    // Each state's exact joints, in solve order.
+    for (int32_t s = 0; s < state_count; ++s) {
+        joint_starts_[std::size_t(s) + 1] += joint_starts_[std::size_t(s)];
+    }
+    joint_list_.resize(std::size_t(joint_starts_[std::size_t(state_count)]));
+    queue_.assign(joint_starts_.begin(), joint_starts_.end() - 1);  // fill positions
+    for (int32_t k = 0; k < count; ++k) {
+        const int32_t* key = &built_key_[std::size_t(key_width * k)];
+        for (int32_t side = 1; side <= 2 && constraints[std::size_t(k)].exact_rows != 0; ++side) {
+            if (key[side] != null_index) {
+                joint_list_[std::size_t(queue_[std::size_t(key[side])]++)] = k;
+            }
+        }
+    }
+    // The trees, each rooted at its joint to a body that does not move.
+    nodes_.clear();
+    tree_starts_.clear();
+    for (int32_t k = 0; k < count; ++k) {
+        const int32_t* key = &built_key_[std::size_t(key_width * k)];
+        if (constraints[std::size_t(k)].exact_rows != 0 && (key[1] == null_index || key[2] == null_index)) {
+            tree_starts_.push_back(int32_t(nodes_.size()));
+            add_tree(k);
+        }
+    }
+    tree_starts_.push_back(int32_t(nodes_.size()));
+    inverse_pivots_.resize(nodes_.size());
+    gains_.resize(nodes_.size());
+    work_.resize(nodes_.size());
+    saved_.resize(nodes_.size());
+}
+
+// Breadth first from the root joint: a joint's moving bodies but the one it hangs from,
+// then a body's joints but the one it hangs from. Parents come before their children.
+void JointTrees::add_tree(int32_t root_joint) {
+    const int32_t first = int32_t(nodes_.size());
+    nodes_.push_back({null_index, root_joint, true, false});
+    for (int32_t n = first; n < int32_t(nodes_.size()); ++n) {
+        const Node node = nodes_[std::size_t(n)];
+        if (node.is_joint) {
+            const int32_t* key = &built_key_[std::size_t(key_width * node.item)];
+            const int32_t from = node.parent == null_index ? null_index : nodes_[std::size_t(node.parent)].item;
+            for (int32_t side = 1; side <= 2; ++side) {
+                const int32_t body = key[side];
+                if (body != null_index && body != from) {
+                    nodes_.push_back({n, body, false, side == 2});
+                }
+            }
+            continue;
+        }
+        const int32_t parent_joint = node.parent == null_index ? null_index : nodes_[std::size_t(node.parent)].item;
+        for (int32_t e = joint_starts_[std::size_t(node.item)]; e < joint_starts_[std::size_t(node.item) + 1]; ++e) {
+            const int32_t k = joint_list_[std::size_t(e)];
+            if (k != parent_joint) {
+                const int32_t* key = &built_key_[std::size_t(key_width * k)];
+                nodes_.push_back({n, k, true, key[2] == node.item});
+            }
+        }
+    }
+}
+
+// Leaves first: each node's pivot is its own block less what its children's elimination
+// left in it; its gain carries its solution into its parent's.
+void JointTrees::factor(int32_t tree, const std::vector<JointConstraint>& constraints, const BodyState* states,
+                        const BodyMotion* motions) {
+    const int32_t first = tree_starts_[std::size_t(tree)], last = tree_starts_[std::size_t(tree) + 1];
+    for (int32_t n = first; n < last; ++n) {
+        const Node& node = nodes_[std::size_t(n)];
+        const BodyMotion& m = motions[node.is_joint ? 0 : node.item];
+        const uint8_t rows = node.is_joint ? constraints[std::size_t(node.item)].exact_rows : 0;
+        inverse_pivots_[std::size_t(n)] = own_block(node.is_joint, rows, m.inv_mass, m.inv_inertia);
+    }
+    for (int32_t n = last - 1; n >= first; --n) {
+        const Node& node = nodes_[std::size_t(n)];
+        const Mat33 pivot_inverse = inverse(inverse_pivots_[std::size_t(n)]);
+        inverse_pivots_[std::size_t(n)] = pivot_inverse;
+        if (node.parent == null_index) {
+            continue;
+        }
+        // The block between the node and its parent: J of the joint for the body.
+        const Node& parent = nodes_[std::size_t(node.parent)];
+        const JointConstraint& c = constraints[std::size_t(node.is_joint ? node.item : parent.item)];
+        const Mat33 j = joint_jacobian(c, states, node.parent_is_b);
+        const Mat33 to_parent = node.is_joint ? j : transposed(j);
+        const Mat33 gain = mul(pivot_inverse, to_parent);
+        gains_[std::size_t(n)] = gain;
+        subtract_transposed_product(inverse_pivots_[std::size_t(node.parent)], to_parent, gain);
+    }
+}
+
+void JointTrees::solve(int32_t begin, int32_t end, std::vector<JointConstraint>& constraints, BodyState* states,
+                       const BodyMotion* motions, const JointStep& step, bool use_bias) {
+    const float bias_rate = use_bias ? step.rigid.bias_rate : 0.0f;
+    for (int32_t t = begin; t < end; ++t) {
+        factor(t, constraints, states, motions);
+        const int32_t first = tree_starts_[std::size_t(t)], last = tree_starts_[std::size_t(t) + 1];
+        // Right side: each joint's rows, driven to the bias (or to rest).
+        for (int32_t n = first; n < last; ++n) {
+            const Node& node = nodes_[std::size_t(n)];
+            Vec3 rhs;
+            if (node.is_joint) {
+                const JointConstraint& c = constraints[std::size_t(node.item)];
+                const JointBodies j = load_bodies(c, states);
+                if (c.exact_rows & exact_point_rows) {
+                    const Vec2 ra = rotate(j.dqa, c.anchor_a), rb = rotate(j.dqb, c.anchor_b);
+                    const Vec2 target = relative_velocity(j, ra, rb) + bias_rate * current_separation(c, j, ra, rb);
+                    rhs.x = -target.x;
+                    rhs.y = -target.y;
+                }
+                if (c.exact_rows & exact_angle_row) {
+                    rhs.z = -((j.wb - j.wa) + bias_rate * current_angle(c, j));
+                }
+            }
+            work_[std::size_t(n)] = rhs;
+        }
+        // Leaves up, then down from the root.
+        for (int32_t n = last - 1; n > first; --n) {
+            const Vec3 carried = mul_transposed(gains_[std::size_t(n)], work_[std::size_t(n)]);
+            Vec3& parent = work_[std::size_t(nodes_[std::size_t(n)].parent)];
+            parent.x -= carried.x;
+            parent.y -= carried.y;
+            parent.z -= carried.z;
+        }
+        for (int32_t n = first; n < last; ++n) {
+            const Node& node = nodes_[std::size_t(n)];
+            Vec3 x = mul(inverse_pivots_[std::size_t(n)], work_[std::size_t(n)]);
+            if (node.parent != null_index) {
+                const Vec3 down = mul(gains_[std::size_t(n)], work_[std::size_t(node.parent)]);
+                x.x -= down.x;
+                x.y -= down.y;
+                x.z -= down.z;
+            }
+            work_[std::size_t(n)] = x;
+        }
+        apply(t, constraints, states, step);
+    }
+}
+
+// The impulses (the joints' unknowns, negated) act through the anchors where the bodies
+// are now, as the sweep's do: the factors are the step start's, and a body's own
+// unknowns, which follow them, would let a turned joint do work (a swinging pendulum
+// gained four times its energy in a minute). Guarded as the sweep's passes are: a tree
+// whose factors are too ill-conditioned for floats (masses and lever arms apart by a
+// dozen orders of magnitude) can throw a body from a few m/s to 1e19 in one pass; then
+// the pass is undone and the tree's joints give up their impulses.
+void JointTrees::apply(int32_t tree, std::vector<JointConstraint>& constraints, BodyState* states,
+                       const JointStep& step) {
+    const int32_t first = tree_starts_[std::size_t(tree)], last = tree_starts_[std::size_t(tree) + 1];
+    save_velocities(first, last, states);
+    for (int32_t n = first; n < last; ++n) {
+        const Node& node = nodes_[std::size_t(n)];
+        if (!node.is_joint) {
+            continue;
+        }
+        const Vec3& x = work_[std::size_t(n)];
+        JointConstraint& c = constraints[std::size_t(node.item)];
+        JointBodies j = load_bodies(c, states);
+        if (c.exact_rows & exact_point_rows) {
+            const Vec2 impulse{-x.x, -x.y};
+            c.impulses.linear += impulse;
+            apply_linear(c, j, rotate(j.dqa, c.anchor_a), rotate(j.dqb, c.anchor_b), impulse);
+        }
+        if (c.exact_rows & exact_angle_row) {
+            c.impulses.angular -= x.z;
+            apply_angular(c, j, -x.z);
+        }
+        store_bodies(c, j, states);
+    }
+    if (!bodies_within_limits(first, last, states, step)) {
+        undo_pass(first, last, constraints, states);
+    }
+}
+
+void JointTrees::save_velocities(int32_t first, int32_t last, const BodyState* states) {
+    for (int32_t n = first; n < last; ++n) {
+        const Node& node = nodes_[std::size_t(n)];
+        if (!node.is_joint) {
+            const BodyState& s = states[node.item];
+            saved_[std::size_t(n)] = {s.linear_velocity.x, s.linear_velocity.y, s.angular_velocity};
+        }
+    }
+}
+
+bool JointTrees::bodies_within_limits(int32_t first, int32_t last, const BodyState* states,
+                                      const JointStep& step) const {
+    bool within = true;
+    for (int32_t n = first; n < last; ++n) {
+        const Node& node = nodes_[std::size_t(n)];
+        if (!node.is_joint) {
+            const BodyState& s = states[node.item];
+            within = within && body_within_limits(s.linear_velocity, s.angular_velocity, step);
+        }
+    }
+    return within;
+}
+
+void JointTrees::undo_pass(int32_t first, int32_t last, std::vector<JointConstraint>& constraints,
+                           BodyState* states) const {
+    for (int32_t n = first; n < last; ++n) {
+        const Node& node = nodes_[std::size_t(n)];
+        if (node.is_joint) {
+            constraints[std::size_t(node.item)].impulses = {};
+        } else {
+            const Vec3& v = saved_[std::size_t(n)];
+            states[node.item].linear_velocity = {v.x, v.y};
+            states[node.item].angular_velocity = v.z;
+        }
+    }
+}
+
+}  // namespace i2d

@@ -1,0 +1,107 @@
+// SPDX-License-Identifier: MIT
+// Continuous: the step's continuous collision stage. Fast bodies are swept from where
+// the step began to where the solver left them; one that would have passed through
+// something is moved back to its time of impact, keeping its velocity, and the next
+// step's speculative contact stops it (Box2D v3's scheme).
+//
+// Design note: every fast dynamic body is swept against static and kinematic shapes,
+// kinematic ones along their own motion over the step (the relative motion: a wall
+// moving towards a ball cannot jump over it). Bullets are swept after the others, also
+// against dynamic bodies along their motion, bullets included: two bullets that meet
+// head-on are both moved back to the time they touch. Sensors the fast body crossed
+// within the step are remembered, so that they report it. With nothing fast the stage
+// costs one empty loop (the solver's final pass already picked the fast bodies).
+//
+// Threads: a body that is not a bullet sweeps only against static and kinematic shapes,
+// which nothing in this stage moves, so those sweeps are independent and the workers
+// share them (Box2D v3 does them as it finalizes bodies). Each leaves its impact and the
+// sensors it crossed in its own slot; moving the bodies back, which writes the
+// broadphase, and listing the crossings happen on one thread in awake order. Bullets,
+// which meet each other where the others were left, are swept one after another. The
+// results do not depend on the worker count.
+// Alternative rejected: sweeping every pair of fast bodies (bullet or not) like bullets
+// would couple them all and need an order-dependent fix-point; only bullets opt in.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "broadphase/broad_phase.hpp"
+#include "collision/toi.hpp"
+#include "core/pool.hpp"
+#include "core/stage_runner.hpp"
+#include "core/task_system.hpp"
+#include "dynamics/body/body.hpp"
+#include "dynamics/world/events.hpp"
+#include "dynamics/body/shape.hpp"
+
+namespace i2d {
+
+/// A sensor a fast body passed within the step.
+struct SensorCrossing {
+    int32_t sensor_shape, visitor_shape;
+};
+
+class Continuous {
+public:
+    Continuous(Pool<Body>& bodies, Pool<Shape>& shapes, BroadPhase& broad_phase, EventRecorder& events,
+               TaskSystem& tasks)
+        : bodies_(bodies), shapes_(shapes), broad_phase_(broad_phase), events_(events), tasks_(tasks) {}
+
+    /// Sweeps the fast bodies (awake order); moved ones get new bounds (their proxies
+    /// move at the broadphase's next commit) and their move events the new pose.
+    void run(const std::vector<int32_t>& fast_bodies, float time_step);
+    /// Sensors crossed in the last run, in the order they were found.
+    const std::vector<SensorCrossing>& sensor_crossings() const { return crossings_; }
+
+private:
+    // The shape being swept.
+    struct FastShape {
+        int32_t body = null_index, shape = null_index;
+        bool bullet_pass = false;
+        Sweep sweep;
+        Transform start;  // the body's pose at the start of the step
+        ShapeProxy proxy;
+    };
+    // The earliest impact found so far.
+    struct Impact {
+        float fraction = 1.0f;
+        int32_t body = null_index;
+    };
+    struct SensorCandidate {
+        SensorCrossing crossing;
+        float fraction;
+    };
+    // What one body's sweep found: its first impact, and where in its worker's found_
+    // list the sensors it crossed (before or after that impact) are.
+    struct SweepResult {
+        Impact first;
+        int32_t worker = 0, candidates_begin = 0, candidates_end = 0;
+    };
+
+    static void sweep_range(void* continuous, const Stage& stage, int32_t begin, int32_t end, int32_t worker);
+    void sweep_non_bullets();
+    Impact sweep(int32_t body, bool bullet_pass, std::vector<SensorCandidate>& found);
+    void apply(int32_t body, const Impact& first, const SensorCandidate* found_begin,
+               const SensorCandidate* found_end);
+    void test_candidate(const FastShape& fast, int32_t other_shape, Impact& first,
+                        std::vector<SensorCandidate>& found);
+    Sweep sweep_of(int32_t body) const;
+    bool swept_against(const Body& fast, const Body& other, bool bullet_pass) const;
+    void move_to(int32_t body, float fraction, int32_t carrier);
+
+    Pool<Body>& bodies_;
+    Pool<Shape>& shapes_;
+    BroadPhase& broad_phase_;
+    EventRecorder& events_;
+    TaskSystem& tasks_;
+    float time_step_ = 0.0f;
+    std::vector<SensorCrossing> crossings_;
+    std::vector<int32_t> non_bullets_;     // this step's fast bodies that are not bullets
+    std::vector<SweepResult> results_;     // per non-bullet
+    std::vector<std::vector<SensorCandidate>> found_;  // per worker, of the bodies it swept
+    std::vector<Stage> stages_;
+    StageRunner runner_;
+};
+
+}  // namespace i2d

@@ -1,0 +1,95 @@
+// SPDX-License-Identifier: MIT
+// World::validate: cross-checks bodies, shapes, contacts, joints, islands and their links
+// (I2D_VALIDATE).
+#include <cmath>
+
+#include "core/assert.hpp"
+#include "dynamics/world/world.hpp"
+#include "math/math.hpp"
+
+namespace i2d {
+
+void World::validate() const {
+#if defined(I2D_VALIDATE)
+    int32_t shapes_seen = 0, contact_edges_seen = 0;
+    for (int32_t i = 0; i < bodies.capacity(); ++i) {
+        if (!bodies.is_live(i)) {
+            continue;
+        }
+        const Body& b = bodies[i];
+        I2D_ASSERT(is_finite(b.transform.p) && is_finite(b.center) && is_finite(b.linear_velocity));
+        I2D_ASSERT(std::isfinite(b.mass) && std::isfinite(b.inv_mass));
+        I2D_ASSERT(b.type == BodyType::dynamic ? b.mass > 0.0f : b.inv_mass == 0.0f);
+        int32_t count = 0;
+        int32_t prev = null_index;
+        for (int32_t s = b.head_shape; s != null_index; s = shapes[s].next_in_body) {
+            I2D_ASSERT(shapes.is_live(s) && shapes[s].body == i && shapes[s].prev_in_body == prev);
+            I2D_ASSERT(count <= b.shape_count);  // no cycle
+            prev = s;
+            ++count;
+        }
+        I2D_ASSERT(count == b.shape_count);
+        shapes_seen += count;
+
+        count = 0;
+        int32_t prev_key = null_index;
+        const Pool<Contact>& contacts = contacts_.pool();
+        for (int32_t key = b.head_contact_key; key != null_index;) {
+            const Contact& c = contacts[key >> 1];
+            const ContactEdge& edge = c.edges[key & 1];
+            I2D_ASSERT(contacts.is_live(key >> 1) && edge.body == i && edge.prev_key == prev_key);
+            I2D_ASSERT(count <= b.contact_count);
+            prev_key = key;
+            key = edge.next_key;
+            ++count;
+        }
+        I2D_ASSERT(count == b.contact_count);
+        contact_edges_seen += count;
+        validate_body(i);
+    }
+    I2D_ASSERT(shapes_seen == shapes.count());
+    I2D_ASSERT(contact_edges_seen == 2 * contacts_.pool().count());
+    for (int32_t i = 0; i < shapes.capacity(); ++i) {
+        if (!shapes.is_live(i)) {
+            continue;
+        }
+        const Shape& s = shapes[i];
+        I2D_ASSERT(is_finite(s.aabb.lower) && is_finite(s.aabb.upper));
+        I2D_ASSERT(s.aabb.lower.x <= s.aabb.upper.x && s.aabb.lower.y <= s.aabb.upper.y);
+        const AABB& fat = broad_phase_.fat_aabb(s.proxy_key);
+        I2D_ASSERT(fat.lower == s.fat_aabb.lower && fat.upper == s.fat_aabb.upper);
+        const AABB& ahead = broad_phase_.ahead_aabb(s.proxy_key);
+        I2D_ASSERT(ahead.lower == s.ahead_aabb.lower && ahead.upper == s.ahead_aabb.upper);
+        I2D_ASSERT(contains(s.ahead_aabb, s.fat_aabb));
+        I2D_ASSERT(fat.lower.x <= s.aabb.lower.x && fat.lower.y <= s.aabb.lower.y);
+        I2D_ASSERT(s.aabb.upper.x <= fat.upper.x && s.aabb.upper.y <= fat.upper.y);
+        I2D_ASSERT(broad_phase_.tree(proxy_kind(s.proxy_key)).user_value(proxy_id(s.proxy_key)) == i);
+    }
+    contacts_.validate();
+    joints_.validate();
+    islands_.validate();
+    for (int32_t k = 0; k < int32_t(ProxyKind::count); ++k) {
+        broad_phase_.tree(ProxyKind(k)).validate();
+    }
+#endif
+}
+
+// A moving body belongs to an island, and one asleep does not move; a static body is
+// in no island and never awake.
+void World::validate_body(int32_t body) const {
+#if defined(I2D_VALIDATE)
+    const Body& b = bodies[body];
+    if (b.type == BodyType::static_body) {
+        I2D_ASSERT(b.awake_index == null_index && b.island == null_index);
+        return;
+    }
+    I2D_ASSERT(b.island != null_index);
+    if (b.awake_index == null_index) {
+        I2D_ASSERT(b.linear_velocity == Vec2{} && b.angular_velocity == 0.0f);
+    }
+#else
+    (void)body;
+#endif
+}
+
+}  // namespace i2d
