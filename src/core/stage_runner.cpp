@@ -25,23 +25,12 @@ int32_t items_per_block(int32_t items, int32_t workers, int32_t min_items) {
     return size > min_items ? size : (min_items > 0 ? min_items : 1);
 }
 
-Stage make_stage(Stage::Fn fn, void* owner, int32_t item_count, int32_t workers, bool parallel,
-                 int32_t min_items_per_block) {
-    Stage stage;
-    stage.fn = fn;
-    stage.owner = owner;
-    stage.item_count = item_count;
-    stage.items_per_block = parallel ? items_per_block(item_count, workers, min_items_per_block)
-                                     : (item_count > 0 ? item_count : 1);
-    return stage;
-}
-
-void StageRunner::run(TaskSystem& tasks, const std::vector<Stage>& stages, bool parallel) {
+void StageRunner::run(TaskSystem& tasks, const std::vector<Stage>& stages, bool parallel, const void* context) {
     times_.clear();
     if (!parallel || tasks.worker_count() == 1) {
         for (const Stage& stage : stages) {
             if (stage.runs()) {
-                stage.fn(stage.owner, stage, 0, stage.item_count, 0);
+                stage.fn(context, stage, 0, stage.item_count, 0);
             }
         }
         return;
@@ -56,6 +45,7 @@ void StageRunner::run(TaskSystem& tasks, const std::vector<Stage>& stages, bool 
         return;
     }
     workers_ = tasks.worker_count();
+    context_ = context;
     reserve(int32_t(active_.size()));
     lay_out_shares();
     for (int32_t w = 0; w < workers_; ++w) {
@@ -219,7 +209,7 @@ void StageRunner::run_block(const Stage& stage, int32_t s, int32_t owner, int32_
     const int32_t begin = first[owner] + block * stage.items_per_block;
     const int32_t share_end = first[owner + 1];
     const int32_t end = begin + stage.items_per_block < share_end ? begin + stage.items_per_block : share_end;
-    stage.fn(stage.owner, stage, begin, end, worker);
+    stage.fn(context_, stage, begin, end, worker);
 }
 
 }  // namespace i2d

@@ -29,7 +29,9 @@
 
 #include <atomic>
 #include <cstdint>
+#include <cstring>
 #include <memory>
+#include <type_traits>
 #include <vector>
 
 #include "core/task_system.hpp"
@@ -37,13 +39,13 @@
 namespace i2d {
 
 struct Stage {
-    /// Does items [begin, end) of the stage on worker `worker`.
-    using Fn = void (*)(void* owner, const Stage& stage, int32_t begin, int32_t end, int32_t worker);
+    /// Does items [begin, end) of the stage on worker `worker`; `context` is what the run
+    /// was given (the step's context). Made by make_stage from a typed function.
+    using Fn = void (*)(const void* context, const Stage& stage, int32_t begin, int32_t end, int32_t worker);
     Fn fn = nullptr;
     void* owner = nullptr;
     int32_t item_count = 0;
     int32_t items_per_block = 1;  // a stage that must run as a whole: item_count
-    int32_t arg0 = 0, arg1 = 0, arg2 = 0;  // the owner's own (which colours, which substep)
     /// When set, the stage runs only if this is true once the stages before it are done
     /// (an earlier stage decides it): skipping costs no wait between workers.
     const bool* run_if = nullptr;
@@ -58,21 +60,69 @@ struct Stage {
 
     int32_t block_count() const { return blocks_of(item_count); }
     int32_t blocks_of(int32_t items) const { return (items + items_per_block - 1) / items_per_block; }
+
+    /// The stage's own argument (which colours, which pass), of the type its function
+    /// takes: a few bytes of plain data, copied in and out.
+    template <class Arg>
+    void set_arg(const Arg& arg) {
+        static_assert(sizeof(Arg) <= arg_capacity && std::is_trivially_copyable<Arg>::value,
+                      "a stage argument is a few bytes of plain data");
+        std::memcpy(arg_bytes, &arg, sizeof arg);
+    }
+    template <class Arg>
+    Arg arg() const {
+        Arg arg;
+        std::memcpy(&arg, arg_bytes, sizeof arg);
+        return arg;
+    }
+
+    static constexpr std::size_t arg_capacity = 16;
+    alignas(8) unsigned char arg_bytes[arg_capacity] = {};
 };
+
+/// No argument: for stages whose items say everything.
+struct NoStageArg {};
 
 /// Items per block for `items` spread over `workers`: a few blocks per worker, so that
 /// one slow worker does not hold a stage up, but no block smaller than min_items.
 int32_t items_per_block(int32_t items, int32_t workers, int32_t min_items);
 
-/// A stage over item_count items: in blocks for `workers` when parallel, else one block.
-Stage make_stage(Stage::Fn fn, void* owner, int32_t item_count, int32_t workers, bool parallel,
-                 int32_t min_items_per_block);
+/// The untyped function that calls a typed stage function F:
+///   void F(const Context& context, Owner& owner, const Arg& arg, int32_t begin, int32_t end, int32_t worker)
+template <auto F>
+struct StageFn;
+template <class Context, class Owner, class Arg,
+          void (*F)(const Context&, Owner&, const Arg&, int32_t, int32_t, int32_t)>
+struct StageFn<F> {
+    using OwnerType = Owner;
+    using ArgType = Arg;
+    static void call(const void* context, const Stage& stage, int32_t begin, int32_t end, int32_t worker) {
+        F(*static_cast<const Context*>(context), *static_cast<Owner*>(stage.owner), stage.arg<Arg>(), begin, end,
+          worker);
+    }
+};
+
+/// A stage of the typed function F over item_count items of `owner`, with argument
+/// `arg`: in blocks for `workers` when parallel, else one block.
+template <auto F>
+Stage make_stage(typename StageFn<F>::OwnerType& owner, const typename StageFn<F>::ArgType& arg, int32_t item_count,
+                 int32_t workers, bool parallel, int32_t min_items_per_block) {
+    Stage stage;
+    stage.fn = &StageFn<F>::call;
+    stage.owner = &owner;
+    stage.set_arg(arg);
+    stage.item_count = item_count;
+    stage.items_per_block = parallel ? items_per_block(item_count, workers, min_items_per_block)
+                                     : (item_count > 0 ? item_count : 1);
+    return stage;
+}
 
 class StageRunner {
 public:
     /// Runs the stages in order on the task system's workers, or inline on the calling
-    /// thread (each stage as one block) when `parallel` is false or there is one worker.
-    void run(TaskSystem& tasks, const std::vector<Stage>& stages, bool parallel);
+    /// thread (each stage as one block) when `parallel` is false or there is one worker;
+    /// each stage's function gets `context`.
+    void run(TaskSystem& tasks, const std::vector<Stage>& stages, bool parallel, const void* context);
 
     /// What each worker did in the last run: the blocks it ran (its own and those it
     /// took over) and the time it spent on them, in cycle_now() ticks (waits left out).
@@ -117,6 +167,7 @@ private:
     void reserve(int32_t stage_count);
 
     std::vector<Stage> active_;  // the run's stages that have items
+    const void* context_ = nullptr;
     // Per active stage: the first item of each worker's share and the stage's end
     // (workers_ + 1 entries), then the stage's blocks in all.
     std::vector<int32_t> share_bounds_;

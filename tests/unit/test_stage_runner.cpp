@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // StageRunner: every item of every stage is done once, after every item of the stages
-// before it, for any worker count and block size; a stage whose run_if an earlier stage
-// cleared is skipped by every worker; a stage split at the owner's share starts gets
+// before it, with the run's context and the stage's own argument, for any worker count
+// and block size; a stage whose run_if an earlier stage cleared is skipped by every worker; a stage split at the owner's share starts gets
 // blocks that never cross them; and a run finishes however a job system schedules the
 // workers' tasks: inline inside enqueue, or only when the engine waits for them.
 #include <atomic>
@@ -29,9 +29,19 @@ struct Ledger {
     explicit Ledger(int32_t item_count) : items(std::size_t(item_count)) {}
 };
 
-void advance(void* owner, const Stage& stage, int32_t begin, int32_t end, int32_t worker) {
-    Ledger& ledger = *static_cast<Ledger*>(owner);
-    if (worker < 0 || worker >= ledger.workers) {
+// The run's context: every block must see the one the run was given.
+struct RunContext {
+    const Ledger* ledger = nullptr;
+};
+
+// Which stage of the ledger's a stage is: its items advance from `stage` to stage + 1.
+struct StageNumber {
+    int32_t stage = 0;
+};
+
+void advance(const RunContext& context, Ledger& ledger, const StageNumber& arg, int32_t begin, int32_t end,
+             int32_t worker) {
+    if (worker < 0 || worker >= ledger.workers || context.ledger != &ledger) {
         ledger.bad_worker.fetch_add(1);
     }
     if (ledger.share_starts != nullptr) {
@@ -41,24 +51,22 @@ void advance(void* owner, const Stage& stage, int32_t begin, int32_t end, int32_
         }
     }
     for (int32_t i = begin; i < end; ++i) {
-        int32_t expected = stage.arg0;
-        if (!ledger.items[std::size_t(i)].compare_exchange_strong(expected, stage.arg0 + 1)) {
+        int32_t expected = arg.stage;
+        if (!ledger.items[std::size_t(i)].compare_exchange_strong(expected, arg.stage + 1)) {
             ledger.out_of_order.fetch_add(1);
         }
     }
 }
 
-void clear_skip_flag(void* owner, const Stage&, int32_t, int32_t, int32_t) {
-    static_cast<Ledger*>(owner)->skip_flag_stage_runs = false;
+void clear_skip_flag(const RunContext&, Ledger& ledger, const i2d::NoStageArg&, int32_t, int32_t, int32_t) {
+    ledger.skip_flag_stage_runs = false;
 }
 
 std::vector<Stage> advancing_stages(Ledger& ledger, int32_t stage_count, int32_t item_count, int32_t workers,
                                     int32_t min_items_per_block) {
     std::vector<Stage> stages;
     for (int32_t k = 0; k < stage_count; ++k) {
-        Stage stage = i2d::make_stage(&advance, &ledger, item_count, workers, true, min_items_per_block);
-        stage.arg0 = k;
-        stages.push_back(stage);
+        stages.push_back(i2d::make_stage<&advance>(ledger, StageNumber{k}, item_count, workers, true, min_items_per_block));
     }
     return stages;
 }
@@ -120,7 +128,9 @@ I2D_TEST(unit_stage_runner_does_every_item_once_in_stage_order) {
                 for (int32_t run = 0; run < runs; ++run) {
                     Ledger ledger(item_count);
                     ledger.workers = workers;
-                    runner.run(tasks, advancing_stages(ledger, stage_count, item_count, workers, min_per_block), true);
+                    const RunContext context{&ledger};
+                    runner.run(tasks, advancing_stages(ledger, stage_count, item_count, workers, min_per_block), true,
+                               &context);
                     I2D_CHECK(ledger.out_of_order.load() == 0);
                     I2D_CHECK(ledger.bad_worker.load() == 0);
                     I2D_CHECK(items_left_behind(ledger, stage_count) == 0);
@@ -143,12 +153,13 @@ I2D_TEST(unit_stage_runner_splits_at_the_owners_share_starts) {
         for (const int32_t min_per_block : {1, 16, 64}) {
             Ledger ledger(item_count);
             ledger.workers = workers;
+            const RunContext context{&ledger};
             ledger.share_starts = starts.data();
             std::vector<Stage> stages = advancing_stages(ledger, stage_count, item_count, workers, min_per_block);
             for (Stage& stage : stages) {
                 stage.share_starts = starts.data();
             }
-            runner.run(tasks, stages, true);
+            runner.run(tasks, stages, true, &context);
             I2D_CHECK(ledger.out_of_order.load() == 0);
             I2D_CHECK(ledger.bad_worker.load() == 0);
             I2D_CHECK(ledger.blocks_across_shares.load() == 0);
@@ -166,8 +177,9 @@ I2D_TEST(unit_stage_runner_reports_the_blocks_each_worker_ran) {
         i2d::StageRunner runner;
         Ledger ledger(item_count);
         ledger.workers = workers;
+        const RunContext context{&ledger};
         const std::vector<Stage> stages = advancing_stages(ledger, stage_count, item_count, workers, 16);
-        runner.run(tasks, stages, true);
+        runner.run(tasks, stages, true, &context);
         int32_t blocks = 0;
         for (const Stage& stage : stages) {
             blocks += stage.block_count();
@@ -183,7 +195,7 @@ I2D_TEST(unit_stage_runner_reports_the_blocks_each_worker_ran) {
         I2D_CHECK(reported == blocks);
         I2D_CHECK(items_left_behind(ledger, stage_count) == 0);
         // A run on the calling thread reports no worker's time.
-        runner.run(tasks, stages, false);
+        runner.run(tasks, stages, false, &context);
         I2D_CHECK(runner.worker_times().empty());
     }
 }
@@ -195,19 +207,19 @@ I2D_TEST(unit_stage_runner_skips_a_stage_an_earlier_stage_turned_off) {
         constexpr int32_t item_count = 200;
         Ledger ledger(item_count);
         ledger.workers = workers;
+        const RunContext context{&ledger};
         // Stage 0 advances every item to 1; the decider clears the flag; the guarded stage
         // would advance to 2 and the last stage expects 1, so it finds every item out of
         // order if the guarded stage ran, for any worker.
         std::vector<Stage> stages = advancing_stages(ledger, 1, item_count, workers, 8);
-        stages.push_back(i2d::make_stage(&clear_skip_flag, &ledger, 1, workers, true, 1));
-        Stage guarded = i2d::make_stage(&advance, &ledger, item_count, workers, true, 8);
-        guarded.arg0 = 1;
+        stages.push_back(i2d::make_stage<&clear_skip_flag>(ledger, i2d::NoStageArg{}, 1, workers, true, 1));
+        Stage guarded = i2d::make_stage<&advance>(ledger, StageNumber{1}, item_count, workers, true, 8);
         guarded.run_if = &ledger.skip_flag_stage_runs;
         stages.push_back(guarded);
         Stage last = guarded;
         last.run_if = nullptr;
         stages.push_back(last);
-        runner.run(tasks, stages, true);
+        runner.run(tasks, stages, true, &context);
         I2D_CHECK(!ledger.skip_flag_stage_runs);
         I2D_CHECK(ledger.out_of_order.load() == 0);
         I2D_CHECK(items_left_behind(ledger, 2) == 0);
@@ -223,7 +235,8 @@ I2D_TEST(unit_stage_runner_finishes_with_tasks_deferred_or_inline) {
         i2d::StageRunner runner;
         Ledger ledger(item_count);
         ledger.workers = workers;
-        runner.run(tasks, advancing_stages(ledger, stage_count, item_count, workers, 16), true);
+        const RunContext context{&ledger};
+        runner.run(tasks, advancing_stages(ledger, stage_count, item_count, workers, 16), true, &context);
         I2D_CHECK(deferred.next == workers - 1);  // every task ran, after worker 0
         I2D_CHECK(ledger.out_of_order.load() == 0);
         I2D_CHECK(items_left_behind(ledger, stage_count) == 0);
@@ -233,7 +246,8 @@ I2D_TEST(unit_stage_runner_finishes_with_tasks_deferred_or_inline) {
         i2d::StageRunner runner;
         Ledger ledger(item_count);
         ledger.workers = workers;
-        runner.run(tasks, advancing_stages(ledger, stage_count, item_count, workers, 16), true);
+        const RunContext context{&ledger};
+        runner.run(tasks, advancing_stages(ledger, stage_count, item_count, workers, 16), true, &context);
         I2D_CHECK(ledger.out_of_order.load() == 0);
         I2D_CHECK(items_left_behind(ledger, stage_count) == 0);
     }

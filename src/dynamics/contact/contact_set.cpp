@@ -286,10 +286,9 @@ bool ContactSet::may_pair(int32_t shape_a, int32_t shape_b) const {
 
 // One pair-finding stage's range: the self search's parts, or the queries.
 template <bool SelfSearch>
-void ContactSet::pair_range(void* set, const Stage& stage, int32_t begin, int32_t end, int32_t) {
-    ContactSet& self = *static_cast<ContactSet*>(set);
-    std::vector<ShapePairCandidate>& out =
-        self.block_pairs_[SelfSearch ? 0 : 1][std::size_t(begin / stage.items_per_block)];
+void ContactSet::pair_range(const StepContext&, ContactSet& self, const PairStage& arg, int32_t begin, int32_t end,
+                            int32_t) {
+    std::vector<ShapePairCandidate>& out = self.block_pairs_[arg.list][std::size_t(begin / arg.items_per_block)];
     out.clear();
     const auto accept = [&self](int32_t a, int32_t b) { return self.may_pair(a, b); };
     const auto ahead = [&self](int32_t a, int32_t b) { self.pair_set_.prefetch(pair_key(a, b)); };
@@ -307,23 +306,26 @@ void ContactSet::pair_range(void* set, const Stage& stage, int32_t begin, int32_
 // them, many_pyramids' step took 8 % longer (its solve 10 %); sorted by shape ids (row by
 // row), the 70-row pyramid crept 5.9 cm sideways in 2000 steps instead of 0.35 cm (row
 // order gives every box's contacts the same pattern of colours: a bias to one side).
-void ContactSet::find_new_contacts(BroadPhase& broad_phase) {
+void ContactSet::find_new_contacts(const StepContext& step, BroadPhase& broad_phase) {
     const int32_t queries = broad_phase.begin_pair_queries();
     const int32_t self_parts = broad_phase.self_part_count();
     const int32_t workers = tasks_.worker_count();
     const bool parallel = workers > 1 && (queries >= parallel_min_moved_proxies || self_parts > 0);
     stages_.clear();
-    stages_.push_back(make_stage(&ContactSet::pair_range<true>, this, self_parts, workers, parallel,
-                                 self_search_parts_per_work_block));
-    stages_.push_back(make_stage(&ContactSet::pair_range<false>, this, queries, workers, parallel, proxies_per_work_block));
+    stages_.push_back(make_stage<&ContactSet::pair_range<true>>(*this, PairStage{0}, self_parts, workers, parallel,
+                                                                self_search_parts_per_work_block));
+    stages_.push_back(make_stage<&ContactSet::pair_range<false>>(*this, PairStage{1}, queries, workers, parallel,
+                                                                 proxies_per_work_block));
     for (int32_t s = 0; s < 2; ++s) {
-        const std::size_t blocks = std::size_t(stages_[std::size_t(s)].block_count());
+        Stage& stage = stages_[std::size_t(s)];
+        stage.set_arg(PairStage{s, stage.items_per_block});
+        const std::size_t blocks = std::size_t(stage.block_count());
         if (block_pairs_[s].size() < blocks) {
             block_pairs_[s].resize(blocks);
         }
     }
     querying_ = &broad_phase;
-    runner_.run(tasks_, stages_, parallel);
+    runner_.run(tasks_, stages_, parallel, &step);
     querying_ = nullptr;
     broad_phase.end_pair_queries();
     for (int32_t s = 0; s < 2; ++s) {
@@ -352,13 +354,12 @@ void ContactSet::find_new_contacts(BroadPhase& broad_phase) {
 // against a sleeping body wakes it (something arrived or left), as does one whose other
 // body moves (a kinematic platform set going). Touching is cleared here and set again
 // by the solver for the contacts that end the step within the slop.
-void ContactSet::collide(float time_step) {
+void ContactSet::collide(const StepContext& step) {
     islands_to_wake_.clear();
     point_changes_.clear();
     const int32_t count = int32_t(awake_.size());
     collide_flags_.resize(std::size_t(count));
-    time_step_ = time_step;
-    run_over_awake(&ContactSet::collide_range);
+    run_over_awake<&ContactSet::collide_range>(step);
 
     bool layout_change = false;
     solvable_.clear();
@@ -386,11 +387,12 @@ void ContactSet::collide(float time_step) {
 }
 
 // One stage over the awake contacts, shared by the workers when there are enough.
-void ContactSet::run_over_awake(Stage::Fn fn) {
+template <auto F>
+void ContactSet::run_over_awake(const StepContext& step) {
     const int32_t count = int32_t(awake_.size());
     const bool parallel = tasks_.worker_count() > 1 && count >= parallel_min_contacts;
-    stages_.assign(1, make_stage(fn, this, count, tasks_.worker_count(), parallel, contacts_per_work_block));
-    runner_.run(tasks_, stages_, parallel);
+    stages_.assign(1, make_stage<F>(*this, NoStageArg{}, count, tasks_.worker_count(), parallel, contacts_per_work_block));
+    runner_.run(tasks_, stages_, parallel, &step);
 }
 
 // The awake list is in no spatial order: the contacts (and their shapes and bodies)
@@ -410,12 +412,12 @@ I2D_FORCE_INLINE void ContactSet::prefetch_for_collide(int32_t k, int32_t count)
     }
 }
 
-void ContactSet::collide_range(void* set, const Stage&, int32_t begin, int32_t end, int32_t) {
-    ContactSet& self = *static_cast<ContactSet*>(set);
+void ContactSet::collide_range(const StepContext& step, ContactSet& self, const NoStageArg&, int32_t begin,
+                               int32_t end, int32_t) {
     const int32_t count = int32_t(self.awake_.size());
     for (int32_t k = begin; k < end; ++k) {
         self.prefetch_for_collide(k, end < count ? end : count);
-        self.collide_flags_[std::size_t(k)] = self.collide_one(k, self.time_step_);
+        self.collide_flags_[std::size_t(k)] = self.collide_one(k, step.time_step);
     }
 }
 
@@ -549,10 +551,10 @@ void ContactSet::update_links() {
 // A sensor overlap is tested afresh where the step left the bodies, by the workers; the
 // contacts to destroy or report on are flagged, and one thread then acts on them
 // backwards, because destroying a contact moves the last awake contact into its place.
-void ContactSet::end_step() {
+void ContactSet::end_step(const StepContext& step) {
     const int32_t count = int32_t(awake_.size());
     collide_flags_.resize(std::size_t(count));
-    run_over_awake(&ContactSet::end_range);
+    run_over_awake<&ContactSet::end_range>(step);
     for (int32_t k = count - 1; k >= 0; --k) {
         const uint8_t flags = collide_flags_[std::size_t(k)];
         if (flags == 0) {
@@ -570,8 +572,8 @@ void ContactSet::end_step() {
     }
 }
 
-void ContactSet::end_range(void* set, const Stage&, int32_t begin, int32_t end, int32_t) {
-    ContactSet& self = *static_cast<ContactSet*>(set);
+void ContactSet::end_range(const StepContext& step, ContactSet& self, const NoStageArg&, int32_t begin, int32_t end,
+                           int32_t) {
     // A short pass over contacts in no order: the line of the flags and the hit speed is
     // asked for well ahead.
     constexpr int32_t contacts_ahead = 16;
@@ -595,7 +597,7 @@ void ContactSet::end_range(void* set, const Stage&, int32_t begin, int32_t end, 
             const bool now = (c.flags & contact_touching) != 0;
             flags = (c.flags & contact_report_events) && at_start != now ? reports : 0;
         }
-        flags |= c.hit_speed > self.settings_.hit_event_threshold ? hits : 0;
+        flags |= c.hit_speed > step.settings.hit_event_threshold ? hits : 0;
         self.collide_flags_[std::size_t(k)] = flags;
     }
 }

@@ -29,6 +29,7 @@
 #include "dynamics/contact/contact.hpp"
 #include "dynamics/world/events.hpp"
 #include "dynamics/body/shape.hpp"
+#include "dynamics/step_context.hpp"
 #include "dynamics/world/world_def.hpp"
 
 namespace i2d {
@@ -62,16 +63,16 @@ public:
 
     /// New pairs from the broadphase's moved proxies; pairs that may not collide (one
     /// body, two bodies that cannot move each other, two sensors, filters) get none.
-    void find_new_contacts(BroadPhase& broad_phase);
-    /// The narrowphase over the awake contacts; time_step predicts how far bodies can
+    void find_new_contacts(const StepContext& step, BroadPhase& broad_phase);
+    /// The narrowphase over the awake contacts; the time step predicts how far bodies can
     /// approach. Afterwards islands_to_wake() and link_changes() say what changed.
-    void collide(float time_step);
+    void collide(const StepContext& step);
     const std::vector<int32_t>& islands_to_wake() const { return islands_to_wake_; }
     /// After the islands woke: contacts that gained or lost points join or leave islands.
     void update_links();
     /// Begin and end events from the touching flags the solver left, and destruction of
     /// the contacts whose fat boxes parted.
-    void end_step();
+    void end_step(const StepContext& step);
 
     /// Destroys the shape's contacts between steps (all, or those its filter now forbids).
     void destroy_contacts_of_shape(int32_t shape, bool only_filtered_out);
@@ -122,11 +123,20 @@ private:
     uint8_t point_change_flags(const Contact& contact, bool had_points) const;
     void prefetch_for_collide(int32_t k, int32_t count) const;
     uint8_t collide_one(int32_t k, float time_step);
-    static void collide_range(void* set, const Stage& stage, int32_t begin, int32_t end, int32_t worker);
+    static void collide_range(const StepContext& step, ContactSet& set, const NoStageArg&, int32_t begin, int32_t end,
+                              int32_t worker);
+    // A pair-finding stage's argument: its list of each block's pairs.
+    struct PairStage {
+        int32_t list = 0;  // 0 the self search, 1 the queries
+        int32_t items_per_block = 1;
+    };
     template <bool SelfSearch>
-    static void pair_range(void* set, const Stage& stage, int32_t begin, int32_t end, int32_t worker);
-    static void end_range(void* set, const Stage& stage, int32_t begin, int32_t end, int32_t worker);
-    void run_over_awake(Stage::Fn fn);
+    static void pair_range(const StepContext& step, ContactSet& set, const PairStage& arg, int32_t begin, int32_t end,
+                           int32_t worker);
+    static void end_range(const StepContext& step, ContactSet& set, const NoStageArg&, int32_t begin, int32_t end,
+                          int32_t worker);
+    template <auto F>
+    void run_over_awake(const StepContext& step);
     bool may_pair(int32_t shape_a, int32_t shape_b) const;
     void report_touch_changes(const Contact& contact, bool touching_now);
     void report_hit(const Contact& contact);
@@ -158,7 +168,6 @@ private:
     std::vector<std::vector<ShapePairCandidate>> block_pairs_[2];
     std::vector<ShapePairCandidate> new_pairs_scratch_;
     BroadPhase* querying_ = nullptr;  // while the pair queries run
-    float time_step_ = 0.0f;
     std::vector<Stage> stages_;
     StageRunner runner_;
 };

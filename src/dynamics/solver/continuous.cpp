@@ -66,9 +66,8 @@ bool starts_behind(const ChainSegment& segment, const Transform& xf, Vec2 point)
 
 }  // namespace
 
-void Continuous::run(const std::vector<int32_t>& fast_bodies, float time_step) {
+void Continuous::run(const StepContext& step, const std::vector<int32_t>& fast_bodies) {
     crossings_.clear();
-    time_step_ = time_step;
     found_.resize(std::size_t(tasks_.worker_count()));
     non_bullets_.clear();
     for (const int32_t body : fast_bodies) {
@@ -78,7 +77,7 @@ void Continuous::run(const std::vector<int32_t>& fast_bodies, float time_step) {
     }
     const bool parallel = tasks_.worker_count() > 1 && int32_t(non_bullets_.size()) >= parallel_min_fast_bodies;
     if (parallel) {
-        sweep_non_bullets();
+        sweep_non_bullets(step);
     }
     // Bullets last, so that they meet the other fast bodies where these were left.
     for (int32_t pass = parallel ? 1 : 0; pass < 2; ++pass) {
@@ -88,31 +87,32 @@ void Continuous::run(const std::vector<int32_t>& fast_bodies, float time_step) {
                 std::vector<SensorCandidate>& found = found_[0];
                 found.clear();
                 const Impact first = sweep(body, bullet_pass, found);
-                apply(body, first, found.data(), found.data() + found.size());
+                apply(step, body, first, found.data(), found.data() + found.size());
             }
         }
     }
 }
 
 // The sweeps shared by the workers, then their results applied in awake order.
-void Continuous::sweep_non_bullets() {
+void Continuous::sweep_non_bullets(const StepContext& step) {
     const int32_t count = int32_t(non_bullets_.size());
     const int32_t workers = tasks_.worker_count();
     for (std::vector<SensorCandidate>& found : found_) {
         found.clear();
     }
     results_.resize(std::size_t(count));
-    stages_.assign(1, make_stage(&Continuous::sweep_range, this, count, workers, true, fast_bodies_per_work_block));
-    runner_.run(tasks_, stages_, true);
+    stages_.assign(1, make_stage<&Continuous::sweep_range>(*this, NoStageArg{}, count, workers, true,
+                                                          fast_bodies_per_work_block));
+    runner_.run(tasks_, stages_, true, &step);
     for (int32_t k = 0; k < count; ++k) {
         const SweepResult& r = results_[std::size_t(k)];
         const SensorCandidate* found = found_[std::size_t(r.worker)].data();
-        apply(non_bullets_[std::size_t(k)], r.first, found + r.candidates_begin, found + r.candidates_end);
+        apply(step, non_bullets_[std::size_t(k)], r.first, found + r.candidates_begin, found + r.candidates_end);
     }
 }
 
-void Continuous::sweep_range(void* continuous, const Stage&, int32_t begin, int32_t end, int32_t worker) {
-    Continuous& self = *static_cast<Continuous*>(continuous);
+void Continuous::sweep_range(const StepContext&, Continuous& self, const NoStageArg&, int32_t begin, int32_t end,
+                             int32_t worker) {
     std::vector<SensorCandidate>& found = self.found_[std::size_t(worker)];
     for (int32_t k = begin; k < end; ++k) {
         SweepResult& r = self.results_[std::size_t(k)];
@@ -171,7 +171,7 @@ Continuous::Impact Continuous::sweep(int32_t body, bool bullet_pass, std::vector
 }
 
 // The sensors crossed before the impact are listed, and the body goes back to it.
-void Continuous::apply(int32_t body, const Impact& first, const SensorCandidate* found_begin,
+void Continuous::apply(const StepContext& step, int32_t body, const Impact& first, const SensorCandidate* found_begin,
                        const SensorCandidate* found_end) {
     for (const SensorCandidate* c = found_begin; c != found_end; ++c) {
         if (c->fraction <= first.fraction) {
@@ -183,9 +183,9 @@ void Continuous::apply(int32_t body, const Impact& first, const SensorCandidate*
         // Two bullets meeting head-on both stop where they touch.
         const bool both_stop = other.is_bullet && other.type == BodyType::dynamic && other.awake_index != null_index;
         if (both_stop) {
-            move_to(first.body, first.fraction, null_index);
+            move_to(step, first.body, first.fraction, null_index);
         }
-        move_to(body, first.fraction, other.type == BodyType::kinematic ? first.body : null_index);
+        move_to(step, body, first.fraction, other.type == BodyType::kinematic ? first.body : null_index);
     }
 }
 
@@ -237,7 +237,7 @@ void Continuous::test_candidate(const FastShape& fast, int32_t other_index, Impa
 // that waits at the impact point. A dynamic body it hit is not a carrier: it can be
 // stopped by the contact, and carrying a bullet along with a box that lands would push
 // the bullet into the floor.
-void Continuous::move_to(int32_t body, float fraction, int32_t carrier) {
+void Continuous::move_to(const StepContext& step, int32_t body, float fraction, int32_t carrier) {
     Body& b = bodies_[body];
     Transform xf = sweep_transform(sweep_of(body), fraction);
     if (carrier != null_index) {
@@ -247,7 +247,7 @@ void Continuous::move_to(int32_t body, float fraction, int32_t carrier) {
     }
     b.transform = xf;
     b.center = transform_point(xf, b.local_center);
-    update_shape_bounds(b, shapes_, broad_phase_, time_step_ * b.linear_velocity, true);
+    update_shape_bounds(b, shapes_, broad_phase_, step.time_step * b.linear_velocity, true);
     if (b.move_event != null_index) {
         events_.current.body_moves[std::size_t(b.move_event)].transform = b.transform;
     }

@@ -34,6 +34,7 @@
 #include "dynamics/body/body.hpp"
 #include "dynamics/world/events.hpp"
 #include "dynamics/body/shape.hpp"
+#include "dynamics/step_context.hpp"
 
 namespace i2d {
 
@@ -50,7 +51,7 @@ public:
 
     /// Sweeps the fast bodies (awake order); moved ones get new bounds (their proxies
     /// move at the broadphase's next commit) and their move events the new pose.
-    void run(const std::vector<int32_t>& fast_bodies, float time_step);
+    void run(const StepContext& step, const std::vector<int32_t>& fast_bodies);
     /// Sensors crossed in the last run, in the order they were found.
     const std::vector<SensorCrossing>& sensor_crossings() const { return crossings_; }
 
@@ -79,23 +80,23 @@ private:
         int32_t worker = 0, candidates_begin = 0, candidates_end = 0;
     };
 
-    static void sweep_range(void* continuous, const Stage& stage, int32_t begin, int32_t end, int32_t worker);
-    void sweep_non_bullets();
+    static void sweep_range(const StepContext& step, Continuous& continuous, const NoStageArg&, int32_t begin,
+                            int32_t end, int32_t worker);
+    void sweep_non_bullets(const StepContext& step);
     Impact sweep(int32_t body, bool bullet_pass, std::vector<SensorCandidate>& found);
-    void apply(int32_t body, const Impact& first, const SensorCandidate* found_begin,
+    void apply(const StepContext& step, int32_t body, const Impact& first, const SensorCandidate* found_begin,
                const SensorCandidate* found_end);
     void test_candidate(const FastShape& fast, int32_t other_shape, Impact& first,
                         std::vector<SensorCandidate>& found);
     Sweep sweep_of(int32_t body) const;
     bool swept_against(const Body& fast, const Body& other, bool bullet_pass) const;
-    void move_to(int32_t body, float fraction, int32_t carrier);
+    void move_to(const StepContext& step, int32_t body, float fraction, int32_t carrier);
 
     Pool<Body>& bodies_;
     Pool<Shape>& shapes_;
     BroadPhase& broad_phase_;
     EventRecorder& events_;
     TaskSystem& tasks_;
-    float time_step_ = 0.0f;
     std::vector<SensorCrossing> crossings_;
     std::vector<int32_t> non_bullets_;     // this step's fast bodies that are not bullets
     std::vector<SweepResult> results_;     // per non-bullet

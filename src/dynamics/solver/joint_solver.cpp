@@ -127,7 +127,7 @@ void JointSolver::lay_out(const int32_t* ordered, int32_t count) {
     hinges_.upper_impulse = next();
 }
 
-void JointSolver::load_hinge(int32_t k, const JointConstraint& c) {
+void JointSolver::load_hinge(const JointStep& step, int32_t k, const JointConstraint& c) {
     const std::size_t i = std::size_t(k);
     const JointImpulses& p = c.impulses;
     hinges_.state_a[i] = c.state_a;
@@ -155,7 +155,7 @@ void JointSolver::load_hinge(int32_t k, const JointConstraint& c) {
     hinges_.spring_relaxes[i] = flag(c.spring.relaxes);
     hinges_.target_angle[i] = s.target_angle;
     hinges_.motor_speed[i] = s.motor_speed;
-    hinges_.max_motor_impulse[i] = step_.h * s.max_motor_torque;
+    hinges_.max_motor_impulse[i] = step.h * s.max_motor_torque;
     hinges_.lower_angle[i] = s.lower_angle;
     hinges_.upper_angle[i] = s.upper_angle;
     hinges_.impulse_x[i] = p.linear.x;
@@ -166,7 +166,7 @@ void JointSolver::load_hinge(int32_t k, const JointConstraint& c) {
     hinges_.upper_impulse[i] = p.upper;
 }
 
-void JointSolver::prepare_one(JointConstraint& c, const Joint& joint, const Pool<Body>& bodies,
+void JointSolver::prepare_one(const JointStep& step, JointConstraint& c, const Joint& joint, const Pool<Body>& bodies,
                               int32_t fixed_state) const {
     const JointDef& d = joint.def;
     const Body& a = bodies[d.body_a];
@@ -204,26 +204,26 @@ void JointSolver::prepare_one(JointConstraint& c, const Joint& joint, const Pool
     }
     c.impulses = joint.impulses;
     switch (d.type) {
-        case JointType::revolute: prepare_revolute(c, step_); break;
-        case JointType::prismatic: prepare_prismatic(c, step_); break;
-        case JointType::distance: prepare_distance(c, step_); break;
-        case JointType::weld: prepare_weld(c, step_); break;
-        case JointType::wheel: prepare_wheel(c, step_); break;
-        case JointType::motor: prepare_motor(c, step_); break;
-        case JointType::mouse: prepare_mouse(c, step_); break;
+        case JointType::revolute: prepare_revolute(c, step); break;
+        case JointType::prismatic: prepare_prismatic(c, step); break;
+        case JointType::distance: prepare_distance(c, step); break;
+        case JointType::weld: prepare_weld(c, step); break;
+        case JointType::wheel: prepare_wheel(c, step); break;
+        case JointType::motor: prepare_motor(c, step); break;
+        case JointType::mouse: prepare_mouse(c, step); break;
         default: break;
     }
 }
 
-void JointSolver::prepare(const Pool<Joint>& joints, const Pool<Body>& bodies, int32_t fixed_state, int32_t begin,
-                          int32_t end) {
+void JointSolver::prepare(const JointStep& step, const Pool<Joint>& joints, const Pool<Body>& bodies,
+                          int32_t fixed_state, int32_t begin, int32_t end) {
     for (int32_t k = begin; k < end; ++k) {
         JointConstraint& c = constraints_[std::size_t(k)];
-        prepare_one(c, joints[c.joint], bodies, fixed_state);
+        prepare_one(step, c, joints[c.joint], bodies, fixed_state);
         const bool hinge = is_lane_hinge(c);
         lane_hinge_[std::size_t(k)] = hinge ? 1 : 0;
         if (hinge) {
-            load_hinge(k, c);
+            load_hinge(step, k, c);
         }
     }
 }
@@ -236,10 +236,10 @@ int32_t JointSolver::hinge_run_end(int32_t begin, int32_t end) const {
     return k;
 }
 
-HingePass JointSolver::hinge_pass(bool use_bias) const {
-    const Softness soft = rigid_pass(step_, use_bias);
-    return {step_.inv_h, soft.bias_rate,          soft.mass_scale,        soft.impulse_scale,
-            use_bias,    step_.runaway_speed_sum, step_.runaway_spin_sum};
+HingePass JointSolver::hinge_pass(const JointStep& step, bool use_bias) {
+    const Softness soft = rigid_pass(step, use_bias);
+    return {step.inv_h, soft.bias_rate,         soft.mass_scale,       soft.impulse_scale,
+            use_bias,   step.runaway_speed_sum, step.runaway_spin_sum};
 }
 
 void JointSolver::run_hinges(HingeKernel ContactKernels::*kernel, int32_t begin, int32_t end, BodyState* states,
@@ -259,8 +259,8 @@ void JointSolver::run_hinges(HingeKernel ContactKernels::*kernel, int32_t begin,
 // that the bodies' velocities stay in registers from load to store: passed to a kind's
 // functions by reference, they went through memory between the call and the guard, a
 // third of a joint_grid step's joint time.
-void JointSolver::warm_start(int32_t begin, int32_t end, BodyState* states, bool independent) {
-    const HingePass pass = hinge_pass(true);
+void JointSolver::warm_start(const JointStep& step, int32_t begin, int32_t end, BodyState* states, bool independent) {
+    const HingePass pass = hinge_pass(step, true);
     for (int32_t k = begin; k < end; ++k) {
         if (lane_hinge_[std::size_t(k)] != 0) {
             const int32_t run_end = hinge_run_end(k, end);
@@ -270,20 +270,21 @@ void JointSolver::warm_start(int32_t begin, int32_t end, BodyState* states, bool
         }
         JointConstraint& c = constraints_[std::size_t(k)];
         switch (c.type) {
-            case JointType::revolute: warm_start_revolute(c, states, step_); break;
-            case JointType::prismatic: warm_start_prismatic(c, states, step_); break;
-            case JointType::distance: warm_start_distance(c, states, step_); break;
-            case JointType::weld: warm_start_weld(c, states, step_); break;
-            case JointType::wheel: warm_start_wheel(c, states, step_); break;
-            case JointType::motor: warm_start_motor(c, states, step_); break;
-            case JointType::mouse: warm_start_mouse(c, states, step_); break;
+            case JointType::revolute: warm_start_revolute(c, states, step); break;
+            case JointType::prismatic: warm_start_prismatic(c, states, step); break;
+            case JointType::distance: warm_start_distance(c, states, step); break;
+            case JointType::weld: warm_start_weld(c, states, step); break;
+            case JointType::wheel: warm_start_wheel(c, states, step); break;
+            case JointType::motor: warm_start_motor(c, states, step); break;
+            case JointType::mouse: warm_start_mouse(c, states, step); break;
             default: break;
         }
     }
 }
 
-void JointSolver::solve(int32_t begin, int32_t end, BodyState* states, bool use_bias, bool independent) {
-    const HingePass pass = hinge_pass(use_bias);
+void JointSolver::solve(const JointStep& step, int32_t begin, int32_t end, BodyState* states, bool use_bias,
+                        bool independent) {
+    const HingePass pass = hinge_pass(step, use_bias);
     for (int32_t k = begin; k < end; ++k) {
         if (lane_hinge_[std::size_t(k)] != 0) {
             const int32_t run_end = hinge_run_end(k, end);
@@ -294,13 +295,13 @@ void JointSolver::solve(int32_t begin, int32_t end, BodyState* states, bool use_
         prefetch_settings(constraints_, k, end);
         JointConstraint& c = constraints_[std::size_t(k)];
         switch (c.type) {
-            case JointType::revolute: solve_revolute(c, states, step_, use_bias); break;
-            case JointType::prismatic: solve_prismatic(c, states, step_, use_bias); break;
-            case JointType::distance: solve_distance(c, states, step_, use_bias); break;
-            case JointType::weld: solve_weld(c, states, step_, use_bias); break;
-            case JointType::wheel: solve_wheel(c, states, step_, use_bias); break;
-            case JointType::motor: solve_motor(c, states, step_, use_bias); break;
-            case JointType::mouse: solve_mouse(c, states, step_, use_bias); break;
+            case JointType::revolute: solve_revolute(c, states, step, use_bias); break;
+            case JointType::prismatic: solve_prismatic(c, states, step, use_bias); break;
+            case JointType::distance: solve_distance(c, states, step, use_bias); break;
+            case JointType::weld: solve_weld(c, states, step, use_bias); break;
+            case JointType::wheel: solve_wheel(c, states, step, use_bias); break;
+            case JointType::motor: solve_motor(c, states, step, use_bias); break;
+            case JointType::mouse: solve_mouse(c, states, step, use_bias); break;
             default: break;
         }
     }
@@ -326,7 +327,8 @@ bool passes_threshold(const Joint& joint) {
 
 }  // namespace
 
-void JointSolver::store(Pool<Joint>& joints, const BodyState* states, int32_t begin, int32_t end) {
+void JointSolver::store(const JointStep& step, Pool<Joint>& joints, const BodyState* states, int32_t begin,
+                        int32_t end) {
     bool breaking = false;
     for (int32_t k = begin; k < end; ++k) {
         JointConstraint& c = constraints_[std::size_t(k)];
@@ -335,7 +337,7 @@ void JointSolver::store(Pool<Joint>& joints, const BodyState* states, int32_t be
         }
         Joint& joint = joints[c.joint];
         joint.impulses = c.impulses;
-        const JointReaction r = joint_reaction(c, load_bodies(c, states), step_.inv_h);
+        const JointReaction r = joint_reaction(c, load_bodies(c, states), step.inv_h);
         joint.reaction_force = r.force;
         joint.reaction_torque = r.torque;
         joint.motor_output = r.motor;

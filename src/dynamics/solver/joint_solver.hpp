@@ -31,17 +31,17 @@ public:
     /// Takes the joints to solve, in solve order (one thread).
     void lay_out(const int32_t* ordered, int32_t count);
     int32_t count() const { return int32_t(constraints_.size()); }
-    void set_step(const JointStep& step) { step_ = step; }
     /// The instruction set's kernels for the hinges (the contacts' path).
     void set_kernels(const ContactKernels& kernels) { kernels_ = &kernels; }
 
+    // Each pass reads the step's JointStep (step_context.hpp).
     /// Anchors, masses, softness and last step's impulses of joints [begin, end).
-    void prepare(const Pool<Joint>& joints, const Pool<Body>& bodies, int32_t fixed_state, int32_t begin,
-                 int32_t end);
+    void prepare(const JointStep& step, const Pool<Joint>& joints, const Pool<Body>& bodies, int32_t fixed_state,
+                 int32_t begin, int32_t end);
     /// `independent`: the range's joints share no body the solver moves (any colour but
     /// the overflow), so that hinges may be solved side by side.
-    void warm_start(int32_t begin, int32_t end, BodyState* states, bool independent);
-    void solve(int32_t begin, int32_t end, BodyState* states, bool use_bias, bool independent);
+    void warm_start(const JointStep& step, int32_t begin, int32_t end, BodyState* states, bool independent);
+    void solve(const JointStep& step, int32_t begin, int32_t end, BodyState* states, bool use_bias, bool independent);
 
     /// The trees whose rigid rows are solved exactly (joint_tree.hpp): found after
     /// lay_out, before prepare (one thread); one exact pass after each sweep, over ranges
@@ -50,26 +50,28 @@ public:
         trees_.build(constraints_, joints, bodies, state_count);
     }
     int32_t tree_count() const { return trees_.tree_count(); }
-    void solve_trees(int32_t begin, int32_t end, BodyState* states, const BodyMotion* motions, bool use_bias) {
-        trees_.solve(begin, end, constraints_, states, motions, step_, use_bias);
+    void solve_trees(const JointStep& step, int32_t begin, int32_t end, BodyState* states, const BodyMotion* motions,
+                     bool use_bias) {
+        trees_.solve(begin, end, constraints_, states, motions, step, use_bias);
     }
     /// Impulses back to the joints, and their reactions over the last substep; notes
     /// whether any passed its threshold.
-    void store(Pool<Joint>& joints, const BodyState* states, int32_t begin, int32_t end);
+    void store(const JointStep& step, Pool<Joint>& joints, const BodyState* states, int32_t begin, int32_t end);
     /// Joints whose reaction passed a threshold, in solve order (one thread); nothing to
     /// read unless store noted one.
     void report_breaking(const Pool<Joint>& joints, const IdEncoder& ids, std::vector<JointEvent>& out) const;
 
 private:
-    void prepare_one(JointConstraint& c, const Joint& joint, const Pool<Body>& bodies, int32_t fixed_state) const;
-    void load_hinge(int32_t k, const JointConstraint& c);
+    void prepare_one(const JointStep& step, JointConstraint& c, const Joint& joint, const Pool<Body>& bodies,
+                     int32_t fixed_state) const;
+    void load_hinge(const JointStep& step, int32_t k, const JointConstraint& c);
     /// The run of hinges [begin, end): whole chunks of the kernels' width, the rest
     /// one at a time.
     void run_hinges(HingeKernel ContactKernels::*kernel, int32_t begin, int32_t end, BodyState* states,
                     const HingePass& pass, bool independent) const;
     /// Where the run of hinges from `begin` ends, at most at `end`.
     int32_t hinge_run_end(int32_t begin, int32_t end) const;
-    HingePass hinge_pass(bool use_bias) const;
+    static HingePass hinge_pass(const JointStep& step, bool use_bias);
     void take_hinge_impulses(int32_t k, JointConstraint& c) const;
 
     std::vector<JointConstraint> constraints_;
@@ -81,7 +83,6 @@ private:
     HingeColumns hinges_{};
     const ContactKernels* kernels_ = &scalar_contact_kernels();
     JointTrees trees_;
-    JointStep step_;
     // Set by any worker's store range, read after the stage's barrier.
     std::atomic<bool> breaking_seen_{false};
 };

@@ -18,8 +18,8 @@ World::World(const WorldDef& def)
       joints_(joints, bodies),
       contacts_(settings, bodies, shapes, joints_, islands_, events_, tasks_),
       islands_(bodies, contacts_, joints_),
-      solver_(SolverLinks{settings, bodies, shapes, joints, joints_, contacts_, islands_, broad_phase_, events_,
-                          tasks_}),
+      solver_(SolverLinks{bodies, shapes, joints, joints_, contacts_, islands_, broad_phase_, events_, tasks_},
+              def.simd_path),
       continuous_(bodies, shapes, broad_phase_, events_, tasks_),
       profiling_(def.enable_profile) {}
 

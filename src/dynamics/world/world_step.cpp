@@ -31,11 +31,12 @@ void World::step(float time_step, int32_t substep_count) {
     if (time_step == 0.0f) {
         return;  // a paused world: nothing moves, nothing is tested (Box2D's rule)
     }
+    const StepContext step(settings, time_step, substep_count, tasks_.worker_count());
     cover_step_ahead(time_step);
-    contacts_.find_new_contacts(broad_phase_);
+    contacts_.find_new_contacts(step, broad_phase_);
     profile_.pairs += timer.lap_ms();
 
-    contacts_.collide(time_step);
+    contacts_.collide(step);
     // Waking adds to the awake contacts, so it waits until the narrowphase is done; the
     // woken contacts' manifolds are current, since sleeping bodies did not move.
     for (const int32_t island : contacts_.islands_to_wake()) {
@@ -44,16 +45,16 @@ void World::step(float time_step, int32_t substep_count) {
     contacts_.update_links();
     profile_.collide += timer.lap_ms();
 
-    solver_.step(time_step, substep_count);
+    solver_.step(step);
     profile_.solve += timer.lap_ms();
     if (settings.enable_continuous) {
-        continuous_.run(solver_.fast_bodies(), time_step);
+        continuous_.run(step, solver_.fast_bodies());
     }
     profile_.continuous += timer.lap_ms();
     broad_phase_.commit_moves_in_place();
     profile_.update_bounds += timer.lap_ms();
 
-    contacts_.end_step();
+    contacts_.end_step(step);
     if (settings.enable_continuous) {
         report_sensor_crossings();
     }

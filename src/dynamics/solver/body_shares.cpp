@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
-#include "dynamics/solver/body_regions.hpp"
+// BodyShares: cutting the awake bodies by work; ShareBalance: fractions from speeds.
+#include "dynamics/solver/body_shares.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -8,19 +9,19 @@
 
 namespace i2d {
 
-void BodyRegions::cut(int32_t regions, const int32_t* contacts_before, int32_t body_count, const double* shares) {
-    I2D_ASSERT(regions >= 1 && body_count >= 0);
+void BodyShares::cut(int32_t count, const int32_t* contacts_before, int32_t body_count, const double* fractions) {
+    I2D_ASSERT(count >= 1 && body_count >= 0);
     // The work of the states below b, which rises with b.
     const auto work_below = [&](int32_t b) { return int64_t(b) + contact_weight * contacts_before[b]; };
     const int64_t total = work_below(body_count);
-    starts_.resize(std::size_t(regions) + 1);
+    starts_.resize(std::size_t(count) + 1);
     starts_[0] = 0;
     int32_t low = 0;
-    double share_below = 0.0;
-    for (int32_t r = 1; r < regions; ++r) {
-        // The first body at or past the work of the regions before r.
-        share_below += shares != nullptr ? shares[r - 1] : 0.0;
-        const int64_t target = shares != nullptr ? int64_t(double(total) * share_below) : total * r / regions;
+    double fraction_below = 0.0;
+    for (int32_t r = 1; r < count; ++r) {
+        // The first body at or past the work of the shares before r.
+        fraction_below += fractions != nullptr ? fractions[r - 1] : 0.0;
+        const int64_t target = fractions != nullptr ? int64_t(double(total) * fraction_below) : total * r / count;
         int32_t high = body_count;
         while (low < high) {
             const int32_t mid = low + (high - low) / 2;
@@ -32,14 +33,14 @@ void BodyRegions::cut(int32_t regions, const int32_t* contacts_before, int32_t b
         }
         starts_[std::size_t(r)] = low;
     }
-    starts_[std::size_t(regions)] = body_count;
+    starts_[std::size_t(count)] = body_count;
 }
 
-void RegionBalance::note_run(const StageRunner::WorkerTime* times, int32_t workers) {
+void ShareBalance::note_run(const StageRunner::WorkerTime* times, int32_t workers) {
     if (int32_t(rates_.size()) != workers) {
         rates_.assign(std::size_t(workers), 0.0);
-        shares_.assign(std::size_t(workers), 1.0 / double(workers));
-        cut_shares_ = shares_;
+        fractions_.assign(std::size_t(workers), 1.0 / double(workers));
+        cut_fractions_ = fractions_;
         runs_since_cut_ = 0;
     }
     ++runs_since_cut_;
@@ -62,33 +63,33 @@ void RegionBalance::note_run(const StageRunner::WorkerTime* times, int32_t worke
     const double even = 1.0 / double(workers);
     double sum = 0.0;
     for (int32_t w = 0; w < workers; ++w) {
-        const double share = rates_[std::size_t(w)] / total;
-        shares_[std::size_t(w)] = std::clamp(share, (1.0 - max_tilt) * even, (1.0 + max_tilt) * even);
-        sum += shares_[std::size_t(w)];
+        const double fraction = rates_[std::size_t(w)] / total;
+        fractions_[std::size_t(w)] = std::clamp(fraction, (1.0 - max_tilt) * even, (1.0 + max_tilt) * even);
+        sum += fractions_[std::size_t(w)];
     }
-    for (double& share : shares_) {
-        share /= sum;
+    for (double& fraction : fractions_) {
+        fraction /= sum;
     }
 }
 
-bool RegionBalance::wants_cut() const {
+bool ShareBalance::wants_cut() const {
     if (runs_since_cut_ < runs_between_cuts) {
         return false;
     }
-    for (std::size_t w = 0; w < shares_.size(); ++w) {
-        if (std::fabs(shares_[w] - cut_shares_[w]) > cut_threshold) {
+    for (std::size_t w = 0; w < fractions_.size(); ++w) {
+        if (std::fabs(fractions_[w] - cut_fractions_[w]) > cut_threshold) {
             return true;
         }
     }
     return false;
 }
 
-void RegionBalance::cut_made() {
-    cut_shares_ = shares_;
+void ShareBalance::cut_made() {
+    cut_fractions_ = fractions_;
     runs_since_cut_ = 0;
 }
 
-int32_t BodyRegions::region_of(int32_t body) const {
+int32_t BodyShares::share_of(int32_t body) const {
     const auto after = std::upper_bound(starts_.begin() + 1, starts_.end() - 1, body);
     return int32_t(after - (starts_.begin() + 1));
 }

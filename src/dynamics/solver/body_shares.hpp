@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
-// BodyRegions: the awake bodies cut into one run of consecutive states per worker, so
-// that every stage of the solver gives each worker the same bodies; RegionBalance: how
-// much of the work each run gets, from the workers' speeds.
+// BodyShares: the awake bodies cut into one share of consecutive states per worker, so
+// that every stage of the solver gives each worker the same bodies; ShareBalance: how
+// much of the work each share gets, from the workers' speeds.
 //
 // A shared step hands data from core to core wherever a body one worker moved in a stage
 // is moved by another in the next. Split evenly, each colour's share began at a different
@@ -21,19 +21,19 @@
 
 namespace i2d {
 
-class BodyRegions {
+class BodyShares {
 public:
-    /// Cuts states [0, body_count) into `regions` runs of work: each body weighs 1 and
+    /// Cuts states [0, body_count) into `count` shares of work: each body weighs 1 and
     /// each contact contact_weight, on the lowest body it moves. contacts_before[b] is the
-    /// number of contacts whose lowest body is below b, for b in [0, body_count]. Region r
-    /// gets shares[r] of the work (`regions` shares summing to 1), or an even share when
-    /// shares is null.
-    void cut(int32_t regions, const int32_t* contacts_before, int32_t body_count, const double* shares = nullptr);
+    /// number of contacts whose lowest body is below b, for b in [0, body_count]. Share s
+    /// gets fractions[s] of the work (`count` fractions summing to 1), or an even part
+    /// when fractions is null.
+    void cut(int32_t count, const int32_t* contacts_before, int32_t body_count, const double* fractions = nullptr);
 
     int32_t count() const { return int32_t(starts_.size()) - 1; }
-    /// The region of state `body`; a state past the last body is in the last region.
-    int32_t region_of(int32_t body) const;
-    /// Where each region begins: count() + 1 states, the last the body count.
+    /// The share that holds state `body`; a state past the last body is in the last share.
+    int32_t share_of(int32_t body) const;
+    /// Where each share begins: count() + 1 states, the last the body count.
     const int32_t* starts() const { return starts_.data(); }
 
     /// A contact is packed, stored, and warm started, solved and relaxed each substep
@@ -53,34 +53,34 @@ private:
 /// other core (and hand back in the next colour). Cut by speed, the stages end together.
 /// Timing decides only which worker moves which bodies: the order of a colour's contacts
 /// changes no bit of a result, so the world's results stay the same for any cut.
-class RegionBalance {
+class ShareBalance {
 public:
     /// Notes what each of `workers` workers did in a run (StageRunner::worker_times).
     /// Workers that ran no block are left out.
     void note_run(const StageRunner::WorkerTime* times, int32_t workers);
-    /// Whether the shares moved far enough from those of the last cut to cut again.
-    bool wants_cut() const;
-    /// Each of `workers` workers' share of the work, summing to 1; null unless the runs
-    /// noted had that many workers.
-    const double* shares(int32_t workers) const {
-        return int32_t(shares_.size()) == workers ? shares_.data() : nullptr;
+    /// Each of `workers` workers' fraction of the work, summing to 1; null unless the
+    /// runs noted had that many workers.
+    const double* fractions(int32_t workers) const {
+        return int32_t(fractions_.size()) == workers ? fractions_.data() : nullptr;
     }
-    /// The regions were cut with shares().
+    /// Whether the fractions moved far enough from those of the last cut to cut again.
+    bool wants_cut() const;
+    /// The shares were cut with fractions().
     void cut_made();
 
     /// The weight of a run's speeds against those before: over about 10 runs.
     static constexpr double smoothing = 0.1;
-    /// A share moves at most this far from even (of an even share): a worker that was
-    /// descheduled for a run does not lose its region.
+    /// A fraction moves at most this far from even (of an even fraction): a worker that
+    /// was descheduled for a run does not lose its share.
     static constexpr double max_tilt = 0.5;
-    /// A new cut needs a share this far from the last cut's (of the whole work)...
+    /// A new cut needs a fraction this far from the last cut's (of the whole work)...
     static constexpr double cut_threshold = 0.03;
     /// ... and this many runs since: a cut rewrites the solver's layout.
     static constexpr int32_t runs_between_cuts = 30;
 
 private:
     std::vector<double> rates_;  // per worker: blocks per unit of busy time, smoothed
-    std::vector<double> shares_, cut_shares_;
+    std::vector<double> fractions_, cut_fractions_;
     int32_t runs_since_cut_ = 0;
 };
 
