@@ -17,6 +17,7 @@
 #include <cstdint>
 
 #include "collision/shapes.hpp"
+#include "dynamics/body/body.hpp"
 #include "core/pool.hpp"
 
 namespace i2d {
@@ -99,6 +100,20 @@ inline bool is_solid(const Contact& c) { return (c.flags & contact_sensor) == 0;
 
 /// What the solver takes: a contact between solid shapes with points.
 inline bool is_solvable(const Contact& c) { return is_solid(c) && c.point_count > 0; }
+
+/// Sets the contact's solver state on one side (0: A, 1: B) from its body: the body's
+/// awake index, and whether the solver moves it (dynamic and awake). Returns whether
+/// anything the colouring reads changed.
+inline bool set_solver_state(Contact& c, int32_t edge, const Body& b) {
+    int32_t& state = edge == 0 ? c.state_a : c.state_b;
+    const uint32_t flag = edge == 0 ? contact_moves_a : contact_moves_b;
+    const bool moves = b.type == BodyType::dynamic && b.awake_index != null_index;
+    const uint32_t flags = (c.flags & ~flag) | (moves ? flag : 0u);
+    const bool changed = state != b.awake_index || flags != c.flags;
+    state = b.awake_index;
+    c.flags = flags;
+    return changed;
+}
 
 /// Replaces the contact's points by those of a fresh world-space manifold, anchored at the
 /// bodies' centres of mass, and carries each point's impulses over from the old point

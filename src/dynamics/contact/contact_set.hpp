@@ -5,10 +5,17 @@
 // Design note: a contact exists while its shapes' fat boxes overlap; it is in the awake
 // list while one of its bodies is awake, and only awake contacts are updated, so that a
 // sleeping pile costs nothing. The narrowphase runs once per step, before the solver,
-// and records what the islands need to hear (contacts that gained or lost points, bodies
-// asleep that something reached); the world passes that on. Touching, for events,
-// describes where the step left the bodies: the solver reports it per contact at the end
-// of the step, and end_step turns changes into begin and end events.
+// and records what the islands need to hear: contacts that began or stopped linking two
+// bodies (link_changes(), which the world hands to the islands), bodies asleep that
+// something reached (islands_to_wake()). The set holds no reference to the islands: a
+// call that must wake a body at once (a pair found beside sleeping bodies, a contact
+// destroyed between steps) is handed the world's `wake` for that call. Touching, for
+// events, describes where the step left the bodies: the solver reports it per contact at
+// the end of the step, and end_step turns changes into begin and end events.
+//
+// The work is in four files: contact_set.cpp (creation, destruction, the awake list),
+// contact_pairs.cpp (new pairs from the broadphase), narrowphase.cpp (manifolds and
+// links) and contact_events.cpp (the end of the step: events and parted pairs).
 //
 // Threads: the narrowphase and the pair queries are shared by the world's workers. A
 // contact's update writes only the contact; what the islands must hear it leaves in a
@@ -21,34 +28,35 @@
 #include <vector>
 
 #include "broadphase/broad_phase.hpp"
+#include "core/function_ref.hpp"
 #include "core/hash_set.hpp"
 #include "core/pool.hpp"
 #include "core/stage_runner.hpp"
 #include "core/task_system.hpp"
+#include "dynamics/constants.hpp"
 #include "dynamics/body/body.hpp"
-#include "dynamics/contact/contact.hpp"
-#include "dynamics/world/events.hpp"
 #include "dynamics/body/shape.hpp"
+#include "dynamics/contact/contact.hpp"
+#include "dynamics/island/link_change.hpp"
 #include "dynamics/step_context.hpp"
+#include "dynamics/world/events.hpp"
 #include "dynamics/world/world_def.hpp"
 
 namespace i2d {
 
-class Islands;
 class JointSet;
+
+/// Wakes a body (and its island) at once; the world's, handed to a call that needs it.
+using WakeBody = FunctionRef<void(int32_t body)>;
 
 class ContactSet {
 public:
     ContactSet(const WorldDef& settings, Pool<Body>& bodies, const Pool<Shape>& shapes, const JointSet& joints,
-               Islands& islands, EventRecorder& events, TaskSystem& tasks)
-        : settings_(settings),
-          bodies_(bodies),
-          shapes_(shapes),
-          joints_(joints),
-          islands_(islands),
-          events_(events),
-          tasks_(tasks) {}
+               EventRecorder& events, TaskSystem& tasks)
+        : settings_(settings), bodies_(bodies), shapes_(shapes), joints_(joints), events_(events), tasks_(tasks) {}
 
+    /// The contacts; the solver writes their impulses and touching flags at the end of
+    /// a step (contact_solver.hpp), nothing else writes them from outside.
     Pool<Contact>& pool() { return contacts_; }
     const Pool<Contact>& pool() const { return contacts_; }
     const std::vector<int32_t>& awake() const { return awake_; }
@@ -62,22 +70,29 @@ public:
     uint64_t layout_version() const { return layout_version_; }
 
     /// New pairs from the broadphase's moved proxies; pairs that may not collide (one
-    /// body, two bodies that cannot move each other, two sensors, filters) get none.
-    void find_new_contacts(const StepContext& step, BroadPhase& broad_phase);
+    /// body, two bodies that cannot move each other, two sensors, filters) get none. A
+    /// pair found while both bodies sleep wakes them.
+    void find_new_contacts(const StepContext& step, BroadPhase& broad_phase, WakeBody wake);
     /// The narrowphase over the awake contacts; the time step predicts how far bodies can
-    /// approach. Afterwards islands_to_wake() and link_changes() say what changed.
+    /// approach. Afterwards islands_to_wake() says which sleeping islands were reached.
     void collide(const StepContext& step);
     const std::vector<int32_t>& islands_to_wake() const { return islands_to_wake_; }
-    /// After the islands woke: contacts that gained or lost points join or leave islands.
+    /// After the islands woke: contacts that gained or lost points join or leave islands
+    /// (link_changes()).
     void update_links();
     /// Begin and end events from the touching flags the solver left, and destruction of
     /// the contacts whose fat boxes parted.
     void end_step(const StepContext& step);
+    /// The links begun and ended since clear_link_changes(), in order: the world hands
+    /// them to the islands.
+    const std::vector<LinkChange>& link_changes() const { return link_changes_; }
+    void clear_link_changes() { link_changes_.clear(); }
 
-    /// Destroys the shape's contacts between steps (all, or those its filter now forbids).
-    void destroy_contacts_of_shape(int32_t shape, bool only_filtered_out);
+    /// Destroys the shape's contacts between steps (all, or those its filter now forbids),
+    /// waking the bodies each touched.
+    void destroy_contacts_of_shape(int32_t shape, bool only_filtered_out, WakeBody wake);
     /// Called between steps when a joint starts keeping two bodies apart.
-    void destroy_contacts_between(int32_t body_a, int32_t body_b);
+    void destroy_contacts_between(int32_t body_a, int32_t body_b, WakeBody wake);
     /// The body's centre of mass moved within it (its shapes changed): its manifolds'
     /// anchors are stale and must be made afresh.
     void forget_manifolds(int32_t body);
@@ -113,18 +128,14 @@ public:
     void validate() const;
 
 private:
-    void create_contact(int32_t shape_a, int32_t shape_b);
+    // contact_set.cpp
+    void create_contact(int32_t shape_a, int32_t shape_b, WakeBody wake);
     void destroy_contact(int32_t contact, bool during_step);
     void add_awake(int32_t contact);
     void remove_awake(int32_t contact);
     void mix_material(Contact& contact, const Shape& a, const Shape& b) const;
-    bool recycle(Contact& contact, const Body& a, const Body& b) const;
-    void update_contact(Contact& contact, const Shape& a, const Shape& b, float time_step);
-    uint8_t point_change_flags(const Contact& contact, bool had_points) const;
-    void prefetch_for_collide(int32_t k, int32_t count) const;
-    uint8_t collide_one(int32_t k, float time_step);
-    static void collide_range(const StepContext& step, ContactSet& set, const NoStageArg&, int32_t begin, int32_t end,
-                              int32_t worker);
+    bool is_awake(int32_t body) const { return bodies_[body].awake_index != null_index; }
+    // contact_pairs.cpp
     // A pair-finding stage's argument: its list of each block's pairs.
     struct PairStage {
         int32_t list = 0;  // 0 the self search, 1 the queries
@@ -133,11 +144,20 @@ private:
     template <bool SelfSearch>
     static void pair_range(const StepContext& step, ContactSet& set, const PairStage& arg, int32_t begin, int32_t end,
                            int32_t worker);
-    static void end_range(const StepContext& step, ContactSet& set, const NoStageArg&, int32_t begin, int32_t end,
-                          int32_t worker);
+    bool may_pair(int32_t shape_a, int32_t shape_b) const;
+    // narrowphase.cpp
+    static void collide_range(const StepContext& step, ContactSet& set, const NoStageArg&, int32_t begin, int32_t end,
+                              int32_t worker);
+    void prefetch_for_collide(int32_t k, int32_t count) const;
+    uint8_t collide_one(int32_t k, float time_step);
+    bool recycle(Contact& contact, const Body& a, const Body& b) const;
+    void update_contact(Contact& contact, const Shape& a, const Shape& b, float time_step);
+    uint8_t point_change_flags(const Contact& contact, bool had_points) const;
     template <auto F>
     void run_over_awake(const StepContext& step);
-    bool may_pair(int32_t shape_a, int32_t shape_b) const;
+    // contact_events.cpp
+    static void end_range(const StepContext& step, ContactSet& set, const NoStageArg&, int32_t begin, int32_t end,
+                          int32_t worker);
     void report_touch_changes(const Contact& contact, bool touching_now);
     void report_hit(const Contact& contact);
     Manifold manifold_of(const Contact& contact) const;
@@ -147,7 +167,6 @@ private:
     Pool<Body>& bodies_;
     const Pool<Shape>& shapes_;
     const JointSet& joints_;
-    Islands& islands_;
     EventRecorder& events_;
     TaskSystem& tasks_;
     Pool<Contact> contacts_;
@@ -155,8 +174,9 @@ private:
     std::vector<int32_t> awake_;
     std::vector<int32_t> solvable_;
     uint64_t layout_version_ = 0;
+    std::vector<LinkChange> link_changes_;
     // Step scratch, kept so that a steady state allocates nothing.
-    std::vector<ShapePairCandidate> new_pairs_;
+    std::vector<ShapePairCandidate> new_pairs_, new_pairs_scratch_;
     std::vector<int32_t> islands_to_wake_;
     std::vector<int32_t> point_changes_;  // contacts that gained or lost all their points
     // Per awake contact, what its update found for the islands (CollideFlags), and at
@@ -166,10 +186,18 @@ private:
     std::vector<uint8_t> collide_flags_;
     // New pairs per block of each pair-finding stage: [0] the self search, [1] the queries.
     std::vector<std::vector<ShapePairCandidate>> block_pairs_[2];
-    std::vector<ShapePairCandidate> new_pairs_scratch_;
     BroadPhase* querying_ = nullptr;  // while the pair queries run
     std::vector<Stage> stages_;
     StageRunner runner_;
 };
+
+// One stage over the awake contacts, shared by the workers when there are enough.
+template <auto F>
+void ContactSet::run_over_awake(const StepContext& step) {
+    const int32_t count = int32_t(awake_.size());
+    const bool parallel = tasks_.worker_count() > 1 && count >= parallel_min_contacts;
+    stages_.assign(1, make_stage<F>(*this, NoStageArg{}, count, tasks_.worker_count(), parallel, contacts_per_work_block));
+    runner_.run(tasks_, stages_, parallel, &step);
+}
 
 }  // namespace i2d

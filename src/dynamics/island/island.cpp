@@ -7,8 +7,6 @@
 #include "core/assert.hpp"
 #include "core/dense_list.hpp"
 #include "core/reserve.hpp"
-#include "dynamics/contact/contact_set.hpp"
-#include "dynamics/joint/joint_set.hpp"
 
 namespace i2d {
 
@@ -99,6 +97,16 @@ void Islands::unlink(int32_t body) {
     ++record.removed_links;
 }
 
+void Islands::apply(const std::vector<LinkChange>& changes) {
+    for (const LinkChange& change : changes) {
+        if (change.links) {
+            link(change.body_a, change.body_b);
+        } else {
+            unlink(change.body_a);
+        }
+    }
+}
+
 void Islands::merge(int32_t from, int32_t into) {
     Island& source = islands_[from];
     Island& target = islands_[into];
@@ -131,7 +139,7 @@ void Islands::wake_island(int32_t island) {
     for (int32_t body = islands_[island].head_body; body != null_index; body = bodies_[body].island_next) {
         bodies_[body].sleep_time = 0.0f;
         add_awake_body(body);
-        contacts_.body_woke(body);
+        woken_.push_back(body);
     }
 }
 
@@ -141,18 +149,6 @@ void Islands::wake_all() {
             wake_island(i);
         }
     }
-}
-
-void Islands::sleep_island_of(int32_t body) {
-    if (!is_awake(body)) {
-        return;
-    }
-    int32_t island = bodies_[body].island;
-    if (islands_[island].removed_links > 0) {
-        split(island);
-        island = bodies_[body].island;
-    }
-    put_to_sleep(island);
 }
 
 void Islands::put_to_sleep(int32_t island) {
@@ -166,14 +162,11 @@ void Islands::put_to_sleep(int32_t island) {
         remove_awake_body(body);
     }
     remove_awake_island(island);
-    for (int32_t body = islands_[island].head_body; body != null_index; body = bodies_[body].island_next) {
-        contacts_.body_slept(body);
-    }
 }
 
 // Depth first over the links from each body not yet placed, in the island's list order,
 // so that the same island always splits the same way.
-void Islands::split(int32_t island) {
+void Islands::split(int32_t island, LinkVisitor links) {
     members_.clear();
     for (int32_t body = islands_[island].head_body; body != null_index; body = bodies_[body].island_next) {
         members_.push_back(body);
@@ -211,8 +204,7 @@ void Islands::split(int32_t island) {
                     stack_.push_back(other);
                 }
             };
-            contacts_.visit_links(body, follow);
-            joints_.visit_links(body, follow);
+            links(body, follow);
         }
         islands_[piece].link_count = links_seen / 2;  // each link seen from both ends
     }

@@ -17,18 +17,26 @@
 // the awake list (the solver's arrays) and their contacts with nothing awake leave the
 // awake contact list, so that a sleeping pile costs nothing per step. The awake lists
 // are dense and each item knows its place, so adding and removing are O(1).
+//
+// Islands hold no reference to the contacts or joints that link bodies: the contact set
+// hands them its link changes as a list (LinkChange), the world passes the links to
+// follow when an island is split (LinkVisitor), and the bodies whose island woke or fell
+// asleep are told back (woken_bodies(), the `slept` callbacks) for the world to move
+// their contacts in or out of the awake contact list.
 #pragma once
 
 #include <cstdint>
 #include <vector>
 
+#include "core/function_ref.hpp"
 #include "core/pool.hpp"
 #include "dynamics/body/body.hpp"
+#include "dynamics/island/link_change.hpp"
 
 namespace i2d {
 
-class ContactSet;
-class JointSet;
+/// Calls follow(other) for each body that a contact or joint links `body` to.
+using LinkVisitor = FunctionRef<void(int32_t body, FunctionRef<void(int32_t other)> follow)>;
 
 struct Island {
     int32_t head_body = null_index, tail_body = null_index;
@@ -40,26 +48,32 @@ struct Island {
 
 class Islands {
 public:
-    Islands(Pool<Body>& bodies, ContactSet& contacts, const JointSet& joints)
-        : bodies_(bodies), contacts_(contacts), joints_(joints) {}
+    explicit Islands(Pool<Body>& bodies) : bodies_(bodies) {}
 
     /// A new kinematic or dynamic body: an island of its own, awake.
     void add_body(int32_t body);
-    /// A body about to be freed, its contacts already destroyed.
+    /// A body about to be freed, its contacts already destroyed (it is woken first).
     void remove_body(int32_t body);
     /// A contact began joining two awake dynamic bodies, or a joint two dynamic bodies.
     void link(int32_t body_a, int32_t body_b);
     /// A contact or joint that joined this body to another stopped doing so.
     void unlink(int32_t body);
+    /// The contacts' link changes, in order.
+    void apply(const std::vector<LinkChange>& changes);
 
     bool is_awake(int32_t body) const { return bodies_[body].awake_index != null_index; }
     /// Resets the body's rest timer and wakes its island.
     void wake_body(int32_t body);
     void wake_island(int32_t island);
     void wake_all();
+    /// The bodies that joined the awake list since clear_woken(), in the order they did.
+    const std::vector<int32_t>& woken_bodies() const { return woken_; }
+    void clear_woken() { woken_.clear(); }
     /// Puts the body's island to sleep now (the API's sleep), split first if it may be in
-    /// pieces, so that only what touches the body sleeps.
-    void sleep_island_of(int32_t body);
+    /// pieces, so that only what touches the body sleeps; slept(body) is called for each
+    /// body that fell asleep, after they all left the awake list.
+    template <class Slept>
+    void sleep_island_of(int32_t body, LinkVisitor links, Slept&& slept);
 
     /// Kinematic and dynamic bodies that are awake, each at its awake_index.
     const std::vector<int32_t>& awake_bodies() const { return awake_bodies_; }
@@ -82,9 +96,9 @@ public:
     }
     /// Puts islands that rested for time_to_sleep to sleep, splitting at most one;
     /// fell_asleep(body) is called for each body that falls asleep, before it leaves the
-    /// awake list.
-    template <class FellAsleep>
-    void sleep_rested_islands(float time_to_sleep, FellAsleep&& fell_asleep);
+    /// awake list, and slept(body) for each once its island has left it, island by island.
+    template <class FellAsleep, class Slept>
+    void sleep_rested_islands(float time_to_sleep, LinkVisitor links, FellAsleep&& fell_asleep, Slept&& slept);
 
     void validate() const;
 
@@ -98,23 +112,42 @@ private:
     void merge(int32_t from, int32_t into);
     /// Splits a possibly disconnected island into its connected pieces, which are left in
     /// island_pieces_. The first piece keeps the island's slot.
-    void split(int32_t island);
+    void split(int32_t island, LinkVisitor links);
     void put_to_sleep(int32_t island);
+    template <class Slept>
+    void tell_slept(int32_t island, Slept&& slept) const {
+        for (int32_t body = islands_[island].head_body; body != null_index; body = bodies_[body].island_next) {
+            slept(body);
+        }
+    }
 
     Pool<Body>& bodies_;
-    ContactSet& contacts_;
-    const JointSet& joints_;
     Pool<Island> islands_;
     std::vector<int32_t> awake_bodies_;
     std::vector<int32_t> awake_islands_;
     std::vector<float> island_rest_;
     uint64_t awake_version_ = 0;  // per awake island: its shortest body rest time, s
+    std::vector<int32_t> woken_;
     // Scratch kept between steps so that sleeping and splitting allocate nothing.
     std::vector<int32_t> members_, stack_, island_pieces_, resting_;
 };
 
-template <class FellAsleep>
-void Islands::sleep_rested_islands(float time_to_sleep, FellAsleep&& fell_asleep) {
+template <class Slept>
+void Islands::sleep_island_of(int32_t body, LinkVisitor links, Slept&& slept) {
+    if (!is_awake(body)) {
+        return;
+    }
+    int32_t island = bodies_[body].island;
+    if (islands_[island].removed_links > 0) {
+        split(island, links);
+        island = bodies_[body].island;
+    }
+    put_to_sleep(island);
+    tell_slept(island, slept);
+}
+
+template <class FellAsleep, class Slept>
+void Islands::sleep_rested_islands(float time_to_sleep, LinkVisitor links, FellAsleep&& fell_asleep, Slept&& slept) {
     // Candidates first: sleeping reorders the awake island list. The one to split is the
     // largest that may be in pieces (the first such in list order on a tie).
     resting_.clear();
@@ -131,7 +164,7 @@ void Islands::sleep_rested_islands(float time_to_sleep, FellAsleep&& fell_asleep
         }
     }
     if (to_split != null_index) {
-        split(to_split);
+        split(to_split, links);
         resting_.insert(resting_.end(), island_pieces_.begin(), island_pieces_.end());
     }
     for (const int32_t island : resting_) {
@@ -139,6 +172,7 @@ void Islands::sleep_rested_islands(float time_to_sleep, FellAsleep&& fell_asleep
             fell_asleep(body);
         }
         put_to_sleep(island);
+        tell_slept(island, slept);
     }
 }
 

@@ -16,8 +16,8 @@ World::World(const WorldDef& def)
     : settings(def),
       tasks_(def.worker_count, def.tasks),
       joints_(joints, bodies),
-      contacts_(settings, bodies, shapes, joints_, islands_, events_, tasks_),
-      islands_(bodies, contacts_, joints_),
+      contacts_(settings, bodies, shapes, joints_, events_, tasks_),
+      islands_(bodies),
       solver_(SolverLinks{bodies, shapes, joints, joints_, contacts_, islands_, broad_phase_, events_, tasks_},
               def.simd_path),
       continuous_(bodies, shapes, broad_phase_, events_, tasks_),
@@ -65,6 +65,7 @@ void World::destroy_body(int32_t body) {
     }
     if (bodies[body].type != BodyType::static_body) {
         islands_.remove_body(body);
+        follow_woken_bodies();
     }
     bodies.free(body);
 }
@@ -78,12 +79,13 @@ void World::set_type(int32_t body, BodyType type) {
     wake_body(body);
     contacts_.visit_contacts(body, [this](int32_t, int32_t other) { wake_body(other); });
     for (int32_t s = bodies[body].head_shape; s != null_index; s = shapes[s].next_in_body) {
-        contacts_.destroy_contacts_of_shape(s, false);
+        destroy_contacts_of_shape(s, false);
         broad_phase_.destroy_proxy(shapes[s].proxy_key);
     }
     unlink_joints(body);
     if (bodies[body].type != BodyType::static_body) {
         islands_.remove_body(body);
+        follow_woken_bodies();
     }
     Body& b = bodies[body];
     b.type = type;
@@ -173,7 +175,7 @@ void World::destroy_shape(int32_t shape) {
 // the mass.
 void World::detach_shape(int32_t shape) {
     wake_body(shapes[shape].body);
-    contacts_.destroy_contacts_of_shape(shape, false);
+    destroy_contacts_of_shape(shape, false);
     const Shape& s = shapes[shape];
     broad_phase_.destroy_proxy(s.proxy_key);
     Body& b = bodies[s.body];
@@ -471,6 +473,51 @@ bool World::apply_angular_impulse(int32_t body, float impulse, bool wake) {
     return change_velocity(body, Vec2{}, bodies[body].inv_inertia * impulse, wake);
 }
 
+void World::wake_body(int32_t body) {
+    islands_.wake_body(body);
+    follow_woken_bodies();
+}
+
+void World::wake_all() {
+    islands_.wake_all();
+    follow_woken_bodies();
+}
+
+void World::sleep_body(int32_t body) {
+    islands_.sleep_island_of(body, [this](int32_t b, FunctionRef<void(int32_t)> follow) { visit_island_links(b, follow); },
+                             [this](int32_t b) { contacts_.body_slept(b); });
+}
+
+// The contacts of bodies whose island woke join the awake contact list, in the order the
+// bodies joined the awake list.
+void World::follow_woken_bodies() {
+    for (const int32_t body : islands_.woken_bodies()) {
+        contacts_.body_woke(body);
+    }
+    islands_.clear_woken();
+}
+
+void World::apply_link_changes() {
+    islands_.apply(contacts_.link_changes());
+    contacts_.clear_link_changes();
+}
+
+void World::destroy_contacts_of_shape(int32_t shape, bool only_filtered_out) {
+    contacts_.destroy_contacts_of_shape(shape, only_filtered_out, [this](int32_t body) { wake_body(body); });
+    apply_link_changes();
+}
+
+void World::destroy_contacts_between(int32_t body_a, int32_t body_b) {
+    contacts_.destroy_contacts_between(body_a, body_b, [this](int32_t body) { wake_body(body); });
+    apply_link_changes();
+}
+
+// What links a body into its island: solid contacts with points, and joints.
+void World::visit_island_links(int32_t body, FunctionRef<void(int32_t other)> follow) const {
+    contacts_.visit_links(body, follow);
+    joints_.visit_links(body, follow);
+}
+
 // Resting bodies must feel the new gravity.
 void World::set_gravity(Vec2 gravity) {
     settings.gravity = gravity;
@@ -492,7 +539,7 @@ void World::set_restitution(int32_t shape, float restitution) {
 void World::set_filter(int32_t shape, const Filter& filter) {
     wake_body(shapes[shape].body);
     shapes[shape].filter = filter;
-    contacts_.destroy_contacts_of_shape(shape, true);
+    destroy_contacts_of_shape(shape, true);
     broad_phase_.destroy_proxy(shapes[shape].proxy_key);
     create_proxy(shape, true);
 }

@@ -127,10 +127,10 @@ public:
     bool is_awake(int32_t body) const { return islands_.is_awake(body); }
     bool is_quarantined(int32_t body) const { return bodies[body].quarantined; }
     /// Wakes the body's island (and resets its rest timer); a no-op for static bodies.
-    void wake_body(int32_t body) { islands_.wake_body(body); }
+    void wake_body(int32_t body);
     /// Puts the body and everything touching it to sleep now.
-    void sleep_body(int32_t body) { islands_.sleep_island_of(body); }
-    void wake_all() { islands_.wake_all(); }
+    void sleep_body(int32_t body);
+    void wake_all();
     void set_gravity(Vec2 gravity);
     /// Changes a shape's material; its contacts mix it in at once (asleep or not).
     void set_friction(int32_t shape, float friction);
@@ -205,6 +205,13 @@ private:
     void quarantine_non_finite_bodies();
     void forget_joint_impulses(int32_t body);
     void report_sensor_crossings();
+    // The islands and the contact set hold no reference to each other: the world hands
+    // each what the other changed.
+    void follow_woken_bodies();
+    void apply_link_changes();
+    void destroy_contacts_of_shape(int32_t shape, bool only_filtered_out);
+    void destroy_contacts_between(int32_t body_a, int32_t body_b);
+    void visit_island_links(int32_t body, FunctionRef<void(int32_t other)> follow) const;
     void validate_body(int32_t body) const;
 
     TaskSystem tasks_;

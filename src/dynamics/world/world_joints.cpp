@@ -13,7 +13,7 @@ int32_t World::create_joint(const JointDef& def) {
     wake_body(def.body_a);
     wake_body(def.body_b);
     if (!def.collide_connected) {
-        contacts_.destroy_contacts_between(def.body_a, def.body_b);
+        destroy_contacts_between(def.body_a, def.body_b);
     }
     link_joint(joint);
     return joint;
@@ -40,7 +40,7 @@ void World::joint_changed(int32_t joint) {
     if (def.collide_connected) {
         let_bodies_meet(def.body_a, def.body_b);  // a no-op for pairs that have a contact
     } else {
-        contacts_.destroy_contacts_between(def.body_a, def.body_b);
+        destroy_contacts_between(def.body_a, def.body_b);
     }
 }
 

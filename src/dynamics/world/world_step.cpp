@@ -33,7 +33,7 @@ void World::step(float time_step, int32_t substep_count) {
     }
     const StepContext step(settings, time_step, substep_count, tasks_.worker_count());
     cover_step_ahead(time_step);
-    contacts_.find_new_contacts(step, broad_phase_);
+    contacts_.find_new_contacts(step, broad_phase_, [this](int32_t body) { wake_body(body); });
     profile_.pairs += timer.lap_ms();
 
     contacts_.collide(step);
@@ -41,8 +41,10 @@ void World::step(float time_step, int32_t substep_count) {
     // woken contacts' manifolds are current, since sleeping bodies did not move.
     for (const int32_t island : contacts_.islands_to_wake()) {
         islands_.wake_island(island);
+        follow_woken_bodies();
     }
     contacts_.update_links();
+    apply_link_changes();
     profile_.collide += timer.lap_ms();
 
     solver_.step(step);
@@ -55,12 +57,16 @@ void World::step(float time_step, int32_t substep_count) {
     profile_.update_bounds += timer.lap_ms();
 
     contacts_.end_step(step);
+    apply_link_changes();
     if (settings.enable_continuous) {
         report_sensor_crossings();
     }
     profile_.events += timer.lap_ms();
     if (settings.enable_sleep) {
-        islands_.sleep_rested_islands(settings.time_to_sleep, [this](int32_t body) { report_falling_asleep(body); });
+        islands_.sleep_rested_islands(
+            settings.time_to_sleep,
+            [this](int32_t body, FunctionRef<void(int32_t)> follow) { visit_island_links(body, follow); },
+            [this](int32_t body) { report_falling_asleep(body); }, [this](int32_t body) { contacts_.body_slept(body); });
     }
     profile_.sleep += timer.lap_ms();
     if (!solver_.non_finite_bodies().empty()) {

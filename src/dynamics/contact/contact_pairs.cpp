@@ -1,0 +1,92 @@
+// SPDX-License-Identifier: MIT
+// ContactSet: new contacts from the broadphase's pairs, found by the workers and made
+// on one thread in the broadphase's order.
+#include "core/radix_sort.hpp"
+#include "dynamics/constants.hpp"
+#include "dynamics/contact/contact_set.hpp"
+#include "dynamics/joint/joint_set.hpp"
+
+namespace i2d {
+
+// Most candidates are pairs that have a contact already: the pair set answers that
+// with one lookup, before the shapes and bodies are read.
+bool ContactSet::may_pair(int32_t shape_a, int32_t shape_b) const {
+    if (pair_set_.contains(pair_key(shape_a, shape_b))) {
+        return false;
+    }
+    const Shape& a = shapes_[shape_a];
+    const Shape& b = shapes_[shape_b];
+    if (a.body == b.body || (a.is_sensor && b.is_sensor)) {
+        return false;
+    }
+    if (bodies_[a.body].type != BodyType::dynamic && bodies_[b.body].type != BodyType::dynamic) {
+        return false;
+    }
+    return should_collide(a.filter, b.filter) && !joints_.keeps_apart(a.body, b.body);
+}
+
+// One pair-finding stage's range: the self search's parts, or the queries.
+template <bool SelfSearch>
+void ContactSet::pair_range(const StepContext&, ContactSet& self, const PairStage& arg, int32_t begin, int32_t end,
+                            int32_t) {
+    std::vector<ShapePairCandidate>& out = self.block_pairs_[arg.list][std::size_t(begin / arg.items_per_block)];
+    out.clear();
+    const auto accept = [&self](int32_t a, int32_t b) { return self.may_pair(a, b); };
+    const auto ahead = [&self](int32_t a, int32_t b) { self.pair_set_.prefetch(pair_key(a, b)); };
+    if constexpr (SelfSearch) {
+        self.querying_->self_pairs(begin, end, accept, out, ahead);
+    } else {
+        self.querying_->query_pairs(begin, end, accept, out, ahead);
+    }
+}
+
+// New pairs, block by block in the broadphase's order, become contacts on this thread.
+// Creation order is the awake list's order, which the colouring follows, and so the order
+// of solving: the self search's pairs are first put in the order of their earlier leaf
+// in the tree's storage, close to the order the queries give. Made as the search found
+// them, many_pyramids' step took 8 % longer (its solve 10 %); sorted by shape ids (row by
+// row), the 70-row pyramid crept 5.9 cm sideways in 2000 steps instead of 0.35 cm (row
+// order gives every box's contacts the same pattern of colours: a bias to one side).
+void ContactSet::find_new_contacts(const StepContext& step, BroadPhase& broad_phase, WakeBody wake) {
+    const int32_t queries = broad_phase.begin_pair_queries();
+    const int32_t self_parts = broad_phase.self_part_count();
+    const int32_t workers = tasks_.worker_count();
+    const bool parallel = workers > 1 && (queries >= parallel_min_moved_proxies || self_parts > 0);
+    stages_.clear();
+    stages_.push_back(make_stage<&ContactSet::pair_range<true>>(*this, PairStage{0}, self_parts, workers, parallel,
+                                                                self_search_parts_per_work_block));
+    stages_.push_back(make_stage<&ContactSet::pair_range<false>>(*this, PairStage{1}, queries, workers, parallel,
+                                                                 proxies_per_work_block));
+    for (int32_t s = 0; s < 2; ++s) {
+        Stage& stage = stages_[std::size_t(s)];
+        stage.set_arg(PairStage{s, stage.items_per_block});
+        const std::size_t blocks = std::size_t(stage.block_count());
+        if (block_pairs_[s].size() < blocks) {
+            block_pairs_[s].resize(blocks);
+        }
+    }
+    querying_ = &broad_phase;
+    runner_.run(tasks_, stages_, parallel, &step);
+    querying_ = nullptr;
+    broad_phase.end_pair_queries();
+    for (int32_t s = 0; s < 2; ++s) {
+        new_pairs_.clear();
+        const Stage& stage = stages_[std::size_t(s)];
+        for (int32_t b = 0; b < (stage.item_count > 0 ? stage.block_count() : 0); ++b) {
+            const std::vector<ShapePairCandidate>& found = block_pairs_[s][std::size_t(b)];
+            new_pairs_.insert(new_pairs_.end(), found.begin(), found.end());
+        }
+        if (s == 0) {
+            radix_sort(new_pairs_, new_pairs_scratch_, [&](const ShapePairCandidate& p) {
+                const uint32_t a = broad_phase.storage_order_of(shapes_[p.shape_a].proxy_key);
+                const uint32_t b = broad_phase.storage_order_of(shapes_[p.shape_b].proxy_key);
+                return a < b ? a : b;
+            });
+        }
+        for (const ShapePairCandidate& pair : new_pairs_) {
+            create_contact(pair.shape_a, pair.shape_b, wake);
+        }
+    }
+}
+
+}  // namespace i2d
