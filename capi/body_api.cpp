@@ -8,7 +8,7 @@
 #include "boundary.hpp"
 #include "convert.hpp"
 #include "geometry_checks.hpp"
-#include "dynamics/constants.hpp"
+#include "limits.hpp"
 #include "math/math.hpp"
 
 using namespace i2d;
@@ -18,8 +18,8 @@ namespace {
 
 // Chains are one-sided and massless: a body that holds one stays static or kinematic.
 bool has_chain(const World& world, const Body& body) {
-    for (int32_t s = body.head_shape; s != null_index; s = world.shapes[s].next_in_body) {
-        if (world.shapes[s].chain != null_index) {
+    for (int32_t s = body.head_shape; s != null_index; s = world.shapes()[s].next_in_body) {
+        if (world.shapes()[s].chain != null_index) {
             return true;
         }
     }
@@ -88,7 +88,7 @@ I2D_API i2d_body_id i2d_body_create(i2d_world_id world_id, const i2d_body_def* d
             call.fail(I2D_ERR_CAPACITY, "the world holds %d bodies, the most it can", Pool<Body>::max_slots);
             return I2D_NULL_BODY_ID;
         }
-        return make_body_id(w.id, index, w.world->bodies.generation(index));
+        return make_body_id(w.id, index, w.world->bodies().generation(index));
     });
 }
 
@@ -386,7 +386,7 @@ I2D_API i2d_status i2d_body_set_user_data(i2d_body_id id, void* user_data) {
         if (!call.body(id, b)) {
             return last_status();
         }
-        b.body().user_data = user_data;
+        b.world->set_user_data(b.index, user_data);
         return I2D_OK;
     });
 }
@@ -410,8 +410,8 @@ I2D_API int32_t i2d_body_get_shapes(i2d_body_id id, i2d_shape_id* out, int32_t c
         }
         int32_t written = 0;
         for (int32_t s = b.body().head_shape; s != null_index && written < capacity;
-             s = b.world->shapes[s].next_in_body) {
-            out[written++] = make_shape_id(b.id, s, b.world->shapes.generation(s));
+             s = b.world->shapes()[s].next_in_body) {
+            out[written++] = make_shape_id(b.id, s, b.world->shapes().generation(s));
         }
         return b.body().shape_count;
     });

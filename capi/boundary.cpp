@@ -6,7 +6,7 @@
 #include <cstdarg>
 #include <cstdio>
 
-#include "dynamics/constants.hpp"
+#include "limits.hpp"
 #include "registry.hpp"
 
 namespace i2d::capi {
@@ -75,7 +75,7 @@ bool Call::body(i2d_body_id id, BodyRef& out) {
     if (!decode(id.bits, IdKind::body, "body", out.id, out.world)) {
         return false;
     }
-    if (!out.world->bodies.is_live(out.id.index, out.id.generation)) {
+    if (!out.world->bodies().is_live(out.id.index, out.id.generation)) {
         return fail(I2D_ERR_INVALID_HANDLE, "body id is stale: the body was destroyed");
     }
     out.index = out.id.index;
@@ -95,7 +95,7 @@ bool Call::shape(i2d_shape_id id, ShapeRef& out) {
     if (!decode(id.bits, IdKind::shape, "shape", out.id, out.world)) {
         return false;
     }
-    if (!out.world->shapes.is_live(out.id.index, out.id.generation)) {
+    if (!out.world->shapes().is_live(out.id.index, out.id.generation)) {
         return fail(I2D_ERR_INVALID_HANDLE, "shape id is stale: the shape or its body was destroyed");
     }
     out.index = out.id.index;
@@ -106,7 +106,7 @@ bool Call::joint(i2d_joint_id id, JointRef& out) {
     if (!decode(id.bits, IdKind::joint, "joint", out.id, out.world)) {
         return false;
     }
-    if (!out.world->joints.is_live(out.id.index, out.id.generation)) {
+    if (!out.world->joints().is_live(out.id.index, out.id.generation)) {
         return fail(I2D_ERR_INVALID_HANDLE, "joint id is stale: the joint or one of its bodies was destroyed");
     }
     out.index = out.id.index;
@@ -117,7 +117,7 @@ bool Call::chain(i2d_chain_id id, ChainRef& out) {
     if (!decode(id.bits, IdKind::chain, "chain", out.id, out.world)) {
         return false;
     }
-    if (!out.world->chains.is_live(out.id.index, out.id.generation)) {
+    if (!out.world->chains().is_live(out.id.index, out.id.generation)) {
         return fail(I2D_ERR_INVALID_HANDLE, "chain id is stale: the chain or its body was destroyed");
     }
     out.index = out.id.index;

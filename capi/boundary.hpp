@@ -30,21 +30,21 @@ struct BodyRef {
     World* world = nullptr;
     int32_t index = -1;
     IdFields id;
-    Body& body() const { return world->bodies[index]; }
+    const Body& body() const { return world->bodies()[index]; }
 };
 
 struct ShapeRef {
     World* world = nullptr;
     int32_t index = -1;
     IdFields id;
-    Shape& shape() const { return world->shapes[index]; }
+    const Shape& shape() const { return world->shapes()[index]; }
 };
 
 struct JointRef {
     World* world = nullptr;
     int32_t index = -1;
     IdFields id;
-    Joint& joint() const { return world->joints[index]; }
+    const Joint& joint() const { return world->joints()[index]; }
 };
 
 struct ChainRef {

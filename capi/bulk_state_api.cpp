@@ -14,7 +14,7 @@
 
 #include "boundary.hpp"
 #include "convert.hpp"
-#include "dynamics/constants.hpp"
+#include "limits.hpp"
 #include "geometry_checks.hpp"
 #include "registry.hpp"
 
@@ -46,7 +46,7 @@ bool explain_bad_body(Call& call, const WorldRef& w, i2d_body_id id, int32_t pos
 inline int32_t body_slot(const WorldRef& w, i2d_body_id id) {
     const IdFields f = decode_id(id.bits);
     const bool ours = id.bits != 0 && f.kind == IdKind::body && f.world_slot == w.id.world_slot &&
-                      f.world_generation == w.id.world_generation && w.world->bodies.is_live(f.index, f.generation);
+                      f.world_generation == w.id.world_generation && w.world->bodies().is_live(f.index, f.generation);
     return ours ? f.index : -1;
 }
 
@@ -154,7 +154,7 @@ I2D_API i2d_status i2d_world_get_body_transforms(i2d_world_id world_id, const i2
             return last_status();
         }
         for (int32_t i = 0; i < count; ++i) {
-            out[i] = to_public(w.world->bodies[checked_slot(bodies[i])].transform);
+            out[i] = to_public(w.world->bodies()[checked_slot(bodies[i])].transform);
         }
         return I2D_OK;
     });
@@ -168,7 +168,7 @@ I2D_API i2d_status i2d_world_get_body_velocities(i2d_world_id world_id, const i2
             return last_status();
         }
         for (int32_t i = 0; i < count; ++i) {
-            const Body& body = w.world->bodies[checked_slot(bodies[i])];
+            const Body& body = w.world->bodies()[checked_slot(bodies[i])];
             if (linear != nullptr) {
                 linear[i] = to_public(body.linear_velocity);
             }

@@ -5,7 +5,7 @@
 
 #include "boundary.hpp"
 #include "convert.hpp"
-#include "dynamics/constants.hpp"
+#include "limits.hpp"
 
 using namespace i2d;
 using namespace i2d::capi;
@@ -109,7 +109,7 @@ I2D_API i2d_chain_id i2d_chain_create(i2d_body_id body, const i2d_chain_def* def
             call.fail(I2D_ERR_CAPACITY, "the world's shape or chain pool is full");
             return I2D_NULL_CHAIN_ID;
         }
-        return make_chain_id(b.id, index, b.world->chains.generation(index));
+        return make_chain_id(b.id, index, b.world->chains().generation(index));
     });
 }
 
@@ -141,10 +141,10 @@ I2D_API int32_t i2d_chain_get_segments(i2d_chain_id id, i2d_shape_id* out, int32
             call.fail(I2D_ERR_INVALID_ARGUMENT, "out is NULL or capacity (%d) is negative", int(capacity));
             return -1;
         }
-        const std::vector<int32_t>& shapes = c.world->chains[c.index].shapes;
+        const std::vector<int32_t>& shapes = c.world->chains()[c.index].shapes;
         for (int32_t i = 0; i < capacity && i < int32_t(shapes.size()); ++i) {
             const int32_t s = shapes[std::size_t(i)];
-            out[i] = make_shape_id(c.id, s, c.world->shapes.generation(s));
+            out[i] = make_shape_id(c.id, s, c.world->shapes().generation(s));
         }
         return int32_t(shapes.size());
     });
@@ -157,6 +157,6 @@ I2D_API i2d_chain_id i2d_shape_get_chain(i2d_shape_id id) {
             return I2D_NULL_CHAIN_ID;
         }
         const int32_t chain = s.shape().chain;
-        return make_chain_id(s.id, chain, s.world->chains.generation(chain));
+        return make_chain_id(s.id, chain, s.world->chains().generation(chain));
     });
 }

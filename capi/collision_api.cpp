@@ -10,7 +10,7 @@
 #include "collision/hull.hpp"
 #include "collision/manifold.hpp"
 #include "convert.hpp"
-#include "dynamics/constants.hpp"
+#include "limits.hpp"
 
 using namespace i2d;
 using namespace i2d::capi;

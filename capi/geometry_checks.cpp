@@ -9,7 +9,7 @@
 
 #include "collision/collision_constants.hpp"
 #include "convert.hpp"
-#include "dynamics/constants.hpp"
+#include "limits.hpp"
 #include "math/math.hpp"
 
 namespace i2d::capi {

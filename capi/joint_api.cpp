@@ -120,7 +120,7 @@ i2d_joint_id create(Call& call, i2d_world_id world_id, const Def* def, const cha
         call.fail(I2D_ERR_CAPACITY, "the world holds %d joints, the most it can", Pool<Joint>::max_slots);
         return I2D_NULL_JOINT_ID;
     }
-    return make_joint_id(w.id, index, w.world->joints.generation(index));
+    return make_joint_id(w.id, index, w.world->joints().generation(index));
 }
 
 // The common prologue of calls that change a joint: a live id and an unlocked world.
@@ -139,8 +139,7 @@ i2d_status change_joint(const char* function, i2d_joint_id id, Change&& change) 
         if (!change(call, def)) {
             return last_status();
         }
-        j.joint().def = def;
-        j.world->joint_changed(j.index);
+        j.world->set_joint_def(j.index, def);
         return I2D_OK;
     });
 }
@@ -203,14 +202,14 @@ I2D_API i2d_world_id i2d_joint_get_world(i2d_joint_id id) {
 I2D_API i2d_body_id i2d_joint_get_body_a(i2d_joint_id id) {
     return read_joint("i2d_joint_get_body_a", id, I2D_NULL_BODY_ID, [](const JointRef& j) {
         const int32_t body = j.joint().def.body_a;
-        return make_body_id(j.id, body, j.world->bodies.generation(body));
+        return make_body_id(j.id, body, j.world->bodies().generation(body));
     });
 }
 
 I2D_API i2d_body_id i2d_joint_get_body_b(i2d_joint_id id) {
     return read_joint("i2d_joint_get_body_b", id, I2D_NULL_BODY_ID, [](const JointRef& j) {
         const int32_t body = j.joint().def.body_b;
-        return make_body_id(j.id, body, j.world->bodies.generation(body));
+        return make_body_id(j.id, body, j.world->bodies().generation(body));
     });
 }
 
@@ -296,7 +295,7 @@ I2D_API i2d_status i2d_joint_set_user_data(i2d_joint_id id, void* user_data) {
         if (!call.joint(id, j)) {
             return last_status();
         }
-        j.joint().def.user_data = user_data;
+        j.world->set_joint_user_data(j.index, user_data);
         return I2D_OK;
     });
 }
@@ -329,6 +328,6 @@ I2D_API i2d_joint_events i2d_world_get_joint_events(i2d_world_id id) {
 I2D_API int32_t i2d_world_get_joint_count(i2d_world_id id) {
     return guarded("i2d_world_get_joint_count", int32_t(0), [&](Call& call) {
         WorldRef w;
-        return call.world(id, w) ? w.world->joints.count() : int32_t(0);
+        return call.world(id, w) ? w.world->joints().count() : int32_t(0);
     });
 }

@@ -14,7 +14,7 @@
 
 #include "boundary.hpp"
 #include "convert.hpp"
-#include "dynamics/constants.hpp"
+#include "limits.hpp"
 #include "dynamics/joint/joint.hpp"
 
 namespace i2d::capi::joint_rules {

@@ -45,8 +45,7 @@ i2d_status change_setting(const char* function, JointType kind, i2d_joint_id id,
         if (!change(call, def) || !ordered_bounds(call, def, "")) {
             return last_status();
         }
-        j.joint().def = def;
-        j.world->joint_changed(j.index);
+        j.world->set_joint_def(j.index, def);
         return I2D_OK;
     });
 }

@@ -21,7 +21,7 @@ struct CallbackAdapter {
 
     static bool visit(int32_t shape, void* self) {
         const auto* a = static_cast<const CallbackAdapter*>(self);
-        return a->fn(make_shape_id(a->world_id, shape, a->world->shapes.generation(shape)), a->context);
+        return a->fn(make_shape_id(a->world_id, shape, a->world->shapes().generation(shape)), a->context);
     }
 };
 
@@ -36,7 +36,7 @@ struct IdCollector {
     static bool visit(int32_t shape, void* self) {
         auto* c = static_cast<IdCollector*>(self);
         if (c->total < c->capacity) {
-            c->out[c->total] = make_shape_id(c->world_id, shape, c->world->shapes.generation(shape));
+            c->out[c->total] = make_shape_id(c->world_id, shape, c->world->shapes().generation(shape));
         }
         ++c->total;
         return true;
@@ -101,7 +101,7 @@ struct RayAdapter {
 
     static float visit(int32_t shape, Vec2 point, Vec2 normal, float fraction, void* self) {
         const auto* a = static_cast<const RayAdapter*>(self);
-        return a->fn(make_shape_id(a->world_id, shape, a->world->shapes.generation(shape)), to_public(point),
+        return a->fn(make_shape_id(a->world_id, shape, a->world->shapes().generation(shape)), to_public(point),
                      to_public(normal), fraction, a->context);
     }
 };
@@ -136,7 +136,7 @@ I2D_API i2d_ray_result i2d_world_cast_ray_closest(i2d_world_id world, i2d_vec2 o
                                                       capi::to_core(filter));
         i2d_ray_result out{};
         if (r.hit) {
-            out.shape = make_shape_id(w.id, r.shape, w.world->shapes.generation(r.shape));
+            out.shape = make_shape_id(w.id, r.shape, w.world->shapes().generation(r.shape));
             out.point = to_public(r.point);
             out.normal = to_public(r.normal);
             out.fraction = r.fraction;
@@ -199,7 +199,7 @@ I2D_API int32_t i2d_world_cast_ray_all(i2d_world_id world, i2d_vec2 origin, i2d_
         const int32_t total = int32_t(all.hits.size());
         for (int32_t i = 0; i < total && i < capacity; ++i) {
             const RayResult& r = all.hits[std::size_t(i)];
-            out[i] = i2d_ray_result{make_shape_id(w.id, r.shape, w.world->shapes.generation(r.shape)), to_public(r.point),
+            out[i] = i2d_ray_result{make_shape_id(w.id, r.shape, w.world->shapes().generation(r.shape)), to_public(r.point),
                                     to_public(r.normal), r.fraction, true};
         }
         return total;

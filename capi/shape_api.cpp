@@ -8,7 +8,7 @@
 #include "collision/geometry.hpp"
 #include "collision/hull.hpp"
 #include "convert.hpp"
-#include "dynamics/constants.hpp"
+#include "limits.hpp"
 
 using namespace i2d;
 using namespace i2d::capi;
@@ -46,7 +46,7 @@ i2d_shape_id create_shape(Call& call, const BodyRef& b, const i2d_shape_def* def
         call.fail(I2D_ERR_CAPACITY, "the world holds %d shapes, the most it can", Pool<Shape>::max_slots);
         return I2D_NULL_SHAPE_ID;
     }
-    return make_shape_id(b.id, index, b.world->shapes.generation(index));
+    return make_shape_id(b.id, index, b.world->shapes().generation(index));
 }
 
 bool mutable_shape(Call& call, i2d_shape_id id, ShapeRef& s) { return call.shape(id, s) && call.unlocked(*s.world); }
@@ -240,7 +240,7 @@ I2D_API i2d_body_id i2d_shape_get_body(i2d_shape_id id) {
             return I2D_NULL_BODY_ID;
         }
         const int32_t body = s.shape().body;
-        return make_body_id(s.id, body, s.world->bodies.generation(body));
+        return make_body_id(s.id, body, s.world->bodies().generation(body));
     });
 }
 
@@ -402,7 +402,7 @@ I2D_API i2d_status i2d_shape_set_user_data(i2d_shape_id id, void* user_data) {
         if (!call.shape(id, s)) {
             return last_status();
         }
-        s.shape().user_data = user_data;
+        s.world->set_shape_user_data(s.index, user_data);
         return I2D_OK;
     });
 }

@@ -5,7 +5,7 @@
 
 #include "boundary.hpp"
 #include "convert.hpp"
-#include "dynamics/constants.hpp"
+#include "limits.hpp"
 #include "geometry_checks.hpp"
 
 using namespace i2d;
@@ -70,7 +70,7 @@ struct CastAdapter {
 
     static float visit(int32_t shape, Vec2 point, Vec2 normal, float fraction, void* self) {
         const auto* a = static_cast<const CastAdapter*>(self);
-        return a->fn(make_shape_id(a->world_id, shape, a->world->shapes.generation(shape)), to_public(point),
+        return a->fn(make_shape_id(a->world_id, shape, a->world->shapes().generation(shape)), to_public(point),
                      to_public(normal), fraction, a->context);
     }
 };
@@ -83,7 +83,7 @@ struct OverlapAdapter {
 
     static bool visit(int32_t shape, void* self) {
         const auto* a = static_cast<const OverlapAdapter*>(self);
-        return a->fn(make_shape_id(a->world_id, shape, a->world->shapes.generation(shape)), a->context);
+        return a->fn(make_shape_id(a->world_id, shape, a->world->shapes().generation(shape)), a->context);
     }
 };
 
@@ -97,7 +97,7 @@ struct IdFiller {
     static bool visit(int32_t shape, void* self) {
         auto* f = static_cast<IdFiller*>(self);
         if (f->total < f->capacity) {
-            f->out[f->total] = make_shape_id(f->world_id, shape, f->world->shapes.generation(shape));
+            f->out[f->total] = make_shape_id(f->world_id, shape, f->world->shapes().generation(shape));
         }
         ++f->total;
         return true;
@@ -153,7 +153,7 @@ I2D_API i2d_ray_result i2d_world_cast_shape_closest(i2d_world_id world, const i2
         const RayResult r = w.world->cast_shape_closest(core, to_core(translation), to_core(filter));
         i2d_ray_result out{};
         if (r.hit) {
-            out.shape = make_shape_id(w.id, r.shape, w.world->shapes.generation(r.shape));
+            out.shape = make_shape_id(w.id, r.shape, w.world->shapes().generation(r.shape));
             out.point = to_public(r.point);
             out.normal = to_public(r.normal);
             out.fraction = r.fraction;

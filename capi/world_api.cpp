@@ -6,7 +6,7 @@
 
 #include "boundary.hpp"
 #include "convert.hpp"
-#include "dynamics/constants.hpp"
+#include "limits.hpp"
 #include "registry.hpp"
 
 using namespace i2d;
@@ -207,7 +207,7 @@ I2D_API i2d_status i2d_world_set_gravity(i2d_world_id id, i2d_vec2 gravity) {
 I2D_API i2d_vec2 i2d_world_get_gravity(i2d_world_id id) {
     return guarded("i2d_world_get_gravity", i2d_vec2{0, 0}, [&](Call& call) {
         WorldRef w;
-        return call.world(id, w) ? to_public(w.world->settings.gravity) : i2d_vec2{0, 0};
+        return call.world(id, w) ? to_public(w.world->settings().gravity) : i2d_vec2{0, 0};
     });
 }
 

@@ -21,17 +21,11 @@
 #include <vector>
 
 #include "broadphase/dynamic_tree.hpp"
+#include "broadphase/proxy_key.hpp"
 #include "core/bit_set.hpp"
 #include "core/radix_sort.hpp"
 
 namespace i2d {
-
-enum class ProxyKind : uint8_t { static_proxy = 0, kinematic_proxy = 1, dynamic_proxy = 2, count };
-
-/// A proxy key packs the tree (low 2 bits) and the proxy id within it.
-inline int32_t make_proxy_key(int32_t proxy, ProxyKind kind) { return (proxy << 2) | int32_t(kind); }
-inline ProxyKind proxy_kind(int32_t key) { return ProxyKind(key & 3); }
-inline int32_t proxy_id(int32_t key) { return key >> 2; }
 
 struct ShapePairCandidate {
     int32_t shape_a, shape_b;  // shape_a < shape_b

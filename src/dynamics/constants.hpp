@@ -1,18 +1,11 @@
 // SPDX-License-Identifier: MIT
-// Tuning numbers and limits, each with its unit and what changing it risks.
+// Tuning numbers of the step, each with its unit and what changing it risks. The limits
+// the C boundary holds input to are in capi/limits.hpp.
 #pragma once
 
 #include <cstdint>
 
 namespace i2d {
-
-/// Largest radius or half extent of a shape, m. Larger sizes make float precision
-/// useless at the contact and let mass overflow.
-constexpr float max_shape_extent = 100000.0f;
-
-/// Smallest radius or half extent, m. Far below the contact slop (0.005 m) already;
-/// smaller shapes have masses whose inverse overflows.
-constexpr float min_shape_extent = 1.0e-4f;
 
 /// How far a moving shape's fat box reaches beyond its tight box: this fraction of the
 /// shape's size (half the diagonal of its box), at most the maximum, m. Larger margins
@@ -24,48 +17,15 @@ constexpr float min_shape_extent = 1.0e-4f;
 constexpr float aabb_margin_fraction = 0.125f;
 constexpr float max_aabb_margin = 0.1f;
 
-/// Largest |coordinate| accepted for positions and points, m. Float has about 60 m of
-/// resolution out there: beyond it geometry is meaningless.
-constexpr float max_coordinate = 1.0e9f;
-
-/// A rotation given by a caller must have c^2 + s^2 within this of 1; it is then
-/// normalised exactly. Looser input is more likely a bug than rounding.
-constexpr float rotation_normalization_tolerance = 1.0e-3f;
-
 /// Largest turn of a body in one substep, rad. Faster spins are clamped: beyond a
 /// quarter turn per substep contacts alias and thin shapes tunnel.
 constexpr float max_rotation_per_substep = 0.25f * 3.14159265f;
-
-/// Largest shape density, kg/m^2: keeps mass x offset finite for the largest shapes.
-constexpr float max_density = 1.0e10f;
-
-/// Largest restitution and speed limit a world accepts: restitution x speed must stay
-/// a finite impulse target.
-constexpr float max_restitution = 100.0f;
-constexpr float max_speed_limit = 1.0e5f;
 
 /// Fastest spin a body is given, rad/s: set and impulse-changed angular velocities are
 /// clamped to it where they enter. The step's own clamp (a quarter turn per substep) is
 /// far lower at any practical substep; this one keeps w x r and its square finite for
 /// the largest shapes before that clamp runs.
 constexpr float max_angular_speed = 1.0e5f;
-
-/// Longest step, s. Longer steps only lose accuracy, and speed x step must stay far
-/// from float overflow.
-constexpr float max_time_step = 1000.0f;
-
-/// Shortest step other than 0, s. The solver divides by the substep: a denormal step
-/// (found by fuzzing: 1e-45 s) made its rates infinite and every touching body NaN.
-/// A microsecond with the most substeps keeps every rate times speed far from overflow.
-constexpr float min_time_step = 1.0e-6f;
-
-/// Largest number of substeps a caller may ask for.
-constexpr int32_t max_substeps = 1000;
-
-/// Upper bound of unitless or per-second settings (stiffness, damping ratio, rolling
-/// resistance, sleep time): far beyond any useful value, small enough to stay finite in
-/// products with speeds and steps.
-constexpr float max_setting = 1.0e5f;
 
 /// Contact recycling (contact.hpp): a manifold is kept while the farthest point of the
 /// two bodies moved less than this relative to each other since it was made, m. The
@@ -95,13 +55,6 @@ constexpr float friction_anchor_share = 1.0f;
 /// safety factor). Smaller values sweep more bodies that the speculative contacts would
 /// have stopped anyway; larger ones let thin bodies tunnel through thin walls.
 constexpr float continuous_safety_factor = 0.5f;
-
-/// Most points a chain may have: a million segments is a large level; more is more
-/// likely a bad count than a level.
-constexpr int32_t max_chain_points = 1000000;
-
-/// Softest contact a world accepts, Hz: below it stacks sink visibly at rest.
-constexpr float min_contact_hertz = 1.0e-3f;
 
 // Threads. Handing work to other workers costs microseconds per stage, so a world
 // smaller than this runs its step on the calling thread alone (same bits either way);

@@ -10,6 +10,7 @@
 using namespace i2d;
 using unit::add_body;
 using unit::add_box;
+using unit::without_gravity;
 
 namespace {
 
@@ -19,7 +20,7 @@ constexpr int32_t substeps = 4;
 int32_t add_joint(World& world, JointType type, int32_t a, int32_t b, bool collide_connected = false) {
     JointDef def;
     def.type = type;
-    def.distance.length = length(world.bodies[b].center - world.bodies[a].center);  // holds them where they are
+    def.distance.length = length(world.bodies()[b].center - world.bodies()[a].center);  // holds them where they are
     def.body_a = a;
     def.body_b = b;
     def.collide_connected = collide_connected;
@@ -35,11 +36,10 @@ void step(World& world, int32_t count) {
 
 // Two 1 m boxes overlapping by half their width.
 struct OverlappingPair {
-    World world{WorldDef{}};
+    World world{without_gravity()};
     int32_t a = add_body(world, BodyType::dynamic, {0.0f, 0.0f});
     int32_t b = add_body(world, BodyType::dynamic, {0.5f, 0.0f});
     OverlappingPair() {
-        world.settings.gravity = {};
         add_box(world, a, 0.5f, 0.5f);
         add_box(world, b, 0.5f, 0.5f);
     }
@@ -56,15 +56,15 @@ I2D_TEST(unit_joint_lists_hold_each_bodys_joints_through_create_and_destroy) {
     const int32_t ab = add_joint(world, JointType::revolute, a, b);
     const int32_t bc = add_joint(world, JointType::distance, b, c);
     const int32_t ca = add_joint(world, JointType::weld, c, a);
-    I2D_CHECK(world.bodies[a].joint_count == 2 && world.bodies[b].joint_count == 2);
+    I2D_CHECK(world.bodies()[a].joint_count == 2 && world.bodies()[b].joint_count == 2);
     world.destroy_joint(bc);
     world.validate();
-    I2D_CHECK(world.bodies[b].joint_count == 1 && world.bodies[c].joint_count == 1);
-    I2D_CHECK(world.joints.is_live(ab) && world.joints.is_live(ca) && !world.joints.is_live(bc));
+    I2D_CHECK(world.bodies()[b].joint_count == 1 && world.bodies()[c].joint_count == 1);
+    I2D_CHECK(world.joints().is_live(ab) && world.joints().is_live(ca) && !world.joints().is_live(bc));
     world.destroy_body(a);  // takes ab and ca with it
     world.validate();
-    I2D_CHECK(world.joints.count() == 0);
-    I2D_CHECK(world.bodies[b].joint_count == 0 && world.bodies[c].joint_count == 0);
+    I2D_CHECK(world.joints().count() == 0);
+    I2D_CHECK(world.bodies()[b].joint_count == 0 && world.bodies()[c].joint_count == 0);
 }
 
 I2D_TEST(unit_joined_bodies_do_not_collide_unless_collide_connected) {
@@ -75,8 +75,9 @@ I2D_TEST(unit_joined_bodies_do_not_collide_unless_collide_connected) {
     I2D_CHECK(pair.contacts() == 0);  // ended at once
     step(pair.world, 2);
     I2D_CHECK(pair.contacts() == 0);
-    pair.world.joints[joint].def.collide_connected = true;
-    pair.world.joint_changed(joint);
+    JointDef def = pair.world.joints()[joint].def;
+    def.collide_connected = true;
+    pair.world.set_joint_def(joint, def);
     step(pair.world, 1);
     I2D_CHECK(pair.contacts() == 1);
 }
@@ -92,14 +93,13 @@ I2D_TEST(unit_destroying_a_joint_lets_its_bodies_collide_again) {
 }
 
 I2D_TEST(unit_joined_bodies_share_an_island_and_wake_together) {
-    World world{WorldDef{}};
-    world.settings.gravity = {};
+    World world{without_gravity()};
     const int32_t a = add_body(world, BodyType::dynamic, {0.0f, 0.0f});
     const int32_t b = add_body(world, BodyType::dynamic, {5.0f, 0.0f});
     add_box(world, a, 0.5f, 0.5f);
     add_box(world, b, 0.5f, 0.5f);
     const int32_t joint = add_joint(world, JointType::distance, a, b);
-    I2D_CHECK(world.bodies[a].island == world.bodies[b].island);
+    I2D_CHECK(world.bodies()[a].island == world.bodies()[b].island);
     step(world, 60);  // at rest: the pair sleeps after time_to_sleep
     I2D_CHECK(!world.is_awake(a) && !world.is_awake(b));
     I2D_CHECK(world.counters().sleeping_island_count == 1);
@@ -116,14 +116,14 @@ I2D_TEST(unit_a_joint_to_a_body_made_static_stops_linking_islands) {
     const int32_t a = add_body(world, BodyType::dynamic, {0.0f, 0.0f});
     const int32_t b = add_body(world, BodyType::dynamic, {2.0f, 0.0f});
     const int32_t joint = add_joint(world, JointType::revolute, a, b);
-    I2D_CHECK(world.joints[joint].island_link);
+    I2D_CHECK(world.joints()[joint].island_link);
     world.set_type(b, BodyType::static_body);
     world.validate();
-    I2D_CHECK(!world.joints[joint].island_link);
+    I2D_CHECK(!world.joints()[joint].island_link);
     world.set_type(b, BodyType::dynamic);
     world.validate();
-    I2D_CHECK(world.joints[joint].island_link);
-    I2D_CHECK(world.bodies[a].island == world.bodies[b].island);
+    I2D_CHECK(world.joints()[joint].island_link);
+    I2D_CHECK(world.bodies()[a].island == world.bodies()[b].island);
 }
 
 I2D_TEST(unit_joint_gathered_once_from_the_first_awake_body) {
@@ -134,9 +134,8 @@ I2D_TEST(unit_joint_gathered_once_from_the_first_awake_body) {
     const int32_t held = add_joint(world, JointType::revolute, ground, a);
     const int32_t link = add_joint(world, JointType::revolute, a, b);
     add_joint(world, JointType::filter, a, b);  // never solved
-    JointSet joints(world.joints, world.bodies);
     std::vector<int32_t> awake{a, b}, gathered;
-    joints.gather_awake(awake, gathered);
+    i2d::WorldProbe::joint_set(world).gather_awake(awake, gathered);
     I2D_CHECK(gathered.size() == 2);
     I2D_CHECK((gathered[0] == held && gathered[1] == link) || (gathered[0] == link && gathered[1] == held));
 }
@@ -164,9 +163,9 @@ I2D_TEST(unit_joints_that_cannot_both_hold_leave_the_world_finite) {
     world.create_joint(prismatic);
     for (int32_t i = 0; i < 600; ++i) {
         world.step(time_step, substeps);
-        const Body& b = world.bodies[box];
+        const Body& b = world.bodies()[box];
         I2D_CHECK(is_finite(b.center) && is_finite(b.linear_velocity) && std::isfinite(b.angular_velocity));
-        I2D_CHECK(length(b.linear_velocity) <= world.settings.maximum_linear_speed);
+        I2D_CHECK(length(b.linear_velocity) <= world.settings().maximum_linear_speed);
     }
     world.validate();
 }

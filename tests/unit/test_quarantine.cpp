@@ -58,8 +58,8 @@ bool is_finite_body(const Body& b) {
 }
 
 bool every_body_finite(const World& world) {
-    for (int32_t i = 0; i < world.bodies.capacity(); ++i) {
-        if (world.bodies.is_live(i) && !is_finite_body(world.bodies[i])) {
+    for (int32_t i = 0; i < world.bodies().capacity(); ++i) {
+        if (world.bodies().is_live(i) && !is_finite_body(world.bodies()[i])) {
             return false;
         }
     }
@@ -68,7 +68,7 @@ bool every_body_finite(const World& world) {
 
 // The core's id for a body (no C boundary installed an encoder).
 uint64_t core_id(const World& world, int32_t body) {
-    return (uint64_t(world.bodies.generation(body)) << 32) | uint32_t(body);
+    return (uint64_t(world.bodies().generation(body)) << 32) | uint32_t(body);
 }
 
 // Drop from rest after n substeps of semi-implicit Euler: g h^2 n (n + 1) / 2.
@@ -90,12 +90,12 @@ I2D_TEST(unit_quarantine_freezes_a_non_finite_body_where_the_step_found_it) {
     const int32_t poisoned = add_dynamic_box(world, {-5.0f, resting_y});
     step(world, 30);
     I2D_REQUIRE(world.counters().contact_count == 1);
-    const Transform before = world.bodies[poisoned].transform;
+    const Transform before = world.bodies()[poisoned].transform;
 
-    world.bodies[poisoned].linear_velocity = {not_a_number, 0.0f};
+    i2d::WorldProbe::body(world, poisoned).linear_velocity = {not_a_number, 0.0f};
     step(world, 1);
 
-    const Body& b = world.bodies[poisoned];
+    const Body& b = world.bodies()[poisoned];
     I2D_CHECK(world.is_quarantined(poisoned));
     I2D_CHECK(b.type == BodyType::static_body);
     I2D_CHECK(same_pose(b.transform, before));
@@ -112,7 +112,7 @@ I2D_TEST(unit_quarantine_freezes_a_non_finite_body_where_the_step_found_it) {
 
     step(world, 60);
     I2D_CHECK(world.events().body_quarantines.empty());
-    I2D_CHECK(same_pose(world.bodies[poisoned].transform, before));
+    I2D_CHECK(same_pose(world.bodies()[poisoned].transform, before));
     I2D_CHECK(every_body_finite(world));
 }
 
@@ -124,16 +124,16 @@ I2D_TEST(unit_quarantine_leaves_untouched_bodies_on_their_closed_forms) {
     step(world, 30);
     const int32_t falling = add_dynamic_box(world, {0.0f, 50.0f});
 
-    world.bodies[poisoned].angular_velocity = not_a_number;
+    i2d::WorldProbe::body(world, poisoned).angular_velocity = not_a_number;
     const int32_t steps = 60;
     step(world, steps);
 
     I2D_CHECK(world.is_quarantined(poisoned));
     I2D_CHECK(!world.is_quarantined(resting) && !world.is_quarantined(falling));
     I2D_CHECK(every_body_finite(world));
-    I2D_CHECK_NEAR(world.bodies[resting].transform.p.y, resting_y, rest_tolerance);
-    I2D_CHECK_NEAR(world.bodies[resting].transform.p.x, 5.0, rest_tolerance);
-    I2D_CHECK_NEAR(50.0 - world.bodies[falling].transform.p.y, euler_drop(10.0, steps), drop_tolerance);
+    I2D_CHECK_NEAR(world.bodies()[resting].transform.p.y, resting_y, rest_tolerance);
+    I2D_CHECK_NEAR(world.bodies()[resting].transform.p.x, 5.0, rest_tolerance);
+    I2D_CHECK_NEAR(50.0 - world.bodies()[falling].transform.p.y, euler_drop(10.0, steps), drop_tolerance);
 }
 
 I2D_TEST(unit_quarantine_takes_the_bodies_the_nan_reached_in_the_same_step) {
@@ -145,7 +145,7 @@ I2D_TEST(unit_quarantine_takes_the_bodies_the_nan_reached_in_the_same_step) {
     step(world, 30);
     I2D_REQUIRE(world.counters().contact_count == 3);
 
-    world.bodies[bottom].linear_velocity = {0.0f, not_a_number};
+    i2d::WorldProbe::body(world, bottom).linear_velocity = {0.0f, not_a_number};
     step(world, 1);
 
     // The contact between the two boxes carried the NaN up within the step.
@@ -155,7 +155,7 @@ I2D_TEST(unit_quarantine_takes_the_bodies_the_nan_reached_in_the_same_step) {
     I2D_CHECK(every_body_finite(world));
     I2D_CHECK(world.counters().contact_count == 1);  // only the untouched box's
     step(world, 30);
-    I2D_CHECK_NEAR(world.bodies[apart].transform.p.y, resting_y, rest_tolerance);
+    I2D_CHECK_NEAR(world.bodies()[apart].transform.p.y, resting_y, rest_tolerance);
 }
 
 I2D_TEST(unit_quarantine_clears_the_joints_impulses_and_a_new_type_revives_the_body) {
@@ -171,12 +171,12 @@ I2D_TEST(unit_quarantine_clears_the_joints_impulses_and_a_new_type_revives_the_b
     const int32_t hinge = world.create_joint(def);
     I2D_REQUIRE(hinge != null_index);
     step(world, 20);
-    I2D_REQUIRE(length(world.joints[hinge].reaction_force) > 0.0f);  // it holds the swinging bob
+    I2D_REQUIRE(length(world.joints()[hinge].reaction_force) > 0.0f);  // it holds the swinging bob
 
-    world.bodies[bob].linear_velocity = {not_a_number, not_a_number};
+    i2d::WorldProbe::body(world, bob).linear_velocity = {not_a_number, not_a_number};
     step(world, 1);
     I2D_CHECK(world.is_quarantined(bob));
-    const Joint& j = world.joints[hinge];
+    const Joint& j = world.joints()[hinge];
     I2D_CHECK(j.reaction_force.x == 0.0f && j.reaction_force.y == 0.0f && j.reaction_torque == 0.0f);
     I2D_CHECK(j.impulses.linear.x == 0.0f && j.impulses.linear.y == 0.0f);
     I2D_CHECK(every_body_finite(world));
@@ -187,9 +187,9 @@ I2D_TEST(unit_quarantine_clears_the_joints_impulses_and_a_new_type_revives_the_b
     world.set_type(bob, BodyType::dynamic);
     I2D_CHECK(!world.is_quarantined(bob));
     step(world, 30);
-    const Vec2 from_anchor = world.bodies[bob].transform.p - Vec2{0.0f, 10.0f};
+    const Vec2 from_anchor = world.bodies()[bob].transform.p - Vec2{0.0f, 10.0f};
     I2D_CHECK_NEAR(length(from_anchor), 2.0, 0.01);
-    I2D_CHECK(world.bodies[bob].transform.p.y < 9.0f);  // it swung down
+    I2D_CHECK(world.bodies()[bob].transform.p.y < 9.0f);  // it swung down
     I2D_CHECK(world.events().body_quarantines.empty());
 }
 
@@ -198,10 +198,10 @@ I2D_TEST(unit_quarantine_ends_when_the_type_is_set_even_to_static) {
     add_ground(world);
     const int32_t poisoned = add_dynamic_box(world, {0.0f, resting_y});
     step(world, 10);
-    world.bodies[poisoned].linear_velocity = {not_a_number, 0.0f};
+    i2d::WorldProbe::body(world, poisoned).linear_velocity = {not_a_number, 0.0f};
     step(world, 1);
     I2D_REQUIRE(world.is_quarantined(poisoned));
     world.set_type(poisoned, BodyType::static_body);  // kept as scenery, acknowledged
     I2D_CHECK(!world.is_quarantined(poisoned));
-    I2D_CHECK(world.bodies[poisoned].type == BodyType::static_body);
+    I2D_CHECK(world.bodies()[poisoned].type == BodyType::static_body);
 }

@@ -15,14 +15,14 @@ using unit::add_circle;
 I2D_TEST(unit_world_mass_and_center_follow_shapes) {
     World world{WorldDef{}};
     const int32_t body = add_body(world, BodyType::dynamic, {10.0f, 0.0f});
-    I2D_CHECK(world.bodies[body].mass == 1.0f);  // no shapes yet: 1 kg
+    I2D_CHECK(world.bodies()[body].mass == 1.0f);  // no shapes yet: 1 kg
     add_box(world, body, 1.0f, 1.0f);           // 4 kg at the origin
     add_circle(world, body, {3.0f, 0.0f}, 1.0f);  // pi kg at x = 3
     const float pi_f = 3.14159265f;
-    I2D_CHECK_NEAR(world.bodies[body].mass, 4.0 + pi_f, 1e-5);
-    I2D_CHECK_NEAR(world.bodies[body].local_center.x, 3.0 * pi_f / (4.0 + pi_f), 1e-5);
-    I2D_CHECK_NEAR(world.bodies[body].center.x, 10.0 + 3.0 * pi_f / (4.0 + pi_f), 1e-5);
-    I2D_CHECK_NEAR(world.bodies[body].inv_mass, 1.0 / (4.0 + pi_f), 1e-6);
+    I2D_CHECK_NEAR(world.bodies()[body].mass, 4.0 + pi_f, 1e-5);
+    I2D_CHECK_NEAR(world.bodies()[body].local_center.x, 3.0 * pi_f / (4.0 + pi_f), 1e-5);
+    I2D_CHECK_NEAR(world.bodies()[body].center.x, 10.0 + 3.0 * pi_f / (4.0 + pi_f), 1e-5);
+    I2D_CHECK_NEAR(world.bodies()[body].inv_mass, 1.0 / (4.0 + pi_f), 1e-6);
 }
 
 I2D_TEST(unit_world_static_and_kinematic_have_no_mass) {
@@ -31,8 +31,8 @@ I2D_TEST(unit_world_static_and_kinematic_have_no_mass) {
     const int32_t k = add_body(world, BodyType::kinematic, {});
     add_box(world, s, 1.0f, 1.0f);
     add_box(world, k, 1.0f, 1.0f);
-    I2D_CHECK(world.bodies[s].mass == 0.0f && world.bodies[s].inv_mass == 0.0f);
-    I2D_CHECK(world.bodies[k].mass == 0.0f && world.bodies[k].inv_mass == 0.0f);
+    I2D_CHECK(world.bodies()[s].mass == 0.0f && world.bodies()[s].inv_mass == 0.0f);
+    I2D_CHECK(world.bodies()[k].mass == 0.0f && world.bodies()[k].inv_mass == 0.0f);
 }
 
 I2D_TEST(unit_world_destroying_shapes_keeps_lists_consistent) {
@@ -42,16 +42,16 @@ I2D_TEST(unit_world_destroying_shapes_keeps_lists_consistent) {
     const int32_t b = add_box(world, body, 0.5f, 0.5f);
     const int32_t c = add_box(world, body, 0.25f, 0.25f);
     world.destroy_shape(b);  // from the middle of the list
-    I2D_CHECK(world.bodies[body].shape_count == 2);
+    I2D_CHECK(world.bodies()[body].shape_count == 2);
     int32_t seen = 0;
-    for (int32_t s = world.bodies[body].head_shape; s != null_index; s = world.shapes[s].next_in_body) {
+    for (int32_t s = world.bodies()[body].head_shape; s != null_index; s = world.shapes()[s].next_in_body) {
         I2D_CHECK(s == a || s == c);
         ++seen;
     }
     I2D_CHECK(seen == 2);
-    I2D_CHECK_NEAR(world.bodies[body].mass, 4.0 + 0.25, 1e-6);
+    I2D_CHECK_NEAR(world.bodies()[body].mass, 4.0 + 0.25, 1e-6);
     world.destroy_body(body);
-    I2D_CHECK(world.shapes.count() == 0 && world.bodies.count() == 0);
+    I2D_CHECK(world.shapes().count() == 0 && world.bodies().count() == 0);
 }
 
 I2D_TEST(unit_world_filter_truth_table) {

@@ -5,8 +5,28 @@
 
 #include "collision/hull.hpp"
 #include "dynamics/world/world.hpp"
+#include "dynamics/world/world_stages.hpp"
+
+namespace i2d {
+
+/// The unit tests' window on what the world keeps to itself: a body to corrupt on purpose
+/// (a NaN the C boundary would refuse), and the joint set.
+class WorldProbe {
+public:
+    static Body& body(World& world, int32_t body) { return world.bodies_[body]; }
+    static JointSet& joint_set(World& world) { return world.stages_->joints; }
+};
+
+}  // namespace i2d
 
 namespace unit {
+
+/// The default settings without gravity.
+inline i2d::WorldDef without_gravity() {
+    i2d::WorldDef def;
+    def.gravity = {};
+    return def;
+}
 
 inline int32_t add_body(i2d::World& world, i2d::BodyType type, i2d::Vec2 position) {
     i2d::BodyDef def;

@@ -81,12 +81,12 @@ void ContactSet::end_step(const StepContext& step) {
         }
         const int32_t index = awake_[std::size_t(k)];
         if (flags & hits) {
-            report_hit(contacts_[index]);
+            report_hit(pool_[index]);
         }
         if (flags & ends) {
             destroy_contact(index, true);
         } else if (flags & reports) {
-            report_touch_changes(contacts_[index], (contacts_[index].flags & contact_touching) != 0);
+            report_touch_changes(pool_[index], (pool_[index].flags & contact_touching) != 0);
         }
     }
 }
@@ -98,9 +98,9 @@ void ContactSet::end_range(const StepContext& step, ContactSet& self, const NoSt
     constexpr int32_t contacts_ahead = 16;
     for (int32_t k = begin; k < end; ++k) {
         if (k + contacts_ahead < end) {
-            prefetch_line(&self.contacts_[self.awake_[std::size_t(k + contacts_ahead)]].flags);
+            prefetch_line(&self.pool_[self.awake_[std::size_t(k + contacts_ahead)]].flags);
         }
-        Contact& c = self.contacts_[self.awake_[std::size_t(k)]];
+        Contact& c = self.pool_[self.awake_[std::size_t(k)]];
         uint8_t flags = 0;
         if (c.flags & contact_disjoint) {
             flags = ends;

@@ -13,12 +13,12 @@
 namespace i2d {
 
 void ContactSet::add_awake(int32_t contact) {
-    dense_list_add(awake_, contact, [this](int32_t c) -> int32_t& { return contacts_[c].awake_index; });
+    dense_list_add(awake_, contact, [this](int32_t c) -> int32_t& { return pool_[c].awake_index; });
     ++layout_version_;
 }
 
 void ContactSet::remove_awake(int32_t contact) {
-    dense_list_remove(awake_, contact, [this](int32_t c) -> int32_t& { return contacts_[c].awake_index; });
+    dense_list_remove(awake_, contact, [this](int32_t c) -> int32_t& { return pool_[c].awake_index; });
     ++layout_version_;
 }
 
@@ -27,15 +27,15 @@ void ContactSet::create_contact(int32_t shape_a, int32_t shape_b, WakeBody wake)
         return;  // the pair has a contact already
     }
     // Room in the awake list for every contact slot first, so that waking never allocates.
-    reserve_room(awake_, std::size_t(contacts_.capacity()) + 1);
-    const int32_t index = contacts_.allocate();
+    reserve_room(awake_, std::size_t(pool_.capacity()) + 1);
+    const int32_t index = pool_.allocate();
     if (index == null_index) {
         pair_set_.remove(pair_key(shape_a, shape_b));
         return;  // 16.7 million contacts: the pair goes without one
     }
     const Shape& a = shapes_[shape_a];
     const Shape& b = shapes_[shape_b];
-    Contact& c = contacts_[index];
+    Contact& c = pool_[index];
     c.shape_a = shape_a;
     c.shape_b = shape_b;
     if (a.is_sensor || b.is_sensor) {
@@ -53,7 +53,7 @@ void ContactSet::create_contact(int32_t shape_a, int32_t shape_b, WakeBody wake)
         edge.body = body_of[e];
         edge.next_key = body.head_contact_key;
         if (body.head_contact_key != null_index) {
-            contacts_[contact_of_key(body.head_contact_key)].edges[edge_of_key(body.head_contact_key)].prev_key =
+            pool_[contact_of_key(body.head_contact_key)].edges[edge_of_key(body.head_contact_key)].prev_key =
                 (index << 1) | e;
         }
         body.head_contact_key = (index << 1) | e;
@@ -65,14 +65,14 @@ void ContactSet::create_contact(int32_t shape_a, int32_t shape_b, WakeBody wake)
         wake(a.body);
         wake(b.body);
     }
-    if (contacts_[index].awake_index == null_index) {
+    if (pool_[index].awake_index == null_index) {
         add_awake(index);
     }
 }
 
 // Between steps the caller woke both bodies first.
 void ContactSet::destroy_contact(int32_t index, bool during_step) {
-    Contact& c = contacts_[index];
+    Contact& c = pool_[index];
     if (c.flags & contact_island_link) {
         link_changes_.push_back({c.edges[0].body, c.edges[1].body, false});
     }
@@ -91,17 +91,17 @@ void ContactSet::destroy_contact(int32_t index, bool during_step) {
         const ContactEdge& edge = c.edges[e];
         Body& body = bodies_[edge.body];
         if (edge.prev_key != null_index) {
-            contacts_[contact_of_key(edge.prev_key)].edges[edge_of_key(edge.prev_key)].next_key = edge.next_key;
+            pool_[contact_of_key(edge.prev_key)].edges[edge_of_key(edge.prev_key)].next_key = edge.next_key;
         } else {
             body.head_contact_key = edge.next_key;
         }
         if (edge.next_key != null_index) {
-            contacts_[contact_of_key(edge.next_key)].edges[edge_of_key(edge.next_key)].prev_key = edge.prev_key;
+            pool_[contact_of_key(edge.next_key)].edges[edge_of_key(edge.next_key)].prev_key = edge.prev_key;
         }
         --body.contact_count;
     }
     pair_set_.remove(pair_key(c.shape_a, c.shape_b));
-    contacts_.free(index);
+    pool_.free(index);
 }
 
 // Called between steps: destroying a shape (all its contacts go), changing its filter
@@ -111,7 +111,7 @@ void ContactSet::destroy_contact(int32_t index, bool during_step) {
 void ContactSet::destroy_contacts_of_shape(int32_t shape, bool only_filtered_out, WakeBody wake) {
     int32_t key = bodies_[shapes_[shape].body].head_contact_key;
     while (key != null_index) {
-        const Contact& c = contacts_[contact_of_key(key)];
+        const Contact& c = pool_[contact_of_key(key)];
         const int32_t next = c.edges[edge_of_key(key)].next_key;
         const bool involved = c.shape_a == shape || c.shape_b == shape;
         if (involved && (!only_filtered_out || !should_collide(shapes_[c.shape_a].filter, shapes_[c.shape_b].filter))) {
@@ -126,7 +126,7 @@ void ContactSet::destroy_contacts_of_shape(int32_t shape, bool only_filtered_out
 void ContactSet::destroy_contacts_between(int32_t body_a, int32_t body_b, WakeBody wake) {
     int32_t key = bodies_[body_a].head_contact_key;
     while (key != null_index) {
-        const Contact& c = contacts_[contact_of_key(key)];
+        const Contact& c = pool_[contact_of_key(key)];
         const int32_t next = c.edges[edge_of_key(key)].next_key;
         if (c.edges[edge_of_key(key) ^ 1].body == body_b) {
             wake(c.edges[0].body);
@@ -140,7 +140,7 @@ void ContactSet::destroy_contacts_between(int32_t body_a, int32_t body_b, WakeBo
 void ContactSet::mix_materials_of_shape(int32_t shape) {
     ++layout_version_;  // the colouring notes whether any contact is elastic
     visit_contacts(shapes_[shape].body, [&](int32_t contact, int32_t) {
-        Contact& c = contacts_[contact];
+        Contact& c = pool_[contact];
         if (c.shape_a == shape || c.shape_b == shape) {
             mix_material(c, shapes_[c.shape_a], shapes_[c.shape_b]);
         }
@@ -164,7 +164,7 @@ void ContactSet::mix_material(Contact& c, const Shape& a, const Shape& b) const 
 
 void ContactSet::body_woke(int32_t body) {
     visit_contacts(body, [&](int32_t contact, int32_t) {
-        Contact& c = contacts_[contact];
+        Contact& c = pool_[contact];
         if (c.awake_index == null_index) {
             add_awake(contact);
             if (is_solvable(c)) {
@@ -178,20 +178,20 @@ void ContactSet::body_woke(int32_t body) {
 
 void ContactSet::body_slept(int32_t body) {
     visit_contacts(body, [&](int32_t contact, int32_t other) {
-        if (contacts_[contact].awake_index != null_index && !is_awake(other)) {
+        if (pool_[contact].awake_index != null_index && !is_awake(other)) {
             remove_awake(contact);
         }
     });
 }
 
 void ContactSet::forget_manifolds(int32_t body) {
-    visit_contacts(body, [&](int32_t contact, int32_t) { contacts_[contact].flags &= ~uint32_t(contact_recyclable); });
+    visit_contacts(body, [&](int32_t contact, int32_t) { pool_[contact].flags &= ~uint32_t(contact_recyclable); });
 }
 
 int32_t ContactSet::touching_count() const {
     int32_t count = 0;
-    for (int32_t i = 0; i < contacts_.capacity(); ++i) {
-        if (contacts_.is_live(i) && (contacts_[i].flags & (contact_touching | contact_sensor)) == contact_touching) {
+    for (int32_t i = 0; i < pool_.capacity(); ++i) {
+        if (pool_.is_live(i) && (pool_[i].flags & (contact_touching | contact_sensor)) == contact_touching) {
             ++count;
         }
     }
@@ -201,14 +201,14 @@ int32_t ContactSet::touching_count() const {
 void ContactSet::validate() const {
 #if defined(I2D_VALIDATE)
     for (int32_t k = 0; k < int32_t(awake_.size()); ++k) {
-        I2D_ASSERT(contacts_.is_live(awake_[k]) && contacts_[awake_[k]].awake_index == k);
+        I2D_ASSERT(pool_.is_live(awake_[k]) && pool_[awake_[k]].awake_index == k);
     }
-    I2D_ASSERT(pair_set_.count() == contacts_.count());
-    for (int32_t i = 0; i < contacts_.capacity(); ++i) {
-        if (!contacts_.is_live(i)) {
+    I2D_ASSERT(pair_set_.count() == pool_.count());
+    for (int32_t i = 0; i < pool_.capacity(); ++i) {
+        if (!pool_.is_live(i)) {
             continue;
         }
-        const Contact& c = contacts_[i];
+        const Contact& c = pool_[i];
         I2D_ASSERT(c.shape_a < c.shape_b && shapes_.is_live(c.shape_a) && shapes_.is_live(c.shape_b));
         I2D_ASSERT(pair_set_.contains(pair_key(c.shape_a, c.shape_b)));
         // Exactly the contacts with an awake body are updated each step.

@@ -57,8 +57,8 @@ public:
 
     /// The contacts; the solver writes their impulses and touching flags at the end of
     /// a step (contact_solver.hpp), nothing else writes them from outside.
-    Pool<Contact>& pool() { return contacts_; }
-    const Pool<Contact>& pool() const { return contacts_; }
+    Pool<Contact>& pool() { return pool_; }
+    const Pool<Contact>& pool() const { return pool_; }
     const std::vector<int32_t>& awake() const { return awake_; }
     /// The awake solid contacts with points, in awake order, from this step's narrowphase
     /// on (bodies woken after it add theirs): all the solver colours. Most awake contacts
@@ -107,7 +107,7 @@ public:
     template <class Visit>
     void visit_contacts(int32_t body, Visit&& visit) const {
         for (int32_t key = bodies_[body].head_contact_key; key != null_index;) {
-            const Contact& c = contacts_[contact_of_key(key)];
+            const Contact& c = pool_[contact_of_key(key)];
             const int32_t next = c.edges[edge_of_key(key)].next_key;
             visit(contact_of_key(key), c.edges[edge_of_key(key) ^ 1].body);
             key = next;
@@ -117,7 +117,7 @@ public:
     template <class Visit>
     void visit_links(int32_t body, Visit&& visit) const {
         visit_contacts(body, [&](int32_t contact, int32_t other) {
-            if (contacts_[contact].flags & contact_island_link) {
+            if (pool_[contact].flags & contact_island_link) {
                 visit(other);
             }
         });
@@ -169,7 +169,7 @@ private:
     const JointSet& joints_;
     EventRecorder& events_;
     TaskSystem& tasks_;
-    Pool<Contact> contacts_;
+    Pool<Contact> pool_;
     HashSet pair_set_;  // pair_key of the shapes of every contact
     std::vector<int32_t> awake_;
     std::vector<int32_t> solvable_;

@@ -57,7 +57,7 @@ void ContactSet::collide(const StepContext& step) {
         if (flags & has_points) {
             solvable_.push_back(index);
         }
-        const Contact& c = contacts_[index];
+        const Contact& c = pool_[index];
         for (int32_t e = 0; e < 2; ++e) {
             if (flags & (e == 0 ? wakes_a : wakes_b)) {
                 islands_to_wake_.push_back(bodies_[c.edges[e].body].island);
@@ -76,10 +76,10 @@ void ContactSet::collide(const StepContext& step) {
 I2D_FORCE_INLINE void ContactSet::prefetch_for_collide(int32_t k, int32_t count) const {
     constexpr int32_t contacts_ahead = 12, neighbours_ahead = 6;
     if (k + contacts_ahead < count) {
-        prefetch_object(contacts_[awake_[std::size_t(k + contacts_ahead)]]);
+        prefetch_object(pool_[awake_[std::size_t(k + contacts_ahead)]]);
     }
     if (k + neighbours_ahead < count) {
-        const Contact& c = contacts_[awake_[std::size_t(k + neighbours_ahead)]];
+        const Contact& c = pool_[awake_[std::size_t(k + neighbours_ahead)]];
         prefetch_line(&shapes_[c.shape_a]);
         prefetch_line(&shapes_[c.shape_b]);
         prefetch_object(bodies_[c.edges[0].body]);
@@ -98,7 +98,7 @@ void ContactSet::collide_range(const StepContext& step, ContactSet& self, const 
 
 // Updates the k-th awake contact, writing only to it; returns its CollideFlags.
 uint8_t ContactSet::collide_one(int32_t k, float time_step) {
-    Contact& c = contacts_[awake_[std::size_t(k)]];
+    Contact& c = pool_[awake_[std::size_t(k)]];
     const uint32_t at_start = (c.flags & contact_touching) ? uint32_t(contact_touching_at_start) : 0u;
     c.flags = (c.flags & ~uint32_t(contact_touching | contact_touching_at_start)) | at_start;
     const Shape& a = shapes_[c.shape_a];
@@ -181,7 +181,7 @@ void ContactSet::update_links() {
     // What the solver colours next: exactly the awake solid contacts with points, in order.
     std::size_t next = 0;
     for (const int32_t index : awake_) {
-        const Contact& c = contacts_[index];
+        const Contact& c = pool_[index];
         if (is_solvable(c)) {
             I2D_ASSERT(next < solvable_.size() && solvable_[next] == index);
             ++next;
@@ -190,7 +190,7 @@ void ContactSet::update_links() {
     I2D_ASSERT(next == solvable_.size());
 #endif
     for (const int32_t index : point_changes_) {
-        Contact& c = contacts_[index];
+        Contact& c = pool_[index];
         const int32_t body_a = c.edges[0].body, body_b = c.edges[1].body;
         const bool linked = (c.flags & contact_island_link) != 0;
         const bool joins = bodies_[body_a].type == BodyType::dynamic && bodies_[body_b].type == BodyType::dynamic;

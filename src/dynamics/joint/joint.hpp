@@ -128,4 +128,12 @@ struct alignas(64) Joint {
     bool island_link = false;  // joins the islands of its two bodies
 };
 
+/// What a caller reads of a joint as its bodies stand (not as the solver last saw them).
+struct JointMeasures {
+    float angle = 0.0f;        // rad, B relative to A minus the reference, in (-pi, pi]
+    float translation = 0.0f;  // m along the axis (prismatic, wheel)
+    float speed = 0.0f;        // m/s along the axis (prismatic, wheel)
+    float length = 0.0f;       // m between the anchors
+};
+
 }  // namespace i2d

@@ -9,38 +9,38 @@
 namespace i2d {
 
 void JointSet::link_edge(int32_t joint, int32_t side) {
-    JointEdge& edge = joints_[joint].edges[side];
+    JointEdge& edge = pool_[joint].edges[side];
     Body& body = bodies_[edge.body];
     const int32_t key = joint * 2 + side;
     edge.prev_key = null_index;
     edge.next_key = body.head_joint_key;
     if (body.head_joint_key != null_index) {
-        joints_[body.head_joint_key >> 1].edges[body.head_joint_key & 1].prev_key = key;
+        pool_[body.head_joint_key >> 1].edges[body.head_joint_key & 1].prev_key = key;
     }
     body.head_joint_key = key;
     ++body.joint_count;
 }
 
 void JointSet::unlink_edge(int32_t joint, int32_t side) {
-    const JointEdge& edge = joints_[joint].edges[side];
+    const JointEdge& edge = pool_[joint].edges[side];
     Body& body = bodies_[edge.body];
     if (edge.prev_key != null_index) {
-        joints_[edge.prev_key >> 1].edges[edge.prev_key & 1].next_key = edge.next_key;
+        pool_[edge.prev_key >> 1].edges[edge.prev_key & 1].next_key = edge.next_key;
     } else {
         body.head_joint_key = edge.next_key;
     }
     if (edge.next_key != null_index) {
-        joints_[edge.next_key >> 1].edges[edge.next_key & 1].prev_key = edge.prev_key;
+        pool_[edge.next_key >> 1].edges[edge.next_key & 1].prev_key = edge.prev_key;
     }
     --body.joint_count;
 }
 
 int32_t JointSet::create(const JointDef& def) {
-    const int32_t index = joints_.allocate();
+    const int32_t index = pool_.allocate();
     if (index == null_index) {
         return null_index;
     }
-    Joint& j = joints_[index];
+    Joint& j = pool_[index];
     j.def = def;
     j.edges[0].body = def.body_a;
     j.edges[1].body = def.body_b;
@@ -53,7 +53,7 @@ int32_t JointSet::create(const JointDef& def) {
 void JointSet::destroy(int32_t joint) {
     unlink_edge(joint, 0);
     unlink_edge(joint, 1);
-    joints_.free(joint);
+    pool_.free(joint);
     ++version_;
 }
 
@@ -67,7 +67,7 @@ bool JointSet::keeps_apart(int32_t body_a, int32_t body_b) const {
     const int32_t from = a.joint_count <= b.joint_count ? body_a : body_b;
     const int32_t to = from == body_a ? body_b : body_a;
     for (int32_t key = bodies_[from].head_joint_key; key != null_index;) {
-        const Joint& j = joints_[key >> 1];
+        const Joint& j = pool_[key >> 1];
         if (j.edges[(key & 1) ^ 1].body == to && !j.def.collide_connected) {
             return true;
         }
@@ -81,7 +81,7 @@ void JointSet::gather_awake(const std::vector<int32_t>& awake_bodies, std::vecto
     out.clear();
     for (const int32_t body : awake_bodies) {
         for (int32_t key = bodies_[body].head_joint_key; key != null_index;) {
-            const Joint& j = joints_[key >> 1];
+            const Joint& j = pool_[key >> 1];
             const int32_t side = key & 1;
             const bool a_awake = bodies_[j.edges[0].body].awake_index != null_index;
             const bool mine = side == 0 || !a_awake;
@@ -94,7 +94,7 @@ void JointSet::gather_awake(const std::vector<int32_t>& awake_bodies, std::vecto
 }
 
 JointMeasures JointSet::measure(int32_t joint) const {
-    const Joint& j = joints_[joint];
+    const Joint& j = pool_[joint];
     const JointDef& d = j.def;
     const Body& a = bodies_[d.body_a];
     const Body& b = bodies_[d.body_b];
@@ -138,8 +138,8 @@ void JointSet::validate() const {
         }
         int32_t count = 0, prev_key = null_index;
         for (int32_t key = bodies_[i].head_joint_key; key != null_index;) {
-            const JointEdge& edge = joints_[key >> 1].edges[key & 1];
-            I2D_ASSERT(joints_.is_live(key >> 1) && edge.body == i && edge.prev_key == prev_key);
+            const JointEdge& edge = pool_[key >> 1].edges[key & 1];
+            I2D_ASSERT(pool_.is_live(key >> 1) && edge.body == i && edge.prev_key == prev_key);
             I2D_ASSERT(count <= bodies_[i].joint_count);  // no cycle
             prev_key = key;
             key = edge.next_key;
@@ -148,12 +148,12 @@ void JointSet::validate() const {
         I2D_ASSERT(count == bodies_[i].joint_count);
         edges_seen += count;
     }
-    I2D_ASSERT(edges_seen == 2 * joints_.count());
-    for (int32_t j = 0; j < joints_.capacity(); ++j) {
-        if (!joints_.is_live(j)) {
+    I2D_ASSERT(edges_seen == 2 * pool_.count());
+    for (int32_t j = 0; j < pool_.capacity(); ++j) {
+        if (!pool_.is_live(j)) {
             continue;
         }
-        const Joint& joint = joints_[j];
+        const Joint& joint = pool_[j];
         const Body& a = bodies_[joint.def.body_a];
         const Body& b = bodies_[joint.def.body_b];
         const bool should_link =

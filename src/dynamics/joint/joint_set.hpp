@@ -19,17 +19,16 @@
 
 namespace i2d {
 
-/// What a caller reads of a joint as its bodies stand (not as the solver last saw them).
-struct JointMeasures {
-    float angle = 0.0f;        // rad, B relative to A minus the reference, in (-pi, pi]
-    float translation = 0.0f;  // m along the axis (prismatic, wheel)
-    float speed = 0.0f;        // m/s along the axis (prismatic, wheel)
-    float length = 0.0f;       // m between the anchors
-};
-
 class JointSet {
 public:
-    JointSet(Pool<Joint>& joints, Pool<Body>& bodies) : joints_(joints), bodies_(bodies) {}
+    explicit JointSet(Pool<Body>& bodies) : bodies_(bodies) {}
+
+    /// The joints. Their settings change through the world (World::set_joint_def), their
+    /// impulses and reactions at the end of each step (joint_solver.hpp).
+    Pool<Joint>& pool() { return pool_; }
+    const Pool<Joint>& pool() const { return pool_; }
+    Joint& joint(int32_t joint) { return pool_[joint]; }
+    const Joint& joint(int32_t joint) const { return pool_[joint]; }
 
     /// Creates the joint and links it into both bodies' lists; null_index when full.
     int32_t create(const JointDef& def);
@@ -40,7 +39,7 @@ public:
     template <class Visit>
     void visit_joints(int32_t body, Visit&& visit) const {
         for (int32_t key = bodies_[body].head_joint_key; key != null_index;) {
-            const Joint& j = joints_[key >> 1];
+            const Joint& j = pool_[key >> 1];
             const int32_t next = j.edges[key & 1].next_key;
             visit(key >> 1, j.edges[(key & 1) ^ 1].body);
             key = next;
@@ -50,7 +49,7 @@ public:
     template <class Visit>
     void visit_links(int32_t body, Visit&& visit) const {
         visit_joints(body, [&](int32_t joint, int32_t other) {
-            if (joints_[joint].island_link) {
+            if (pool_[joint].island_link) {
                 visit(other);
             }
         });
@@ -66,7 +65,7 @@ public:
 
     JointMeasures measure(int32_t joint) const;
 
-    int32_t count() const { return joints_.count(); }
+    int32_t count() const { return pool_.count(); }
     /// Changes whenever a joint is created or destroyed or a body of one changes type:
     /// with the islands' awake version, whether the joints to solve can have changed.
     uint64_t version() const { return version_; }
@@ -79,8 +78,8 @@ private:
     void link_edge(int32_t joint, int32_t side);
     void unlink_edge(int32_t joint, int32_t side);
 
-    Pool<Joint>& joints_;
     Pool<Body>& bodies_;
+    Pool<Joint> pool_;
     uint64_t version_ = 0;
 };
 

@@ -1,33 +1,36 @@
 // SPDX-License-Identifier: MIT
-// World: owns bodies and shapes, the rules for creating, changing and destroying them,
-// and the step that runs its stages in order.
+// World: owns bodies, shapes, chains and the stages of the step; every change to them
+// goes through its functions, which keep the stages in step with one another.
 //
-// Design note: bodies and shapes live in pools (contiguous, free-listed, generation per
-// slot) linked by indices. Each stage of the step owns its data: the broadphase its
-// trees (broadphase/), the contact set its contacts (contact_set.hpp), the islands the
-// awake lists and sleep (island.hpp), the solver its per-step arrays (solver.hpp). The
-// world wires them and keeps the step short and top-down (world_step.cpp). Queries are
-// in world_query.cpp and the cross-checks in world_validate.cpp.
+// Design note: bodies, shapes and chains live in pools (contiguous, free-listed,
+// generation per slot) linked by indices; the joints live in the joint set and the
+// contacts in the contact set. Each stage of the step owns its data (world_stages.hpp)
+// and the world wires them: it hands the islands the contact set's link changes and the
+// contact set the bodies the islands woke, and keeps the step short and top-down
+// (world_step.cpp). Callers read the pools; they change them only through the world, so
+// that a change is never half made. The work is split by what it changes:
+// world.cpp (creation and the wiring between stages), world_bodies.cpp, world_shapes.cpp,
+// world_joints.cpp, world_step.cpp, world_query.cpp and world_validate.cpp.
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <vector>
 
-#include "broadphase/broad_phase.hpp"
+#include "broadphase/proxy_key.hpp"
 #include "collision/shape_proxy.hpp"
+#include "core/function_ref.hpp"
 #include "core/pool.hpp"
 #include "dynamics/body/body.hpp"
 #include "dynamics/body/chain.hpp"
-#include "dynamics/contact/contact_set.hpp"
-#include "dynamics/solver/continuous.hpp"
-#include "dynamics/world/events.hpp"
-#include "dynamics/island/island.hpp"
-#include "dynamics/joint/joint_set.hpp"
 #include "dynamics/body/shape.hpp"
-#include "dynamics/solver/solver.hpp"
+#include "dynamics/joint/joint.hpp"
+#include "dynamics/world/events.hpp"
 #include "dynamics/world/world_def.hpp"
 
 namespace i2d {
+
+struct WorldStages;
 
 struct WorldCounters {
     int32_t body_count = 0;
@@ -67,36 +70,21 @@ using RayVisitor = float (*)(int32_t shape, Vec2 point, Vec2 normal, float fract
 class World {
 public:
     explicit World(const WorldDef& def);
+    ~World();
     World(const World&) = delete;
     World& operator=(const World&) = delete;
 
+    // What callers read. Indices come from the create functions; a pool says which are live.
+    const WorldDef& settings() const { return settings_; }
+    const Pool<Body>& bodies() const { return bodies_; }
+    const Pool<Shape>& shapes() const { return shapes_; }
+    const Pool<Joint>& joints() const;
+    const Pool<Chain>& chains() const { return chains_; }
+
+    // Bodies (world_bodies.cpp).
     /// Returns null_index when the body pool is full.
     int32_t create_body(const BodyDef& def);
     void destroy_body(int32_t body);
-    /// Returns null_index when the shape pool is full.
-    int32_t create_shape(int32_t body, const ShapeDef& def, const Geometry& geometry);
-    void destroy_shape(int32_t shape);
-    /// Creates the chain's segments as shapes of the body (static or kinematic; the
-    /// caller checked the points). Returns null_index, creating nothing, when a pool is
-    /// full.
-    int32_t create_chain(int32_t body, const ChainDef& def);
-    /// Destroys the chain and its segments.
-    void destroy_chain(int32_t chain);
-
-    // Joints. The def must be valid (two live, different bodies, settings in range: the
-    // C boundary checks). Creating and destroying wake both bodies; a joint that keeps
-    // its bodies from colliding ends their contacts, and destroying it lets them meet
-    // again from the next step. Returns null_index when the joint pool is full.
-    int32_t create_joint(const JointDef& def);
-    void destroy_joint(int32_t joint);
-    /// The joint's settings after a caller changed them in joints[joint].def: wakes both
-    /// bodies and applies a changed collide_connected.
-    void joint_changed(int32_t joint);
-    /// The joint's angle, translation, speed and length as its bodies stand now.
-    JointMeasures measure_joint(int32_t joint) const { return joints_.measure(joint); }
-    /// Joints whose reaction passed a threshold in the last step.
-    const std::vector<JointEvent>& joint_events() const { return events_.current.joint_events; }
-
     // Changing a body. Each wakes what it must: the body, and for a new transform what
     // touches it too. Velocities of static bodies stay zero; a fixed-rotation body never
     // turns.
@@ -123,45 +111,62 @@ public:
     bool apply_torque(int32_t body, float torque, bool wake);
     bool apply_linear_impulse(int32_t body, Vec2 impulse, Vec2 point, bool wake);
     bool apply_angular_impulse(int32_t body, float impulse, bool wake);
+    void set_user_data(int32_t body, void* user_data) { bodies_[body].user_data = user_data; }
 
-    bool is_awake(int32_t body) const { return islands_.is_awake(body); }
-    bool is_quarantined(int32_t body) const { return bodies[body].quarantined; }
+    bool is_awake(int32_t body) const { return bodies_[body].awake_index != null_index; }
+    bool is_quarantined(int32_t body) const { return bodies_[body].quarantined; }
     /// Wakes the body's island (and resets its rest timer); a no-op for static bodies.
     void wake_body(int32_t body);
     /// Puts the body and everything touching it to sleep now.
     void sleep_body(int32_t body);
     void wake_all();
-    void set_gravity(Vec2 gravity);
+
+    // Shapes and chains (world_shapes.cpp).
+    /// Returns null_index when the shape pool is full.
+    int32_t create_shape(int32_t body, const ShapeDef& def, const Geometry& geometry);
+    void destroy_shape(int32_t shape);
+    /// Creates the chain's segments as shapes of the body (static or kinematic; the
+    /// caller checked the points). Returns null_index, creating nothing, when a pool is
+    /// full.
+    int32_t create_chain(int32_t body, const ChainDef& def);
+    /// Destroys the chain and its segments.
+    void destroy_chain(int32_t chain);
     /// Changes a shape's material; its contacts mix it in at once (asleep or not).
     void set_friction(int32_t shape, float friction);
     void set_restitution(int32_t shape, float restitution);
     /// Changes a shape's filter; its contacts are rebuilt at the next step.
     void set_filter(int32_t shape, const Filter& filter);
+    void set_shape_user_data(int32_t shape, void* user_data) { shapes_[shape].user_data = user_data; }
+
+    // Joints (world_joints.cpp). The def must be valid (two live, different bodies,
+    // settings in range: the C boundary checks). Creating and destroying wake both
+    // bodies; a joint that keeps its bodies from colliding ends their contacts, and
+    // destroying it lets them meet again from the next step. Returns null_index when the
+    // joint pool is full.
+    int32_t create_joint(const JointDef& def);
+    void destroy_joint(int32_t joint);
+    /// New settings for the joint (same kind and bodies): wakes both bodies and applies a
+    /// changed collide_connected.
+    void set_joint_def(int32_t joint, const JointDef& def);
+    void set_joint_user_data(int32_t joint, void* user_data);
+    /// The joint's angle, translation, speed and length as its bodies stand now.
+    JointMeasures measure_joint(int32_t joint) const;
+    /// Joints whose reaction passed a threshold in the last step.
+    const std::vector<JointEvent>& joint_events() const;
+
+    // The world (world.cpp, world_step.cpp).
+    void set_gravity(Vec2 gravity);
     void step(float time_step, int32_t substep_count);
-
-    void overlap_aabb(const AABB& box, const QueryFilter& filter, ShapeVisitor visit, void* context) const;
-    void overlap_point(Vec2 point, const QueryFilter& filter, ShapeVisitor visit, void* context) const;
-    void cast_ray(Vec2 origin, Vec2 translation, const QueryFilter& filter, RayVisitor visit, void* context) const;
-    RayResult cast_ray_closest(Vec2 origin, Vec2 translation, const QueryFilter& filter) const;
-    /// A proxy (world space) swept along translation: each shape it would touch, with the
-    /// fraction, the point on the shape and the shape's normal there; visit as for rays.
-    void cast_shape(const ShapeProxy& proxy, Vec2 translation, const QueryFilter& filter, RayVisitor visit,
-                    void* context) const;
-    RayResult cast_shape_closest(const ShapeProxy& proxy, Vec2 translation, const QueryFilter& filter) const;
-    /// Every shape the proxy (world space) overlaps or touches.
-    void overlap_shape(const ShapeProxy& proxy, const QueryFilter& filter, ShapeVisitor visit, void* context) const;
-    void rebuild_static_tree() { broad_phase_.tree(ProxyKind::static_proxy).rebuild(); }
-
     /// Installs the C boundary's id encoding for the ids inside events.
-    void set_id_encoder(const IdEncoder& ids) { events_.ids = ids; }
+    void set_id_encoder(const IdEncoder& ids);
     WorldCounters counters() const;
     /// The bits of every body's transform and velocities and every contact's impulses,
     /// in pool order.
     uint64_t state_hash() const;
-    int32_t worker_count() const { return tasks_.worker_count(); }
+    int32_t worker_count() const;
     /// The contact kernels' instruction set (automatic resolved).
-    SimdPath simd_path() const { return solver_.simd_path(); }
-    const WorldEvents& events() const { return events_.current; }
+    SimdPath simd_path() const;
+    const WorldEvents& events() const;
     /// The last step's stage times. Timing costs nothing until it is asked for: reading
     /// the profile (or the def's enable_profile) turns it on from the next step.
     const StepProfile& profile() const {
@@ -177,53 +182,63 @@ public:
     /// large scene quadratic in validating builds).
     void validate() const;
 
-    WorldDef settings;
-    Pool<Body> bodies;
-    Pool<Shape> shapes;
-    /// The joints (joint.hpp); change a def through joint_changed.
-    Pool<Joint> joints;
-    Pool<Chain> chains;
+    // Queries (world_query.cpp).
+    void overlap_aabb(const AABB& box, const QueryFilter& filter, ShapeVisitor visit, void* context) const;
+    void overlap_point(Vec2 point, const QueryFilter& filter, ShapeVisitor visit, void* context) const;
+    void cast_ray(Vec2 origin, Vec2 translation, const QueryFilter& filter, RayVisitor visit, void* context) const;
+    RayResult cast_ray_closest(Vec2 origin, Vec2 translation, const QueryFilter& filter) const;
+    /// A proxy (world space) swept along translation: each shape it would touch, with the
+    /// fraction, the point on the shape and the shape's normal there; visit as for rays.
+    void cast_shape(const ShapeProxy& proxy, Vec2 translation, const QueryFilter& filter, RayVisitor visit,
+                    void* context) const;
+    RayResult cast_shape_closest(const ShapeProxy& proxy, Vec2 translation, const QueryFilter& filter) const;
+    /// Every shape the proxy (world space) overlaps or touches.
+    void overlap_shape(const ShapeProxy& proxy, const QueryFilter& filter, ShapeVisitor visit, void* context) const;
+    void rebuild_static_tree();
 
 private:
     friend class QueryLock;
+    friend class WorldProbe;  // the unit tests' window on the stages (tests/unit/world_fixture.hpp)
 
+    // world_bodies.cpp
     void update_mass(int32_t body);
-    void link_joint(int32_t joint);
-    void unlink_joint(int32_t joint);
-    void link_joints(int32_t body);
-    void unlink_joints(int32_t body);
-    void let_bodies_meet(int32_t body_a, int32_t body_b);
-    int32_t attach_shape(int32_t body, const ShapeDef& def, const Geometry& geometry);
-    void detach_shape(int32_t shape);
-    void create_proxy(int32_t shape, bool query_now);
     void cover_step_ahead(float time_step);
     void mark_for_cover(int32_t body);
     bool accumulate(int32_t body, Vec2 force, float torque, bool wake);
     bool change_velocity(int32_t body, Vec2 dv, float dw, bool wake);
     bool prepare_to_receive(int32_t body, bool wake);
+    // world_shapes.cpp
+    int32_t attach_shape(int32_t body, const ShapeDef& def, const Geometry& geometry);
+    void detach_shape(int32_t shape);
+    void create_proxy(int32_t shape, bool query_now);
+    // world_joints.cpp
+    void link_joint(int32_t joint);
+    void unlink_joint(int32_t joint);
+    void link_joints(int32_t body);
+    void unlink_joints(int32_t body);
+    void let_bodies_meet(int32_t body_a, int32_t body_b);
+    void forget_joint_impulses(int32_t body);
+    // world_step.cpp
     void report_falling_asleep(int32_t body);
     void quarantine_non_finite_bodies();
-    void forget_joint_impulses(int32_t body);
     void report_sensor_crossings();
-    // The islands and the contact set hold no reference to each other: the world hands
-    // each what the other changed.
+    // world.cpp: the islands and the contact set hold no reference to each other; the
+    // world hands each what the other changed.
     void follow_woken_bodies();
     void apply_link_changes();
     void destroy_contacts_of_shape(int32_t shape, bool only_filtered_out);
     void destroy_contacts_between(int32_t body_a, int32_t body_b);
     void visit_island_links(int32_t body, FunctionRef<void(int32_t other)> follow) const;
+    // world_validate.cpp
     void validate_body(int32_t body) const;
 
-    TaskSystem tasks_;
-    BroadPhase broad_phase_;
-    EventRecorder events_;
-    JointSet joints_;
-    ContactSet contacts_;
-    Islands islands_;
-    Solver solver_;
-    Continuous continuous_;
+    WorldDef settings_;
+    Pool<Body> bodies_;
+    Pool<Shape> shapes_;
+    Pool<Chain> chains_;
+    std::unique_ptr<WorldStages> stages_;
     std::vector<int32_t> to_cover_;  // bodies whose boxes must cover the next step afresh
-    float last_time_step_ = 0.0f;
+    float covered_time_step_ = 0.0f;  // the time step the moving fat boxes were made for, s
     StepProfile profile_;
     mutable bool profiling_ = false;
     mutable int32_t lock_depth_ = 0;

@@ -2,11 +2,12 @@
 // World: creating, changing and destroying joints, and keeping islands and contacts in
 // step with them.
 #include "dynamics/world/world.hpp"
+#include "dynamics/world/world_stages.hpp"
 
 namespace i2d {
 
 int32_t World::create_joint(const JointDef& def) {
-    const int32_t joint = joints_.create(def);
+    const int32_t joint = stages_->joints.create(def);
     if (joint == null_index) {
         return null_index;
     }
@@ -20,21 +21,21 @@ int32_t World::create_joint(const JointDef& def) {
 }
 
 void World::destroy_joint(int32_t joint) {
-    const JointDef& def = joints[joint].def;
+    const JointDef& def = stages_->joints.joint(joint).def;
     const int32_t body_a = def.body_a, body_b = def.body_b;
     const bool kept_apart = !def.collide_connected;
     wake_body(body_a);
     wake_body(body_b);
     unlink_joint(joint);
-    joints_.destroy(joint);
+    stages_->joints.destroy(joint);
     if (kept_apart) {
         let_bodies_meet(body_a, body_b);
     }
 }
 
-void World::joint_changed(int32_t joint) {
-    const JointDef& def = joints[joint].def;
-    joints_.touch();  // a setting may change which rows the tree pass takes
+void World::set_joint_def(int32_t joint, const JointDef& def) {
+    stages_->joints.joint(joint).def = def;
+    stages_->joints.touch();  // a setting may change which rows the tree pass takes
     wake_body(def.body_a);
     wake_body(def.body_b);
     if (def.collide_connected) {
@@ -44,46 +45,54 @@ void World::joint_changed(int32_t joint) {
     }
 }
 
+void World::set_joint_user_data(int32_t joint, void* user_data) {
+    stages_->joints.joint(joint).def.user_data = user_data;
+}
+
+JointMeasures World::measure_joint(int32_t joint) const { return stages_->joints.measure(joint); }
+
+const std::vector<JointEvent>& World::joint_events() const { return stages_->events.current.joint_events; }
+
 // Overlapping proxies of the two bodies were skipped while the joint kept them apart;
 // queried again at the next step, they pair now.
 void World::let_bodies_meet(int32_t body_a, int32_t body_b) {
-    const int32_t body = bodies[body_a].shape_count <= bodies[body_b].shape_count ? body_a : body_b;
-    for (int32_t s = bodies[body].head_shape; s != null_index; s = shapes[s].next_in_body) {
-        broad_phase_.requery_proxy(shapes[s].proxy_key);
+    const int32_t body = bodies_[body_a].shape_count <= bodies_[body_b].shape_count ? body_a : body_b;
+    for (int32_t s = bodies_[body].head_shape; s != null_index; s = shapes_[s].next_in_body) {
+        stages_->broad_phase.requery_proxy(shapes_[s].proxy_key);
     }
 }
 
 // Two dynamic bodies held by a joint share an island, so that they sleep and wake
 // together; static and kinematic bodies join no island.
 void World::link_joint(int32_t joint) {
-    Joint& j = joints[joint];
-    const bool both_dynamic = bodies[j.def.body_a].type == BodyType::dynamic &&
-                              bodies[j.def.body_b].type == BodyType::dynamic;
+    Joint& j = stages_->joints.joint(joint);
+    const bool both_dynamic = bodies_[j.def.body_a].type == BodyType::dynamic &&
+                              bodies_[j.def.body_b].type == BodyType::dynamic;
     if (!j.island_link && both_dynamic && JointSet::links_islands(j)) {
         j.island_link = true;
-        islands_.link(j.def.body_a, j.def.body_b);
+        stages_->islands.link(j.def.body_a, j.def.body_b);
     }
 }
 
 void World::unlink_joint(int32_t joint) {
-    Joint& j = joints[joint];
+    Joint& j = stages_->joints.joint(joint);
     if (j.island_link) {
         j.island_link = false;
-        islands_.unlink(j.def.body_a);
+        stages_->islands.unlink(j.def.body_a);
     }
 }
 
 void World::link_joints(int32_t body) {
-    joints_.touch();  // the body's type changed: its joints may move it, or no longer
-    joints_.visit_joints(body, [this](int32_t joint, int32_t other) {
+    stages_->joints.touch();  // the body's type changed: its joints may move it, or no longer
+    stages_->joints.visit_joints(body, [this](int32_t joint, int32_t other) {
         wake_body(other);
         link_joint(joint);
     });
 }
 
 void World::forget_joint_impulses(int32_t body) {
-    joints_.visit_joints(body, [this](int32_t joint, int32_t) {
-        Joint& j = joints[joint];
+    stages_->joints.visit_joints(body, [this](int32_t joint, int32_t) {
+        Joint& j = stages_->joints.joint(joint);
         j.impulses = JointImpulses{};
         j.reaction_force = Vec2{};
         j.reaction_torque = 0.0f;
@@ -92,7 +101,7 @@ void World::forget_joint_impulses(int32_t body) {
 }
 
 void World::unlink_joints(int32_t body) {
-    joints_.visit_joints(body, [this](int32_t joint, int32_t other) {
+    stages_->joints.visit_joints(body, [this](int32_t joint, int32_t other) {
         wake_body(other);
         unlink_joint(joint);
     });

@@ -7,6 +7,7 @@
 #include "collision/geometry.hpp"
 #include "collision/toi.hpp"
 #include "dynamics/world/world.hpp"
+#include "dynamics/world/world_stages.hpp"
 
 namespace i2d {
 
@@ -14,10 +15,10 @@ void World::overlap_aabb(const AABB& box, const QueryFilter& filter, ShapeVisito
     QueryLock lock(*this);
     bool go_on = true;
     for (int32_t k = 0; k < int32_t(ProxyKind::count) && go_on; ++k) {
-        broad_phase_.tree(ProxyKind(k)).query(box, filter.mask_bits, [&](int32_t, int32_t shape) {
-            const Shape& s = shapes[shape];
+        stages_->broad_phase.tree(ProxyKind(k)).query(box, filter.mask_bits, [&](int32_t, int32_t shape) {
+            const Shape& s = shapes_[shape];
             if (should_query(s.filter, filter) && overlaps(s.aabb, box) &&
-                overlaps_aabb(s.geometry, bodies[s.body].transform, box)) {
+                overlaps_aabb(s.geometry, bodies_[s.body].transform, box)) {
                 go_on = visit(shape, context);
             }
             return go_on;
@@ -30,10 +31,10 @@ void World::overlap_point(Vec2 point, const QueryFilter& filter, ShapeVisitor vi
     const AABB box{point, point};
     bool go_on = true;
     for (int32_t k = 0; k < int32_t(ProxyKind::count) && go_on; ++k) {
-        broad_phase_.tree(ProxyKind(k)).query(box, filter.mask_bits, [&](int32_t, int32_t shape) {
-            const Shape& s = shapes[shape];
+        stages_->broad_phase.tree(ProxyKind(k)).query(box, filter.mask_bits, [&](int32_t, int32_t shape) {
+            const Shape& s = shapes_[shape];
             if (should_query(s.filter, filter) && contains_point(s.aabb, point) &&
-                contains_point(s.geometry, bodies[s.body].transform, point)) {
+                contains_point(s.geometry, bodies_[s.body].transform, point)) {
                 go_on = visit(shape, context);
             }
             return go_on;
@@ -49,13 +50,13 @@ void World::cast_ray(Vec2 origin, Vec2 translation, const QueryFilter& filter, R
     TreeRayInput input{origin, translation, 1.0f};
     bool stopped = false;
     for (int32_t k = 0; k < int32_t(ProxyKind::count) && !stopped; ++k) {
-        broad_phase_.tree(ProxyKind(k)).ray_cast(
+        stages_->broad_phase.tree(ProxyKind(k)).ray_cast(
             input, filter.mask_bits, [&](const TreeRayInput& current, int32_t, int32_t shape) -> float {
-                const Shape& s = shapes[shape];
+                const Shape& s = shapes_[shape];
                 if (!should_query(s.filter, filter)) {
                     return -1.0f;
                 }
-                const RayHit hit = ray_cast(s.geometry, bodies[s.body].transform, current.origin,
+                const RayHit hit = ray_cast(s.geometry, bodies_[s.body].transform, current.origin,
                                             current.translation, current.max_fraction);
                 if (!hit.hit) {
                     return -1.0f;
@@ -102,13 +103,13 @@ void World::cast_shape(const ShapeProxy& proxy, Vec2 translation, const QueryFil
     float max_fraction = 1.0f;
     bool stopped = false;
     for (int32_t k = 0; k < int32_t(ProxyKind::count) && !stopped; ++k) {
-        broad_phase_.tree(ProxyKind(k)).query(swept, filter.mask_bits, [&](int32_t, int32_t shape) {
-            const Shape& s = shapes[shape];
+        stages_->broad_phase.tree(ProxyKind(k)).query(swept, filter.mask_bits, [&](int32_t, int32_t shape) {
+            const Shape& s = shapes_[shape];
             if (!should_query(s.filter, filter)) {
                 return true;
             }
             const CastHit hit =
-                shape_cast(make_shape_proxy(s.geometry), bodies[s.body].transform, proxy, translation, max_fraction);
+                shape_cast(make_shape_proxy(s.geometry), bodies_[s.body].transform, proxy, translation, max_fraction);
             if (!hit.hit) {
                 return true;
             }
@@ -135,12 +136,12 @@ void World::overlap_shape(const ShapeProxy& proxy, const QueryFilter& filter, Sh
     const AABB box = proxy_aabb(proxy);
     bool go_on = true;
     for (int32_t k = 0; k < int32_t(ProxyKind::count) && go_on; ++k) {
-        broad_phase_.tree(ProxyKind(k)).query(box, filter.mask_bits, [&](int32_t, int32_t shape) {
-            const Shape& s = shapes[shape];
+        stages_->broad_phase.tree(ProxyKind(k)).query(box, filter.mask_bits, [&](int32_t, int32_t shape) {
+            const Shape& s = shapes_[shape];
             if (!should_query(s.filter, filter) || !overlaps(s.aabb, box)) {
                 return true;
             }
-            const ShapeProxy other = transformed(make_shape_proxy(s.geometry), bodies[s.body].transform);
+            const ShapeProxy other = transformed(make_shape_proxy(s.geometry), bodies_[s.body].transform);
             if (core_distance(other, proxy).distance <= other.radius + proxy.radius) {
                 go_on = visit(shape, context);
             }
@@ -148,5 +149,7 @@ void World::overlap_shape(const ShapeProxy& proxy, const QueryFilter& filter, Sh
         });
     }
 }
+
+void World::rebuild_static_tree() { stages_->broad_phase.tree(ProxyKind::static_proxy).rebuild(); }
 
 }  // namespace i2d

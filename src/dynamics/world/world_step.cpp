@@ -4,6 +4,7 @@
 #include "core/state_hash.hpp"
 #include "core/timer.hpp"
 #include "dynamics/world/world.hpp"
+#include "dynamics/world/world_stages.hpp"
 
 namespace i2d {
 
@@ -27,49 +28,49 @@ void World::step(float time_step, int32_t substep_count) {
     const SteppingMark mark(stepping_);
     Timer total(profiling_), timer(profiling_);
     profile_ = StepProfile{};
-    events_.begin_step();
+    stages_->events.begin_step();
     if (time_step == 0.0f) {
         return;  // a paused world: nothing moves, nothing is tested (Box2D's rule)
     }
-    const StepContext step(settings, time_step, substep_count, tasks_.worker_count());
+    const StepContext step(settings_, time_step, substep_count, stages_->tasks.worker_count());
     cover_step_ahead(time_step);
-    contacts_.find_new_contacts(step, broad_phase_, [this](int32_t body) { wake_body(body); });
+    stages_->contacts.find_new_contacts(step, stages_->broad_phase, [this](int32_t body) { wake_body(body); });
     profile_.pairs += timer.lap_ms();
 
-    contacts_.collide(step);
+    stages_->contacts.collide(step);
     // Waking adds to the awake contacts, so it waits until the narrowphase is done; the
     // woken contacts' manifolds are current, since sleeping bodies did not move.
-    for (const int32_t island : contacts_.islands_to_wake()) {
-        islands_.wake_island(island);
+    for (const int32_t island : stages_->contacts.islands_to_wake()) {
+        stages_->islands.wake_island(island);
         follow_woken_bodies();
     }
-    contacts_.update_links();
+    stages_->contacts.update_links();
     apply_link_changes();
     profile_.collide += timer.lap_ms();
 
-    solver_.step(step);
+    stages_->solver.step(step);
     profile_.solve += timer.lap_ms();
-    if (settings.enable_continuous) {
-        continuous_.run(step, solver_.fast_bodies());
+    if (settings_.enable_continuous) {
+        stages_->continuous.run(step, stages_->solver.fast_bodies());
     }
     profile_.continuous += timer.lap_ms();
-    broad_phase_.commit_moves_in_place();
+    stages_->broad_phase.commit_moves_in_place();
     profile_.update_bounds += timer.lap_ms();
 
-    contacts_.end_step(step);
+    stages_->contacts.end_step(step);
     apply_link_changes();
-    if (settings.enable_continuous) {
+    if (settings_.enable_continuous) {
         report_sensor_crossings();
     }
     profile_.events += timer.lap_ms();
-    if (settings.enable_sleep) {
-        islands_.sleep_rested_islands(
-            settings.time_to_sleep,
+    if (settings_.enable_sleep) {
+        stages_->islands.sleep_rested_islands(
+            settings_.time_to_sleep,
             [this](int32_t body, FunctionRef<void(int32_t)> follow) { visit_island_links(body, follow); },
-            [this](int32_t body) { report_falling_asleep(body); }, [this](int32_t body) { contacts_.body_slept(body); });
+            [this](int32_t body) { report_falling_asleep(body); }, [this](int32_t body) { stages_->contacts.body_slept(body); });
     }
     profile_.sleep += timer.lap_ms();
-    if (!solver_.non_finite_bodies().empty()) {
+    if (!stages_->solver.non_finite_bodies().empty()) {
         quarantine_non_finite_bodies();
     }
     validate();
@@ -78,11 +79,11 @@ void World::step(float time_step, int32_t substep_count) {
 
 // A body falling asleep reports a move event even if it did not move.
 void World::report_falling_asleep(int32_t body) {
-    Body& b = bodies[body];
-    std::vector<BodyMoveEvent>& moves = events_.current.body_moves;
+    Body& b = bodies_[body];
+    std::vector<BodyMoveEvent>& moves = stages_->events.current.body_moves;
     if (b.move_event == null_index) {
         b.move_event = int32_t(moves.size());
-        moves.push_back({b.transform, events_.ids.body_id(body, bodies.generation(body)), b.user_data, false});
+        moves.push_back({b.transform, stages_->events.ids.body_id(body, bodies_.generation(body)), b.user_data, false});
     }
     moves[std::size_t(b.move_event)].fell_asleep = true;
 }
@@ -93,74 +94,74 @@ void World::report_falling_asleep(int32_t body) {
 // against its NaN), and reported. Its contacts end with set_type; those ends belong to
 // this step's arrays, which the caller has not seen yet.
 void World::quarantine_non_finite_bodies() {
-    const std::size_t contact_ends_before = events_.pending_contact_ends.size();
-    const std::size_t sensor_ends_before = events_.pending_sensor_ends.size();
-    for (const int32_t body : solver_.non_finite_bodies()) {
-        const Body& b = bodies[body];
-        events_.current.body_quarantines.push_back(
-            {b.transform, events_.ids.body_id(body, bodies.generation(body)), b.user_data, int32_t(b.type)});
+    const std::size_t contact_ends_before = stages_->events.pending_contact_ends.size();
+    const std::size_t sensor_ends_before = stages_->events.pending_sensor_ends.size();
+    for (const int32_t body : stages_->solver.non_finite_bodies()) {
+        const Body& b = bodies_[body];
+        stages_->events.current.body_quarantines.push_back(
+            {b.transform, stages_->events.ids.body_id(body, bodies_.generation(body)), b.user_data, int32_t(b.type)});
         forget_joint_impulses(body);
         set_type(body, BodyType::static_body);
-        bodies[body].quarantined = true;
+        bodies_[body].quarantined = true;
     }
     const auto take_new_ends = [](std::vector<ShapePairEvent>& pending, std::size_t before,
                                   std::vector<ShapePairEvent>& current) {
         current.insert(current.end(), pending.begin() + std::ptrdiff_t(before), pending.end());
         pending.resize(before);
     };
-    take_new_ends(events_.pending_contact_ends, contact_ends_before, events_.current.contact_end);
-    take_new_ends(events_.pending_sensor_ends, sensor_ends_before, events_.current.sensor_end);
+    take_new_ends(stages_->events.pending_contact_ends, contact_ends_before, stages_->events.current.contact_end);
+    take_new_ends(stages_->events.pending_sensor_ends, sensor_ends_before, stages_->events.current.sensor_end);
 }
 
 // A fast body that passed through a sensor within the step neither began nor ended the
 // step in it: the sensor reports the visit as a begin and an end together. Visits the
 // contact saw (touching at either end of the step) were reported already.
 void World::report_sensor_crossings() {
-    for (const SensorCrossing& crossing : continuous_.sensor_crossings()) {
+    for (const SensorCrossing& crossing : stages_->continuous.sensor_crossings()) {
         bool seen = false;
-        contacts_.visit_contacts(shapes[crossing.visitor_shape].body, [&](int32_t contact, int32_t) {
-            const Contact& c = contacts_.pool()[contact];
+        stages_->contacts.visit_contacts(shapes_[crossing.visitor_shape].body, [&](int32_t contact, int32_t) {
+            const Contact& c = stages_->contacts.pool()[contact];
             const bool same = (c.shape_a == crossing.sensor_shape && c.shape_b == crossing.visitor_shape) ||
                               (c.shape_b == crossing.sensor_shape && c.shape_a == crossing.visitor_shape);
             seen = seen || (same && (c.flags & (contact_touching | contact_touching_at_start)) != 0);
         });
         if (!seen) {
-            const ShapePairEvent e{events_.ids.shape_id(crossing.sensor_shape, shapes.generation(crossing.sensor_shape)),
-                                   events_.ids.shape_id(crossing.visitor_shape,
-                                                        shapes.generation(crossing.visitor_shape))};
-            events_.current.sensor_begin.push_back(e);
-            events_.current.sensor_end.push_back(e);
+            const ShapePairEvent e{stages_->events.ids.shape_id(crossing.sensor_shape, shapes_.generation(crossing.sensor_shape)),
+                                   stages_->events.ids.shape_id(crossing.visitor_shape,
+                                                        shapes_.generation(crossing.visitor_shape))};
+            stages_->events.current.sensor_begin.push_back(e);
+            stages_->events.current.sensor_end.push_back(e);
         }
     }
 }
 
 WorldCounters World::counters() const {
     WorldCounters c;
-    c.body_count = bodies.count();
-    c.shape_count = shapes.count();
-    c.pair_count = contacts_.pool().count();
-    c.contact_count = contacts_.touching_count();
+    c.body_count = bodies_.count();
+    c.shape_count = shapes_.count();
+    c.pair_count = stages_->contacts.pool().count();
+    c.contact_count = stages_->contacts.touching_count();
     for (int32_t k = 0; k < int32_t(ProxyKind::count); ++k) {
-        c.tree_heights[k] = broad_phase_.tree(ProxyKind(k)).height();
+        c.tree_heights[k] = stages_->broad_phase.tree(ProxyKind(k)).height();
     }
-    c.awake_body_count = int32_t(islands_.awake_bodies().size());
-    c.sleeping_island_count = islands_.sleeping_island_count();
+    c.awake_body_count = int32_t(stages_->islands.awake_bodies().size());
+    c.sleeping_island_count = stages_->islands.sleeping_island_count();
     return c;
 }
 
 uint64_t World::state_hash() const {
     StateHash hash;
-    for (int32_t i = 0; i < bodies.capacity(); ++i) {
-        if (!bodies.is_live(i)) {
+    for (int32_t i = 0; i < bodies_.capacity(); ++i) {
+        if (!bodies_.is_live(i)) {
             continue;
         }
-        const Body& b = bodies[i];
+        const Body& b = bodies_[i];
         hash.add(i);
         hash.add_bytes(&b.transform, sizeof b.transform);
         hash.add_bytes(&b.linear_velocity, sizeof b.linear_velocity);
         hash.add(b.angular_velocity);
     }
-    const Pool<Contact>& contacts = contacts_.pool();
+    const Pool<Contact>& contacts = stages_->contacts.pool();
     for (int32_t i = 0; i < contacts.capacity(); ++i) {
         if (!contacts.is_live(i)) {
             continue;

@@ -5,6 +5,7 @@
 
 #include "core/assert.hpp"
 #include "dynamics/world/world.hpp"
+#include "dynamics/world/world_stages.hpp"
 #include "math/math.hpp"
 
 namespace i2d {
@@ -12,18 +13,18 @@ namespace i2d {
 void World::validate() const {
 #if defined(I2D_VALIDATE)
     int32_t shapes_seen = 0, contact_edges_seen = 0;
-    for (int32_t i = 0; i < bodies.capacity(); ++i) {
-        if (!bodies.is_live(i)) {
+    for (int32_t i = 0; i < bodies_.capacity(); ++i) {
+        if (!bodies_.is_live(i)) {
             continue;
         }
-        const Body& b = bodies[i];
+        const Body& b = bodies_[i];
         I2D_ASSERT(is_finite(b.transform.p) && is_finite(b.center) && is_finite(b.linear_velocity));
         I2D_ASSERT(std::isfinite(b.mass) && std::isfinite(b.inv_mass));
         I2D_ASSERT(b.type == BodyType::dynamic ? b.mass > 0.0f : b.inv_mass == 0.0f);
         int32_t count = 0;
         int32_t prev = null_index;
-        for (int32_t s = b.head_shape; s != null_index; s = shapes[s].next_in_body) {
-            I2D_ASSERT(shapes.is_live(s) && shapes[s].body == i && shapes[s].prev_in_body == prev);
+        for (int32_t s = b.head_shape; s != null_index; s = shapes_[s].next_in_body) {
+            I2D_ASSERT(shapes_.is_live(s) && shapes_[s].body == i && shapes_[s].prev_in_body == prev);
             I2D_ASSERT(count <= b.shape_count);  // no cycle
             prev = s;
             ++count;
@@ -33,7 +34,7 @@ void World::validate() const {
 
         count = 0;
         int32_t prev_key = null_index;
-        const Pool<Contact>& contacts = contacts_.pool();
+        const Pool<Contact>& contacts = stages_->contacts.pool();
         for (int32_t key = b.head_contact_key; key != null_index;) {
             const Contact& c = contacts[key >> 1];
             const ContactEdge& edge = c.edges[key & 1];
@@ -47,29 +48,29 @@ void World::validate() const {
         contact_edges_seen += count;
         validate_body(i);
     }
-    I2D_ASSERT(shapes_seen == shapes.count());
-    I2D_ASSERT(contact_edges_seen == 2 * contacts_.pool().count());
-    for (int32_t i = 0; i < shapes.capacity(); ++i) {
-        if (!shapes.is_live(i)) {
+    I2D_ASSERT(shapes_seen == shapes_.count());
+    I2D_ASSERT(contact_edges_seen == 2 * stages_->contacts.pool().count());
+    for (int32_t i = 0; i < shapes_.capacity(); ++i) {
+        if (!shapes_.is_live(i)) {
             continue;
         }
-        const Shape& s = shapes[i];
+        const Shape& s = shapes_[i];
         I2D_ASSERT(is_finite(s.aabb.lower) && is_finite(s.aabb.upper));
         I2D_ASSERT(s.aabb.lower.x <= s.aabb.upper.x && s.aabb.lower.y <= s.aabb.upper.y);
-        const AABB& fat = broad_phase_.fat_aabb(s.proxy_key);
+        const AABB& fat = stages_->broad_phase.fat_aabb(s.proxy_key);
         I2D_ASSERT(fat.lower == s.fat_aabb.lower && fat.upper == s.fat_aabb.upper);
-        const AABB& ahead = broad_phase_.ahead_aabb(s.proxy_key);
+        const AABB& ahead = stages_->broad_phase.ahead_aabb(s.proxy_key);
         I2D_ASSERT(ahead.lower == s.ahead_aabb.lower && ahead.upper == s.ahead_aabb.upper);
         I2D_ASSERT(contains(s.ahead_aabb, s.fat_aabb));
         I2D_ASSERT(fat.lower.x <= s.aabb.lower.x && fat.lower.y <= s.aabb.lower.y);
         I2D_ASSERT(s.aabb.upper.x <= fat.upper.x && s.aabb.upper.y <= fat.upper.y);
-        I2D_ASSERT(broad_phase_.tree(proxy_kind(s.proxy_key)).user_value(proxy_id(s.proxy_key)) == i);
+        I2D_ASSERT(stages_->broad_phase.tree(proxy_kind(s.proxy_key)).user_value(proxy_id(s.proxy_key)) == i);
     }
-    contacts_.validate();
-    joints_.validate();
-    islands_.validate();
+    stages_->contacts.validate();
+    stages_->joints.validate();
+    stages_->islands.validate();
     for (int32_t k = 0; k < int32_t(ProxyKind::count); ++k) {
-        broad_phase_.tree(ProxyKind(k)).validate();
+        stages_->broad_phase.tree(ProxyKind(k)).validate();
     }
 #endif
 }
@@ -78,7 +79,7 @@ void World::validate() const {
 // in no island and never awake.
 void World::validate_body(int32_t body) const {
 #if defined(I2D_VALIDATE)
-    const Body& b = bodies[body];
+    const Body& b = bodies_[body];
     if (b.type == BodyType::static_body) {
         I2D_ASSERT(b.awake_index == null_index && b.island == null_index);
         return;

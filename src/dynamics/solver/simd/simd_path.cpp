@@ -3,6 +3,7 @@
 #include "dynamics/solver/simd/simd_path.hpp"
 
 #include "core/cpu_features.hpp"
+#include "dynamics/solver/simd/contact_block.hpp"
 
 namespace i2d {
 

@@ -5,9 +5,10 @@
 
 #include <cstdint>
 
-#include "dynamics/solver/simd/contact_block.hpp"
 
 namespace i2d {
+
+struct ContactKernels;
 
 enum class SimdPath : uint8_t { automatic, scalar, sse2, avx2, avx512, neon, count };
 
