@@ -1,12 +1,53 @@
 /* SPDX-License-Identifier: MIT */
-/* Shared helpers of the random-scene API tests: a fixed-seed generator and capped
- * mismatch reports. Each test file that includes it gets its own copies (static). */
+/* The API suite's fixture header, the one place for what its test files share: value
+ * builders for the public structs, the step the tests take, a fresh world to run a test
+ * body in, a fixed-seed generator and capped mismatch reports. Everything is static, so
+ * each test file that includes it gets its own copies (inline: no warning for the ones a
+ * file does not use). Topic headers build on it: ref_shape.h (the query tests' reference
+ * model) and test_api_errors.h (the bad-input tests' fixture). */
 #ifndef I2D_TESTS_API_TEST_SUPPORT_H
 #define I2D_TESTS_API_TEST_SUPPORT_H
 
+#include <impulse2d/impulse2d.h>
+
 #include <stdarg.h>
+#include <stdbool.h>
 #include <stdint.h>
 #include <stdio.h>
+
+#include "check.h"
+
+/* ---- Values of the public structs, each built in one expression ---------------------- */
+
+static inline i2d_vec2 v2(float x, float y) {
+    i2d_vec2 v;
+    v.x = x;
+    v.y = y;
+    return v;
+}
+
+static inline i2d_rot rot(float c, float s) {
+    i2d_rot q;
+    q.c = c;
+    q.s = s;
+    return q;
+}
+
+static inline i2d_rot identity_rot(void) { return rot(1.0f, 0.0f); }
+
+static inline i2d_aabb box(float min_x, float min_y, float max_x, float max_y) {
+    i2d_aabb b;
+    b.min = v2(min_x, min_y);
+    b.max = v2(max_x, max_y);
+    return b;
+}
+
+static inline i2d_query_filter query_filter(uint64_t category_bits, uint64_t mask_bits) {
+    i2d_query_filter f;
+    f.category_bits = category_bits;
+    f.mask_bits = mask_bits;
+    return f;
+}
 
 /* splitmix64: a fixed-seed generator, the same on every platform (rand() is not). */
 typedef struct rng {

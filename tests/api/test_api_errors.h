@@ -11,30 +11,8 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "api_test_support.h"
 #include "check.h"
-
-/* ---- Small helpers ---------------------------------------------------------------- */
-
-static inline i2d_vec2 v2(float x, float y) {
-    i2d_vec2 v;
-    v.x = x;
-    v.y = y;
-    return v;
-}
-
-static inline i2d_rot rot(float c, float s) {
-    i2d_rot q;
-    q.c = c;
-    q.s = s;
-    return q;
-}
-
-static inline i2d_aabb box(float min_x, float min_y, float max_x, float max_y) {
-    i2d_aabb b;
-    b.min = v2(min_x, min_y);
-    b.max = v2(max_x, max_y);
-    return b;
-}
 
 /* NaN, inf and -inf: the three non-finite values every float input must refuse. */
 enum { NON_FINITE_COUNT = 3 };

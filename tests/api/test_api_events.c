@@ -12,20 +12,6 @@
 
 /* ---- Small helpers ---------------------------------------------------------------- */
 
-static i2d_vec2 v2(float x, float y) {
-    i2d_vec2 v;
-    v.x = x;
-    v.y = y;
-    return v;
-}
-
-static i2d_rot identity_rot(void) {
-    i2d_rot q;
-    q.c = 1.0f;
-    q.s = 0.0f;
-    return q;
-}
-
 static const float k_dt = 1.0f / 60.0f;
 enum { SUBSTEPS = 4 };
 

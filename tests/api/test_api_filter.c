@@ -6,23 +6,10 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "api_test_support.h"
 #include "check.h"
 
 /* ---- Small helpers ---------------------------------------------------------------- */
-
-static i2d_vec2 v2(float x, float y) {
-    i2d_vec2 v;
-    v.x = x;
-    v.y = y;
-    return v;
-}
-
-static i2d_rot identity_rot(void) {
-    i2d_rot q;
-    q.c = 1.0f;
-    q.s = 0.0f;
-    return q;
-}
 
 static i2d_filter filter(uint64_t category_bits, uint64_t mask_bits, int32_t group_index) {
     i2d_filter f;

@@ -40,13 +40,6 @@ typedef struct fixture {
     i2d_body_id foreign;     /* dynamic, of other_world */
 } fixture;
 
-static i2d_vec2 v2(float x, float y) {
-    i2d_vec2 v;
-    v.x = x;
-    v.y = y;
-    return v;
-}
-
 static i2d_body_id make_body(i2d_world_id world, i2d_body_type type, float x, float y) {
     i2d_body_def def = i2d_default_body_def();
     def.type = type;

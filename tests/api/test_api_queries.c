@@ -13,27 +13,6 @@
 
 /* ---- Small helpers ---------------------------------------------------------------- */
 
-static i2d_vec2 v2(float x, float y) {
-    i2d_vec2 v;
-    v.x = x;
-    v.y = y;
-    return v;
-}
-
-static i2d_aabb box(float min_x, float min_y, float max_x, float max_y) {
-    i2d_aabb b;
-    b.min = v2(min_x, min_y);
-    b.max = v2(max_x, max_y);
-    return b;
-}
-
-static i2d_query_filter query_filter(uint64_t category_bits, uint64_t mask_bits) {
-    i2d_query_filter f;
-    f.category_bits = category_bits;
-    f.mask_bits = mask_bits;
-    return f;
-}
-
 /* Collects the ids a query reports, in order; stops the query after `limit` (0: never). */
 enum { LIST_MAX = 1024 };
 

@@ -7,23 +7,10 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "api_test_support.h"
 #include "check.h"
 
 static const double k_pi = 3.14159265358979323846;
-
-static i2d_vec2 v2(float x, float y) {
-    i2d_vec2 v;
-    v.x = x;
-    v.y = y;
-    return v;
-}
-
-static i2d_aabb box(float min_x, float min_y, float max_x, float max_y) {
-    i2d_aabb b;
-    b.min = v2(min_x, min_y);
-    b.max = v2(max_x, max_y);
-    return b;
-}
 
 /* ---- Hello world ------------------------------------------------------------------ */
 
