@@ -49,6 +49,57 @@ static inline i2d_query_filter query_filter(uint64_t category_bits, uint64_t mas
     return f;
 }
 
+/* ---- Worlds and bodies ----------------------------------------------------------------- */
+
+/* The step of the tests that step: 60 Hz with 4 substeps. */
+static const float k_dt = 1.0f / 60.0f;
+enum { SUBSTEPS = 4 };
+
+static inline bool step_ok(i2d_world_id world) { return i2d_world_step(world, k_dt, SUBSTEPS) == I2D_OK; }
+
+/* A default world but for its gravity, (0, gravity_y). */
+static inline i2d_world_id make_world(float gravity_y) {
+    i2d_world_def def = i2d_default_world_def();
+    def.gravity = v2(0.0f, gravity_y);
+    return i2d_world_create(&def);
+}
+
+/* A default body but for its type and position, without shapes. */
+static inline i2d_body_id make_body(i2d_world_id world, i2d_body_type type, float x, float y) {
+    i2d_body_def def = i2d_default_body_def();
+    def.type = type;
+    def.position = v2(x, y);
+    return i2d_body_create(world, &def);
+}
+
+/* Whether the unordered pair {a, b} is {x, y}. */
+static inline bool same_pair(i2d_shape_id a, i2d_shape_id b, i2d_shape_id x, i2d_shape_id y) {
+    return (I2D_ID_EQUALS(a, x) && I2D_ID_EQUALS(b, y)) || (I2D_ID_EQUALS(a, y) && I2D_ID_EQUALS(b, x));
+}
+
+/* A test body: the checks of one test, on a world it is given. Bodies take their world
+ * rather than make it so that the world is destroyed even when a body stops early at an
+ * I2D_REQUIRE. */
+typedef void (*world_test_body)(i2d_world_id world);
+
+static inline void run_then_destroy(i2d_world_id world, world_test_body test_body) {
+    I2D_REQUIRE(!I2D_IS_NULL(world));
+    test_body(world);
+    i2d_world_destroy(world);
+}
+
+static inline void run_in_default_world(world_test_body test_body) {
+    const i2d_world_def def = i2d_default_world_def();
+    run_then_destroy(i2d_world_create(&def), test_body);
+}
+
+/* In a default world but for its gravity, (0, gravity_y). */
+static inline void run_in_world(float gravity_y, world_test_body test_body) {
+    run_then_destroy(make_world(gravity_y), test_body);
+}
+
+/* ---- Random scenes and capped reports ---------------------------------------------------- */
+
 /* splitmix64: a fixed-seed generator, the same on every platform (rand() is not). */
 typedef struct rng {
     uint64_t state;

@@ -14,8 +14,6 @@
 
 /* ---- Small helpers ---------------------------------------------------------------- */
 
-static const float k_dt = 1.0f / 60.0f;
-
 static int compare_ids(const void* a, const void* b) {
     uint64_t x = ((const i2d_shape_id*)a)->bits, y = ((const i2d_shape_id*)b)->bits;
     return x < y ? -1 : (x > y ? 1 : 0);
@@ -834,13 +832,7 @@ static void run_row_cases(i2d_world_id world) {
     I2D_CHECK(log.count == 0);
 }
 
-I2D_TEST(api_cast_ray_row_cases) {
-    i2d_world_def def = i2d_default_world_def();
-    i2d_world_id world = i2d_world_create(&def);
-    I2D_REQUIRE(!I2D_IS_NULL(world));
-    run_row_cases(world);
-    i2d_world_destroy(world);
-}
+I2D_TEST(api_cast_ray_row_cases) { run_in_default_world(run_row_cases); }
 
 /* ---- Refused input and the lock ---------------------------------------------------------- */
 
@@ -1413,11 +1405,4 @@ static void run_heights(i2d_world_id world) {
     check_heights(world, STATICS, KINEMATICS, DYNAMICS, "after rebuilding the static tree");
 }
 
-I2D_TEST(api_cast_ray_tree_heights) {
-    i2d_world_def def = i2d_default_world_def();
-    def.gravity = v2(0.0f, 0.0f);
-    i2d_world_id world = i2d_world_create(&def);
-    I2D_REQUIRE(!I2D_IS_NULL(world));
-    run_heights(world);
-    i2d_world_destroy(world);
-}
+I2D_TEST(api_cast_ray_tree_heights) { run_in_world(0.0f, run_heights); }

@@ -571,14 +571,7 @@ static void run_force_overflow(i2d_world_id world) {
     I2D_CHECK_NEAR(i2d_body_get_linear_velocity(body).x, 2.0, 1e-5);
 }
 
-I2D_TEST(api_errors_force_overflow) {
-    i2d_world_def world_def = i2d_default_world_def();
-    world_def.gravity = v2(0.0f, 0.0f);
-    i2d_world_id world = i2d_world_create(&world_def);
-    I2D_REQUIRE(!I2D_IS_NULL(world));
-    run_force_overflow(world);
-    i2d_world_destroy(world);
-}
+I2D_TEST(api_errors_force_overflow) { run_in_world(0.0f, run_force_overflow); }
 
 /* A unit box of density 1 at the origin: m = 1 kg, I = m (1 + 1) / 12 = 1/6 kg m^2. */
 static i2d_body_id unit_box_body(i2d_world_id world) {
@@ -621,14 +614,7 @@ static void run_torque_overflow(i2d_world_id world) {
     I2D_CHECK_NEAR(i2d_body_get_angular_velocity(body), dt / inertia, 1e-6);
 }
 
-I2D_TEST(api_errors_torque_overflow) {
-    i2d_world_def world_def = i2d_default_world_def();
-    world_def.gravity = v2(0.0f, 0.0f);
-    i2d_world_id world = i2d_world_create(&world_def);
-    I2D_REQUIRE(!I2D_IS_NULL(world));
-    run_torque_overflow(world);
-    i2d_world_destroy(world);
-}
+I2D_TEST(api_errors_torque_overflow) { run_in_world(0.0f, run_torque_overflow); }
 
 /* An impulse changes the velocity at once, and the result enters within the world's
  * maximum_linear_speed: a huge finite impulse is accepted and clamped (direction kept),
@@ -659,14 +645,7 @@ static void run_impulse_overflow(i2d_world_id world) {
     I2D_CHECK(v.x == 0.0f && v.y == -3.0f);
 }
 
-I2D_TEST(api_errors_impulse_overflow) {
-    i2d_world_def world_def = i2d_default_world_def();
-    world_def.gravity = v2(0.0f, 0.0f);
-    i2d_world_id world = i2d_world_create(&world_def);
-    I2D_REQUIRE(!I2D_IS_NULL(world));
-    run_impulse_overflow(world);
-    i2d_world_destroy(world);
-}
+I2D_TEST(api_errors_impulse_overflow) { run_in_world(0.0f, run_impulse_overflow); }
 
 /* The spin overflows too: angular impulses, and linear impulses far from the centre. A
  * refused impulse changes neither velocity. */
@@ -706,14 +685,7 @@ static void run_angular_impulse_overflow(i2d_world_id world) {
     I2D_CHECK_NEAR(i2d_body_get_angular_velocity(body), 6.0, 1e-5);
 }
 
-I2D_TEST(api_errors_angular_impulse_overflow) {
-    i2d_world_def world_def = i2d_default_world_def();
-    world_def.gravity = v2(0.0f, 0.0f);
-    i2d_world_id world = i2d_world_create(&world_def);
-    I2D_REQUIRE(!I2D_IS_NULL(world));
-    run_angular_impulse_overflow(world);
-    i2d_world_destroy(world);
-}
+I2D_TEST(api_errors_angular_impulse_overflow) { run_in_world(0.0f, run_angular_impulse_overflow); }
 
 /* ---- Calls from inside query callbacks --------------------------------------------- */
 

@@ -726,13 +726,7 @@ static void run_body_def_accepted(i2d_world_id world) {
     I2D_CHECK(i2d_world_get_counters(world).body_count == created);
 }
 
-I2D_TEST(api_errors_body_def_edges_accepted) {
-    i2d_world_def world_def = i2d_default_world_def();
-    i2d_world_id world = i2d_world_create(&world_def);
-    I2D_REQUIRE(!I2D_IS_NULL(world));
-    run_body_def_accepted(world);
-    i2d_world_destroy(world);
-}
+I2D_TEST(api_errors_body_def_edges_accepted) { run_in_default_world(run_body_def_accepted); }
 
 static void run_body_def_not_from_default(const fixture* f) {
     static snapshot before;
@@ -1379,13 +1373,7 @@ static void run_shape_edges_accepted(i2d_world_id world) {
     I2D_CHECK(i2d_world_get_counters(world).shape_count == created);
 }
 
-I2D_TEST(api_errors_shape_edges_accepted) {
-    i2d_world_def world_def = i2d_default_world_def();
-    i2d_world_id world = i2d_world_create(&world_def);
-    I2D_REQUIRE(!I2D_IS_NULL(world));
-    run_shape_edges_accepted(world);
-    i2d_world_destroy(world);
-}
+I2D_TEST(api_errors_shape_edges_accepted) { run_in_default_world(run_shape_edges_accepted); }
 
 /* ---- Getters of the wrong shape kind ------------------------------------------------ */
 

@@ -575,13 +575,7 @@ static void run_body_recycle(i2d_world_id world) {
     check_body_id_refused(first, "first body after 70000 recycles");
 }
 
-I2D_TEST(api_ids_body_slot_recycle) {
-    i2d_world_def def = i2d_default_world_def();
-    i2d_world_id world = i2d_world_create(&def);
-    I2D_REQUIRE(!I2D_IS_NULL(world));
-    run_body_recycle(world);
-    i2d_world_destroy(world);
-}
+I2D_TEST(api_ids_body_slot_recycle) { run_in_default_world(run_body_recycle); }
 
 /* An id of one kind passed where another is expected: refused, and the object the bits
  * really name is untouched. */

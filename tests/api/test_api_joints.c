@@ -40,11 +40,9 @@ typedef struct fixture {
     i2d_body_id foreign;     /* dynamic, of other_world */
 } fixture;
 
-static i2d_body_id make_body(i2d_world_id world, i2d_body_type type, float x, float y) {
-    i2d_body_def def = i2d_default_body_def();
-    def.type = type;
-    def.position = v2(x, y);
-    i2d_body_id body = i2d_body_create(world, &def);
+/* A body with a 1 m box, so that it has mass and queries find it. */
+static i2d_body_id make_box_body(i2d_world_id world, i2d_body_type type, float x, float y) {
+    i2d_body_id body = make_body(world, type, x, y);
     i2d_shape_def shape = i2d_default_shape_def();
     i2d_shape_create_box(body, &shape, 0.5f, 0.5f);
     return body;
@@ -55,12 +53,12 @@ static fixture make_fixture(void) {
     i2d_world_def def = i2d_default_world_def();
     f.world = i2d_world_create(&def);
     f.other_world = i2d_world_create(&def);
-    f.ground = make_body(f.world, I2D_BODY_STATIC, 0.0f, -1.0f);
-    f.a = make_body(f.world, I2D_BODY_DYNAMIC, 0.0f, 4.0f);
-    f.b = make_body(f.world, I2D_BODY_DYNAMIC, 3.0f, 4.0f);
-    f.kinematic = make_body(f.world, I2D_BODY_KINEMATIC, -3.0f, 4.0f);
-    f.second_static = make_body(f.world, I2D_BODY_STATIC, 10.0f, -1.0f);
-    f.foreign = make_body(f.other_world, I2D_BODY_DYNAMIC, 0.0f, 4.0f);
+    f.ground = make_box_body(f.world, I2D_BODY_STATIC, 0.0f, -1.0f);
+    f.a = make_box_body(f.world, I2D_BODY_DYNAMIC, 0.0f, 4.0f);
+    f.b = make_box_body(f.world, I2D_BODY_DYNAMIC, 3.0f, 4.0f);
+    f.kinematic = make_box_body(f.world, I2D_BODY_KINEMATIC, -3.0f, 4.0f);
+    f.second_static = make_box_body(f.world, I2D_BODY_STATIC, 10.0f, -1.0f);
+    f.foreign = make_box_body(f.other_world, I2D_BODY_DYNAMIC, 0.0f, 4.0f);
     return f;
 }
 
@@ -397,7 +395,7 @@ I2D_TEST(api_joint_create_refusals_common) {
         CHECK_CREATE_REFUSED(&f, I2D_ERR_INVALID_ARGUMENT, "torque_threshold", create_any(f.world, kind, &d));
     }
     /* Bodies destroyed before the create: their ids are stale. */
-    i2d_body_id doomed = make_body(f.world, I2D_BODY_DYNAMIC, 6.0f, 4.0f);
+    i2d_body_id doomed = make_box_body(f.world, I2D_BODY_DYNAMIC, 6.0f, 4.0f);
     I2D_CHECK_STATUS(i2d_body_destroy(doomed), I2D_OK);
     any_def d = default_def(I2D_JOINT_REVOLUTE, f.a, doomed);
     CHECK_CREATE_REFUSED(&f, I2D_ERR_INVALID_HANDLE, "body_b", create_any(f.world, I2D_JOINT_REVOLUTE, &d));
@@ -1085,13 +1083,13 @@ I2D_TEST(api_joint_events_threshold) {
     g_reports_left = k_report_budget;
     i2d_world_def world_def = i2d_default_world_def();
     const i2d_world_id world = i2d_world_create(&world_def);
-    const i2d_body_id anchor = make_body(world, I2D_BODY_STATIC, 0.0f, 10.0f);
+    const i2d_body_id anchor = make_box_body(world, I2D_BODY_STATIC, 0.0f, 10.0f);
     i2d_body_id boxes[2];
     i2d_joint_id joints[2];
     const float box_mass = 1.0f; /* density 1 on a 1 m square */
     const float weight = box_mass * 10.0f;
     for (int i = 0; i < 2; ++i) {
-        boxes[i] = make_body(world, I2D_BODY_DYNAMIC, 5.0f * (float)i, 8.0f);
+        boxes[i] = make_box_body(world, I2D_BODY_DYNAMIC, 5.0f * (float)i, 8.0f);
         i2d_revolute_joint_def def = i2d_default_revolute_joint_def();
         def.base.body_a = anchor;
         def.base.body_b = boxes[i];

@@ -796,13 +796,7 @@ static void run_turned_square(i2d_world_id world) {
     I2D_CHECK(!r.hit);
 }
 
-I2D_TEST(api_queries_turned_square) {
-    i2d_world_def def = i2d_default_world_def();
-    i2d_world_id world = i2d_world_create(&def);
-    I2D_REQUIRE(!I2D_IS_NULL(world));
-    run_turned_square(world);
-    i2d_world_destroy(world);
-}
+I2D_TEST(api_queries_turned_square) { run_in_default_world(run_turned_square); }
 
 /* The filter rule on three concentric circles with radii 1, 2, 3:
  *   A: category 1, mask all;  B: category 2, mask 1;  C: category 4, mask 2.
@@ -878,18 +872,6 @@ static void run_default_sees_all(i2d_world_id world) {
     I2D_CHECK(I2D_ID_EQUALS(ids[0], odd));
 }
 
-I2D_TEST(api_queries_default_filter_sees_all) {
-    i2d_world_def def = i2d_default_world_def();
-    i2d_world_id world = i2d_world_create(&def);
-    I2D_REQUIRE(!I2D_IS_NULL(world));
-    run_default_sees_all(world);
-    i2d_world_destroy(world);
-}
+I2D_TEST(api_queries_default_filter_sees_all) { run_in_default_world(run_default_sees_all); }
 
-I2D_TEST(api_queries_filter_rule) {
-    i2d_world_def def = i2d_default_world_def();
-    i2d_world_id world = i2d_world_create(&def);
-    I2D_REQUIRE(!I2D_IS_NULL(world));
-    run_filter_rule(world);
-    i2d_world_destroy(world);
-}
+I2D_TEST(api_queries_filter_rule) { run_in_default_world(run_filter_rule); }

@@ -1139,13 +1139,7 @@ static void run_mass_rules(i2d_world_id world) {
     }
 }
 
-I2D_TEST(api_world_mass_rules) {
-    i2d_world_def def = i2d_default_world_def();
-    i2d_world_id world = i2d_world_create(&def);
-    I2D_REQUIRE(!I2D_IS_NULL(world));
-    run_mass_rules(world);
-    i2d_world_destroy(world);
-}
+I2D_TEST(api_world_mass_rules) { run_in_default_world(run_mass_rules); }
 
 /* Timing costs nothing until asked for: a world that never read its profile (nor set
  * enable_profile) reports zeros; the first read turns timing on for the next step, and
