@@ -12,6 +12,7 @@
 
 #include <stdarg.h>
 #include <stdbool.h>
+#include <stddef.h>
 #include <stdint.h>
 #include <stdio.h>
 
@@ -96,6 +97,30 @@ static inline void run_in_default_world(world_test_body test_body) {
 /* In a default world but for its gravity, (0, gravity_y). */
 static inline void run_in_world(float gravity_y, world_test_body test_body) {
     run_then_destroy(make_world(gravity_y), test_body);
+}
+
+/* ---- Refusals ------------------------------------------------------------------------- */
+
+/* A copy of an error message ("(null)" for none) for a failure report: any i2d_ call
+ * may overwrite the library's. */
+static inline void copy_message(char* out, size_t size, const char* message) {
+    snprintf(out, size, "%s", message != NULL ? message : "(null)");
+}
+
+/* The call just made answered `expected` through both its return value and
+ * i2d_last_status(), with a non-empty message. Reads the status and the message before
+ * calling anything else. */
+static inline void check_refused_at(const char* file, int line, const char* what, i2d_status returned,
+                                    i2d_status expected) {
+    i2d_status last = i2d_last_status();
+    const char* message = i2d_last_error_message();
+    char copy[256];
+    copy_message(copy, sizeof copy, message);
+    if (returned != expected || last != expected || message == NULL || message[0] == '\0') {
+        ++i2d_check_failures;
+        fprintf(stderr, "%s:%d: %s: returned %s, last status %s, message \"%s\"; expected %s with a message\n", file,
+                line, what, i2d_status_string(returned), i2d_status_string(last), copy, i2d_status_string(expected));
+    }
 }
 
 /* ---- Random scenes and capped reports ---------------------------------------------------- */

@@ -255,18 +255,7 @@ static void run_setters_refused(const fixture* a, const fixture* b) {
     check_twins_agree_after_steps(a, b);
 }
 
-I2D_TEST(api_errors_setters_bad_values) {
-    fixture a, b;
-    bool built_a = fixture_create(&a);
-    bool built_b = fixture_create(&b);
-    if (built_a && built_b) {
-        run_setters_refused(&a, &b);
-    } else {
-        I2D_CHECK(!"fixture_create");
-    }
-    fixture_destroy(&a);
-    fixture_destroy(&b);
-}
+I2D_TEST(api_errors_setters_bad_values) { run_on_twins(run_setters_refused); }
 
 /* Any finite angular velocity is accepted; spins beyond 1e5 rad/s are clamped to it where
  * they enter (a finite 1e30 once became NaN within a step). */
@@ -341,15 +330,7 @@ static void run_setter_edges_accepted(const fixture* f) {
     I2D_CHECK_NEAR(q.s, sin(0.3), 1e-6);
 }
 
-I2D_TEST(api_errors_setter_edges_accepted) {
-    fixture f;
-    if (fixture_create(&f)) {
-        run_setter_edges_accepted(&f);
-    } else {
-        I2D_CHECK(!"fixture_create");
-    }
-    fixture_destroy(&f);
-}
+I2D_TEST(api_errors_setter_edges_accepted) { run_on_fixture(run_setter_edges_accepted); }
 
 /* ---- Body frame getters with bad points --------------------------------------------- */
 
@@ -391,15 +372,7 @@ static void run_point_getters(const fixture* f) {
     CHECK_UNCHANGED("the body frame getters", f, &before);
 }
 
-I2D_TEST(api_errors_point_getters_bad_input) {
-    fixture f;
-    if (fixture_create(&f)) {
-        run_point_getters(&f);
-    } else {
-        I2D_CHECK(!"fixture_create");
-    }
-    fixture_destroy(&f);
-}
+I2D_TEST(api_errors_point_getters_bad_input) { run_on_fixture(run_point_getters); }
 
 /* ---- Steps -------------------------------------------------------------------------- */
 
@@ -427,18 +400,7 @@ static void run_step_bad_values(const fixture* a, const fixture* b) {
     CHECK_ACCEPTED("i2d_world_step(1/60, 1000)", i2d_world_step(a->world, 1.0f / 60.0f, 1000));
 }
 
-I2D_TEST(api_errors_step_bad_values) {
-    fixture a, b;
-    bool built_a = fixture_create(&a);
-    bool built_b = fixture_create(&b);
-    if (built_a && built_b) {
-        run_step_bad_values(&a, &b);
-    } else {
-        I2D_CHECK(!"fixture_create");
-    }
-    fixture_destroy(&a);
-    fixture_destroy(&b);
-}
+I2D_TEST(api_errors_step_bad_values) { run_on_twins(run_step_bad_values); }
 
 /* ---- Queries ------------------------------------------------------------------------ */
 
@@ -523,15 +485,7 @@ static void run_query_bad_arguments(const fixture* f) {
     I2D_CHECK(r.hit && I2D_ID_EQUALS(r.shape, f->shape[FIX_GROUND_BOX]));
 }
 
-I2D_TEST(api_errors_query_bad_arguments) {
-    fixture f;
-    if (fixture_create(&f)) {
-        run_query_bad_arguments(&f);
-    } else {
-        I2D_CHECK(!"fixture_create");
-    }
-    fixture_destroy(&f);
-}
+I2D_TEST(api_errors_query_bad_arguments) { run_on_fixture(run_query_bad_arguments); }
 
 /* ---- Overflow of accumulated forces, torques and velocities ------------------------- */
 
@@ -878,18 +832,7 @@ static void run_locked_in_callbacks(const fixture* a, const fixture* b) {
     CHECK_ACCEPTED("i2d_world_step after the query", i2d_world_step(a->world, 1.0f / 60.0f, 4));
 }
 
-I2D_TEST(api_errors_locked_in_query_callbacks) {
-    fixture a, b;
-    bool built_a = fixture_create(&a);
-    bool built_b = fixture_create(&b);
-    if (built_a && built_b) {
-        run_locked_in_callbacks(&a, &b);
-    } else {
-        I2D_CHECK(!"fixture_create");
-    }
-    fixture_destroy(&a);
-    fixture_destroy(&b);
-}
+I2D_TEST(api_errors_locked_in_query_callbacks) { run_on_twins(run_locked_in_callbacks); }
 
 /* ---- Order of checks: handle, then lock, then arguments ---------------------------- */
 
@@ -1002,15 +945,7 @@ static void run_check_order(const fixture* f) {
     I2D_CHECK(probe.probed);
 }
 
-I2D_TEST(api_errors_check_order) {
-    fixture f;
-    if (fixture_create(&f)) {
-        run_check_order(&f);
-    } else {
-        I2D_CHECK(!"fixture_create");
-    }
-    fixture_destroy(&f);
-}
+I2D_TEST(api_errors_check_order) { run_on_fixture(run_check_order); }
 
 /* ---- Pure collision functions ------------------------------------------------------- */
 

@@ -23,21 +23,9 @@
 /* The call just made answered INVALID_HANDLE (return value, if any, and last status)
  * with a non-empty message. Reads status and message before any other i2d_ call. */
 static void check_handle_refused_at(int line, const char* ctx, const char* call, i2d_status returned) {
-    i2d_status last = i2d_last_status();
-    const char* message = i2d_last_error_message();
-    char copy[256] = "(null)";
-    if (message != NULL) {
-        strncpy(copy, message, sizeof copy - 1);
-        copy[sizeof copy - 1] = '\0';
-    }
-    if (returned != I2D_ERR_INVALID_HANDLE || last != I2D_ERR_INVALID_HANDLE || message == NULL ||
-        message[0] == '\0') {
-        ++i2d_check_failures;
-        fprintf(stderr,
-                "%s:%d: [%s] %s: returned %s, last status %s, message \"%s\"; expected I2D_ERR_INVALID_HANDLE "
-                "with a message\n",
-                __FILE__, line, ctx, call, i2d_status_string(returned), i2d_status_string(last), copy);
-    }
+    char what[512];
+    snprintf(what, sizeof what, "[%s] %s", ctx, call);
+    check_refused_at(__FILE__, line, what, returned, I2D_ERR_INVALID_HANDLE);
 }
 /* For calls that return a status. */
 #define CHECK_HANDLE_REFUSED(ctx, call) check_handle_refused_at(__LINE__, (ctx), #call, (call))
