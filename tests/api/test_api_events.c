@@ -937,6 +937,24 @@ static bool sensor_scene_build(sensor_scene* s, bool with_sensor) {
     return !I2D_IS_NULL(s->ground);
 }
 
+/* A sensor event of the scene's sensor, counted (and its step kept) for the ball whose
+ * shape visited; a visitor that is no ball fails. */
+static void count_sensor_event(const sensor_scene* s, i2d_shape_id sensor, i2d_shape_id visitor, const char* kind,
+                               int step, int* counts, int* steps) {
+    I2D_CHECK(I2D_ID_EQUALS(sensor, s->sensor));
+    int which = -1;
+    for (int k = 0; k < 3; ++k) {
+        which = I2D_ID_EQUALS(visitor, s->ball_shapes[k]) ? k : which;
+    }
+    if (which < 0) {
+        report("step %d: sensor %s with an unknown visitor 0x%llx", step, kind, (unsigned long long)visitor.bits);
+        I2D_CHECK(which >= 0);
+        return;
+    }
+    ++counts[which];
+    steps[which] = step;
+}
+
 static void run_sensor_zone(sensor_scene* with, sensor_scene* without) {
     const double h = (double)k_dt / SUBSTEPS;
     /* The ball overlaps the zone while its centre is within [-2.5, 2.5] (touching counts). */
@@ -988,35 +1006,11 @@ static void run_sensor_zone(sensor_scene* with, sensor_scene* without) {
         I2D_CHECK(i2d_last_status() == I2D_OK);
         for (int i = 0; i < se.begin_count; ++i) {
             const i2d_sensor_begin_event* ev = &se.begin_events[i];
-            I2D_CHECK(I2D_ID_EQUALS(ev->sensor_shape, with->sensor));
-            int which = -1;
-            for (int k = 0; k < 3; ++k) {
-                which = I2D_ID_EQUALS(ev->visitor_shape, with->ball_shapes[k]) ? k : which;
-            }
-            if (which < 0) {
-                report("step %d: sensor begin with an unknown visitor 0x%llx", step,
-                       (unsigned long long)ev->visitor_shape.bits);
-                I2D_CHECK(which >= 0);
-                continue;
-            }
-            ++begin_count[which];
-            begin_step[which] = step;
+            count_sensor_event(with, ev->sensor_shape, ev->visitor_shape, "begin", step, begin_count, begin_step);
         }
         for (int i = 0; i < se.end_count; ++i) {
             const i2d_sensor_end_event* ev = &se.end_events[i];
-            I2D_CHECK(I2D_ID_EQUALS(ev->sensor_shape, with->sensor));
-            int which = -1;
-            for (int k = 0; k < 3; ++k) {
-                which = I2D_ID_EQUALS(ev->visitor_shape, with->ball_shapes[k]) ? k : which;
-            }
-            if (which < 0) {
-                report("step %d: sensor end with an unknown visitor 0x%llx", step,
-                       (unsigned long long)ev->visitor_shape.bits);
-                I2D_CHECK(which >= 0);
-                continue;
-            }
-            ++end_count[which];
-            end_step[which] = step;
+            count_sensor_event(with, ev->sensor_shape, ev->visitor_shape, "end", step, end_count, end_step);
         }
     }
     I2D_CHECK(identical);

@@ -777,15 +777,12 @@ static void run_non_turning_bodies(i2d_world_id world) {
     I2D_CHECK(i2d_body_get_angular_velocity(spinner) == -0.5f);
 }
 
-static void cover_turning(void) {
-    i2d_world_def world_def = i2d_default_world_def();
-    world_def.gravity = v2(0.0f, 0.0f);
-    i2d_world_id world = i2d_world_create(&world_def);
-    I2D_REQUIRE(!I2D_IS_NULL(world));
+static void run_turning_bodies(i2d_world_id world) {
     run_turning_body(world);
     run_non_turning_bodies(world);
-    i2d_world_destroy(world);
 }
+
+static void cover_turning(void) { run_in_world(0.0f, run_turning_bodies); }
 
 /* ---- Shapes beyond circles and boxes ------------------------------------------------- */
 
@@ -915,14 +912,7 @@ static void cover_shape_kinds(i2d_world_id world) {
     I2D_CHECK_NEAR(r.normal.y, 0.0, 1e-6);
 }
 
-static void cover_shapes(void) {
-    i2d_world_def world_def = i2d_default_world_def();
-    world_def.gravity = v2(0.0f, 0.0f);
-    i2d_world_id world = i2d_world_create(&world_def);
-    I2D_REQUIRE(!I2D_IS_NULL(world));
-    cover_shape_kinds(world);
-    i2d_world_destroy(world);
-}
+static void cover_shapes(void) { run_in_world(0.0f, cover_shape_kinds); }
 
 /* ---- The pure functions of collision.h for placed shapes ---------------------------- */
 
