@@ -94,46 +94,33 @@ void fail(const char* what, double a, double b) {
 
 // ---- Picking ids: held ones (live or stale), null, random bits, or another kind's ----
 
-i2d_world_id pick_world(FuzzInput& in) {
+// One byte decides: below held_below a held id, below 230 the null id, below 245 the bits
+// of a held id of another kind (foreign), else random bits.
+template <class Id, class Foreign>
+Id pick_id(FuzzInput& in, const Id* held, int held_count, int held_below, const Foreign* foreign, int foreign_count) {
     const uint8_t k = in.byte();
-    if (k < 200 && g_held->world_count > 0) {
-        return g_held->worlds[k % g_held->world_count];
+    if (k < held_below && held_count > 0) {
+        return held[k % held_count];
     }
     if (k < 230) {
-        return I2D_NULL_WORLD_ID;
+        return Id{0};
     }
-    if (k < 245 && g_held->body_count > 0) {
-        return i2d_world_id{g_held->bodies[k % g_held->body_count].bits};  // foreign kind
+    if (k < 245 && foreign_count > 0) {
+        return Id{foreign[k % foreign_count].bits};
     }
-    return i2d_world_id{in.u64()};
+    return Id{in.u64()};
+}
+
+i2d_world_id pick_world(FuzzInput& in) {
+    return pick_id(in, g_held->worlds, g_held->world_count, 200, g_held->bodies, g_held->body_count);
 }
 
 i2d_body_id pick_body(FuzzInput& in) {
-    const uint8_t k = in.byte();
-    if (k < 210 && g_held->body_count > 0) {
-        return g_held->bodies[k % g_held->body_count];
-    }
-    if (k < 230) {
-        return I2D_NULL_BODY_ID;
-    }
-    if (k < 245 && g_held->shape_count > 0) {
-        return i2d_body_id{g_held->shapes[k % g_held->shape_count].bits};
-    }
-    return i2d_body_id{in.u64()};
+    return pick_id(in, g_held->bodies, g_held->body_count, 210, g_held->shapes, g_held->shape_count);
 }
 
 i2d_shape_id pick_shape(FuzzInput& in) {
-    const uint8_t k = in.byte();
-    if (k < 210 && g_held->shape_count > 0) {
-        return g_held->shapes[k % g_held->shape_count];
-    }
-    if (k < 230) {
-        return I2D_NULL_SHAPE_ID;
-    }
-    if (k < 245 && g_held->world_count > 0) {
-        return i2d_shape_id{g_held->worlds[k % g_held->world_count].bits};
-    }
-    return i2d_shape_id{in.u64()};
+    return pick_id(in, g_held->shapes, g_held->shape_count, 210, g_held->worlds, g_held->world_count);
 }
 
 // New ids replace old ones round robin once the table is full: the old stays stale.
@@ -422,17 +409,7 @@ i2d_transform transform(FuzzInput& in) {
 }
 
 i2d_joint_id pick_joint(FuzzInput& in) {
-    const uint8_t k = in.byte();
-    if (k < 210 && g_held->joint_count > 0) {
-        return g_held->joints[k % g_held->joint_count];
-    }
-    if (k < 230) {
-        return I2D_NULL_JOINT_ID;
-    }
-    if (k < 245 && g_held->body_count > 0) {
-        return i2d_joint_id{g_held->bodies[k % g_held->body_count].bits};  // foreign kind
-    }
-    return i2d_joint_id{in.u64()};
+    return pick_id(in, g_held->joints, g_held->joint_count, 210, g_held->bodies, g_held->body_count);
 }
 
 // ---- Callbacks that call back in -----------------------------------------------------
