@@ -293,6 +293,13 @@ static bool scene_init(scene* s) {
     return !I2D_IS_NULL(s->world);
 }
 
+/* Destroys the scene's world, if it was made. */
+static void scene_destroy(scene* s) {
+    if (!I2D_IS_NULL(s->world)) {
+        i2d_world_destroy(s->world);
+    }
+}
+
 /* Uniform angle in [-pi, pi): bodies start turned so that rotated boxes are queried from
  * the start, not only after collisions have turned them. */
 static i2d_rot random_rot(rng* r) { return i2d_make_rot(rng_float(r, -3.14159265f, 3.14159265f)); }

@@ -424,9 +424,7 @@ I2D_TEST(api_cast_ray_callback_random) {
     } else {
         I2D_CHECK(!"build_random_scene");
     }
-    if (!I2D_IS_NULL(s.world)) {
-        i2d_world_destroy(s.world);
-    }
+    scene_destroy(&s);
 }
 
 /* ---- Exact cases ----------------------------------------------------------------------- */
@@ -858,9 +856,7 @@ I2D_TEST(api_cast_ray_queries_while_moving) {
     } else {
         I2D_CHECK(!"scene_init");
     }
-    if (!I2D_IS_NULL(s.world)) {
-        i2d_world_destroy(s.world);
-    }
+    scene_destroy(&s);
 }
 
 /* ---- Rebuilding the static tree ------------------------------------------------------- */
@@ -997,9 +993,7 @@ I2D_TEST(api_cast_ray_rebuild_static_tree) {
     } else {
         I2D_CHECK(!"scene_init");
     }
-    if (!I2D_IS_NULL(s.world)) {
-        i2d_world_destroy(s.world);
-    }
+    scene_destroy(&s);
 }
 
 /* ---- Tree heights ------------------------------------------------------------------ */

@@ -71,6 +71,13 @@ static i2d_joint_id create_default(const fixture* f, i2d_joint_type kind) {
     return create_any(f->world, kind, &d);
 }
 
+/* A joint of every kind between a and b, with the defaults; joints[k] is of kind k. */
+static void create_one_of_each_kind(const fixture* f, i2d_joint_id joints[JOINT_KIND_COUNT]) {
+    for (int k = 0; k < JOINT_KIND_COUNT; ++k) {
+        joints[k] = create_default(f, (i2d_joint_type)k);
+    }
+}
+
 /* ---- Refusal checks ------------------------------------------------------------------- */
 
 /* What a refused call must leave as it was. The two dynamic bodies are put to sleep first,
@@ -594,9 +601,7 @@ I2D_TEST(api_joint_settings_round_trip) {
     g_reports_left = k_report_budget;
     fixture f = make_fixture();
     i2d_joint_id joints[JOINT_KIND_COUNT];
-    for (int k = 0; k < JOINT_KIND_COUNT; ++k) {
-        joints[k] = create_default(&f, (i2d_joint_type)k);
-    }
+    create_one_of_each_kind(&f, joints);
     for (size_t i = 0; i < COUNT_OF(k_float_settings); ++i) {
         const float_setting* s = &k_float_settings[i];
         settle(&f);
@@ -668,9 +673,7 @@ I2D_TEST(api_joint_setter_refusals) {
     g_reports_left = k_report_budget;
     fixture f = make_fixture();
     i2d_joint_id joints[JOINT_KIND_COUNT];
-    for (int k = 0; k < JOINT_KIND_COUNT; ++k) {
-        joints[k] = create_default(&f, (i2d_joint_type)k);
-    }
+    create_one_of_each_kind(&f, joints);
     const float non_finite[] = {NAN, INFINITY, -INFINITY};
     for (size_t i = 0; i < COUNT_OF(k_float_settings); ++i) {
         const float_setting* s = &k_float_settings[i];
@@ -752,9 +755,7 @@ I2D_TEST(api_joint_wrong_kind) {
     g_reports_left = k_report_budget;
     fixture f = make_fixture();
     i2d_joint_id joints[JOINT_KIND_COUNT];
-    for (int k = 0; k < JOINT_KIND_COUNT; ++k) {
-        joints[k] = create_default(&f, (i2d_joint_type)k);
-    }
+    create_one_of_each_kind(&f, joints);
     for (int k = 0; k < JOINT_KIND_COUNT; ++k) {
         for (size_t i = 0; i < COUNT_OF(k_float_settings); ++i) {
             const float_setting* s = &k_float_settings[i];

@@ -332,9 +332,7 @@ I2D_TEST(api_queries_random_scene) {
     } else {
         I2D_CHECK(!"scene_build");
     }
-    if (!I2D_IS_NULL(s.world)) {
-        i2d_world_destroy(s.world);
-    }
+    scene_destroy(&s);
 }
 
 /* The same after a few steps without gravity: moved bodies, pushed-apart dynamic ones. */
@@ -348,9 +346,7 @@ I2D_TEST(api_queries_random_scene_stepped) {
     } else {
         I2D_CHECK(!"scene_build");
     }
-    if (!I2D_IS_NULL(s.world)) {
-        i2d_world_destroy(s.world);
-    }
+    scene_destroy(&s);
 }
 
 /* ---- Exact cases ------------------------------------------------------------------------ */
