@@ -40,6 +40,9 @@ namespace det {
 constexpr float time_step = 1.0f / 60.0f;
 constexpr int substeps = 4;
 
+// A scene: builds itself in a new world made from the def, or gives the null id.
+using Scene = i2d_world_id (*)(const i2d_world_def&);
+
 inline i2d_body_id add_body(i2d_world_id world, i2d_body_type type, i2d_vec2 position, float angle = 0.0f) {
     i2d_body_def def = i2d_default_body_def();
     def.type = type;
