@@ -18,13 +18,6 @@ typedef struct scene {
     i2d_body_id bodies[BODY_COUNT];
 } scene;
 
-static i2d_vec2 v2(float x, float y) {
-    i2d_vec2 v;
-    v.x = x;
-    v.y = y;
-    return v;
-}
-
 static void make_scene(scene* s) {
     i2d_world_def world_def = i2d_default_world_def();
     s->world = i2d_world_create(&world_def);

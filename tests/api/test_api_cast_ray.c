@@ -14,54 +14,12 @@
 
 /* ---- Small helpers ---------------------------------------------------------------- */
 
-static i2d_vec2 v2(float x, float y) {
-    i2d_vec2 v;
-    v.x = x;
-    v.y = y;
-    return v;
-}
-
-static i2d_rot identity_rot(void) {
-    i2d_rot q;
-    q.c = 1.0f;
-    q.s = 0.0f;
-    return q;
-}
-
-static i2d_aabb box(float min_x, float min_y, float max_x, float max_y) {
-    i2d_aabb b;
-    b.min = v2(min_x, min_y);
-    b.max = v2(max_x, max_y);
-    return b;
-}
-
-static i2d_query_filter query_filter(uint64_t category_bits, uint64_t mask_bits) {
-    i2d_query_filter f;
-    f.category_bits = category_bits;
-    f.mask_bits = mask_bits;
-    return f;
-}
-
-static const float k_dt = 1.0f / 60.0f;
-
 static int compare_ids(const void* a, const void* b) {
     uint64_t x = ((const i2d_shape_id*)a)->bits, y = ((const i2d_shape_id*)b)->bits;
     return x < y ? -1 : (x > y ? 1 : 0);
 }
 
-/* ---- The reference model: every shape's exact geometry, kept by the test ----------- */
-
-enum { MAX_BODIES = 1200, MAX_SHAPES = 2400 };
-
-typedef struct scene {
-    i2d_world_id world;
-    int body_count;
-    i2d_body_id bodies[MAX_BODIES];
-    i2d_body_type body_types[MAX_BODIES];
-    bool body_alive[MAX_BODIES];
-    int shape_count;
-    ref_shape shapes[MAX_SHAPES];
-} scene;
+/* ---- The scenes: shapes drawn at random into the reference model (ref_shape.h) ------- */
 
 /* A random filter over four bits, often the default. */
 static i2d_filter random_filter(rng* r) {
@@ -73,293 +31,34 @@ static i2d_filter random_filter(rng* r) {
     return f;
 }
 
-static i2d_query_filter random_query_filter(rng* r) {
-    if (rng_int(r, 2) == 0) {
-        return i2d_default_query_filter();
-    }
-    return query_filter((uint64_t)rng_int(r, 16), rng_int(r, 4) == 0 ? UINT64_MAX : (uint64_t)rng_int(r, 16));
-}
-
-static bool filter_passes(i2d_filter shape, i2d_query_filter query) {
-    return (shape.category_bits & query.mask_bits) != 0 && (shape.mask_bits & query.category_bits) != 0;
-}
-
-static bool scene_init(scene* s) {
-    memset(s, 0, sizeof *s);
-    i2d_world_def def = i2d_default_world_def();
-    def.gravity = v2(0.0f, 0.0f);
-    s->world = i2d_world_create(&def);
-    return !I2D_IS_NULL(s->world);
-}
-
-/* Uniform angle in [-pi, pi): bodies start turned so that rotated boxes are queried from
- * the start, not only after collisions have turned them. */
-static i2d_rot random_rot(rng* r) { return i2d_make_rot(rng_float(r, -3.14159265f, 3.14159265f)); }
-
-static int scene_add_body(scene* s, i2d_body_type type, i2d_vec2 position, i2d_rot rotation, i2d_vec2 velocity) {
-    if (s->body_count >= MAX_BODIES) {
-        return -1;
-    }
-    i2d_body_def def = i2d_default_body_def();
-    def.type = type;
-    def.position = position;
-    def.rotation = rotation;
-    def.linear_velocity = type == I2D_BODY_STATIC ? v2(0.0f, 0.0f) : velocity;
-    i2d_body_id id = i2d_body_create(s->world, &def);
-    if (I2D_IS_NULL(id)) {
-        return -1;
-    }
-    int b = s->body_count++;
-    s->bodies[b] = id;
-    s->body_types[b] = type;
-    s->body_alive[b] = true;
-    return b;
-}
-
-/* Sizes from 0.1 m to `size` m. */
+/* A circle or a box, sizes from 0.1 m to `size` m. */
 static bool scene_add_shape(scene* s, rng* r, int body, float size) {
-    if (s->shape_count >= MAX_SHAPES || body < 0) {
-        return false;
-    }
-    ref_shape* ref = &s->shapes[s->shape_count];
-    memset(ref, 0, sizeof *ref);
-    ref->body = body;
-    ref->filter = random_filter(r);
-    i2d_shape_def def = i2d_default_shape_def();
-    def.filter = ref->filter;
+    i2d_filter filter = random_filter(r);
     if (rng_int(r, 2) == 0) {
-        ref->type = I2D_SHAPE_CIRCLE;
-        ref->local_center = v2(rng_float(r, -1.0f, 1.0f), rng_float(r, -1.0f, 1.0f));
-        ref->radius = rng_float(r, 0.1f, size);
-        i2d_circle circle = {ref->local_center, ref->radius};
-        ref->id = i2d_shape_create_circle(s->bodies[body], &def, &circle);
-    } else {
-        ref->type = I2D_SHAPE_POLYGON;
-        ref->half = v2(rng_float(r, 0.1f, size), rng_float(r, 0.1f, size));
-        ref->id = i2d_shape_create_box(s->bodies[body], &def, ref->half.x, ref->half.y);
+        i2d_vec2 center = v2(rng_float(r, -1.0f, 1.0f), rng_float(r, -1.0f, 1.0f));
+        return scene_add_circle(s, body, filter, center, rng_float(r, 0.1f, size));
     }
-    ref->alive = !I2D_IS_NULL(ref->id);
-    ++s->shape_count;
-    return ref->alive;
+    return scene_add_box(s, body, filter, v2(rng_float(r, 0.1f, size), rng_float(r, 0.1f, size)));
 }
 
-/* Spins a body once its shapes give it inertia (static bodies ignore the spin). */
-static bool scene_spin(scene* s, int body, float w) {
-    return body >= 0 && i2d_body_set_angular_velocity(s->bodies[body], w) == I2D_OK;
+/* Ray hits are checked to 1e-4 m plus 1e-6 of the ray's length and of its origin's
+ * distance from the origin: bodies here move hundreds of metres out. */
+static double point_tol(const ray_case* ray) {
+    return 1e-4 + 1e-6 * (ray_length(ray) + fabs(ray->ox) + fabs(ray->oy));
 }
 
-static void scene_destroy_body(scene* s, int b) {
-    if (b < 0 || !s->body_alive[b] || i2d_body_destroy(s->bodies[b]) != I2D_OK) {
-        return;
-    }
-    s->body_alive[b] = false;
-    for (int k = 0; k < s->shape_count; ++k) {
-        if (s->shapes[k].body == b) {
-            s->shapes[k].alive = false;
-        }
-    }
-}
-
-static void scene_destroy_shape(scene* s, int k) {
-    if (k >= 0 && s->shapes[k].alive && i2d_shape_destroy(s->shapes[k].id) == I2D_OK) {
-        s->shapes[k].alive = false;
-    }
-}
-
-static int alive_shape_count(const scene* s) {
-    int n = 0;
-    for (int k = 0; k < s->shape_count; ++k) {
-        n += s->shapes[k].alive ? 1 : 0;
-    }
-    return n;
-}
-
-/* Reads the bodies' transforms into the model and checks the library's local polygons
- * and tight bounds agree with it, so that the brute force below describes the same
- * shapes the library has. */
-static int scene_refresh(scene* s) {
-    int bad = 0;
-    for (int k = 0; k < s->shape_count; ++k) {
-        ref_shape* ref = &s->shapes[k];
-        if (!ref->alive) {
-            continue;
-        }
-        i2d_transform xf = i2d_body_get_transform(s->bodies[ref->body]);
-        const double c = xf.q.c, sn = xf.q.s;
-        if (fabs(c * c + sn * sn - 1.0) > 1e-5) {
-            ++bad;
-            report("shape %d: body rotation (%g, %g) is not normalised", k, c, sn);
-        }
-        ref->ux = c;
-        ref->uy = sn;
-        ref->cx = (double)xf.p.x + c * ref->local_center.x - sn * ref->local_center.y;
-        ref->cy = (double)xf.p.y + sn * ref->local_center.x + c * ref->local_center.y;
-        double hx, hy; /* half extents of the world bounds */
-        if (ref->type == I2D_SHAPE_CIRCLE) {
-            hx = hy = ref->radius;
-        } else {
-            /* The box in its body frame: the corners (+-half.x, +-half.y). */
-            i2d_polygon poly = i2d_shape_get_polygon(ref->id);
-            bool corners = poly.count == 4 && poly.radius == 0.0f;
-            for (int i = 0; i < poly.count && i < 4; ++i) {
-                corners = corners && fabs(poly.vertices[i].x) == ref->half.x && fabs(poly.vertices[i].y) == ref->half.y;
-            }
-            if (!corners) {
-                ++bad;
-                report("shape %d: i2d_shape_get_polygon is not the box (+-%g, +-%g)", k, ref->half.x, ref->half.y);
-            }
-            hx = fabs(c) * ref->half.x + fabs(sn) * ref->half.y;
-            hy = fabs(sn) * ref->half.x + fabs(c) * ref->half.y;
-        }
-        i2d_aabb b = i2d_shape_get_aabb(ref->id);
-        double tol = 1e-4 + 1e-6 * (fabs(ref->cx) + fabs(ref->cy));
-        if (fabs(b.min.x - (ref->cx - hx)) > tol || fabs(b.min.y - (ref->cy - hy)) > tol ||
-            fabs(b.max.x - (ref->cx + hx)) > tol || fabs(b.max.y - (ref->cy + hy)) > tol) {
-            ++bad;
-            report("shape %d: i2d_shape_get_aabb (%g, %g)-(%g, %g), expected (%g, %g)-(%g, %g)", k, b.min.x, b.min.y,
-                   b.max.x, b.max.y, ref->cx - hx, ref->cy - hy, ref->cx + hx, ref->cy + hy);
-        }
-    }
-    return bad;
-}
-
-/* Shape index by id: an open-addressing table rebuilt when shapes are added. */
-enum { ID_TABLE = 8192 };
-static int g_id_table[ID_TABLE];
-static const scene* g_id_table_scene;
-static int g_id_table_count;
-
-static uint32_t id_hash(uint64_t bits) { return (uint32_t)((bits * UINT64_C(0x9E3779B97F4A7C15)) >> 51); }
-
-static int find_shape(const scene* s, i2d_shape_id id) {
-    if (g_id_table_scene != s || g_id_table_count != s->shape_count) {
-        for (int i = 0; i < ID_TABLE; ++i) {
-            g_id_table[i] = -1;
-        }
-        for (int k = 0; k < s->shape_count; ++k) {
-            uint32_t i = id_hash(s->shapes[k].id.bits);
-            while (g_id_table[i] >= 0) {
-                i = (i + 1) & (ID_TABLE - 1);
-            }
-            g_id_table[i] = k;
-        }
-        g_id_table_scene = s;
-        g_id_table_count = s->shape_count;
-    }
-    for (uint32_t i = id_hash(id.bits); g_id_table[i] >= 0; i = (i + 1) & (ID_TABLE - 1)) {
-        if (I2D_ID_EQUALS(s->shapes[g_id_table[i]].id, id)) {
-            return g_id_table[i];
-        }
-    }
-    return -1;
-}
-
-/* ---- Brute force rays ----------------------------------------------------------------- */
-
-/* Shapes grown and shrunk by EPS (ref_shape.h) that disagree, or enter more than
- * GRAZING_SPREAD apart, are judged neither hit nor missed. */
-#define FRACTION_TOL 1e-5
-#define GRAZING_SPREAD 1e-3
-
-enum { RAY_MISS, RAY_HIT, RAY_AMBIGUOUS };
-
-typedef struct ray_class {
-    int kind;
-    double t; /* RAY_HIT: the exact entry; RAY_AMBIGUOUS: the earliest entry of the three */
-} ray_class;
-
-static ray_class classify_ray(const ref_shape* ref, const ray_case* ray) {
-    ray_hit exact = ray_shape(ref, 0.0, ray);
-    ray_hit grown = ray_shape(ref, EPS, ray);
-    ray_hit shrunk = ray_shape(ref, -EPS, ray);
-    ray_class c;
-    if (exact.hit && grown.hit && shrunk.hit && shrunk.t - grown.t <= GRAZING_SPREAD) {
-        c.kind = RAY_HIT;
-        c.t = exact.t;
-    } else if (!exact.hit && !grown.hit && !shrunk.hit) {
-        c.kind = RAY_MISS;
-        c.t = INFINITY;
-    } else {
-        c.kind = RAY_AMBIGUOUS;
-        c.t = INFINITY;
-        c.t = exact.hit ? fmin(c.t, exact.t) : c.t;
-        c.t = grown.hit ? fmin(c.t, grown.t) : c.t;
-        c.t = shrunk.hit ? fmin(c.t, shrunk.t) : c.t;
-    }
-    return c;
-}
-
-/* Checks a reported hit's point and unit normal against the exact entry of shape ref. */
-static int check_ray_surface(const ref_shape* ref, const ray_case* ray, i2d_vec2 point, i2d_vec2 normal,
-                             float fraction, const char* what, int index) {
-    int bad = 0;
-    double length = sqrt(ray->dx * ray->dx + ray->dy * ray->dy);
-    double px = ray->ox + fraction * ray->dx, py = ray->oy + fraction * ray->dy;
-    double ptol = 1e-4 + 1e-6 * (length + fabs(ray->ox) + fabs(ray->oy));
-    if (fabs(point.x - px) > ptol || fabs(point.y - py) > ptol) {
-        ++bad;
-        report("%s %d: point (%g, %g) is not origin + fraction * translation (%g, %g)", what, index, point.x, point.y,
-               px, py);
-    }
-    const double tol = 1e-3;
-    double dx = point.x - ref->cx, dy = point.y - ref->cy;
-    bool on_surface;
-    if (ref->type == I2D_SHAPE_CIRCLE) {
-        on_surface = fabs(sqrt(dx * dx + dy * dy) - ref->radius) <= tol;
-    } else {
-        double lx, ly;
-        to_box_frame(ref, dx, dy, &lx, &ly);
-        bool inside = fabs(lx) <= ref->half.x + tol && fabs(ly) <= ref->half.y + tol;
-        on_surface = inside && (fabs(fabs(lx) - ref->half.x) <= tol || fabs(fabs(ly) - ref->half.y) <= tol);
-    }
-    if (!on_surface) {
-        ++bad;
-        report("%s %d: point (%g, %g) is not on the surface of the shape hit", what, index, point.x, point.y);
-    }
-    double n_length = sqrt((double)normal.x * normal.x + (double)normal.y * normal.y);
-    if (fabs(n_length - 1.0) > 1e-4) {
-        ++bad;
-        report("%s %d: normal (%g, %g) is not unit", what, index, normal.x, normal.y);
-    }
-    ray_hit exact = ray_shape(ref, 0.0, ray);
-    bool normal_ok;
-    if (ref->type == I2D_SHAPE_CIRCLE) {
-        double ex = (ray->ox + exact.t * ray->dx - ref->cx) / ref->radius;
-        double ey = (ray->oy + exact.t * ray->dy - ref->cy) / ref->radius;
-        normal_ok = fabs(normal.x - ex) <= 1e-3 && fabs(normal.y - ey) <= 1e-3;
-    } else {
-        /* The face of the slab entered last, facing the ray; either face at a corner. The
-         * faces' normals are the box's local axes u = (ux, uy) and v = (-uy, ux). */
-        double du, dv;
-        to_box_frame(ref, ray->dx, ray->dy, &du, &dv);
-        double su = du > 0.0 ? -1.0 : 1.0, sv = dv > 0.0 ? -1.0 : 1.0;
-        bool is_u = fabs(normal.x - su * ref->ux) <= 1e-4 && fabs(normal.y - su * ref->uy) <= 1e-4;
-        bool is_v = fabs(normal.x + sv * ref->uy) <= 1e-4 && fabs(normal.y - sv * ref->ux) <= 1e-4;
-        normal_ok = exact.corner ? (is_u || is_v) : (exact.axis == 0 ? is_u : is_v);
-    }
-    if (!normal_ok) {
-        ++bad;
-        report("%s %d: normal (%g, %g) is not the surface normal of the %s hit", what, index, normal.x, normal.y,
-               ref->type == I2D_SHAPE_CIRCLE ? "circle" : "box");
-    }
-    return bad;
-}
+/* Likewise bounds (scene_refresh). */
+static const double k_bounds_relative_tol = 1e-6;
 
 /* ---- Callback logs ---------------------------------------------------------------- */
 
 enum { LOG_MAX = 2400 };
 enum { MODE_ALL, MODE_CLIP, MODE_STOP, MODE_IGNORE };
 
-typedef struct ray_report {
-    i2d_shape_id shape;
-    i2d_vec2 point, normal;
-    float fraction;
-} ray_report;
-
 typedef struct ray_log {
     int mode;
     int count;
-    ray_report reports[LOG_MAX];
+    i2d_ray_result reports[LOG_MAX]; /* as the callback was called: hit is true */
     float clip;         /* MODE_CLIP, MODE_IGNORE: the fraction last returned (1 at the start) */
     int clip_violations; /* reports beyond the clip */
     uint64_t salt;      /* MODE_IGNORE: which shapes to ignore */
@@ -377,11 +76,12 @@ static bool is_ignored(const ray_log* log, i2d_shape_id shape) {
 static float log_ray(i2d_shape_id shape, i2d_vec2 point, i2d_vec2 normal, float fraction, void* context) {
     ray_log* log = (ray_log*)context;
     if (log->count < LOG_MAX) {
-        ray_report* r = &log->reports[log->count];
+        i2d_ray_result* r = &log->reports[log->count];
         r->shape = shape;
         r->point = point;
         r->normal = normal;
         r->fraction = fraction;
+        r->hit = true;
     }
     ++log->count;
     switch (log->mode) {
@@ -412,7 +112,7 @@ static void log_reset(ray_log* log, int mode) {
 
 /* A reported hit is a shape of the scene, alive, seen by the filter, really on the ray
  * (not clearly missed), entered at the fraction reported, with the right point and normal. */
-static int check_report(const scene* s, const ray_case* ray, i2d_query_filter qf, const ray_report* r,
+static int check_report(const scene* s, const ray_case* ray, i2d_query_filter qf, const i2d_ray_result* r,
                         const char* what, int index) {
     int k = find_shape(s, r->shape);
     if (k < 0 || !s->shapes[k].alive) {
@@ -440,30 +140,9 @@ static int check_report(const scene* s, const ray_case* ray, i2d_query_filter qf
             report("%s %d: shape %d reported at fraction %.9g, enters at %.9g", what, index, k, r->fraction, c.t);
             return 1;
         }
-        return check_ray_surface(ref, ray, r->point, r->normal, r->fraction, what, index);
+        return check_ray_surface(ref, ray, r, point_tol(ray), what, index);
     }
     return 0;
-}
-
-static ray_case random_ray(const scene* s, rng* r, float lo, float hi) {
-    ray_case ray;
-    /* One ray in five starts at the centre of a shape: that shape must not be hit. */
-    int k = rng_int(r, s->shape_count);
-    if (rng_int(r, 5) == 0 && s->shapes[k].alive) {
-        ray.ox = s->shapes[k].cx;
-        ray.oy = s->shapes[k].cy;
-    } else {
-        ray.ox = rng_float(r, lo, hi);
-        ray.oy = rng_float(r, lo, hi);
-    }
-    float angle = rng_float(r, 0.0f, 6.2831853f);
-    float length = rng_float(r, 0.2f, 1.0f) * (hi - lo);
-    /* Store what the library will see: float inputs. */
-    ray.ox = (float)ray.ox;
-    ray.oy = (float)ray.oy;
-    ray.dx = (float)(length * cos(angle));
-    ray.dy = (float)(length * sin(angle));
-    return ray;
 }
 
 static i2d_status cast(const scene* s, const ray_case* ray, i2d_query_filter qf, ray_log* log) {
@@ -607,7 +286,7 @@ static int check_clip(const scene* s, const ray_case* ray, i2d_query_filter qf, 
             report("clip ray %d: no report, cast_ray_closest hits at %g", index, closest.fraction);
         }
     } else {
-        const ray_report* last = &log->reports[log->count - 1];
+        const i2d_ray_result* last = &log->reports[log->count - 1];
         if (!closest.hit || !I2D_ID_EQUALS(last->shape, closest.shape) || last->fraction != closest.fraction ||
             fabsf(last->point.x - closest.point.x) > 1e-5f || fabsf(last->point.y - closest.point.y) > 1e-5f ||
             fabsf(last->normal.x - closest.normal.x) > 1e-6f || fabsf(last->normal.y - closest.normal.y) > 1e-6f) {
@@ -717,7 +396,7 @@ static void run_callback_semantics(scene* s, uint64_t seed) {
     static ray_log log;
     rng r = {seed};
     g_reports_left = 25;
-    int bad = scene_refresh(s);
+    int bad = scene_refresh(s, k_bounds_relative_tol);
     enum { RAYS = 300 };
     int total_hits = 0, skipped = 0, ignore_skipped = 0, ignored_nearer = 0;
     for (int i = 0; i < RAYS; ++i) {
@@ -745,9 +424,7 @@ I2D_TEST(api_cast_ray_callback_random) {
     } else {
         I2D_CHECK(!"build_random_scene");
     }
-    if (!I2D_IS_NULL(s.world)) {
-        i2d_world_destroy(s.world);
-    }
+    scene_destroy(&s);
 }
 
 /* ---- Exact cases ----------------------------------------------------------------------- */
@@ -862,13 +539,7 @@ static void run_row_cases(i2d_world_id world) {
     I2D_CHECK(log.count == 0);
 }
 
-I2D_TEST(api_cast_ray_row_cases) {
-    i2d_world_def def = i2d_default_world_def();
-    i2d_world_id world = i2d_world_create(&def);
-    I2D_REQUIRE(!I2D_IS_NULL(world));
-    run_row_cases(world);
-    i2d_world_destroy(world);
-}
+I2D_TEST(api_cast_ray_row_cases) { run_in_default_world(run_row_cases); }
 
 /* ---- Refused input and the lock ---------------------------------------------------------- */
 
@@ -1017,60 +688,6 @@ I2D_TEST(api_cast_ray_refused_input) {
 
 /* ---- Queries while the world changes -------------------------------------------------- */
 
-
-typedef struct id_list {
-    int count;
-    i2d_shape_id ids[LOG_MAX];
-} id_list;
-
-static bool collect(i2d_shape_id shape, void* context) {
-    id_list* list = (id_list*)context;
-    if (list->count < LOG_MAX) {
-        list->ids[list->count] = shape;
-    }
-    ++list->count;
-    return true;
-}
-
-/* No unknown, destroyed, filtered-out, clearly-outside or repeated shape; no
- * clearly-inside shape left out. */
-static int check_reported_set(const scene* s, const i2d_shape_id* ids, int n, overlap_test test, const void* query,
-                              i2d_query_filter qf, const char* what, int index) {
-    static bool seen[MAX_SHAPES];
-    memset(seen, 0, sizeof seen);
-    int bad = 0;
-    for (int i = 0; i < n && i < LOG_MAX; ++i) {
-        int k = find_shape(s, ids[i]);
-        if (k < 0 || !s->shapes[k].alive) {
-            ++bad;
-            report("%s %d: reported %s shape (bits 0x%llx)", what, index, k < 0 ? "an unknown" : "a destroyed",
-                   (unsigned long long)ids[i].bits);
-            continue;
-        }
-        if (seen[k]) {
-            ++bad;
-            report("%s %d: shape %d reported twice", what, index, k);
-        }
-        seen[k] = true;
-        if (!filter_passes(s->shapes[k].filter, qf)) {
-            ++bad;
-            report("%s %d: shape %d reported though the filter excludes it", what, index, k);
-        } else if (classify(&s->shapes[k], test, query) == CLEARLY_OUT) {
-            ++bad;
-            report("%s %d: shape %d reported though it is clearly outside", what, index, k);
-        }
-    }
-    for (int k = 0; k < s->shape_count; ++k) {
-        const ref_shape* ref = &s->shapes[k];
-        if (ref->alive && !seen[k] && filter_passes(ref->filter, qf) && classify(ref, test, query) == CLEARLY_IN) {
-            ++bad;
-            report("%s %d: shape %d (%s at %g, %g) overlaps but was not reported", what, index, k,
-                   ref->type == I2D_SHAPE_CIRCLE ? "circle" : "box", ref->cx, ref->cy);
-        }
-    }
-    return bad;
-}
-
 /* The region the alive shapes occupy. */
 static i2d_aabb scene_extent(const scene* s) {
     double lo_x = INFINITY, lo_y = INFINITY, hi_x = -INFINITY, hi_y = -INFINITY;
@@ -1095,7 +712,7 @@ typedef struct query_stats {
 /* Random AABB, point and closest-ray queries over the scene's current extent. */
 static int run_exact_queries(scene* s, rng* r, int queries, query_stats* stats) {
     static id_list list;
-    int bad = scene_refresh(s);
+    int bad = scene_refresh(s, k_bounds_relative_tol);
     i2d_aabb ext = scene_extent(s);
     /* Near shapes: drawn from around a random alive shape half of the time. */
     for (int i = 0; i < queries; ++i) {
@@ -1118,7 +735,7 @@ static int run_exact_queries(scene* s, rng* r, int queries, query_stats* stats) 
             continue;
         }
         stats->boxes_nonempty += list.count > 0 ? 1 : 0;
-        bad += check_reported_set(s, list.ids, list.count, shape_overlaps_aabb, &q, qf, "aabb query", i);
+        bad += check_reported_set(s, &list, shape_overlaps_aabb, &q, qf, "aabb query", i);
 
         i2d_vec2 p = v2(cx, cy);
         list.count = 0;
@@ -1128,7 +745,7 @@ static int run_exact_queries(scene* s, rng* r, int queries, query_stats* stats) 
             continue;
         }
         stats->points_nonempty += list.count > 0 ? 1 : 0;
-        bad += check_reported_set(s, list.ids, list.count, shape_contains_point, &p, qf, "point query", i);
+        bad += check_reported_set(s, &list, shape_contains_point, &p, qf, "point query", i);
 
         ray_case ray;
         ray.ox = cx;
@@ -1151,7 +768,6 @@ static int run_exact_queries(scene* s, rng* r, int queries, query_stats* stats) 
             continue;
         }
         ++stats->ray_hits;
-        ray_report rep = {rr.shape, rr.point, rr.normal, rr.fraction};
         if (!rr.hit) {
             ++bad;
             report("ray %d: no hit, brute force hits shape %d at %g", i, t.best_shape, t.best);
@@ -1159,7 +775,7 @@ static int run_exact_queries(scene* s, rng* r, int queries, query_stats* stats) 
             ++bad;
             report("ray %d: hit at %.9g, brute force nearest %.9g", i, rr.fraction, t.best);
         } else {
-            bad += check_report(s, &ray, qf, &rep, "closest ray", i);
+            bad += check_report(s, &ray, qf, &rr, "closest ray", i);
         }
     }
     return bad;
@@ -1240,9 +856,7 @@ I2D_TEST(api_cast_ray_queries_while_moving) {
     } else {
         I2D_CHECK(!"scene_init");
     }
-    if (!I2D_IS_NULL(s.world)) {
-        i2d_world_destroy(s.world);
-    }
+    scene_destroy(&s);
 }
 
 /* ---- Rebuilding the static tree ------------------------------------------------------- */
@@ -1278,11 +892,11 @@ static void answer_fixed_queries(const scene* s, uint64_t seed, query_answers* a
         list.count = 0;
         i2d_world_overlap_aabb(s->world, box(cx - hx, cy - hy, cx + hx, cy + hy), qf, collect, &list);
         a->aabb_count[i] = list.count;
-        a->aabb_hash[i] = set_hash(list.ids, list.count < LOG_MAX ? list.count : LOG_MAX);
+        a->aabb_hash[i] = set_hash(list.ids, list.count < MAX_SHAPES ? list.count : MAX_SHAPES);
         list.count = 0;
         i2d_world_overlap_point(s->world, v2(cx, cy), qf, collect, &list);
         a->point_count[i] = list.count;
-        a->point_hash[i] = set_hash(list.ids, list.count < LOG_MAX ? list.count : LOG_MAX);
+        a->point_hash[i] = set_hash(list.ids, list.count < MAX_SHAPES ? list.count : MAX_SHAPES);
         float angle = rng_float(&r, 0.0f, 6.2831853f), length = rng_float(&r, 10.0f, 100.0f);
         i2d_vec2 d = v2((float)(length * cos(angle)), (float)(length * sin(angle)));
         a->closest[i] = i2d_world_cast_ray_closest(s->world, v2(cx, cy), d, qf);
@@ -1379,9 +993,7 @@ I2D_TEST(api_cast_ray_rebuild_static_tree) {
     } else {
         I2D_CHECK(!"scene_init");
     }
-    if (!I2D_IS_NULL(s.world)) {
-        i2d_world_destroy(s.world);
-    }
+    scene_destroy(&s);
 }
 
 /* ---- Tree heights ------------------------------------------------------------------ */
@@ -1441,11 +1053,4 @@ static void run_heights(i2d_world_id world) {
     check_heights(world, STATICS, KINEMATICS, DYNAMICS, "after rebuilding the static tree");
 }
 
-I2D_TEST(api_cast_ray_tree_heights) {
-    i2d_world_def def = i2d_default_world_def();
-    def.gravity = v2(0.0f, 0.0f);
-    i2d_world_id world = i2d_world_create(&def);
-    I2D_REQUIRE(!I2D_IS_NULL(world));
-    run_heights(world);
-    i2d_world_destroy(world);
-}
+I2D_TEST(api_cast_ray_tree_heights) { run_in_world(0.0f, run_heights); }

@@ -11,30 +11,8 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "api_test_support.h"
 #include "check.h"
-
-/* ---- Small helpers ---------------------------------------------------------------- */
-
-static inline i2d_vec2 v2(float x, float y) {
-    i2d_vec2 v;
-    v.x = x;
-    v.y = y;
-    return v;
-}
-
-static inline i2d_rot rot(float c, float s) {
-    i2d_rot q;
-    q.c = c;
-    q.s = s;
-    return q;
-}
-
-static inline i2d_aabb box(float min_x, float min_y, float max_x, float max_y) {
-    i2d_aabb b;
-    b.min = v2(min_x, min_y);
-    b.max = v2(max_x, max_y);
-    return b;
-}
 
 /* NaN, inf and -inf: the three non-finite values every float input must refuse. */
 enum { NON_FINITE_COUNT = 3 };
@@ -51,10 +29,8 @@ extern const named_rot k_bad_rotations[];
 extern const named_rot k_unit_rotations[];
 extern const int k_bad_rotation_count, k_unit_rotation_count;
 
-/* The call just made answered `expected` through both its return value and
- * i2d_last_status(), with a non-empty message. Reads the status and copies the message
- * before calling anything else, since every i2d_ call may overwrite them. */
-void check_refused_at(const char* file, int line, const char* what, i2d_status returned, i2d_status expected);
+/* The call just made answered `expected`, with a message (check_refused_at,
+ * api_test_support.h). */
 #define CHECK_REFUSED(what, returned, expected) check_refused_at(__FILE__, __LINE__, (what), (returned), (expected))
 
 /* The call just made succeeded: I2D_OK returned and recorded, empty message. */
@@ -102,6 +78,13 @@ extern const float k_ball_y;
 
 bool fixture_create(fixture* f);
 void fixture_destroy(fixture* f);
+
+/* Runs a test body on a fresh fixture, or on two fresh twins, and destroys them after it
+ * (also when the body stops early at an I2D_REQUIRE). */
+typedef void (*fixture_test_body)(const fixture* f);
+typedef void (*twins_test_body)(const fixture* a, const fixture* b);
+void run_on_fixture(fixture_test_body test_body);
+void run_on_twins(twins_test_body test_body);
 
 /* ---- Snapshots: everything the API lets us observe about the fixture ---------------- */
 

@@ -44,29 +44,11 @@ const named_rot k_unit_rotations[] = {
 const int k_bad_rotation_count = (int)(sizeof k_bad_rotations / sizeof k_bad_rotations[0]);
 const int k_unit_rotation_count = (int)(sizeof k_unit_rotations / sizeof k_unit_rotations[0]);
 
-void check_refused_at(const char* file, int line, const char* what, i2d_status returned, i2d_status expected) {
-    i2d_status last = i2d_last_status();
-    const char* message = i2d_last_error_message();
-    char copy[256] = "(null)";
-    if (message != NULL) {
-        strncpy(copy, message, sizeof copy - 1);
-        copy[sizeof copy - 1] = '\0';
-    }
-    if (returned != expected || last != expected || message == NULL || message[0] == '\0') {
-        ++i2d_check_failures;
-        fprintf(stderr, "%s:%d: %s: returned %s, last status %s, message \"%s\"; expected %s with a message\n", file,
-                line, what, i2d_status_string(returned), i2d_status_string(last), copy, i2d_status_string(expected));
-    }
-}
-
 void check_accepted_at(const char* file, int line, const char* what, i2d_status returned) {
     i2d_status last = i2d_last_status();
     const char* message = i2d_last_error_message();
-    char copy[256] = "(null)";
-    if (message != NULL) {
-        strncpy(copy, message, sizeof copy - 1);
-        copy[sizeof copy - 1] = '\0';
-    }
+    char copy[256];
+    copy_message(copy, sizeof copy, message);
     if (returned != I2D_OK || last != I2D_OK || message == NULL || message[0] != '\0') {
         ++i2d_check_failures;
         fprintf(stderr, "%s:%d: %s: returned %s, last status %s, message \"%s\"; expected I2D_OK, no message\n", file,
@@ -156,6 +138,29 @@ void fixture_destroy(fixture* f) {
         i2d_world_destroy(f->world);
     }
     memset(f, 0, sizeof *f);
+}
+
+void run_on_fixture(fixture_test_body test_body) {
+    fixture f;
+    if (fixture_create(&f)) {
+        test_body(&f);
+    } else {
+        I2D_CHECK(!"fixture_create");
+    }
+    fixture_destroy(&f);
+}
+
+void run_on_twins(twins_test_body test_body) {
+    fixture a, b;
+    bool built_a = fixture_create(&a);
+    bool built_b = fixture_create(&b);
+    if (built_a && built_b) {
+        test_body(&a, &b);
+    } else {
+        I2D_CHECK(!"fixture_create");
+    }
+    fixture_destroy(&a);
+    fixture_destroy(&b);
 }
 
 static void snap_put(snapshot* s, int object, const char* field, uint64_t value) {
@@ -624,15 +629,7 @@ static void run_body_def_bad_values(const fixture* f) {
     }
 }
 
-I2D_TEST(api_errors_body_def_bad_values) {
-    fixture f;
-    if (fixture_create(&f)) {
-        run_body_def_bad_values(&f);
-    } else {
-        I2D_CHECK(!"fixture_create");
-    }
-    fixture_destroy(&f);
-}
+I2D_TEST(api_errors_body_def_bad_values) { run_on_fixture(run_body_def_bad_values); }
 
 /* Any finite angular velocity is accepted. */
 static const float k_angular_velocities[] = {-0.0f, 1.0f, -1e-3f, 100.0f, -1e6f, FLT_MAX, -FLT_MAX};
@@ -726,13 +723,7 @@ static void run_body_def_accepted(i2d_world_id world) {
     I2D_CHECK(i2d_world_get_counters(world).body_count == created);
 }
 
-I2D_TEST(api_errors_body_def_edges_accepted) {
-    i2d_world_def world_def = i2d_default_world_def();
-    i2d_world_id world = i2d_world_create(&world_def);
-    I2D_REQUIRE(!I2D_IS_NULL(world));
-    run_body_def_accepted(world);
-    i2d_world_destroy(world);
-}
+I2D_TEST(api_errors_body_def_edges_accepted) { run_in_default_world(run_body_def_accepted); }
 
 static void run_body_def_not_from_default(const fixture* f) {
     static snapshot before;
@@ -751,15 +742,7 @@ static void run_body_def_not_from_default(const fixture* f) {
     check_body_def_refused_at(__LINE__, "body def cookie 0", f, &def, &before);
 }
 
-I2D_TEST(api_errors_body_def_not_from_default) {
-    fixture f;
-    if (fixture_create(&f)) {
-        run_body_def_not_from_default(&f);
-    } else {
-        I2D_CHECK(!"fixture_create");
-    }
-    fixture_destroy(&f);
-}
+I2D_TEST(api_errors_body_def_not_from_default) { run_on_fixture(run_body_def_not_from_default); }
 
 /* ---- Shape creators ------------------------------------------------------------------ */
 
@@ -882,15 +865,7 @@ static void run_shape_def_bad_values(const fixture* f) {
     }
 }
 
-I2D_TEST(api_errors_shape_def_bad_values) {
-    fixture f;
-    if (fixture_create(&f)) {
-        run_shape_def_bad_values(&f);
-    } else {
-        I2D_CHECK(!"fixture_create");
-    }
-    fixture_destroy(&f);
-}
+I2D_TEST(api_errors_shape_def_bad_values) { run_on_fixture(run_shape_def_bad_values); }
 
 /* ---- Shape geometry: one float of a valid shape replaced ------------------------------ */
 
@@ -1095,15 +1070,7 @@ static void run_bad_geometry(const fixture* f) {
     }
 }
 
-I2D_TEST(api_errors_shape_bad_geometry) {
-    fixture f;
-    if (fixture_create(&f)) {
-        run_bad_geometry(&f);
-    } else {
-        I2D_CHECK(!"fixture_create");
-    }
-    fixture_destroy(&f);
-}
+I2D_TEST(api_errors_shape_bad_geometry) { run_on_fixture(run_bad_geometry); }
 
 /* An offset box turned by a rotation that is not unit length within 1e-3. */
 static void run_offset_box_bad_rotations(const fixture* f) {
@@ -1119,15 +1086,7 @@ static void run_offset_box_bad_rotations(const fixture* f) {
     }
 }
 
-I2D_TEST(api_errors_offset_box_bad_rotations) {
-    fixture f;
-    if (fixture_create(&f)) {
-        run_offset_box_bad_rotations(&f);
-    } else {
-        I2D_CHECK(!"fixture_create");
-    }
-    fixture_destroy(&f);
-}
+I2D_TEST(api_errors_offset_box_bad_rotations) { run_on_fixture(run_offset_box_bad_rotations); }
 
 const point_set k_bad_point_sets[] = {
     {"count 2", 2, {{0.0f, 0.0f}, {1.0f, 0.0f}}},
@@ -1165,15 +1124,7 @@ static void run_polygon_bad_points(const fixture* f) {
                               i2d_shape_create_polygon(ball, &def, NULL, 0), &before);
 }
 
-I2D_TEST(api_errors_polygon_bad_points) {
-    fixture f;
-    if (fixture_create(&f)) {
-        run_polygon_bad_points(&f);
-    } else {
-        I2D_CHECK(!"fixture_create");
-    }
-    fixture_destroy(&f);
-}
+I2D_TEST(api_errors_polygon_bad_points) { run_on_fixture(run_polygon_bad_points); }
 
 /* Polygons not made by i2d_make_polygon or i2d_make_box, or spoiled after. */
 static void run_polygon_from_bad(const fixture* f) {
@@ -1243,15 +1194,7 @@ static void run_polygon_from_bad(const fixture* f) {
                               i2d_shape_create_polygon_from(ball, &def, &flat), &before);
 }
 
-I2D_TEST(api_errors_polygon_from_bad) {
-    fixture f;
-    if (fixture_create(&f)) {
-        run_polygon_from_bad(&f);
-    } else {
-        I2D_CHECK(!"fixture_create");
-    }
-    fixture_destroy(&f);
-}
+I2D_TEST(api_errors_polygon_from_bad) { run_on_fixture(run_polygon_from_bad); }
 
 /* Capsules whose centres and segments whose points are closer than 0.005 m. */
 static void run_short_cores(const fixture* f) {
@@ -1272,15 +1215,7 @@ static void run_short_cores(const fixture* f) {
     }
 }
 
-I2D_TEST(api_errors_short_capsules_and_segments) {
-    fixture f;
-    if (fixture_create(&f)) {
-        run_short_cores(&f);
-    } else {
-        I2D_CHECK(!"fixture_create");
-    }
-    fixture_destroy(&f);
-}
+I2D_TEST(api_errors_short_capsules_and_segments) { run_on_fixture(run_short_cores); }
 
 /* The largest documented sizes, the shortest cores, unit rotations within 1e-3, 3 and 8
  * points, and a density of 0 are accepted. */
@@ -1379,13 +1314,7 @@ static void run_shape_edges_accepted(i2d_world_id world) {
     I2D_CHECK(i2d_world_get_counters(world).shape_count == created);
 }
 
-I2D_TEST(api_errors_shape_edges_accepted) {
-    i2d_world_def world_def = i2d_default_world_def();
-    i2d_world_id world = i2d_world_create(&world_def);
-    I2D_REQUIRE(!I2D_IS_NULL(world));
-    run_shape_edges_accepted(world);
-    i2d_world_destroy(world);
-}
+I2D_TEST(api_errors_shape_edges_accepted) { run_in_default_world(run_shape_edges_accepted); }
 
 /* ---- Getters of the wrong shape kind ------------------------------------------------ */
 
@@ -1454,12 +1383,4 @@ static void run_kind_mismatch(const fixture* f) {
     CHECK_UNCHANGED("the getters of the wrong kind", f, &before);
 }
 
-I2D_TEST(api_errors_shape_kind_mismatch) {
-    fixture f;
-    if (fixture_create(&f)) {
-        run_kind_mismatch(&f);
-    } else {
-        I2D_CHECK(!"fixture_create");
-    }
-    fixture_destroy(&f);
-}
+I2D_TEST(api_errors_shape_kind_mismatch) { run_on_fixture(run_kind_mismatch); }

@@ -12,49 +12,12 @@
 
 /* ---- Small helpers ---------------------------------------------------------------- */
 
-static i2d_vec2 v2(float x, float y) {
-    i2d_vec2 v;
-    v.x = x;
-    v.y = y;
-    return v;
-}
-
-static i2d_rot identity_rot(void) {
-    i2d_rot q;
-    q.c = 1.0f;
-    q.s = 0.0f;
-    return q;
-}
-
-static const float k_dt = 1.0f / 60.0f;
-enum { SUBSTEPS = 4 };
-
-static i2d_world_id make_world(float gravity_y) {
-    i2d_world_def def = i2d_default_world_def();
-    def.gravity = v2(0.0f, gravity_y);
-    return i2d_world_create(&def);
-}
-
-static i2d_body_id make_body(i2d_world_id world, i2d_body_type type, float x, float y) {
-    i2d_body_def def = i2d_default_body_def();
-    def.type = type;
-    def.position = v2(x, y);
-    return i2d_body_create(world, &def);
-}
-
 static i2d_shape_id add_circle(i2d_body_id body, const i2d_shape_def* def, float radius) {
     i2d_circle circle;
     circle.center = v2(0.0f, 0.0f);
     circle.radius = radius;
     return i2d_shape_create_circle(body, def, &circle);
 }
-
-/* Whether the unordered pair {a, b} is {x, y}. */
-static bool same_pair(i2d_shape_id a, i2d_shape_id b, i2d_shape_id x, i2d_shape_id y) {
-    return (I2D_ID_EQUALS(a, x) && I2D_ID_EQUALS(b, y)) || (I2D_ID_EQUALS(a, y) && I2D_ID_EQUALS(b, x));
-}
-
-static bool step_ok(i2d_world_id world) { return i2d_world_step(world, k_dt, SUBSTEPS) == I2D_OK; }
 
 /* The ground of most tests: a static box 20 m wide whose top is at y = 0. */
 static i2d_shape_id make_ground(i2d_world_id world, const i2d_shape_def* def) {
@@ -179,12 +142,7 @@ static void run_landing(i2d_world_id world) {
     }
 }
 
-I2D_TEST(api_events_contact_landing) {
-    i2d_world_id world = make_world(-10.0f);
-    I2D_REQUIRE(!I2D_IS_NULL(world));
-    run_landing(world);
-    i2d_world_destroy(world);
-}
+I2D_TEST(api_events_contact_landing) { run_in_world(-10.0f, run_landing); }
 
 /* A box landing flat on the ground touches along a whole edge (two manifold points):
  * still one begin event for the pair. */
@@ -217,12 +175,7 @@ static void run_box_landing(i2d_world_id world) {
     I2D_CHECK_NEAR(i2d_body_get_position(body).y, half, 0.02);
 }
 
-I2D_TEST(api_events_contact_box_landing) {
-    i2d_world_id world = make_world(-10.0f);
-    I2D_REQUIRE(!I2D_IS_NULL(world));
-    run_box_landing(world);
-    i2d_world_destroy(world);
-}
+I2D_TEST(api_events_contact_box_landing) { run_in_world(-10.0f, run_box_landing); }
 
 /* An elastic ball bounces: every impact begins a contact and every rebound ends it. */
 static void run_bounce(i2d_world_id world) {
@@ -273,12 +226,7 @@ static void run_bounce(i2d_world_id world) {
     I2D_CHECK(rebounds_checked >= 2);
 }
 
-I2D_TEST(api_events_contact_bounce) {
-    i2d_world_id world = make_world(-10.0f);
-    I2D_REQUIRE(!I2D_IS_NULL(world));
-    run_bounce(world);
-    i2d_world_destroy(world);
-}
+I2D_TEST(api_events_contact_bounce) { run_in_world(-10.0f, run_bounce); }
 
 /* ---- Destroying touching shapes: end events with the next step ---------------------- */
 
@@ -411,12 +359,7 @@ static void run_destroy_in_pile(i2d_world_id world) {
     I2D_CHECK(e.begin_count == 0);
 }
 
-I2D_TEST(api_events_destroy_in_pile) {
-    i2d_world_id world = make_world(-10.0f);
-    I2D_REQUIRE(!I2D_IS_NULL(world));
-    run_destroy_in_pile(world);
-    i2d_world_destroy(world);
-}
+I2D_TEST(api_events_destroy_in_pile) { run_in_world(-10.0f, run_destroy_in_pile); }
 
 /* ---- enable_contact_events = false on either shape ---------------------------------- */
 
@@ -638,12 +581,7 @@ static void run_arrays_stable(i2d_world_id world) {
     check_events_unchanged(world, &copy, "stepping and destroying another world");
 }
 
-I2D_TEST(api_events_arrays_stable_until_step) {
-    i2d_world_id world = make_world(-10.0f);
-    I2D_REQUIRE(!I2D_IS_NULL(world));
-    run_arrays_stable(world);
-    i2d_world_destroy(world);
-}
+I2D_TEST(api_events_arrays_stable_until_step) { run_in_world(-10.0f, run_arrays_stable); }
 
 /* ---- Every begin has its end: a long random scene ------------------------------------ */
 
@@ -999,6 +937,24 @@ static bool sensor_scene_build(sensor_scene* s, bool with_sensor) {
     return !I2D_IS_NULL(s->ground);
 }
 
+/* A sensor event of the scene's sensor, counted (and its step kept) for the ball whose
+ * shape visited; a visitor that is no ball fails. */
+static void count_sensor_event(const sensor_scene* s, i2d_shape_id sensor, i2d_shape_id visitor, const char* kind,
+                               int step, int* counts, int* steps) {
+    I2D_CHECK(I2D_ID_EQUALS(sensor, s->sensor));
+    int which = -1;
+    for (int k = 0; k < 3; ++k) {
+        which = I2D_ID_EQUALS(visitor, s->ball_shapes[k]) ? k : which;
+    }
+    if (which < 0) {
+        report("step %d: sensor %s with an unknown visitor 0x%llx", step, kind, (unsigned long long)visitor.bits);
+        I2D_CHECK(which >= 0);
+        return;
+    }
+    ++counts[which];
+    steps[which] = step;
+}
+
 static void run_sensor_zone(sensor_scene* with, sensor_scene* without) {
     const double h = (double)k_dt / SUBSTEPS;
     /* The ball overlaps the zone while its centre is within [-2.5, 2.5] (touching counts). */
@@ -1050,35 +1006,11 @@ static void run_sensor_zone(sensor_scene* with, sensor_scene* without) {
         I2D_CHECK(i2d_last_status() == I2D_OK);
         for (int i = 0; i < se.begin_count; ++i) {
             const i2d_sensor_begin_event* ev = &se.begin_events[i];
-            I2D_CHECK(I2D_ID_EQUALS(ev->sensor_shape, with->sensor));
-            int which = -1;
-            for (int k = 0; k < 3; ++k) {
-                which = I2D_ID_EQUALS(ev->visitor_shape, with->ball_shapes[k]) ? k : which;
-            }
-            if (which < 0) {
-                report("step %d: sensor begin with an unknown visitor 0x%llx", step,
-                       (unsigned long long)ev->visitor_shape.bits);
-                I2D_CHECK(which >= 0);
-                continue;
-            }
-            ++begin_count[which];
-            begin_step[which] = step;
+            count_sensor_event(with, ev->sensor_shape, ev->visitor_shape, "begin", step, begin_count, begin_step);
         }
         for (int i = 0; i < se.end_count; ++i) {
             const i2d_sensor_end_event* ev = &se.end_events[i];
-            I2D_CHECK(I2D_ID_EQUALS(ev->sensor_shape, with->sensor));
-            int which = -1;
-            for (int k = 0; k < 3; ++k) {
-                which = I2D_ID_EQUALS(ev->visitor_shape, with->ball_shapes[k]) ? k : which;
-            }
-            if (which < 0) {
-                report("step %d: sensor end with an unknown visitor 0x%llx", step,
-                       (unsigned long long)ev->visitor_shape.bits);
-                I2D_CHECK(which >= 0);
-                continue;
-            }
-            ++end_count[which];
-            end_step[which] = step;
+            count_sensor_event(with, ev->sensor_shape, ev->visitor_shape, "end", step, end_count, end_step);
         }
     }
     I2D_CHECK(identical);
@@ -1200,12 +1132,7 @@ static void run_sensor_changes(i2d_world_id world) {
     I2D_CHECK(e.begin_count == 0 && e.end_count == 0);
 }
 
-I2D_TEST(api_events_sensor_changes) {
-    i2d_world_id world = make_world(0.0f);
-    I2D_REQUIRE(!I2D_IS_NULL(world));
-    run_sensor_changes(world);
-    i2d_world_destroy(world);
-}
+I2D_TEST(api_events_sensor_changes) { run_in_world(0.0f, run_sensor_changes); }
 
 /* A dynamic body whose only shape is a sensor falls through the ground as if it were
  * not there: bit for bit the trajectory of the same world without the ground. */
@@ -1397,12 +1324,7 @@ static void run_body_moves(i2d_world_id world) {
     I2D_CHECK(e.move_count >= 2); /* bodies 2 and 5 still move */
 }
 
-I2D_TEST(api_events_body_moves) {
-    i2d_world_id world = make_world(-10.0f);
-    I2D_REQUIRE(!I2D_IS_NULL(world));
-    run_body_moves(world);
-    i2d_world_destroy(world);
-}
+I2D_TEST(api_events_body_moves) { run_in_world(-10.0f, run_body_moves); }
 
 /* ---- Bad world ids ------------------------------------------------------------------ */
 

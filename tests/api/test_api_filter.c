@@ -6,23 +6,10 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "api_test_support.h"
 #include "check.h"
 
 /* ---- Small helpers ---------------------------------------------------------------- */
-
-static i2d_vec2 v2(float x, float y) {
-    i2d_vec2 v;
-    v.x = x;
-    v.y = y;
-    return v;
-}
-
-static i2d_rot identity_rot(void) {
-    i2d_rot q;
-    q.c = 1.0f;
-    q.s = 0.0f;
-    return q;
-}
 
 static i2d_filter filter(uint64_t category_bits, uint64_t mask_bits, int32_t group_index) {
     i2d_filter f;
@@ -32,33 +19,11 @@ static i2d_filter filter(uint64_t category_bits, uint64_t mask_bits, int32_t gro
     return f;
 }
 
-static const float k_dt = 1.0f / 60.0f;
-enum { SUBSTEPS = 4 };
-
-static i2d_world_id make_world(float gravity_y) {
-    i2d_world_def def = i2d_default_world_def();
-    def.gravity = v2(0.0f, gravity_y);
-    return i2d_world_create(&def);
-}
-
-static i2d_body_id make_body(i2d_world_id world, i2d_body_type type, float x, float y) {
-    i2d_body_def def = i2d_default_body_def();
-    def.type = type;
-    def.position = v2(x, y);
-    return i2d_body_create(world, &def);
-}
-
 static i2d_shape_id add_box(i2d_body_id body, i2d_filter f, float hw, float hh) {
     i2d_shape_def def = i2d_default_shape_def();
     def.filter = f;
     return i2d_shape_create_box(body, &def, hw, hh);
 }
-
-static bool same_pair(i2d_shape_id a, i2d_shape_id b, i2d_shape_id x, i2d_shape_id y) {
-    return (I2D_ID_EQUALS(a, x) && I2D_ID_EQUALS(b, y)) || (I2D_ID_EQUALS(a, y) && I2D_ID_EQUALS(b, x));
-}
-
-static bool step_ok(i2d_world_id world) { return i2d_world_step(world, k_dt, SUBSTEPS) == I2D_OK; }
 
 static bool same_vec(i2d_vec2 a, i2d_vec2 b) { return a.x == b.x && a.y == b.y; }
 
@@ -258,12 +223,7 @@ static void run_same_body(i2d_world_id world) {
     I2D_CHECK(same_vec(i2d_body_get_linear_velocity(body), v2(0.0f, 0.0f)));
 }
 
-I2D_TEST(api_filter_same_body_never_collides) {
-    i2d_world_id world = make_world(0.0f);
-    I2D_REQUIRE(!I2D_IS_NULL(world));
-    run_same_body(world);
-    i2d_world_destroy(world);
-}
+I2D_TEST(api_filter_same_body_never_collides) { run_in_world(0.0f, run_same_body); }
 
 /* A kinematic box sweeps through a static box, and two static boxes overlap: no
  * contacts, no events, and the kinematic body keeps its velocity. */
@@ -296,12 +256,7 @@ static void run_static_kinematic(i2d_world_id world) {
     I2D_CHECK(same_vec(i2d_body_get_linear_velocity(mover), v2(5.0f, 0.0f)));
 }
 
-I2D_TEST(api_filter_static_kinematic_never_collide) {
-    i2d_world_id world = make_world(-10.0f);
-    I2D_REQUIRE(!I2D_IS_NULL(world));
-    run_static_kinematic(world);
-    i2d_world_destroy(world);
-}
+I2D_TEST(api_filter_static_kinematic_never_collide) { run_in_world(-10.0f, run_static_kinematic); }
 
 /* The control for the test above: the same kinematic sweep does push a dynamic ball
  * (so "no contacts" above is not just a sweep that misses). */
@@ -325,12 +280,7 @@ static void run_kinematic_pushes(i2d_world_id world) {
     I2D_CHECK(i2d_body_get_position(ball).x > 5.0f); /* pushed ahead of the mover */
 }
 
-I2D_TEST(api_filter_kinematic_pushes_dynamic) {
-    i2d_world_id world = make_world(0.0f);
-    I2D_REQUIRE(!I2D_IS_NULL(world));
-    run_kinematic_pushes(world);
-    i2d_world_destroy(world);
-}
+I2D_TEST(api_filter_kinematic_pushes_dynamic) { run_in_world(0.0f, run_kinematic_pushes); }
 
 /* ---- Changing filters of pairs that already overlap ----------------------------------- */
 
@@ -473,12 +423,7 @@ static void run_filtered_then_allowed(i2d_world_id world) {
     I2D_CHECK(i2d_body_get_position(b_body).x > 1.5f);
 }
 
-I2D_TEST(api_filter_filtered_pair_becomes_allowed) {
-    i2d_world_id world = make_world(0.0f);
-    I2D_REQUIRE(!I2D_IS_NULL(world));
-    run_filtered_then_allowed(world);
-    i2d_world_destroy(world);
-}
+I2D_TEST(api_filter_filtered_pair_becomes_allowed) { run_in_world(0.0f, run_filtered_then_allowed); }
 
 /* With gravity: a box resting on the ground falls through it once filtered out. */
 static void run_fall_through(i2d_world_id world) {
@@ -512,9 +457,4 @@ static void run_fall_through(i2d_world_id world) {
     I2D_CHECK(ends == 0);
 }
 
-I2D_TEST(api_filter_set_filter_falls_through) {
-    i2d_world_id world = make_world(-10.0f);
-    I2D_REQUIRE(!I2D_IS_NULL(world));
-    run_fall_through(world);
-    i2d_world_destroy(world);
-}
+I2D_TEST(api_filter_set_filter_falls_through) { run_in_world(-10.0f, run_fall_through); }

@@ -6,23 +6,10 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "api_test_support.h"
 #include "check.h"
 
 /* ---- Small helpers ---------------------------------------------------------------- */
-
-static i2d_vec2 v2(float x, float y) {
-    i2d_vec2 v;
-    v.x = x;
-    v.y = y;
-    return v;
-}
-
-static i2d_aabb box(float min_x, float min_y, float max_x, float max_y) {
-    i2d_aabb b;
-    b.min = v2(min_x, min_y);
-    b.max = v2(max_x, max_y);
-    return b;
-}
 
 /* A check that also names the kind of bad id under test ("null body", "stale shape"...). */
 #define CHECK_IN(ctx, cond)                                                                       \
@@ -36,21 +23,9 @@ static i2d_aabb box(float min_x, float min_y, float max_x, float max_y) {
 /* The call just made answered INVALID_HANDLE (return value, if any, and last status)
  * with a non-empty message. Reads status and message before any other i2d_ call. */
 static void check_handle_refused_at(int line, const char* ctx, const char* call, i2d_status returned) {
-    i2d_status last = i2d_last_status();
-    const char* message = i2d_last_error_message();
-    char copy[256] = "(null)";
-    if (message != NULL) {
-        strncpy(copy, message, sizeof copy - 1);
-        copy[sizeof copy - 1] = '\0';
-    }
-    if (returned != I2D_ERR_INVALID_HANDLE || last != I2D_ERR_INVALID_HANDLE || message == NULL ||
-        message[0] == '\0') {
-        ++i2d_check_failures;
-        fprintf(stderr,
-                "%s:%d: [%s] %s: returned %s, last status %s, message \"%s\"; expected I2D_ERR_INVALID_HANDLE "
-                "with a message\n",
-                __FILE__, line, ctx, call, i2d_status_string(returned), i2d_status_string(last), copy);
-    }
+    char what[512];
+    snprintf(what, sizeof what, "[%s] %s", ctx, call);
+    check_refused_at(__FILE__, line, what, returned, I2D_ERR_INVALID_HANDLE);
 }
 /* For calls that return a status. */
 #define CHECK_HANDLE_REFUSED(ctx, call) check_handle_refused_at(__LINE__, (ctx), #call, (call))
@@ -588,13 +563,7 @@ static void run_body_recycle(i2d_world_id world) {
     check_body_id_refused(first, "first body after 70000 recycles");
 }
 
-I2D_TEST(api_ids_body_slot_recycle) {
-    i2d_world_def def = i2d_default_world_def();
-    i2d_world_id world = i2d_world_create(&def);
-    I2D_REQUIRE(!I2D_IS_NULL(world));
-    run_body_recycle(world);
-    i2d_world_destroy(world);
-}
+I2D_TEST(api_ids_body_slot_recycle) { run_in_default_world(run_body_recycle); }
 
 /* An id of one kind passed where another is expected: refused, and the object the bits
  * really name is untouched. */

@@ -11,15 +11,14 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "any_joint_def.h"
 #include "api_test_support.h"
 #include "check.h"
 
 /* ---- Fixture ---------------------------------------------------------------------- */
 
-#define KIND_COUNT 8
-
-static const char* const k_kind_names[KIND_COUNT] = {"distance", "filter",   "motor", "mouse",
-                                                     "prismatic", "revolute", "weld",  "wheel"};
+static const char* const k_kind_names[JOINT_KIND_COUNT] = {"distance",  "filter",   "motor", "mouse",
+                                                           "prismatic", "revolute", "weld",  "wheel"};
 
 /* Mismatch reports per test (api_test_support.h): a broken rule shows without a flood. */
 static const int k_report_budget = 20;
@@ -40,18 +39,9 @@ typedef struct fixture {
     i2d_body_id foreign;     /* dynamic, of other_world */
 } fixture;
 
-static i2d_vec2 v2(float x, float y) {
-    i2d_vec2 v;
-    v.x = x;
-    v.y = y;
-    return v;
-}
-
-static i2d_body_id make_body(i2d_world_id world, i2d_body_type type, float x, float y) {
-    i2d_body_def def = i2d_default_body_def();
-    def.type = type;
-    def.position = v2(x, y);
-    i2d_body_id body = i2d_body_create(world, &def);
+/* A body with a 1 m box, so that it has mass and queries find it. */
+static i2d_body_id make_box_body(i2d_world_id world, i2d_body_type type, float x, float y) {
+    i2d_body_id body = make_body(world, type, x, y);
     i2d_shape_def shape = i2d_default_shape_def();
     i2d_shape_create_box(body, &shape, 0.5f, 0.5f);
     return body;
@@ -62,12 +52,12 @@ static fixture make_fixture(void) {
     i2d_world_def def = i2d_default_world_def();
     f.world = i2d_world_create(&def);
     f.other_world = i2d_world_create(&def);
-    f.ground = make_body(f.world, I2D_BODY_STATIC, 0.0f, -1.0f);
-    f.a = make_body(f.world, I2D_BODY_DYNAMIC, 0.0f, 4.0f);
-    f.b = make_body(f.world, I2D_BODY_DYNAMIC, 3.0f, 4.0f);
-    f.kinematic = make_body(f.world, I2D_BODY_KINEMATIC, -3.0f, 4.0f);
-    f.second_static = make_body(f.world, I2D_BODY_STATIC, 10.0f, -1.0f);
-    f.foreign = make_body(f.other_world, I2D_BODY_DYNAMIC, 0.0f, 4.0f);
+    f.ground = make_box_body(f.world, I2D_BODY_STATIC, 0.0f, -1.0f);
+    f.a = make_box_body(f.world, I2D_BODY_DYNAMIC, 0.0f, 4.0f);
+    f.b = make_box_body(f.world, I2D_BODY_DYNAMIC, 3.0f, 4.0f);
+    f.kinematic = make_box_body(f.world, I2D_BODY_KINEMATIC, -3.0f, 4.0f);
+    f.second_static = make_box_body(f.world, I2D_BODY_STATIC, 10.0f, -1.0f);
+    f.foreign = make_box_body(f.other_world, I2D_BODY_DYNAMIC, 0.0f, 4.0f);
     return f;
 }
 
@@ -76,70 +66,16 @@ static void free_fixture(fixture* f) {
     i2d_world_destroy(f->other_world);
 }
 
-/* Any kind's def. The base is every def's first member, so it is at the union's address. */
-typedef union any_def {
-    i2d_distance_joint_def distance;
-    i2d_filter_joint_def filter;
-    i2d_motor_joint_def motor;
-    i2d_mouse_joint_def mouse;
-    i2d_prismatic_joint_def prismatic;
-    i2d_revolute_joint_def revolute;
-    i2d_weld_joint_def weld;
-    i2d_wheel_joint_def wheel;
-} any_def;
-
-static i2d_joint_base* base_of(any_def* d) { return &d->revolute.base; }
-
-static any_def default_def(i2d_joint_type kind, i2d_body_id a, i2d_body_id b) {
-    any_def d;
-    memset(&d, 0, sizeof d);
-    switch (kind) {
-        case I2D_JOINT_DISTANCE: d.distance = i2d_default_distance_joint_def(); break;
-        case I2D_JOINT_FILTER: d.filter = i2d_default_filter_joint_def(); break;
-        case I2D_JOINT_MOTOR: d.motor = i2d_default_motor_joint_def(); break;
-        case I2D_JOINT_MOUSE: d.mouse = i2d_default_mouse_joint_def(); break;
-        case I2D_JOINT_PRISMATIC: d.prismatic = i2d_default_prismatic_joint_def(); break;
-        case I2D_JOINT_REVOLUTE: d.revolute = i2d_default_revolute_joint_def(); break;
-        case I2D_JOINT_WELD: d.weld = i2d_default_weld_joint_def(); break;
-        case I2D_JOINT_WHEEL: d.wheel = i2d_default_wheel_joint_def(); break;
-    }
-    base_of(&d)->body_a = a;
-    base_of(&d)->body_b = b;
-    return d;
-}
-
-static uint32_t* cookie_of(any_def* d, i2d_joint_type kind) {
-    switch (kind) {
-        case I2D_JOINT_DISTANCE: return &d->distance.internal_cookie;
-        case I2D_JOINT_FILTER: return &d->filter.internal_cookie;
-        case I2D_JOINT_MOTOR: return &d->motor.internal_cookie;
-        case I2D_JOINT_MOUSE: return &d->mouse.internal_cookie;
-        case I2D_JOINT_PRISMATIC: return &d->prismatic.internal_cookie;
-        case I2D_JOINT_REVOLUTE: return &d->revolute.internal_cookie;
-        case I2D_JOINT_WELD: return &d->weld.internal_cookie;
-        case I2D_JOINT_WHEEL: return &d->wheel.internal_cookie;
-    }
-    return NULL;
-}
-
-/* Creates a joint of the kind; def NULL passes NULL to the kind's create. */
-static i2d_joint_id create_any(i2d_world_id world, i2d_joint_type kind, const any_def* d) {
-    switch (kind) {
-        case I2D_JOINT_DISTANCE: return i2d_joint_create_distance(world, d ? &d->distance : NULL);
-        case I2D_JOINT_FILTER: return i2d_joint_create_filter(world, d ? &d->filter : NULL);
-        case I2D_JOINT_MOTOR: return i2d_joint_create_motor(world, d ? &d->motor : NULL);
-        case I2D_JOINT_MOUSE: return i2d_joint_create_mouse(world, d ? &d->mouse : NULL);
-        case I2D_JOINT_PRISMATIC: return i2d_joint_create_prismatic(world, d ? &d->prismatic : NULL);
-        case I2D_JOINT_REVOLUTE: return i2d_joint_create_revolute(world, d ? &d->revolute : NULL);
-        case I2D_JOINT_WELD: return i2d_joint_create_weld(world, d ? &d->weld : NULL);
-        case I2D_JOINT_WHEEL: return i2d_joint_create_wheel(world, d ? &d->wheel : NULL);
-    }
-    return I2D_NULL_JOINT_ID;
-}
-
 static i2d_joint_id create_default(const fixture* f, i2d_joint_type kind) {
     any_def d = default_def(kind, f->a, f->b);
     return create_any(f->world, kind, &d);
+}
+
+/* A joint of every kind between a and b, with the defaults; joints[k] is of kind k. */
+static void create_one_of_each_kind(const fixture* f, i2d_joint_id joints[JOINT_KIND_COUNT]) {
+    for (int k = 0; k < JOINT_KIND_COUNT; ++k) {
+        joints[k] = create_default(f, (i2d_joint_type)k);
+    }
 }
 
 /* ---- Refusal checks ------------------------------------------------------------------- */
@@ -273,8 +209,8 @@ I2D_TEST(api_joint_defaults) {
 I2D_TEST(api_joint_create_every_kind) {
     g_reports_left = k_report_budget;
     fixture f = make_fixture();
-    i2d_joint_id joints[KIND_COUNT];
-    for (int k = 0; k < KIND_COUNT; ++k) {
+    i2d_joint_id joints[JOINT_KIND_COUNT];
+    for (int k = 0; k < JOINT_KIND_COUNT; ++k) {
         any_def d = default_def((i2d_joint_type)k, f.a, f.b);
         base_of(&d)->local_anchor_a = v2(0.25f, -0.5f);
         base_of(&d)->local_anchor_b = v2(-0.125f, 0.75f);
@@ -297,7 +233,7 @@ I2D_TEST(api_joint_create_every_kind) {
         I2D_CHECK(i2d_world_get_joint_count(f.world) == k + 1);
     }
     /* Ids are distinct and of one world. */
-    for (int k = 1; k < KIND_COUNT; ++k) {
+    for (int k = 1; k < JOINT_KIND_COUNT; ++k) {
         I2D_CHECK(joints[k].bits != joints[k - 1].bits);
     }
     /* A joint to a static or kinematic body is fine when the other is dynamic. */
@@ -308,7 +244,7 @@ I2D_TEST(api_joint_create_every_kind) {
     /* A mouse joint's body_a is any body. */
     d = default_def(I2D_JOINT_MOUSE, f.ground, f.b);
     I2D_CHECK(create_any(f.world, I2D_JOINT_MOUSE, &d).bits != 0);
-    I2D_CHECK(i2d_world_get_joint_count(f.world) == KIND_COUNT + 3);
+    I2D_CHECK(i2d_world_get_joint_count(f.world) == JOINT_KIND_COUNT + 3);
     I2D_CHECK(i2d_world_get_joint_count(f.other_world) == 0);
     free_fixture(&f);
 }
@@ -336,7 +272,7 @@ I2D_TEST(api_joint_create_wakes_bodies) {
 I2D_TEST(api_joint_create_refusals_common) {
     g_reports_left = k_report_budget;
     fixture f = make_fixture();
-    for (int k = 0; k < KIND_COUNT; ++k) {
+    for (int k = 0; k < JOINT_KIND_COUNT; ++k) {
         const i2d_joint_type kind = (i2d_joint_type)k;
         const bool mouse = kind == I2D_JOINT_MOUSE;
         any_def d = default_def(kind, f.a, f.b);
@@ -404,7 +340,7 @@ I2D_TEST(api_joint_create_refusals_common) {
         CHECK_CREATE_REFUSED(&f, I2D_ERR_INVALID_ARGUMENT, "torque_threshold", create_any(f.world, kind, &d));
     }
     /* Bodies destroyed before the create: their ids are stale. */
-    i2d_body_id doomed = make_body(f.world, I2D_BODY_DYNAMIC, 6.0f, 4.0f);
+    i2d_body_id doomed = make_box_body(f.world, I2D_BODY_DYNAMIC, 6.0f, 4.0f);
     I2D_CHECK_STATUS(i2d_body_destroy(doomed), I2D_OK);
     any_def d = default_def(I2D_JOINT_REVOLUTE, f.a, doomed);
     CHECK_CREATE_REFUSED(&f, I2D_ERR_INVALID_HANDLE, "body_b", create_any(f.world, I2D_JOINT_REVOLUTE, &d));
@@ -412,67 +348,6 @@ I2D_TEST(api_joint_create_refusals_common) {
 }
 
 /* ---- Per-kind settings in the def ------------------------------------------------------ */
-
-typedef struct def_float {
-    i2d_joint_type kind;
-    const char* name;  /* as the message names it */
-    size_t offset;
-} def_float;
-
-#define DEF_FLOAT(KIND, type, field) {KIND, #field, offsetof(type, field)}
-
-/* Every float of every kind's settings (the base's are checked above). */
-static const def_float k_def_floats[] = {
-    DEF_FLOAT(I2D_JOINT_REVOLUTE, i2d_revolute_joint_def, reference_angle),
-    DEF_FLOAT(I2D_JOINT_REVOLUTE, i2d_revolute_joint_def, lower_angle),
-    DEF_FLOAT(I2D_JOINT_REVOLUTE, i2d_revolute_joint_def, upper_angle),
-    DEF_FLOAT(I2D_JOINT_REVOLUTE, i2d_revolute_joint_def, motor_speed),
-    DEF_FLOAT(I2D_JOINT_REVOLUTE, i2d_revolute_joint_def, max_motor_torque),
-    DEF_FLOAT(I2D_JOINT_REVOLUTE, i2d_revolute_joint_def, hertz),
-    DEF_FLOAT(I2D_JOINT_REVOLUTE, i2d_revolute_joint_def, damping_ratio),
-    DEF_FLOAT(I2D_JOINT_REVOLUTE, i2d_revolute_joint_def, target_angle),
-    DEF_FLOAT(I2D_JOINT_PRISMATIC, i2d_prismatic_joint_def, local_axis_a.x),
-    DEF_FLOAT(I2D_JOINT_PRISMATIC, i2d_prismatic_joint_def, local_axis_a.y),
-    DEF_FLOAT(I2D_JOINT_PRISMATIC, i2d_prismatic_joint_def, reference_angle),
-    DEF_FLOAT(I2D_JOINT_PRISMATIC, i2d_prismatic_joint_def, lower_translation),
-    DEF_FLOAT(I2D_JOINT_PRISMATIC, i2d_prismatic_joint_def, upper_translation),
-    DEF_FLOAT(I2D_JOINT_PRISMATIC, i2d_prismatic_joint_def, motor_speed),
-    DEF_FLOAT(I2D_JOINT_PRISMATIC, i2d_prismatic_joint_def, max_motor_force),
-    DEF_FLOAT(I2D_JOINT_PRISMATIC, i2d_prismatic_joint_def, hertz),
-    DEF_FLOAT(I2D_JOINT_PRISMATIC, i2d_prismatic_joint_def, damping_ratio),
-    DEF_FLOAT(I2D_JOINT_PRISMATIC, i2d_prismatic_joint_def, target_translation),
-    DEF_FLOAT(I2D_JOINT_DISTANCE, i2d_distance_joint_def, length),
-    DEF_FLOAT(I2D_JOINT_DISTANCE, i2d_distance_joint_def, min_length),
-    DEF_FLOAT(I2D_JOINT_DISTANCE, i2d_distance_joint_def, max_length),
-    DEF_FLOAT(I2D_JOINT_DISTANCE, i2d_distance_joint_def, hertz),
-    DEF_FLOAT(I2D_JOINT_DISTANCE, i2d_distance_joint_def, damping_ratio),
-    DEF_FLOAT(I2D_JOINT_DISTANCE, i2d_distance_joint_def, motor_speed),
-    DEF_FLOAT(I2D_JOINT_DISTANCE, i2d_distance_joint_def, max_motor_force),
-    DEF_FLOAT(I2D_JOINT_WELD, i2d_weld_joint_def, reference_angle),
-    DEF_FLOAT(I2D_JOINT_WELD, i2d_weld_joint_def, linear_hertz),
-    DEF_FLOAT(I2D_JOINT_WELD, i2d_weld_joint_def, angular_hertz),
-    DEF_FLOAT(I2D_JOINT_WELD, i2d_weld_joint_def, linear_damping_ratio),
-    DEF_FLOAT(I2D_JOINT_WELD, i2d_weld_joint_def, angular_damping_ratio),
-    DEF_FLOAT(I2D_JOINT_WHEEL, i2d_wheel_joint_def, local_axis_a.x),
-    DEF_FLOAT(I2D_JOINT_WHEEL, i2d_wheel_joint_def, local_axis_a.y),
-    DEF_FLOAT(I2D_JOINT_WHEEL, i2d_wheel_joint_def, hertz),
-    DEF_FLOAT(I2D_JOINT_WHEEL, i2d_wheel_joint_def, damping_ratio),
-    DEF_FLOAT(I2D_JOINT_WHEEL, i2d_wheel_joint_def, lower_translation),
-    DEF_FLOAT(I2D_JOINT_WHEEL, i2d_wheel_joint_def, upper_translation),
-    DEF_FLOAT(I2D_JOINT_WHEEL, i2d_wheel_joint_def, motor_speed),
-    DEF_FLOAT(I2D_JOINT_WHEEL, i2d_wheel_joint_def, max_motor_torque),
-    DEF_FLOAT(I2D_JOINT_MOTOR, i2d_motor_joint_def, linear_offset.x),
-    DEF_FLOAT(I2D_JOINT_MOTOR, i2d_motor_joint_def, linear_offset.y),
-    DEF_FLOAT(I2D_JOINT_MOTOR, i2d_motor_joint_def, angular_offset),
-    DEF_FLOAT(I2D_JOINT_MOTOR, i2d_motor_joint_def, max_force),
-    DEF_FLOAT(I2D_JOINT_MOTOR, i2d_motor_joint_def, max_torque),
-    DEF_FLOAT(I2D_JOINT_MOTOR, i2d_motor_joint_def, correction_factor),
-    DEF_FLOAT(I2D_JOINT_MOUSE, i2d_mouse_joint_def, target.x),
-    DEF_FLOAT(I2D_JOINT_MOUSE, i2d_mouse_joint_def, target.y),
-    DEF_FLOAT(I2D_JOINT_MOUSE, i2d_mouse_joint_def, hertz),
-    DEF_FLOAT(I2D_JOINT_MOUSE, i2d_mouse_joint_def, damping_ratio),
-    DEF_FLOAT(I2D_JOINT_MOUSE, i2d_mouse_joint_def, max_force),
-};
 
 typedef struct def_value {
     i2d_joint_type kind;
@@ -531,8 +406,6 @@ static const def_value k_def_in_range[] = {
     DEF_VALUE(I2D_JOINT_MOUSE, i2d_mouse_joint_def, max_force, FLT_MAX),
     DEF_VALUE(I2D_JOINT_WELD, i2d_weld_joint_def, reference_angle, -100.0f),
 };
-
-static void set_def_float(any_def* d, size_t offset, float value) { memcpy((char*)d + offset, &value, sizeof value); }
 
 I2D_TEST(api_joint_create_refusals_settings) {
     g_reports_left = k_report_budget;
@@ -727,10 +600,8 @@ static const vec2_setting k_vec2_settings[] = {
 I2D_TEST(api_joint_settings_round_trip) {
     g_reports_left = k_report_budget;
     fixture f = make_fixture();
-    i2d_joint_id joints[KIND_COUNT];
-    for (int k = 0; k < KIND_COUNT; ++k) {
-        joints[k] = create_default(&f, (i2d_joint_type)k);
-    }
+    i2d_joint_id joints[JOINT_KIND_COUNT];
+    create_one_of_each_kind(&f, joints);
     for (size_t i = 0; i < COUNT_OF(k_float_settings); ++i) {
         const float_setting* s = &k_float_settings[i];
         settle(&f);
@@ -766,7 +637,7 @@ I2D_TEST(api_joint_settings_round_trip) {
         }
     }
     /* The shared settings, on every kind. */
-    for (int k = 0; k < KIND_COUNT; ++k) {
+    for (int k = 0; k < JOINT_KIND_COUNT; ++k) {
         const i2d_joint_id j = joints[k];
         I2D_CHECK_STATUS(i2d_joint_set_local_anchor_a(j, v2(0.5f, -0.25f)), I2D_OK);
         I2D_CHECK_STATUS(i2d_joint_set_local_anchor_b(j, v2(-1e5f, 1e5f)), I2D_OK);
@@ -801,10 +672,8 @@ I2D_TEST(api_joint_settings_round_trip) {
 I2D_TEST(api_joint_setter_refusals) {
     g_reports_left = k_report_budget;
     fixture f = make_fixture();
-    i2d_joint_id joints[KIND_COUNT];
-    for (int k = 0; k < KIND_COUNT; ++k) {
-        joints[k] = create_default(&f, (i2d_joint_type)k);
-    }
+    i2d_joint_id joints[JOINT_KIND_COUNT];
+    create_one_of_each_kind(&f, joints);
     const float non_finite[] = {NAN, INFINITY, -INFINITY};
     for (size_t i = 0; i < COUNT_OF(k_float_settings); ++i) {
         const float_setting* s = &k_float_settings[i];
@@ -827,7 +696,7 @@ I2D_TEST(api_joint_setter_refusals) {
         CHECK_REFUSED(&f, I2D_ERR_INVALID_ARGUMENT, s->name, s->set(j, s->bad));
         I2D_CHECK(s->get(j).x == before.x && s->get(j).y == before.y);
     }
-    for (int k = 0; k < KIND_COUNT; ++k) {
+    for (int k = 0; k < JOINT_KIND_COUNT; ++k) {
         const i2d_joint_id j = joints[k];
         for (int v = 0; v < 3; ++v) {
             CHECK_REFUSED(&f, I2D_ERR_INVALID_ARGUMENT, "local_anchor_a",
@@ -885,11 +754,9 @@ I2D_TEST(api_joint_setter_refusals) {
 I2D_TEST(api_joint_wrong_kind) {
     g_reports_left = k_report_budget;
     fixture f = make_fixture();
-    i2d_joint_id joints[KIND_COUNT];
-    for (int k = 0; k < KIND_COUNT; ++k) {
-        joints[k] = create_default(&f, (i2d_joint_type)k);
-    }
-    for (int k = 0; k < KIND_COUNT; ++k) {
+    i2d_joint_id joints[JOINT_KIND_COUNT];
+    create_one_of_each_kind(&f, joints);
+    for (int k = 0; k < JOINT_KIND_COUNT; ++k) {
         for (size_t i = 0; i < COUNT_OF(k_float_settings); ++i) {
             const float_setting* s = &k_float_settings[i];
             if ((int)s->kind == k) {
@@ -1092,13 +959,13 @@ I2D_TEST(api_joint_events_threshold) {
     g_reports_left = k_report_budget;
     i2d_world_def world_def = i2d_default_world_def();
     const i2d_world_id world = i2d_world_create(&world_def);
-    const i2d_body_id anchor = make_body(world, I2D_BODY_STATIC, 0.0f, 10.0f);
+    const i2d_body_id anchor = make_box_body(world, I2D_BODY_STATIC, 0.0f, 10.0f);
     i2d_body_id boxes[2];
     i2d_joint_id joints[2];
     const float box_mass = 1.0f; /* density 1 on a 1 m square */
     const float weight = box_mass * 10.0f;
     for (int i = 0; i < 2; ++i) {
-        boxes[i] = make_body(world, I2D_BODY_DYNAMIC, 5.0f * (float)i, 8.0f);
+        boxes[i] = make_box_body(world, I2D_BODY_DYNAMIC, 5.0f * (float)i, 8.0f);
         i2d_revolute_joint_def def = i2d_default_revolute_joint_def();
         def.base.body_a = anchor;
         def.base.body_b = boxes[i];

@@ -34,13 +34,6 @@ typedef struct probe {
     double pr, px, py;
 } probe;
 
-static i2d_vec2 v2(double x, double y) {
-    i2d_vec2 v;
-    v.x = (float)x;
-    v.y = (float)y;
-    return v;
-}
-
 /* Distance from a point to an axis-aligned box (0 inside). */
 static double point_box(double x, double y, double cx, double cy, double hx, double hy) {
     double dx = fabs(x - cx) - hx, dy = fabs(y - cy) - hy;

@@ -7,23 +7,10 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "api_test_support.h"
 #include "check.h"
 
 static const double k_pi = 3.14159265358979323846;
-
-static i2d_vec2 v2(float x, float y) {
-    i2d_vec2 v;
-    v.x = x;
-    v.y = y;
-    return v;
-}
-
-static i2d_aabb box(float min_x, float min_y, float max_x, float max_y) {
-    i2d_aabb b;
-    b.min = v2(min_x, min_y);
-    b.max = v2(max_x, max_y);
-    return b;
-}
 
 /* ---- Hello world ------------------------------------------------------------------ */
 
@@ -790,15 +777,12 @@ static void run_non_turning_bodies(i2d_world_id world) {
     I2D_CHECK(i2d_body_get_angular_velocity(spinner) == -0.5f);
 }
 
-static void cover_turning(void) {
-    i2d_world_def world_def = i2d_default_world_def();
-    world_def.gravity = v2(0.0f, 0.0f);
-    i2d_world_id world = i2d_world_create(&world_def);
-    I2D_REQUIRE(!I2D_IS_NULL(world));
+static void run_turning_bodies(i2d_world_id world) {
     run_turning_body(world);
     run_non_turning_bodies(world);
-    i2d_world_destroy(world);
 }
+
+static void cover_turning(void) { run_in_world(0.0f, run_turning_bodies); }
 
 /* ---- Shapes beyond circles and boxes ------------------------------------------------- */
 
@@ -928,14 +912,7 @@ static void cover_shape_kinds(i2d_world_id world) {
     I2D_CHECK_NEAR(r.normal.y, 0.0, 1e-6);
 }
 
-static void cover_shapes(void) {
-    i2d_world_def world_def = i2d_default_world_def();
-    world_def.gravity = v2(0.0f, 0.0f);
-    i2d_world_id world = i2d_world_create(&world_def);
-    I2D_REQUIRE(!I2D_IS_NULL(world));
-    cover_shape_kinds(world);
-    i2d_world_destroy(world);
-}
+static void cover_shapes(void) { run_in_world(0.0f, cover_shape_kinds); }
 
 /* ---- The pure functions of collision.h for placed shapes ---------------------------- */
 
@@ -1152,13 +1129,7 @@ static void run_mass_rules(i2d_world_id world) {
     }
 }
 
-I2D_TEST(api_world_mass_rules) {
-    i2d_world_def def = i2d_default_world_def();
-    i2d_world_id world = i2d_world_create(&def);
-    I2D_REQUIRE(!I2D_IS_NULL(world));
-    run_mass_rules(world);
-    i2d_world_destroy(world);
-}
+I2D_TEST(api_world_mass_rules) { run_in_default_world(run_mass_rules); }
 
 /* Timing costs nothing until asked for: a world that never read its profile (nor set
  * enable_profile) reports zeros; the first read turns timing on for the next step, and

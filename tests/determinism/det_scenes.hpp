@@ -40,6 +40,9 @@ namespace det {
 constexpr float time_step = 1.0f / 60.0f;
 constexpr int substeps = 4;
 
+// A scene: builds itself in a new world made from the def, or gives the null id.
+using Scene = i2d_world_id (*)(const i2d_world_def&);
+
 inline i2d_body_id add_body(i2d_world_id world, i2d_body_type type, i2d_vec2 position, float angle = 0.0f) {
     i2d_body_def def = i2d_default_body_def();
     def.type = type;
@@ -55,6 +58,21 @@ inline i2d_shape_def material(float friction, float restitution, float rolling =
     def.rolling_resistance = rolling;
     def.tangent_speed = tangent_speed;
     return def;
+}
+
+// A static body at the origin holding a floor 1 m thick and 2 * half_width wide whose top
+// is at y = 0.
+inline i2d_body_id add_ground(i2d_world_id world, const i2d_shape_def& def, float half_width) {
+    const i2d_body_id ground = add_body(world, I2D_BODY_STATIC, i2d_vec2{0, 0});
+    i2d_shape_create_offset_box(ground, &def, half_width, 0.5f, i2d_vec2{0, -0.5f}, i2d_make_rot(0));
+    return ground;
+}
+
+// Walls 1 m thick and 2 * half_height tall standing at the ends of the ground's floor.
+inline void add_walls(i2d_body_id ground, const i2d_shape_def& def, float half_width, float half_height) {
+    const float x = half_width + 0.5f;
+    i2d_shape_create_offset_box(ground, &def, 0.5f, half_height, i2d_vec2{-x, half_height}, i2d_make_rot(0));
+    i2d_shape_create_offset_box(ground, &def, 0.5f, half_height, i2d_vec2{x, half_height}, i2d_make_rot(0));
 }
 
 // One of four shapes, by index.
@@ -86,10 +104,8 @@ inline i2d_world_id mixed_scene(const i2d_world_def& wd) {
         return world;
     }
     const i2d_shape_def ground_material = material(0.6f, 0.0f);
-    const i2d_body_id ground = add_body(world, I2D_BODY_STATIC, i2d_vec2{0, 0});
-    i2d_shape_create_offset_box(ground, &ground_material, 30.0f, 0.5f, i2d_vec2{0, -0.5f}, i2d_make_rot(0));
-    i2d_shape_create_offset_box(ground, &ground_material, 0.5f, 10.0f, i2d_vec2{-30.5f, 10.0f}, i2d_make_rot(0));
-    i2d_shape_create_offset_box(ground, &ground_material, 0.5f, 10.0f, i2d_vec2{30.5f, 10.0f}, i2d_make_rot(0));
+    const i2d_body_id ground = add_ground(world, ground_material, 30.0f);
+    add_walls(ground, ground_material, 30.0f, 10.0f);
     const i2d_shape_def conveyor = material(0.8f, 0.0f, 0.0f, 1.5f);
     i2d_shape_create_offset_box(ground, &conveyor, 4.0f, 0.25f, i2d_vec2{-20.0f, 3.0f}, i2d_make_rot(0.1f));
 
@@ -139,10 +155,7 @@ inline i2d_world_id sleeping_bin(const i2d_world_def& wd) {
         return world;
     }
     const i2d_shape_def wall = material(0.6f, 0.0f);
-    const i2d_body_id ground = add_body(world, I2D_BODY_STATIC, i2d_vec2{0, 0});
-    i2d_shape_create_offset_box(ground, &wall, 12.0f, 0.5f, i2d_vec2{0, -0.5f}, i2d_make_rot(0));
-    i2d_shape_create_offset_box(ground, &wall, 0.5f, 15.0f, i2d_vec2{-12.5f, 15.0f}, i2d_make_rot(0));
-    i2d_shape_create_offset_box(ground, &wall, 0.5f, 15.0f, i2d_vec2{12.5f, 15.0f}, i2d_make_rot(0));
+    add_walls(add_ground(world, wall, 12.0f), wall, 12.0f, 15.0f);
     const i2d_body_id plank = add_body(world, I2D_BODY_DYNAMIC, i2d_vec2{0.0f, 0.2f});
     const i2d_shape_def heavy = material(0.6f, 0.0f);
     i2d_shape_create_box(plank, &heavy, 11.5f, 0.2f);
@@ -282,8 +295,7 @@ inline i2d_world_id hinge_net(const i2d_world_def& wd) {
         return world;
     }
     const i2d_shape_def shape = material(0.6f, 0.0f);
-    const i2d_body_id ground = add_body(world, I2D_BODY_STATIC, i2d_vec2{0, 0});
-    i2d_shape_create_offset_box(ground, &shape, 30.0f, 0.5f, i2d_vec2{0, -0.5f}, i2d_make_rot(0));
+    const i2d_body_id ground = add_ground(world, shape, 30.0f);
     const i2d_body_id bar = add_body(world, I2D_BODY_STATIC, i2d_vec2{0, top + spacing});
     const i2d_body_id carrier = add_body(world, I2D_BODY_KINEMATIC, i2d_vec2{left + spacing * columns, top + spacing});
     i2d_shape_create_box(carrier, &shape, 0.3f, 0.3f);
@@ -349,9 +361,7 @@ inline i2d_world_id ragdoll_heap(const i2d_world_def& wd) {
     if (I2D_IS_NULL(world)) {
         return world;
     }
-    const i2d_shape_def ground_material = material(0.6f, 0.0f);
-    const i2d_body_id ground = add_body(world, I2D_BODY_STATIC, i2d_vec2{0, 0});
-    i2d_shape_create_offset_box(ground, &ground_material, 20.0f, 0.5f, i2d_vec2{0, -0.5f}, i2d_make_rot(0));
+    add_ground(world, material(0.6f, 0.0f), 20.0f);
     for (int i = 0; i < count; ++i) {
         const int layer = i / per_layer, column = i % per_layer;
         // Odd layers shifted by half a spacing, so that ragdolls land across the ones below.

@@ -19,9 +19,7 @@ namespace {
 constexpr int hash_every = 10;
 
 // The world's state hash every hash_every steps, and the awake bodies at the end.
-using Scene = i2d_world_id (*)(const i2d_world_def&);
-
-std::vector<uint64_t> run_scene(Scene scene, int workers, bool own_jobs, int steps, int32_t* awake_at_end,
+std::vector<uint64_t> run_scene(det::Scene scene, int workers, bool own_jobs, int steps, int32_t* awake_at_end,
                                 int* tasks_run = nullptr) {
     std::vector<uint64_t> hashes;
     std::unique_ptr<det::JobSystem> jobs;
@@ -50,7 +48,7 @@ std::vector<uint64_t> run_scene(Scene scene, int workers, bool own_jobs, int ste
     return hashes;
 }
 
-void check_workers(Scene scene, int steps) {
+void check_workers(det::Scene scene, int steps) {
     int32_t awake_one = 0, awake_two = 0, awake_jobs = 0;
     const std::vector<uint64_t> one = run_scene(scene, 1, false, steps, &awake_one);
     const std::vector<uint64_t> two = run_scene(scene, 2, false, steps, &awake_two);

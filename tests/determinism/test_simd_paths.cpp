@@ -20,10 +20,8 @@ using det::time_step;
 constexpr int steps = 500;
 constexpr int hash_every = 50;
 
-using Scene = i2d_world_id (*)(const i2d_world_def&);
-
 // The hashes every hash_every steps, or an empty list when the scene failed.
-std::vector<uint64_t> run(i2d_simd_path path, Scene scene = det::mixed_scene) {
+std::vector<uint64_t> run(i2d_simd_path path, det::Scene scene = det::mixed_scene) {
     std::vector<uint64_t> hashes;
     i2d_world_def wd = i2d_default_world_def();
     wd.simd_path = path;
@@ -48,7 +46,7 @@ std::vector<uint64_t> run(i2d_simd_path path, Scene scene = det::mixed_scene) {
     return hashes;
 }
 
-void check_every_path(Scene scene) {
+void check_every_path(det::Scene scene) {
     const std::vector<uint64_t> scalar = run(I2D_SIMD_SCALAR, scene);
     I2D_REQUIRE(scalar.size() == steps / hash_every);
     const i2d_simd_path paths[] = {I2D_SIMD_SSE2, I2D_SIMD_AVX2, I2D_SIMD_AVX512, I2D_SIMD_NEON, I2D_SIMD_AUTOMATIC};

@@ -105,8 +105,7 @@ void hash_step_events(uint64_t& hash, i2d_world_id world) {
 }
 
 // Steps the bin (or another scene) `steps` steps, or until it sleeps when until_asleep.
-BinRun run_bin(const WorkerSetup& setup, int steps, bool until_asleep,
-               i2d_world_id (*build)(const i2d_world_def&) = det::sleeping_bin) {
+BinRun run_bin(const WorkerSetup& setup, int steps, bool until_asleep, det::Scene build = det::sleeping_bin) {
     BinRun result;
     std::unique_ptr<JobSystem> jobs;
     i2d_world_def def = i2d_default_world_def();
@@ -149,8 +148,7 @@ int first_difference(const BinRun& a, const BinRun& b) {
 }
 
 // Runs the scene with 1 worker and with the first setup_count setups (all by default).
-void check_setups_agree(int steps, bool until_asleep,
-                        i2d_world_id (*build)(const i2d_world_def&) = det::sleeping_bin,
+void check_setups_agree(int steps, bool until_asleep, det::Scene build = det::sleeping_bin,
                         std::size_t setup_count = sizeof setups / sizeof setups[0]) {
     const BinRun expected = run_bin(reference, steps, until_asleep, build);
     I2D_REQUIRE(!expected.hashes.empty());

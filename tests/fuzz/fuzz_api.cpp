@@ -21,6 +21,7 @@
 #include <cstdlib>
 #include <cstring>
 
+#include "../api/any_joint_def.h"
 #include "fuzz_input.hpp"
 #include "raw_enum_calls.h"
 
@@ -93,46 +94,33 @@ void fail(const char* what, double a, double b) {
 
 // ---- Picking ids: held ones (live or stale), null, random bits, or another kind's ----
 
-i2d_world_id pick_world(FuzzInput& in) {
+// One byte decides: below held_below a held id, below 230 the null id, below 245 the bits
+// of a held id of another kind (foreign), else random bits.
+template <class Id, class Foreign>
+Id pick_id(FuzzInput& in, const Id* held, int held_count, int held_below, const Foreign* foreign, int foreign_count) {
     const uint8_t k = in.byte();
-    if (k < 200 && g_held->world_count > 0) {
-        return g_held->worlds[k % g_held->world_count];
+    if (k < held_below && held_count > 0) {
+        return held[k % held_count];
     }
     if (k < 230) {
-        return I2D_NULL_WORLD_ID;
+        return Id{0};
     }
-    if (k < 245 && g_held->body_count > 0) {
-        return i2d_world_id{g_held->bodies[k % g_held->body_count].bits};  // foreign kind
+    if (k < 245 && foreign_count > 0) {
+        return Id{foreign[k % foreign_count].bits};
     }
-    return i2d_world_id{in.u64()};
+    return Id{in.u64()};
+}
+
+i2d_world_id pick_world(FuzzInput& in) {
+    return pick_id(in, g_held->worlds, g_held->world_count, 200, g_held->bodies, g_held->body_count);
 }
 
 i2d_body_id pick_body(FuzzInput& in) {
-    const uint8_t k = in.byte();
-    if (k < 210 && g_held->body_count > 0) {
-        return g_held->bodies[k % g_held->body_count];
-    }
-    if (k < 230) {
-        return I2D_NULL_BODY_ID;
-    }
-    if (k < 245 && g_held->shape_count > 0) {
-        return i2d_body_id{g_held->shapes[k % g_held->shape_count].bits};
-    }
-    return i2d_body_id{in.u64()};
+    return pick_id(in, g_held->bodies, g_held->body_count, 210, g_held->shapes, g_held->shape_count);
 }
 
 i2d_shape_id pick_shape(FuzzInput& in) {
-    const uint8_t k = in.byte();
-    if (k < 210 && g_held->shape_count > 0) {
-        return g_held->shapes[k % g_held->shape_count];
-    }
-    if (k < 230) {
-        return I2D_NULL_SHAPE_ID;
-    }
-    if (k < 245 && g_held->world_count > 0) {
-        return i2d_shape_id{g_held->worlds[k % g_held->world_count].bits};
-    }
-    return i2d_shape_id{in.u64()};
+    return pick_id(in, g_held->shapes, g_held->shape_count, 210, g_held->worlds, g_held->world_count);
 }
 
 // New ids replace old ones round robin once the table is full: the old stays stale.
@@ -421,17 +409,7 @@ i2d_transform transform(FuzzInput& in) {
 }
 
 i2d_joint_id pick_joint(FuzzInput& in) {
-    const uint8_t k = in.byte();
-    if (k < 210 && g_held->joint_count > 0) {
-        return g_held->joints[k % g_held->joint_count];
-    }
-    if (k < 230) {
-        return I2D_NULL_JOINT_ID;
-    }
-    if (k < 245 && g_held->body_count > 0) {
-        return i2d_joint_id{g_held->bodies[k % g_held->body_count].bits};  // foreign kind
-    }
-    return i2d_joint_id{in.u64()};
+    return pick_id(in, g_held->joints, g_held->joint_count, 210, g_held->bodies, g_held->body_count);
 }
 
 // ---- Callbacks that call back in -----------------------------------------------------
@@ -767,76 +745,10 @@ i2d_query_filter query_filter(FuzzInput& in) {
 
 // ---- Joints --------------------------------------------------------------------------
 
-// Any kind's def, with the shared base first (so at the union's address).
-union AnyJointDef {
-    i2d_distance_joint_def distance;
-    i2d_filter_joint_def filter;
-    i2d_motor_joint_def motor;
-    i2d_mouse_joint_def mouse;
-    i2d_prismatic_joint_def prismatic;
-    i2d_revolute_joint_def revolute;
-    i2d_weld_joint_def weld;
-    i2d_wheel_joint_def wheel;
-};
-
-constexpr int joint_kind_count = 8;
-
-// Where each kind's float settings are, so that a def's floats can be set to anything
-// (its bools are set only to true or false: a C caller cannot store more in a bool).
-struct JointFloat {
-    int kind;
-    size_t offset;
-};
-
-#define I2D_JOINT_FLOAT(KIND, type, field) JointFloat{int(KIND), offsetof(type, field)}
-const JointFloat joint_floats[] = {
-    I2D_JOINT_FLOAT(I2D_JOINT_DISTANCE, i2d_distance_joint_def, length),
-    I2D_JOINT_FLOAT(I2D_JOINT_DISTANCE, i2d_distance_joint_def, min_length),
-    I2D_JOINT_FLOAT(I2D_JOINT_DISTANCE, i2d_distance_joint_def, max_length),
-    I2D_JOINT_FLOAT(I2D_JOINT_DISTANCE, i2d_distance_joint_def, hertz),
-    I2D_JOINT_FLOAT(I2D_JOINT_DISTANCE, i2d_distance_joint_def, damping_ratio),
-    I2D_JOINT_FLOAT(I2D_JOINT_DISTANCE, i2d_distance_joint_def, motor_speed),
-    I2D_JOINT_FLOAT(I2D_JOINT_DISTANCE, i2d_distance_joint_def, max_motor_force),
-    I2D_JOINT_FLOAT(I2D_JOINT_MOTOR, i2d_motor_joint_def, linear_offset.x),
-    I2D_JOINT_FLOAT(I2D_JOINT_MOTOR, i2d_motor_joint_def, angular_offset),
-    I2D_JOINT_FLOAT(I2D_JOINT_MOTOR, i2d_motor_joint_def, max_force),
-    I2D_JOINT_FLOAT(I2D_JOINT_MOTOR, i2d_motor_joint_def, max_torque),
-    I2D_JOINT_FLOAT(I2D_JOINT_MOTOR, i2d_motor_joint_def, correction_factor),
-    I2D_JOINT_FLOAT(I2D_JOINT_MOUSE, i2d_mouse_joint_def, target.y),
-    I2D_JOINT_FLOAT(I2D_JOINT_MOUSE, i2d_mouse_joint_def, hertz),
-    I2D_JOINT_FLOAT(I2D_JOINT_MOUSE, i2d_mouse_joint_def, damping_ratio),
-    I2D_JOINT_FLOAT(I2D_JOINT_MOUSE, i2d_mouse_joint_def, max_force),
-    I2D_JOINT_FLOAT(I2D_JOINT_PRISMATIC, i2d_prismatic_joint_def, local_axis_a.x),
-    I2D_JOINT_FLOAT(I2D_JOINT_PRISMATIC, i2d_prismatic_joint_def, reference_angle),
-    I2D_JOINT_FLOAT(I2D_JOINT_PRISMATIC, i2d_prismatic_joint_def, lower_translation),
-    I2D_JOINT_FLOAT(I2D_JOINT_PRISMATIC, i2d_prismatic_joint_def, upper_translation),
-    I2D_JOINT_FLOAT(I2D_JOINT_PRISMATIC, i2d_prismatic_joint_def, motor_speed),
-    I2D_JOINT_FLOAT(I2D_JOINT_PRISMATIC, i2d_prismatic_joint_def, max_motor_force),
-    I2D_JOINT_FLOAT(I2D_JOINT_PRISMATIC, i2d_prismatic_joint_def, hertz),
-    I2D_JOINT_FLOAT(I2D_JOINT_PRISMATIC, i2d_prismatic_joint_def, target_translation),
-    I2D_JOINT_FLOAT(I2D_JOINT_REVOLUTE, i2d_revolute_joint_def, reference_angle),
-    I2D_JOINT_FLOAT(I2D_JOINT_REVOLUTE, i2d_revolute_joint_def, lower_angle),
-    I2D_JOINT_FLOAT(I2D_JOINT_REVOLUTE, i2d_revolute_joint_def, upper_angle),
-    I2D_JOINT_FLOAT(I2D_JOINT_REVOLUTE, i2d_revolute_joint_def, motor_speed),
-    I2D_JOINT_FLOAT(I2D_JOINT_REVOLUTE, i2d_revolute_joint_def, max_motor_torque),
-    I2D_JOINT_FLOAT(I2D_JOINT_REVOLUTE, i2d_revolute_joint_def, hertz),
-    I2D_JOINT_FLOAT(I2D_JOINT_REVOLUTE, i2d_revolute_joint_def, damping_ratio),
-    I2D_JOINT_FLOAT(I2D_JOINT_REVOLUTE, i2d_revolute_joint_def, target_angle),
-    I2D_JOINT_FLOAT(I2D_JOINT_WELD, i2d_weld_joint_def, reference_angle),
-    I2D_JOINT_FLOAT(I2D_JOINT_WELD, i2d_weld_joint_def, linear_hertz),
-    I2D_JOINT_FLOAT(I2D_JOINT_WELD, i2d_weld_joint_def, angular_hertz),
-    I2D_JOINT_FLOAT(I2D_JOINT_WELD, i2d_weld_joint_def, linear_damping_ratio),
-    I2D_JOINT_FLOAT(I2D_JOINT_WELD, i2d_weld_joint_def, angular_damping_ratio),
-    I2D_JOINT_FLOAT(I2D_JOINT_WHEEL, i2d_wheel_joint_def, local_axis_a.y),
-    I2D_JOINT_FLOAT(I2D_JOINT_WHEEL, i2d_wheel_joint_def, hertz),
-    I2D_JOINT_FLOAT(I2D_JOINT_WHEEL, i2d_wheel_joint_def, damping_ratio),
-    I2D_JOINT_FLOAT(I2D_JOINT_WHEEL, i2d_wheel_joint_def, lower_translation),
-    I2D_JOINT_FLOAT(I2D_JOINT_WHEEL, i2d_wheel_joint_def, upper_translation),
-    I2D_JOINT_FLOAT(I2D_JOINT_WHEEL, i2d_wheel_joint_def, motor_speed),
-    I2D_JOINT_FLOAT(I2D_JOINT_WHEEL, i2d_wheel_joint_def, max_motor_torque),
-};
-#undef I2D_JOINT_FLOAT
-constexpr int joint_float_count = int(sizeof joint_floats / sizeof joint_floats[0]);
+// Any kind's def (any_def), its defaults, cookie and create call, and where each kind's
+// float settings are (k_def_floats, which create_joint sets to anything; bools it sets
+// only to true or false, all a C caller can store in a bool) come from
+// ../api/any_joint_def.h, shared with the C API's joint tests.
 
 // The settings' setters, each taking a real.
 using JointFloatSetter = i2d_status (*)(i2d_joint_id, float);
@@ -885,58 +797,22 @@ constexpr int count_of(const T (&)[N]) {
 
 i2d_joint_id create_joint(FuzzInput& in) {
     const i2d_world_id w = pick_world(in);
-    const int kind = in.byte() % joint_kind_count;
-    AnyJointDef def;
-    std::memset(&def, 0, sizeof def);
-    uint32_t* cookie = nullptr;
-    switch (kind) {
-        case I2D_JOINT_DISTANCE:
-            def.distance = i2d_default_distance_joint_def();
-            cookie = &def.distance.internal_cookie;
-            break;
-        case I2D_JOINT_FILTER:
-            def.filter = i2d_default_filter_joint_def();
-            cookie = &def.filter.internal_cookie;
-            break;
-        case I2D_JOINT_MOTOR:
-            def.motor = i2d_default_motor_joint_def();
-            cookie = &def.motor.internal_cookie;
-            break;
-        case I2D_JOINT_MOUSE:
-            def.mouse = i2d_default_mouse_joint_def();
-            cookie = &def.mouse.internal_cookie;
-            break;
-        case I2D_JOINT_PRISMATIC:
-            def.prismatic = i2d_default_prismatic_joint_def();
-            cookie = &def.prismatic.internal_cookie;
-            break;
-        case I2D_JOINT_REVOLUTE:
-            def.revolute = i2d_default_revolute_joint_def();
-            cookie = &def.revolute.internal_cookie;
-            break;
-        case I2D_JOINT_WELD:
-            def.weld = i2d_default_weld_joint_def();
-            cookie = &def.weld.internal_cookie;
-            break;
-        default:
-            def.wheel = i2d_default_wheel_joint_def();
-            cookie = &def.wheel.internal_cookie;
-            break;
-    }
-    i2d_joint_base& base = def.revolute.base;
-    base.body_a = pick_body(in);
-    base.body_b = pick_body(in);
+    const i2d_joint_type kind = i2d_joint_type(in.byte() % JOINT_KIND_COUNT);
+    const i2d_body_id body_a = pick_body(in);
+    const i2d_body_id body_b = pick_body(in);
+    any_def def = default_def(kind, body_a, body_b);
+    i2d_joint_base& base = *base_of(&def);
     for (int edits = in.count(4); edits > 0; --edits) {
         switch (in.byte() % 6) {
             case 0: base.local_anchor_a = in.small_vec2(); base.local_anchor_b = in.small_vec2(); break;
             case 1: base.collide_connected = in.flag(); break;
             case 2: base.force_threshold = in.real(); base.torque_threshold = in.real(); break;
-            case 3: *cookie = in.u32(); break;
+            case 3: *cookie_of(&def, kind) = in.u32(); break;
             default: {
-                const JointFloat& f = joint_floats[in.byte() % joint_float_count];
+                // Any float of the kind's settings, to anything.
+                const def_float& f = k_def_floats[in.byte() % DEF_FLOAT_COUNT];
                 if (f.kind == kind) {
-                    const float v = in.real();
-                    std::memcpy(reinterpret_cast<char*>(&def) + f.offset, &v, sizeof v);
+                    set_def_float(&def, f.offset, in.real());
                 }
                 break;
             }
@@ -950,20 +826,11 @@ i2d_joint_id create_joint(FuzzInput& in) {
             a = g_held->bodies[i].bits == held_a.bits ? i : a;
             b = g_held->bodies[i].bits == held_b.bits ? i : b;
         }
-        std::fprintf(stderr, "  joint def: kind %d bodies %d %d anchors (%g, %g) (%g, %g) collide %d null %d\n", kind, a,
-                     b, base.local_anchor_a.x, base.local_anchor_a.y, base.local_anchor_b.x, base.local_anchor_b.y,
-                     int(base.collide_connected), int(null_def));
+        std::fprintf(stderr, "  joint def: kind %d bodies %d %d anchors (%g, %g) (%g, %g) collide %d null %d\n",
+                     int(kind), a, b, base.local_anchor_a.x, base.local_anchor_a.y, base.local_anchor_b.x,
+                     base.local_anchor_b.y, int(base.collide_connected), int(null_def));
     }
-    switch (kind) {
-        case I2D_JOINT_DISTANCE: return i2d_joint_create_distance(w, null_def ? nullptr : &def.distance);
-        case I2D_JOINT_FILTER: return i2d_joint_create_filter(w, null_def ? nullptr : &def.filter);
-        case I2D_JOINT_MOTOR: return i2d_joint_create_motor(w, null_def ? nullptr : &def.motor);
-        case I2D_JOINT_MOUSE: return i2d_joint_create_mouse(w, null_def ? nullptr : &def.mouse);
-        case I2D_JOINT_PRISMATIC: return i2d_joint_create_prismatic(w, null_def ? nullptr : &def.prismatic);
-        case I2D_JOINT_REVOLUTE: return i2d_joint_create_revolute(w, null_def ? nullptr : &def.revolute);
-        case I2D_JOINT_WELD: return i2d_joint_create_weld(w, null_def ? nullptr : &def.weld);
-        default: return i2d_joint_create_wheel(w, null_def ? nullptr : &def.wheel);
-    }
+    return create_any(w, kind, null_def ? nullptr : &def);
 }
 
 // Reads what a joint reports; on a live joint of a world of finite bodies every number
