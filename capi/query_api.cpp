@@ -4,46 +4,12 @@
 #include <vector>
 
 #include "boundary.hpp"
-#include "geometry_checks.hpp"
 #include "convert.hpp"
+#include "geometry_checks.hpp"
+#include "query_adapters.hpp"
 
 using namespace i2d;
 using namespace i2d::capi;
-
-namespace {
-
-// Turns the core's shape indices into public ids for a user callback.
-struct CallbackAdapter {
-    const World* world;
-    IdFields world_id;
-    i2d_overlap_fn* fn;
-    void* context;
-
-    static bool visit(int32_t shape, void* self) {
-        const auto* a = static_cast<const CallbackAdapter*>(self);
-        return a->fn(make_shape_id(a->world_id, shape, a->world->shapes().generation(shape)), a->context);
-    }
-};
-
-// Fills a caller's array and counts everything found.
-struct IdCollector {
-    const World* world;
-    IdFields world_id;
-    i2d_shape_id* out;
-    int32_t capacity;
-    int32_t total;
-
-    static bool visit(int32_t shape, void* self) {
-        auto* c = static_cast<IdCollector*>(self);
-        if (c->total < c->capacity) {
-            c->out[c->total] = make_shape_id(c->world_id, shape, c->world->shapes().generation(shape));
-        }
-        ++c->total;
-        return true;
-    }
-};
-
-}  // namespace
 
 I2D_API i2d_status i2d_world_overlap_aabb(i2d_world_id world, i2d_aabb aabb, i2d_query_filter filter,
                                           i2d_overlap_fn* fn, void* context) {
@@ -52,8 +18,8 @@ I2D_API i2d_status i2d_world_overlap_aabb(i2d_world_id world, i2d_aabb aabb, i2d
         if (!call.world(world, w) || !valid_aabb(call, aabb, "aabb") || !call.not_null(reinterpret_cast<void*>(fn), "fn")) {
             return last_status();
         }
-        CallbackAdapter adapter{w.world, w.id, fn, context};
-        w.world->overlap_aabb(capi::to_core(aabb), capi::to_core(filter), &CallbackAdapter::visit, &adapter);
+        OverlapAdapter adapter{w.world, w.id, fn, context};
+        w.world->overlap_aabb(capi::to_core(aabb), capi::to_core(filter), &OverlapAdapter::visit, &adapter);
         set_ok();  // the callbacks may have made calls of their own
         return I2D_OK;
     });
@@ -67,8 +33,8 @@ I2D_API i2d_status i2d_world_overlap_point(i2d_world_id world, i2d_vec2 point, i
             !call.not_null(reinterpret_cast<void*>(fn), "fn")) {
             return last_status();
         }
-        CallbackAdapter adapter{w.world, w.id, fn, context};
-        w.world->overlap_point(capi::to_core(point), capi::to_core(filter), &CallbackAdapter::visit, &adapter);
+        OverlapAdapter adapter{w.world, w.id, fn, context};
+        w.world->overlap_point(capi::to_core(point), capi::to_core(filter), &OverlapAdapter::visit, &adapter);
         set_ok();
         return I2D_OK;
     });
@@ -91,23 +57,6 @@ I2D_API int32_t i2d_world_overlap_aabb_ids(i2d_world_id world, i2d_aabb aabb, i2
     });
 }
 
-namespace {
-
-struct RayAdapter {
-    const World* world;
-    IdFields world_id;
-    i2d_cast_result_fn* fn;
-    void* context;
-
-    static float visit(int32_t shape, Vec2 point, Vec2 normal, float fraction, void* self) {
-        const auto* a = static_cast<const RayAdapter*>(self);
-        return a->fn(make_shape_id(a->world_id, shape, a->world->shapes().generation(shape)), to_public(point),
-                     to_public(normal), fraction, a->context);
-    }
-};
-
-}  // namespace
-
 I2D_API i2d_status i2d_world_cast_ray(i2d_world_id world, i2d_vec2 origin, i2d_vec2 translation,
                                       i2d_query_filter filter, i2d_cast_result_fn* fn, void* context) {
     return guarded("i2d_world_cast_ray", I2D_ERR_OUT_OF_MEMORY, [&](Call& call) {
@@ -116,9 +65,9 @@ I2D_API i2d_status i2d_world_cast_ray(i2d_world_id world, i2d_vec2 origin, i2d_v
             !call.coordinate(translation, "translation") || !call.not_null(reinterpret_cast<void*>(fn), "fn")) {
             return last_status();
         }
-        RayAdapter adapter{w.world, w.id, fn, context};
+        CastAdapter adapter{w.world, w.id, fn, context};
         w.world->cast_ray(capi::to_core(origin), capi::to_core(translation), capi::to_core(filter),
-                          &RayAdapter::visit, &adapter);
+                          &CastAdapter::visit, &adapter);
         set_ok();  // the callbacks may have made calls of their own
         return I2D_OK;
     });

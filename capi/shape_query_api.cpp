@@ -5,8 +5,9 @@
 
 #include "boundary.hpp"
 #include "convert.hpp"
-#include "limits.hpp"
 #include "geometry_checks.hpp"
+#include "limits.hpp"
+#include "query_adapters.hpp"
 
 using namespace i2d;
 using namespace i2d::capi;
@@ -61,48 +62,6 @@ bool valid_ids_out(Call& call, const i2d_shape_id* out, int32_t capacity) {
     }
     return true;
 }
-
-struct CastAdapter {
-    const World* world;
-    IdFields world_id;
-    i2d_cast_result_fn* fn;
-    void* context;
-
-    static float visit(int32_t shape, Vec2 point, Vec2 normal, float fraction, void* self) {
-        const auto* a = static_cast<const CastAdapter*>(self);
-        return a->fn(make_shape_id(a->world_id, shape, a->world->shapes().generation(shape)), to_public(point),
-                     to_public(normal), fraction, a->context);
-    }
-};
-
-struct OverlapAdapter {
-    const World* world;
-    IdFields world_id;
-    i2d_overlap_fn* fn;
-    void* context;
-
-    static bool visit(int32_t shape, void* self) {
-        const auto* a = static_cast<const OverlapAdapter*>(self);
-        return a->fn(make_shape_id(a->world_id, shape, a->world->shapes().generation(shape)), a->context);
-    }
-};
-
-struct IdFiller {
-    const World* world;
-    IdFields world_id;
-    i2d_shape_id* out;
-    int32_t capacity;
-    int32_t total;
-
-    static bool visit(int32_t shape, void* self) {
-        auto* f = static_cast<IdFiller*>(self);
-        if (f->total < f->capacity) {
-            f->out[f->total] = make_shape_id(f->world_id, shape, f->world->shapes().generation(shape));
-        }
-        ++f->total;
-        return true;
-    }
-};
 
 }  // namespace
 
@@ -187,8 +146,8 @@ I2D_API int32_t i2d_world_overlap_shape_ids(i2d_world_id world, const i2d_shape_
         if (!call.world(world, w) || !core_proxy(call, proxy, core) || !valid_ids_out(call, out, capacity)) {
             return -1;
         }
-        IdFiller filler{w.world, w.id, out, capacity, 0};
-        w.world->overlap_shape(core, to_core(filter), &IdFiller::visit, &filler);
-        return filler.total;
+        IdCollector collector{w.world, w.id, out, capacity, 0};
+        w.world->overlap_shape(core, to_core(filter), &IdCollector::visit, &collector);
+        return collector.total;
     });
 }
