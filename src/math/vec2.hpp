@@ -95,6 +95,8 @@ inline bool overlaps(const AABB& a, const AABB& b) {
     // Closed intervals: touching boxes overlap, as touching shapes are in contact.
     return !(a.upper.x < b.lower.x || b.upper.x < a.lower.x || a.upper.y < b.lower.y || b.upper.y < a.lower.y);
 }
+/// 2D's surface area: what the cost of a box in a tree query grows with.
+inline float perimeter(const AABB& a) { return 2.0f * ((a.upper.x - a.lower.x) + (a.upper.y - a.lower.y)); }
 /// Whether inner lies within outer (boundary included).
 inline bool contains(const AABB& outer, const AABB& inner) {
     return outer.lower.x <= inner.lower.x && outer.lower.y <= inner.lower.y && inner.upper.x <= outer.upper.x &&
