@@ -29,14 +29,14 @@ bool ContactSet::may_pair(int32_t shape_a, int32_t shape_b) const {
 template <bool SelfSearch>
 void ContactSet::pair_range(const StepContext&, ContactSet& self, const PairStage& arg, int32_t begin, int32_t end,
                             int32_t) {
-    std::vector<ShapePairCandidate>& out = self.block_pairs_[arg.list][std::size_t(begin / arg.items_per_block)];
+    std::vector<ShapePairCandidate>& out = self.search_.block_pairs[arg.list][std::size_t(begin / arg.items_per_block)];
     out.clear();
     const auto accept = [&self](int32_t a, int32_t b) { return self.may_pair(a, b); };
     const auto ahead = [&self](int32_t a, int32_t b) { self.pair_set_.prefetch(pair_key(a, b)); };
     if constexpr (SelfSearch) {
-        self.querying_->self_pairs(begin, end, accept, out, ahead);
+        self.search_.broad_phase->self_pairs(begin, end, accept, out, ahead);
     } else {
-        self.querying_->query_pairs(begin, end, accept, out, ahead);
+        self.search_.broad_phase->query_pairs(begin, end, accept, out, ahead);
     }
 }
 
@@ -61,29 +61,29 @@ void ContactSet::find_new_contacts(const StepContext& step, BroadPhase& broad_ph
         Stage& stage = stages_[std::size_t(s)];
         stage.set_arg(PairStage{s, stage.items_per_block});
         const std::size_t blocks = std::size_t(stage.block_count());
-        if (block_pairs_[s].size() < blocks) {
-            block_pairs_[s].resize(blocks);
+        if (search_.block_pairs[s].size() < blocks) {
+            search_.block_pairs[s].resize(blocks);
         }
     }
-    querying_ = &broad_phase;
+    search_.broad_phase = &broad_phase;
     runner_.run(tasks_, stages_, parallel, &step);
-    querying_ = nullptr;
+    search_.broad_phase = nullptr;
     broad_phase.end_pair_queries();
     for (int32_t s = 0; s < 2; ++s) {
-        new_pairs_.clear();
+        search_.pairs.clear();
         const Stage& stage = stages_[std::size_t(s)];
         for (int32_t b = 0; b < (stage.item_count > 0 ? stage.block_count() : 0); ++b) {
-            const std::vector<ShapePairCandidate>& found = block_pairs_[s][std::size_t(b)];
-            new_pairs_.insert(new_pairs_.end(), found.begin(), found.end());
+            const std::vector<ShapePairCandidate>& found = search_.block_pairs[s][std::size_t(b)];
+            search_.pairs.insert(search_.pairs.end(), found.begin(), found.end());
         }
         if (s == 0) {
-            radix_sort(new_pairs_, new_pairs_scratch_, [&](const ShapePairCandidate& p) {
+            radix_sort(search_.pairs, search_.sort_scratch, [&](const ShapePairCandidate& p) {
                 const uint32_t a = broad_phase.storage_order_of(shapes_[p.shape_a].proxy_key);
                 const uint32_t b = broad_phase.storage_order_of(shapes_[p.shape_b].proxy_key);
                 return a < b ? a : b;
             });
         }
-        for (const ShapePairCandidate& pair : new_pairs_) {
+        for (const ShapePairCandidate& pair : search_.pairs) {
             create_contact(pair.shape_a, pair.shape_b, wake);
         }
     }

@@ -175,8 +175,16 @@ private:
     std::vector<int32_t> solvable_;
     uint64_t layout_version_ = 0;
     std::vector<LinkChange> link_changes_;
+    // The pair search's scratch, kept so that a steady state allocates nothing: new pairs
+    // per block of each stage ([0] the self search, [1] the queries), then all of one
+    // stage's in order, and the broadphase being searched while the queries run.
+    struct PairSearch {
+        std::vector<std::vector<ShapePairCandidate>> block_pairs[2];
+        std::vector<ShapePairCandidate> pairs, sort_scratch;
+        BroadPhase* broad_phase = nullptr;
+    };
+    PairSearch search_;
     // Step scratch, kept so that a steady state allocates nothing.
-    std::vector<ShapePairCandidate> new_pairs_, new_pairs_scratch_;
     std::vector<int32_t> islands_to_wake_;
     std::vector<int32_t> point_changes_;  // contacts that gained or lost all their points
     // Per awake contact, what its update found for the islands (CollideFlags), and at
@@ -184,9 +192,6 @@ private:
     enum CollideFlags : uint8_t { layout_changed = 1, points_changed = 2, wakes_a = 4, wakes_b = 8, has_points = 16 };
     enum EndFlags : uint8_t { ends = 1, reports = 2, hits = 4 };
     std::vector<uint8_t> collide_flags_;
-    // New pairs per block of each pair-finding stage: [0] the self search, [1] the queries.
-    std::vector<std::vector<ShapePairCandidate>> block_pairs_[2];
-    BroadPhase* querying_ = nullptr;  // while the pair queries run
     std::vector<Stage> stages_;
     StageRunner runner_;
 };
