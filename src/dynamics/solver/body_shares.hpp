@@ -7,7 +7,7 @@
 // is moved by another in the next. Split evenly, each colour's share began at a different
 // body, and 2 workers handed over 12,400 body states a step in large_pyramid, 8,100 in
 // many_pyramids and 168,000 in the spinner (whose body stages and colours split at
-// unrelated places). Cut once, with a contact going to the region of the lowest body it
+// unrelated places). Cut once, with a contact going to the share of the lowest body it
 // moves, mostly the bodies that contacts across a cut reach are handed over: 3,500, 1,500
 // and 13,000 (counted from the stages' shares at step 20). On a virtual machine whose
 // cores trade a cache line in 120 to 480 ns, each hand-over costs far more than the

@@ -39,7 +39,7 @@ struct BodyMoveEvent {
     bool fell_asleep;
 };
 
-/// A body frozen because its state stopped being finite (world.cpp, quarantine).
+/// A body frozen because its state stopped being finite (world_step.cpp, quarantine).
 struct BodyQuarantineEvent {
     Transform transform;
     uint64_t body;
