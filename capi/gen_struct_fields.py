@@ -244,7 +244,7 @@ def main(argv=None):
                                     args.output + " (committed)", args.output + " (from the headers)")
         sys.stdout.writelines(diff)
         print("\n%s is out of date with the public headers. Regenerate it and commit the result:\n"
-              "    python3 %s" % (args.output, os.path.relpath(os.path.abspath(__file__), os.getcwd())))
+              "    python3 %s" % (args.output, os.path.abspath(__file__)))
         return 1
     if current != text:
         with open(args.output, "w", encoding="utf-8", newline="\n") as f:

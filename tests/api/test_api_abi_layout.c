@@ -130,13 +130,28 @@ I2D_TEST(api_abi_struct_layout) {
     I2D_REQUIRE(structs != NULL && fields != NULL && struct_count > 0 && field_count > 0);
     char line[512], old[512];
 
+    /* The whole layout first, as the record spells it; the problems after it. */
+    for (int32_t i = 0; i < struct_count; ++i) {
+        struct_line(line, sizeof line, &structs[i]);
+        printf("%s\n", line);
+    }
+    for (int32_t i = 0; i < field_count; ++i) {
+        field_line(line, sizeof line, &fields[i]);
+        printf("%s\n", line);
+    }
+    for (int32_t i = 0; i < COUNT_OF(recorded_types); ++i) {
+        if (!recorded_types[i].described) {
+            printf("TYPE(%s, %zu, %zu)\n", recorded_types[i].name, recorded_types[i].c_size, recorded_types[i].c_align);
+        }
+    }
+    fflush(stdout);
+
     /* Every struct the library describes is recorded, with its size and alignment; the
      * library agrees with this C compiler. */
     for (int32_t i = 0; i < struct_count; ++i) {
         const i2d_struct_info* s = &structs[i];
         const recorded_type* r = find_type(s->name);
         struct_line(line, sizeof line, s);
-        printf("%s\n", line);
         if (r == NULL) {
             fail();
             fprintf(stderr, "%s lacks the struct %s; add the line\n    %s\n", RECORD, s->name, line);
@@ -160,7 +175,6 @@ I2D_TEST(api_abi_struct_layout) {
         const i2d_field_info* f = &fields[i];
         const recorded_field* r = find_field(f->struct_name, f->field_name);
         field_line(line, sizeof line, f);
-        printf("%s\n", line);
         if (r == NULL) {
             fail();
             fprintf(stderr, "%s lacks the field %s.%s; add the line\n    %s\n", RECORD, f->struct_name, f->field_name,
@@ -206,7 +220,6 @@ I2D_TEST(api_abi_struct_layout) {
     for (int32_t i = 0; i < COUNT_OF(recorded_types); ++i) {
         const recorded_type* r = &recorded_types[i];
         if (r->described) continue;
-        printf("TYPE(%s, %zu, %zu)\n", r->name, r->c_size, r->c_align);
         if (RECORDED_PLATFORM && ((size_t)r->size != r->c_size || (size_t)r->align != r->c_align)) {
             fail();
             fprintf(stderr, "%s:%d records TYPE(%s, %d, %d); this C compiler has size %zu, alignment %zu\n", RECORD,
