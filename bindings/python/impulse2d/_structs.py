@@ -87,12 +87,12 @@ class Structs:
     def __init__(self, classes: Dict[str, type], description: _layout.Description) -> None:
         self.by_c_name = classes
         self.description = description
-        for c_name, cls in classes.items():
+        for cls in classes.values():
             setattr(self, cls.__name__, cls)
         self.JOINT_DEFS = {kind: classes["i2d_%s_joint_def" % kind] for kind in JOINT_KINDS}
         self.MAX_POLYGON_VERTICES = next(f.count for f in description["i2d_polygon"].fields if f.name == "vertices")
 
-    def __getattr__(self, name: str) -> Any:  # for the type checker: the attributes are set above
+    def __getattr__(self, name: str) -> Any:  # only for names not set above
         raise AttributeError("the library describes no struct the package calls %s" % name)
 
 
