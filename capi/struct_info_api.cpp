@@ -1,68 +1,104 @@
 // SPDX-License-Identifier: MIT
-// i2d_get_struct_infos: the size and alignment of every public struct, so that a binding
-// that declares the structs itself can check them against the library it loaded.
+// i2d_get_struct_infos and i2d_get_field_infos: the size and alignment of every public
+// struct and the offset, size and kind of every member, so that a binding can lay its
+// structs out from the library it loaded (or check its own against it).
+//
+// Both tables come from struct_fields.inc, generated from the public headers by
+// gen_struct_fields.py (CTest's tools.struct_fields_current fails when it is stale): the
+// script gives the names, kinds and C types, the compiler the offsets and sizes, and
+// the static_asserts below check every kind and type the script wrote against the
+// member's real type, so a row the script misread does not compile.
+#include <cstddef>
+#include <type_traits>
+
 #include "boundary.hpp"
 
 namespace {
 
-#define I2D_STRUCT_INFO(type) \
-    i2d_struct_info { #type, static_cast<int32_t>(sizeof(type)), static_cast<int32_t>(alignof(type)) }
+// The kind a binding reads an element of type T as; 0 for a type no kind describes.
+template <typename T>
+constexpr int kind_of() {
+    if constexpr (std::is_same_v<T, bool>) {
+        return I2D_FIELD_BOOL;
+    } else if constexpr (std::is_floating_point_v<T>) {
+        return sizeof(T) == 4 ? I2D_FIELD_FLOAT : sizeof(T) == 8 ? I2D_FIELD_DOUBLE : 0;
+    } else if constexpr (std::is_integral_v<T>) {
+        constexpr bool is_signed = std::is_signed_v<T>;
+        switch (sizeof(T)) {
+            case 1: return is_signed ? I2D_FIELD_INT8 : I2D_FIELD_UINT8;
+            case 2: return is_signed ? I2D_FIELD_INT16 : I2D_FIELD_UINT16;
+            case 4: return is_signed ? I2D_FIELD_INT32 : I2D_FIELD_UINT32;
+            case 8: return is_signed ? I2D_FIELD_INT64 : I2D_FIELD_UINT64;
+            default: return 0;
+        }
+    } else if constexpr (std::is_enum_v<T>) {
+        // C enums cross every binding as 32-bit integers (the ABI record fixes it).
+        return sizeof(T) == 4 ? I2D_FIELD_INT32 : 0;
+    } else if constexpr (std::is_pointer_v<T>) {
+        return std::is_function_v<std::remove_pointer_t<T>> ? I2D_FIELD_FUNCTION : I2D_FIELD_POINTER;
+    } else if constexpr (std::is_class_v<T>) {
+        return I2D_FIELD_STRUCT;
+    } else {
+        return 0;
+    }
+}
 
-// Every typedef struct of include/impulse2d/*.h (tests/python checks that none is missing).
+// The type a row names: a pointer's pointee, otherwise the element type itself.
+template <typename T>
+using named_type_t = std::conditional_t<std::is_pointer_v<T>, std::remove_cv_t<std::remove_pointer_t<T>>, T>;
+
+template <typename Member>
+using element_t = std::remove_cv_t<std::remove_all_extents_t<Member>>;
+
+#define I2D_MEMBER_TYPE(type, field) decltype(type::field)
+
+// Every row checked against the member's real type.
+#define I2D_STRUCT(type) \
+    static_assert(std::is_standard_layout_v<type> && std::is_trivially_copyable_v<type>, #type " is not plain data");
+#define I2D_FIELD(type, field, kind, ctype)                                                                    \
+    static_assert(std::rank_v<I2D_MEMBER_TYPE(type, field)> <= 1, #type "." #field ": arrays of arrays");     \
+    static_assert(kind_of<element_t<I2D_MEMBER_TYPE(type, field)>>() == I2D_FIELD_##kind,                     \
+                  "struct_fields.inc: " #type "." #field " is not of kind " #kind                              \
+                  ": regenerate it (python3 capi/gen_struct_fields.py)");                                      \
+    static_assert(std::is_same_v<named_type_t<element_t<I2D_MEMBER_TYPE(type, field)>>, ctype>,              \
+                  "struct_fields.inc: " #type "." #field " is not of type " #ctype                             \
+                  ": regenerate it (python3 capi/gen_struct_fields.py)");
+#include "struct_fields.inc"
+#undef I2D_STRUCT
+#undef I2D_FIELD
+
+// Every typedef struct of include/impulse2d/*.h, in include order.
 const i2d_struct_info struct_infos[] = {
-    I2D_STRUCT_INFO(i2d_struct_info),
-    I2D_STRUCT_INFO(i2d_world_id),
-    I2D_STRUCT_INFO(i2d_body_id),
-    I2D_STRUCT_INFO(i2d_shape_id),
-    I2D_STRUCT_INFO(i2d_chain_id),
-    I2D_STRUCT_INFO(i2d_vec2),
-    I2D_STRUCT_INFO(i2d_rot),
-    I2D_STRUCT_INFO(i2d_transform),
-    I2D_STRUCT_INFO(i2d_aabb),
-    I2D_STRUCT_INFO(i2d_filter),
-    I2D_STRUCT_INFO(i2d_query_filter),
-    I2D_STRUCT_INFO(i2d_world_def),
-    I2D_STRUCT_INFO(i2d_body_def),
-    I2D_STRUCT_INFO(i2d_shape_def),
-    I2D_STRUCT_INFO(i2d_surface_material),
-    I2D_STRUCT_INFO(i2d_chain_def),
-    I2D_STRUCT_INFO(i2d_world_counters),
-    I2D_STRUCT_INFO(i2d_profile),
-    I2D_STRUCT_INFO(i2d_contact_begin_event),
-    I2D_STRUCT_INFO(i2d_contact_end_event),
-    I2D_STRUCT_INFO(i2d_contact_events),
-    I2D_STRUCT_INFO(i2d_contact_hit_event),
-    I2D_STRUCT_INFO(i2d_sensor_begin_event),
-    I2D_STRUCT_INFO(i2d_sensor_end_event),
-    I2D_STRUCT_INFO(i2d_sensor_events),
-    I2D_STRUCT_INFO(i2d_body_move_event),
-    I2D_STRUCT_INFO(i2d_body_quarantine_event),
-    I2D_STRUCT_INFO(i2d_body_events),
-    I2D_STRUCT_INFO(i2d_ray_result),
-    I2D_STRUCT_INFO(i2d_circle),
-    I2D_STRUCT_INFO(i2d_manifold_point),
-    I2D_STRUCT_INFO(i2d_manifold),
-    I2D_STRUCT_INFO(i2d_polygon),
-    I2D_STRUCT_INFO(i2d_capsule),
-    I2D_STRUCT_INFO(i2d_segment),
-    I2D_STRUCT_INFO(i2d_mass_data),
-    I2D_STRUCT_INFO(i2d_cast_output),
-    I2D_STRUCT_INFO(i2d_joint_id),
-    I2D_STRUCT_INFO(i2d_joint_base),
-    I2D_STRUCT_INFO(i2d_revolute_joint_def),
-    I2D_STRUCT_INFO(i2d_prismatic_joint_def),
-    I2D_STRUCT_INFO(i2d_distance_joint_def),
-    I2D_STRUCT_INFO(i2d_weld_joint_def),
-    I2D_STRUCT_INFO(i2d_wheel_joint_def),
-    I2D_STRUCT_INFO(i2d_motor_joint_def),
-    I2D_STRUCT_INFO(i2d_mouse_joint_def),
-    I2D_STRUCT_INFO(i2d_filter_joint_def),
-    I2D_STRUCT_INFO(i2d_joint_event),
-    I2D_STRUCT_INFO(i2d_joint_events),
-    I2D_STRUCT_INFO(i2d_shape_proxy),
+#define I2D_STRUCT(type) \
+    i2d_struct_info{#type, static_cast<int32_t>(sizeof(type)), static_cast<int32_t>(alignof(type))},
+#define I2D_FIELD(type, field, kind, ctype)
+#include "struct_fields.inc"
+#undef I2D_STRUCT
+#undef I2D_FIELD
 };
 
-#undef I2D_STRUCT_INFO
+template <typename Member>
+constexpr int32_t element_count() {
+    return std::is_array_v<Member> ? static_cast<int32_t>(std::extent_v<Member>) : 1;
+}
+
+// Every member of those structs, struct by struct, in declaration order.
+const i2d_field_info field_infos[] = {
+#define I2D_STRUCT(type)
+#define I2D_FIELD(type, field, kind, ctype)                                                       \
+    i2d_field_info{#type,                                                                         \
+                   #field,                                                                        \
+                   #ctype,                                                                        \
+                   static_cast<int32_t>(offsetof(type, field)),                                   \
+                   static_cast<int32_t>(sizeof(I2D_MEMBER_TYPE(type, field))),                    \
+                   element_count<I2D_MEMBER_TYPE(type, field)>(),                                 \
+                   I2D_FIELD_##kind},
+#include "struct_fields.inc"
+#undef I2D_STRUCT
+#undef I2D_FIELD
+};
+
+#undef I2D_MEMBER_TYPE
 
 }  // namespace
 
@@ -72,4 +108,12 @@ I2D_API int32_t i2d_get_struct_infos(const i2d_struct_info** out) {
         *out = struct_infos;
     }
     return static_cast<int32_t>(sizeof struct_infos / sizeof struct_infos[0]);
+}
+
+I2D_API int32_t i2d_get_field_infos(const i2d_field_info** out) {
+    i2d::capi::set_ok();
+    if (out != nullptr) {
+        *out = field_infos;
+    }
+    return static_cast<int32_t>(sizeof field_infos / sizeof field_infos[0]);
 }

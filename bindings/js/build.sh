@@ -22,23 +22,21 @@ emcmake cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DI2D_BUILD_SHAR
 cmake --build "$build" -j2 --target impulse2d
 
 # Export every public i2d_ function of the library (the same set the shared library's
-# version script lets out), plus malloc and free for the binding's scratch memory.
+# version script lets out), plus malloc and free for the binding's scratch memory. The
+# binding reads the struct layouts from the library itself (i2d_get_field_infos).
 library="$build/capi/libimpulse2d.a"
 exports=$(llvm-nm --defined-only -g "$library" 2>/dev/null | awk '$2 == "T" && $3 ~ /^i2d_/ { printf "\"_%s\",", $3 }')
 [ -n "$exports" ] || { echo "build.sh: no i2d_ symbols found in $library" >&2; exit 1; }
 mkdir -p "$dist"
-# The struct layout table the binding reads (see native/struct_layout.c).
-emcc -O2 -std=c99 -Wall -Wextra -Werror -I"$root/include" -DI2D_STATIC_LIBRARY -c "$here/native/struct_layout.c" \
-  -o "$build/struct_layout.o"
 # -sWASM_BIGINT: 64-bit ids cross as BigInt instead of split halves.
 # -sALLOW_MEMORY_GROWTH: worlds grow; the binding re-reads the heap after every call.
 # -sENVIRONMENT=web: the loader then needs neither require nor __dirname, which an ES
 # module lacks in node; the binding hands node the .wasm bytes itself (wasmBinary).
 # -sFILESYSTEM=0: the library does no I/O.
-emcc -O3 "$build/struct_layout.o" "$library" -o "$dist/impulse2d_wasm.mjs" \
+emcc -O3 "$library" -o "$dist/impulse2d_wasm.mjs" \
   -sMODULARIZE=1 -sEXPORT_ES6=1 -sEXPORT_NAME=createImpulse2dModule \
   -sENVIRONMENT=web -sWASM_BIGINT=1 -sALLOW_MEMORY_GROWTH=1 -sINITIAL_MEMORY=16MB \
   -sFILESYSTEM=0 -sTOTAL_STACK=1MB \
-  -sEXPORTED_FUNCTIONS="[${exports}\"_i2d_js_struct_layout\",\"_malloc\",\"_free\"]" \
+  -sEXPORTED_FUNCTIONS="[${exports}\"_malloc\",\"_free\"]" \
   -sEXPORTED_RUNTIME_METHODS='["UTF8ToString"]' -sINCOMING_MODULE_JS_API='["wasmBinary","instantiateWasm","print","printErr","locateFile"]'
 echo "built $dist/impulse2d_wasm.mjs and $dist/impulse2d_wasm.wasm ($(stat -c %s "$dist/impulse2d_wasm.wasm") bytes)"

@@ -105,7 +105,8 @@ export class Body {
     const rt = this.rt;
     const center = options.center ?? [0, 0];
     return this.makeShape(options, (def) => {
-      const circle = rt.vec2(0, vx(center), vy(center));
+      const circle = rt.arg(0);
+      rt.writeVec2(circle + rt.field('i2d_circle.center'), vx(center), vy(center));
       rt.f32[(circle + rt.field('i2d_circle.radius')) >> 2] = radius;
       return rt.m._i2d_shape_create_circle(this.id, def, circle);
     });

@@ -1,8 +1,10 @@
 // SPDX-License-Identifier: MIT
 // The loaded module and what every wrapper needs from it: scratch memory for arguments
-// and results, struct offsets by name, and turning a refused call into an exception.
+// and results, struct offsets by name (from the module's own description of its structs,
+// see layout.js), and turning a refused call into an exception.
 import { Impulse2dError } from './errors.js';
 import { JOINT_KIND_NAMES } from './joint_kinds.js';
+import { offsets, readDescription, usageProblems } from './layout.js';
 
 // Structs passed by value (i2d_vec2, i2d_rot, i2d_aabb, filters) cross the wasm C ABI
 // as pointers to a copy, and struct results come back through a pointer the caller
@@ -13,10 +15,18 @@ const ARG0 = 512;          // by-value arguments, 64 bytes apart
 const ARG_STRIDE = 64;
 
 export class Runtime {
-  constructor(module) {
+  /** description overrides what the module reports (for tests). */
+  constructor(module, description = readDescription(module)) {
     this.m = module;
+    const problems = usageProblems(description).concat(scratchProblems(description));
+    if (problems.length > 0) {
+      throw new Error('impulse2d: the WebAssembly module\'s structs do not match this binding (rebuild dist/ ' +
+                      `with bindings/js/build.sh from the same sources):\n  ${problems.join('\n  ')}`);
+    }
+    /** Map of C struct name -> {name, size, align, fields}: the module's description. */
+    this.description = description;
+    this.layout = offsets(description);
     this.scratch = module._malloc(SCRATCH_BYTES);
-    this.layout = readLayout(module);
     this.defaults = {
       world: this.readDefault('_i2d_default_world_def', 'i2d_world_def'),
       body: this.readDefault('_i2d_default_body_def', 'i2d_body_def'),
@@ -50,7 +60,11 @@ export class Runtime {
 
   /** Writes two floats at argument slot `index` and returns its address. */
   vec2(index, x, y) {
-    const at = this.arg(index);
+    return this.writeVec2(this.arg(index), x, y);
+  }
+
+  /** Writes an i2d_vec2 at address `at` and returns it. */
+  writeVec2(at, x, y) {
     const f = this.f32;
     f[at >> 2] = x;
     f[(at >> 2) + 1] = y;
@@ -104,15 +118,17 @@ export class Runtime {
   }
 }
 
-function readLayout(module) {
-  const out = module._malloc(4);
-  const count = module._i2d_js_struct_layout(out);
-  const table = module.HEAPU32[out >> 2];
-  module._free(out);
-  const layout = new Map();
-  for (let i = 0; i < count; i++) {
-    const entry = table + i * 8;
-    layout.set(module.UTF8ToString(module.HEAPU32[entry >> 2]), module.HEAP32[(entry + 4) >> 2]);
+// Structs read into the result block or written into an argument slot must fit there.
+const BY_VALUE_ARGUMENTS = ['i2d_vec2', 'i2d_rot', 'i2d_aabb', 'i2d_circle'];
+
+function scratchProblems(description) {
+  const problems = [];
+  for (const struct of description.values()) {
+    if (struct.size > ARG0 - RESULT) problems.push(`${struct.name}: ${struct.size} bytes do not fit the result block`);
   }
-  return layout;
+  for (const name of BY_VALUE_ARGUMENTS) {
+    const size = description.get(name)?.size;
+    if (size > ARG_STRIDE) problems.push(`${name}: ${size} bytes do not fit an argument slot`);
+  }
+  return problems;
 }

@@ -50,24 +50,28 @@ export class Shape {
     if (type === 'circle') {
       rt.m._i2d_shape_get_circle(at, this.id);
       rt.checkLast();
-      return { type, center: rt.readVec2(at), radius: rt.f32[(at + rt.field('i2d_circle.radius')) >> 2] };
+      return { type, center: rt.readVec2(at + rt.field('i2d_circle.center')),
+               radius: rt.f32[(at + rt.field('i2d_circle.radius')) >> 2] };
     }
     if (type === 'capsule') {
       rt.m._i2d_shape_get_capsule(at, this.id);
       rt.checkLast();
-      return { type, center1: rt.readVec2(at), center2: rt.readVec2(at + 8),
+      return { type, center1: rt.readVec2(at + rt.field('i2d_capsule.center1')),
+               center2: rt.readVec2(at + rt.field('i2d_capsule.center2')),
                radius: rt.f32[(at + rt.field('i2d_capsule.radius')) >> 2] };
     }
     if (type === 'segment') {
       rt.m._i2d_shape_get_segment(at, this.id);
       rt.checkLast();
-      return { type, point1: rt.readVec2(at), point2: rt.readVec2(at + 8) };
+      return { type, point1: rt.readVec2(at + rt.field('i2d_segment.point1')),
+               point2: rt.readVec2(at + rt.field('i2d_segment.point2')) };
     }
     rt.m._i2d_shape_get_polygon(at, this.id);
     rt.checkLast();
     const count = rt.i32[(at + rt.field('i2d_polygon.count')) >> 2];
     const vertices = [];
-    for (let i = 0; i < count; i++) vertices.push(rt.readVec2(at + rt.field('i2d_polygon.vertices') + 8 * i));
+    const first = at + rt.field('i2d_polygon.vertices');
+    for (let i = 0; i < count; i++) vertices.push(rt.readVec2(first + rt.size('i2d_vec2') * i));
     return { type, vertices, radius: rt.f32[(at + rt.field('i2d_polygon.radius')) >> 2] };
   }
 

@@ -144,13 +144,14 @@ export class World {
     rt.m._i2d_world_get_contact_events(at, this.id);
     rt.checkLast();
     const word = (name) => rt.u32[(at + rt.field(`i2d_contact_events.${name}`)) >> 2];
-    // Each event starts with its two ids; begin events carry a manifold after them.
+    // Each event holds its two ids (8-byte aligned); begin events carry a manifold too.
     const pairs = (array, count, type) => {
       const stride = rt.size(type) / 8;
+      const first = rt.field(`${type}.shape_a`) / 8, second = rt.field(`${type}.shape_b`) / 8;
       const ids = new BigUint64Array(rt.u8.buffer, array, count * stride);
       const out = [];
       for (let i = 0; i < count; i++) {
-        const a = ids[stride * i], b = ids[stride * i + 1];
+        const a = ids[stride * i + first], b = ids[stride * i + second];
         out.push([this.shapeById.get(a) ?? a, this.shapeById.get(b) ?? b]);
       }
       return out;
@@ -165,7 +166,8 @@ export class World {
   overlapAABB(minX, minY, maxX, maxY) {
     const rt = this.rt;
     const box = rt.arg(0);
-    rt.f32.set([minX, minY, maxX, maxY], box >> 2);
+    rt.writeVec2(box + rt.field('i2d_aabb.min'), minX, minY);
+    rt.writeVec2(box + rt.field('i2d_aabb.max'), maxX, maxY);
     let capacity = 64;
     for (;;) {
       const out = rt.m._malloc(capacity * 8);

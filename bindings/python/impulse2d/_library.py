@@ -20,30 +20,9 @@ import ctypes.util
 import glob
 import os
 import sys
-from typing import List, Optional
+from typing import Any, Dict, List, Optional, Tuple
 
-from . import _layout
-from ._structs import (
-    AABB,
-    BodyDef,
-    BodyEvents,
-    Capsule,
-    Circle,
-    ContactEvents,
-    SensorEvents,
-    Filter,
-    Polygon,
-    Profile,
-    QueryFilter,
-    RayResult,
-    Rot,
-    Segment,
-    ShapeDef,
-    Transform,
-    Vec2,
-    WorldCounters,
-    WorldDef,
-)
+from . import _layout, _structs
 from .errors import LibraryError
 
 ENVIRONMENT_VARIABLE = "IMPULSE2D_LIBRARY"
@@ -53,90 +32,100 @@ _STATUS = C.c_int32
 _PTR = C.c_void_p  # arrays passed as addresses (NumPy's arr.ctypes.data)
 _OVERLAP_FN = C.CFUNCTYPE(C.c_bool, _ID, C.c_void_p)
 
-SIGNATURES = {
-    "i2d_version": (C.c_uint32, []),
-    "i2d_status_string": (C.c_char_p, [C.c_int32]),
-    "i2d_last_status": (_STATUS, []),
-    "i2d_last_error_message": (C.c_char_p, []),
-    "i2d_default_world_def": (WorldDef, []),
-    "i2d_default_body_def": (BodyDef, []),
-    "i2d_default_shape_def": (ShapeDef, []),
-    "i2d_default_query_filter": (QueryFilter, []),
-    "i2d_default_filter": (Filter, []),
-    "i2d_make_rot": (Rot, [C.c_float]),
-    "i2d_rot_get_angle": (C.c_float, [Rot]),
-    # world
-    "i2d_world_create": (_ID, [C.POINTER(WorldDef)]),
-    "i2d_world_destroy": (_STATUS, [_ID]),
-    "i2d_world_is_valid": (C.c_bool, [_ID]),
-    "i2d_world_step": (_STATUS, [_ID, C.c_float, C.c_int32]),
-    "i2d_world_set_gravity": (_STATUS, [_ID, Vec2]),
-    "i2d_world_get_gravity": (Vec2, [_ID]),
-    "i2d_world_get_counters": (WorldCounters, [_ID]),
-    "i2d_world_get_profile": (Profile, [_ID]),
-    "i2d_world_get_state_hash": (C.c_uint64, [_ID]),
-    "i2d_world_get_contact_events": (ContactEvents, [_ID]),
-    "i2d_world_get_sensor_events": (SensorEvents, [_ID]),
-    "i2d_world_get_body_events": (BodyEvents, [_ID]),
-    "i2d_world_overlap_aabb_ids": (C.c_int32, [_ID, AABB, QueryFilter, _PTR, C.c_int32]),
-    "i2d_world_overlap_point": (_STATUS, [_ID, Vec2, QueryFilter, _OVERLAP_FN, C.c_void_p]),
-    "i2d_world_cast_ray_closest": (RayResult, [_ID, Vec2, Vec2, QueryFilter]),
-    "i2d_world_get_body_transforms": (_STATUS, [_ID, _PTR, C.c_int32, _PTR]),
-    "i2d_world_get_body_velocities": (_STATUS, [_ID, _PTR, C.c_int32, _PTR, _PTR]),
-    "i2d_world_set_body_velocities": (_STATUS, [_ID, _PTR, C.c_int32, _PTR, _PTR]),
-    "i2d_world_set_body_transforms": (_STATUS, [_ID, _PTR, C.c_int32, _PTR]),
-    # bodies
-    "i2d_body_create": (_ID, [_ID, C.POINTER(BodyDef)]),
-    "i2d_body_destroy": (_STATUS, [_ID]),
-    "i2d_body_is_valid": (C.c_bool, [_ID]),
-    "i2d_body_get_world": (_ID, [_ID]),
-    "i2d_body_get_type": (C.c_int32, [_ID]),
-    "i2d_body_get_position": (Vec2, [_ID]),
-    "i2d_body_get_rotation": (Rot, [_ID]),
-    "i2d_body_get_transform": (Transform, [_ID]),
-    "i2d_body_set_transform": (_STATUS, [_ID, Vec2, Rot]),
-    "i2d_body_get_linear_velocity": (Vec2, [_ID]),
-    "i2d_body_set_linear_velocity": (_STATUS, [_ID, Vec2]),
-    "i2d_body_get_angular_velocity": (C.c_float, [_ID]),
-    "i2d_body_set_angular_velocity": (_STATUS, [_ID, C.c_float]),
-    "i2d_body_get_mass": (C.c_float, [_ID]),
-    "i2d_body_get_rotational_inertia": (C.c_float, [_ID]),
-    "i2d_body_get_world_center_of_mass": (Vec2, [_ID]),
-    "i2d_body_apply_force": (_STATUS, [_ID, Vec2, Vec2, C.c_bool]),
-    "i2d_body_apply_force_to_center": (_STATUS, [_ID, Vec2, C.c_bool]),
-    "i2d_body_apply_torque": (_STATUS, [_ID, C.c_float, C.c_bool]),
-    "i2d_body_apply_linear_impulse": (_STATUS, [_ID, Vec2, Vec2, C.c_bool]),
-    "i2d_body_apply_angular_impulse": (_STATUS, [_ID, C.c_float, C.c_bool]),
-    "i2d_body_is_awake": (C.c_bool, [_ID]),
-    "i2d_body_is_quarantined": (C.c_bool, [_ID]),
-    "i2d_body_set_awake": (_STATUS, [_ID, C.c_bool]),
-    "i2d_body_get_shape_count": (C.c_int32, [_ID]),
-    "i2d_body_get_shapes": (C.c_int32, [_ID, _PTR, C.c_int32]),
-    # shapes
-    "i2d_shape_create_circle": (_ID, [_ID, C.POINTER(ShapeDef), C.POINTER(Circle)]),
-    "i2d_shape_create_box": (_ID, [_ID, C.POINTER(ShapeDef), C.c_float, C.c_float]),
-    "i2d_shape_create_offset_box": (_ID, [_ID, C.POINTER(ShapeDef), C.c_float, C.c_float, Vec2, Rot]),
-    "i2d_shape_create_polygon": (_ID, [_ID, C.POINTER(ShapeDef), C.POINTER(Vec2), C.c_int32]),
-    "i2d_shape_create_capsule": (_ID, [_ID, C.POINTER(ShapeDef), Vec2, Vec2, C.c_float]),
-    "i2d_shape_create_segment": (_ID, [_ID, C.POINTER(ShapeDef), Vec2, Vec2]),
-    "i2d_shape_destroy": (_STATUS, [_ID]),
-    "i2d_shape_is_valid": (C.c_bool, [_ID]),
-    "i2d_shape_get_body": (_ID, [_ID]),
-    "i2d_shape_get_type": (C.c_int32, [_ID]),
-    "i2d_shape_get_circle": (Circle, [_ID]),
-    "i2d_shape_get_polygon": (Polygon, [_ID]),
-    "i2d_shape_get_capsule": (Capsule, [_ID]),
-    "i2d_shape_get_segment": (Segment, [_ID]),
-    "i2d_shape_get_aabb": (AABB, [_ID]),
-    "i2d_shape_get_density": (C.c_float, [_ID]),
-    "i2d_shape_get_friction": (C.c_float, [_ID]),
-    "i2d_shape_set_friction": (_STATUS, [_ID, C.c_float]),
-    "i2d_shape_get_restitution": (C.c_float, [_ID]),
-    "i2d_shape_set_restitution": (_STATUS, [_ID, C.c_float]),
-    "i2d_shape_get_filter": (Filter, [_ID]),
-    "i2d_shape_set_filter": (_STATUS, [_ID, Filter]),
-    "i2d_shape_is_sensor": (C.c_bool, [_ID]),
-}
+
+def signatures(S: _structs.Structs) -> Dict[str, Tuple[Any, List[Any]]]:
+    """restype and argtypes of every function the package calls (but the joints'), with
+    the struct classes S of the loaded library."""
+    AABB, BodyDef, BodyEvents, Capsule, Circle = S.AABB, S.BodyDef, S.BodyEvents, S.Capsule, S.Circle
+    ContactEvents, SensorEvents, Filter = S.ContactEvents, S.SensorEvents, S.Filter
+    Polygon, Profile = S.Polygon, S.Profile
+    QueryFilter, RayResult, Rot, Segment, ShapeDef = S.QueryFilter, S.RayResult, S.Rot, S.Segment, S.ShapeDef
+    Transform, Vec2, WorldCounters, WorldDef = S.Transform, S.Vec2, S.WorldCounters, S.WorldDef
+    return {
+        "i2d_version": (C.c_uint32, []),
+        "i2d_status_string": (C.c_char_p, [C.c_int32]),
+        "i2d_last_status": (_STATUS, []),
+        "i2d_last_error_message": (C.c_char_p, []),
+        "i2d_default_world_def": (WorldDef, []),
+        "i2d_default_body_def": (BodyDef, []),
+        "i2d_default_shape_def": (ShapeDef, []),
+        "i2d_default_query_filter": (QueryFilter, []),
+        "i2d_default_filter": (Filter, []),
+        "i2d_make_rot": (Rot, [C.c_float]),
+        "i2d_rot_get_angle": (C.c_float, [Rot]),
+        # world
+        "i2d_world_create": (_ID, [C.POINTER(WorldDef)]),
+        "i2d_world_destroy": (_STATUS, [_ID]),
+        "i2d_world_is_valid": (C.c_bool, [_ID]),
+        "i2d_world_step": (_STATUS, [_ID, C.c_float, C.c_int32]),
+        "i2d_world_set_gravity": (_STATUS, [_ID, Vec2]),
+        "i2d_world_get_gravity": (Vec2, [_ID]),
+        "i2d_world_get_counters": (WorldCounters, [_ID]),
+        "i2d_world_get_profile": (Profile, [_ID]),
+        "i2d_world_get_state_hash": (C.c_uint64, [_ID]),
+        "i2d_world_get_contact_events": (ContactEvents, [_ID]),
+        "i2d_world_get_sensor_events": (SensorEvents, [_ID]),
+        "i2d_world_get_body_events": (BodyEvents, [_ID]),
+        "i2d_world_overlap_aabb_ids": (C.c_int32, [_ID, AABB, QueryFilter, _PTR, C.c_int32]),
+        "i2d_world_overlap_point": (_STATUS, [_ID, Vec2, QueryFilter, _OVERLAP_FN, C.c_void_p]),
+        "i2d_world_cast_ray_closest": (RayResult, [_ID, Vec2, Vec2, QueryFilter]),
+        "i2d_world_get_body_transforms": (_STATUS, [_ID, _PTR, C.c_int32, _PTR]),
+        "i2d_world_get_body_velocities": (_STATUS, [_ID, _PTR, C.c_int32, _PTR, _PTR]),
+        "i2d_world_set_body_velocities": (_STATUS, [_ID, _PTR, C.c_int32, _PTR, _PTR]),
+        "i2d_world_set_body_transforms": (_STATUS, [_ID, _PTR, C.c_int32, _PTR]),
+        # bodies
+        "i2d_body_create": (_ID, [_ID, C.POINTER(BodyDef)]),
+        "i2d_body_destroy": (_STATUS, [_ID]),
+        "i2d_body_is_valid": (C.c_bool, [_ID]),
+        "i2d_body_get_world": (_ID, [_ID]),
+        "i2d_body_get_type": (C.c_int32, [_ID]),
+        "i2d_body_get_position": (Vec2, [_ID]),
+        "i2d_body_get_rotation": (Rot, [_ID]),
+        "i2d_body_get_transform": (Transform, [_ID]),
+        "i2d_body_set_transform": (_STATUS, [_ID, Vec2, Rot]),
+        "i2d_body_get_linear_velocity": (Vec2, [_ID]),
+        "i2d_body_set_linear_velocity": (_STATUS, [_ID, Vec2]),
+        "i2d_body_get_angular_velocity": (C.c_float, [_ID]),
+        "i2d_body_set_angular_velocity": (_STATUS, [_ID, C.c_float]),
+        "i2d_body_get_mass": (C.c_float, [_ID]),
+        "i2d_body_get_rotational_inertia": (C.c_float, [_ID]),
+        "i2d_body_get_world_center_of_mass": (Vec2, [_ID]),
+        "i2d_body_apply_force": (_STATUS, [_ID, Vec2, Vec2, C.c_bool]),
+        "i2d_body_apply_force_to_center": (_STATUS, [_ID, Vec2, C.c_bool]),
+        "i2d_body_apply_torque": (_STATUS, [_ID, C.c_float, C.c_bool]),
+        "i2d_body_apply_linear_impulse": (_STATUS, [_ID, Vec2, Vec2, C.c_bool]),
+        "i2d_body_apply_angular_impulse": (_STATUS, [_ID, C.c_float, C.c_bool]),
+        "i2d_body_is_awake": (C.c_bool, [_ID]),
+        "i2d_body_is_quarantined": (C.c_bool, [_ID]),
+        "i2d_body_set_awake": (_STATUS, [_ID, C.c_bool]),
+        "i2d_body_get_shape_count": (C.c_int32, [_ID]),
+        "i2d_body_get_shapes": (C.c_int32, [_ID, _PTR, C.c_int32]),
+        # shapes
+        "i2d_shape_create_circle": (_ID, [_ID, C.POINTER(ShapeDef), C.POINTER(Circle)]),
+        "i2d_shape_create_box": (_ID, [_ID, C.POINTER(ShapeDef), C.c_float, C.c_float]),
+        "i2d_shape_create_offset_box": (_ID, [_ID, C.POINTER(ShapeDef), C.c_float, C.c_float, Vec2, Rot]),
+        "i2d_shape_create_polygon": (_ID, [_ID, C.POINTER(ShapeDef), C.POINTER(Vec2), C.c_int32]),
+        "i2d_shape_create_capsule": (_ID, [_ID, C.POINTER(ShapeDef), Vec2, Vec2, C.c_float]),
+        "i2d_shape_create_segment": (_ID, [_ID, C.POINTER(ShapeDef), Vec2, Vec2]),
+        "i2d_shape_destroy": (_STATUS, [_ID]),
+        "i2d_shape_is_valid": (C.c_bool, [_ID]),
+        "i2d_shape_get_body": (_ID, [_ID]),
+        "i2d_shape_get_type": (C.c_int32, [_ID]),
+        "i2d_shape_get_circle": (Circle, [_ID]),
+        "i2d_shape_get_polygon": (Polygon, [_ID]),
+        "i2d_shape_get_capsule": (Capsule, [_ID]),
+        "i2d_shape_get_segment": (Segment, [_ID]),
+        "i2d_shape_get_aabb": (AABB, [_ID]),
+        "i2d_shape_get_density": (C.c_float, [_ID]),
+        "i2d_shape_get_friction": (C.c_float, [_ID]),
+        "i2d_shape_set_friction": (_STATUS, [_ID, C.c_float]),
+        "i2d_shape_get_restitution": (C.c_float, [_ID]),
+        "i2d_shape_set_restitution": (_STATUS, [_ID, C.c_float]),
+        "i2d_shape_get_filter": (Filter, [_ID]),
+        "i2d_shape_set_filter": (_STATUS, [_ID, Filter]),
+        "i2d_shape_is_sensor": (C.c_bool, [_ID]),
+    }
+
 
 _LIBRARY_NAMES = ("libimpulse2d.so", "libimpulse2d.dylib", "impulse2d.dll")
 
@@ -180,9 +169,9 @@ def find_library() -> str:
     )
 
 
-def declare(lib: C.CDLL) -> C.CDLL:
+def declare(lib: C.CDLL, S: _structs.Structs) -> C.CDLL:
     """Sets restype and argtypes of every function the package calls."""
-    for name, (restype, argtypes) in SIGNATURES.items():
+    for name, (restype, argtypes) in signatures(S).items():
         fn = getattr(lib, name)
         fn.restype = restype
         fn.argtypes = argtypes
@@ -195,9 +184,11 @@ def version_string(lib: C.CDLL) -> str:
     return "%d.%d.%d" % (v >> 16, (v >> 8) & 0xFF, v & 0xFF)
 
 
-def load(path: Optional[str] = None, layouts: Optional[_layout.Layouts] = None) -> C.CDLL:
-    """Opens the library, refuses it unless its structs match this package (layouts
-    overrides what the library reports, for tests), and declares its functions."""
+def load(path: Optional[str] = None, description: Optional[_layout.Description] = None) -> C.CDLL:
+    """Opens the library, builds the struct classes from its description of its structs
+    (description overrides what the library reports, for tests), refuses it unless every
+    field the package uses is there as the package uses it (LayoutMismatch), and declares
+    its functions. The classes are lib._impulse2d_structs."""
     if C.sizeof(C.c_void_p) != 8:
         raise LibraryError("impulse2d's Python package needs a 64-bit Python")
     path = path or find_library()
@@ -205,12 +196,13 @@ def load(path: Optional[str] = None, layouts: Optional[_layout.Layouts] = None) 
         lib = C.CDLL(path)
     except OSError as error:
         raise LibraryError("cannot load %s: %s" % (path, error)) from error
-    if not hasattr(lib, "i2d_get_struct_infos"):
-        raise LibraryError(
-            "%s (impulse2d %s) is too old for this package: it does not describe its structs "
-            "(i2d_get_struct_infos)" % (path, version_string(lib))
-        )
-    reported = _layout.read_struct_infos(lib) if layouts is None else layouts
-    _layout.check_layouts(reported, path, version_string(lib))
+    if description is None:
+        try:
+            description = _layout.describe(lib)
+        except _layout.LayoutError as error:
+            raise LibraryError("%s (impulse2d %s) cannot be used by this package: %s"
+                               % (path, version_string(lib), error)) from error
+    structs = _structs.build(description, path, version_string(lib))
     lib._impulse2d_path = path
-    return declare(lib)
+    lib._impulse2d_structs = structs
+    return declare(lib, structs)

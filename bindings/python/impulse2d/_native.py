@@ -1,14 +1,17 @@
 # SPDX-License-Identifier: MIT
-"""The loaded library and the helpers every wrapper uses to turn statuses into errors."""
+"""The loaded library, its struct classes, and the helpers every wrapper uses to turn
+statuses into errors."""
 
 import ctypes as C
 from typing import Any, Dict, Sequence, Tuple
 
 from . import _library
-from ._structs import Filter, Rot, Vec2
 from .errors import error_for
 
 lib = _library.load()
+#: The struct classes built from the loaded library's description (see _structs.py).
+structs = lib._impulse2d_structs
+Filter, Rot, Vec2 = structs.Filter, structs.Rot, structs.Vec2
 
 
 def last_error() -> Exception:
@@ -43,7 +46,7 @@ def make_filter(value: Any) -> Filter:
     if isinstance(value, Filter):
         return value
     parts = tuple(value)
-    return Filter(parts[0], parts[1], parts[2] if len(parts) > 2 else 0)
+    return Filter(category_bits=parts[0], mask_bits=parts[1], group_index=parts[2] if len(parts) > 2 else 0)
 
 
 def apply_settings(def_struct: C.Structure, settings: Dict[str, Any], kind: str) -> None:

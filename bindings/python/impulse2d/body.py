@@ -225,7 +225,7 @@ class Body:
         """A circle centred at center (body frame). Settings are the shape def's fields:
         density, friction, restitution, rolling_resistance, tangent_speed, is_sensor,
         enable_contact_events, enable_sensor_events, filter."""
-        circle = Circle(vec2(center), radius)
+        circle = Circle(center=vec2(center), radius=radius)
         return self._created(lib.i2d_shape_create_circle(self._id, C.byref(self._shape_def(settings)), C.byref(circle)))
 
     def create_box(

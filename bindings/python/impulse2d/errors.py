@@ -47,13 +47,15 @@ class OutOfMemory(Impulse2DError, MemoryError):
 
 
 class LibraryError(ImportError):
-    """The native library could not be found, or it does not match this package
-    (its struct layouts differ from what the package declares)."""
+    """The native library could not be found or loaded, or it does not describe its
+    structs, or it does not match this package (LayoutMismatch)."""
 
 
 class LayoutMismatch(LibraryError):
-    """The loaded library's public structs differ in size or alignment from this
-    package's declarations: calling it would corrupt memory, so it is refused."""
+    """The loaded library's public structs do not fit this package: a field the package
+    reads or writes is missing or of another kind, or ctypes cannot lay a struct out as
+    the library describes it. Calling it would misread or corrupt memory, so it is
+    refused."""
 
 
 STATUS_ERRORS: Dict[int, Type[Impulse2DError]] = {

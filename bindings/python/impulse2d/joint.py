@@ -24,8 +24,9 @@ _BASE_SETTINGS = ("local_anchor_a", "local_anchor_b", "collide_connected", "forc
 
 def _declare() -> Dict[str, Dict[str, Any]]:
     """Declares every joint function the package calls and returns, per kind, the
-    settings it has and their ctypes type (from the def struct: one getter and setter
-    per def field, i2d_<kind>_joint_get_<field>)."""
+    settings it reads and writes after creation and their ctypes type (from the def
+    struct, which the library describes: its getter and setter per def field,
+    i2d_<kind>_joint_get_<field>)."""
     common = {
         "i2d_joint_destroy": (_STATUS, [_ID]),
         "i2d_joint_is_valid": (C.c_bool, [_ID]),
@@ -47,10 +48,15 @@ def _declare() -> Dict[str, Dict[str, Any]]:
         common["i2d_default_%s_joint_def" % kind] = (def_struct, [])
         common["i2d_joint_create_" + kind] = (_ID, [_ID, C.POINTER(def_struct)])
         fields = {name: ctype for name, ctype in def_struct._fields_ if name not in ("base", "internal_cookie")}
+        settings[kind] = {}
         for name, ctype in fields.items():
-            common["i2d_%s_joint_get_%s" % (kind, name)] = (ctype, [_ID])
-            common["i2d_%s_joint_set_%s" % (kind, name)] = (_STATUS, [_ID, ctype])
-        settings[kind] = fields
+            getter, setter = "i2d_%s_joint_get_%s" % (kind, name), "i2d_%s_joint_set_%s" % (kind, name)
+            # A def field without its getter and setter (a library newer than its
+            # accessors) is still set at creation, by name like every setting.
+            if hasattr(lib, getter) and hasattr(lib, setter):
+                common[getter] = (ctype, [_ID])
+                common[setter] = (_STATUS, [_ID, ctype])
+                settings[kind][name] = ctype
     for name, (restype, argtypes) in common.items():
         fn = getattr(lib, name)
         fn.restype, fn.argtypes = restype, argtypes

@@ -39,7 +39,7 @@ def _numpy() -> Any:
 
 
 def _query_filter(category_bits: int, mask_bits: int) -> QueryFilter:
-    return QueryFilter(category_bits, mask_bits)
+    return QueryFilter(category_bits=category_bits, mask_bits=mask_bits)
 
 
 _ALL_BITS = 0xFFFFFFFFFFFFFFFF
@@ -177,16 +177,16 @@ class World:
         """(begin, end) events of the last step."""
         e = lib.i2d_world_get_contact_events(self._id)
         check_last()
-        begin = [ContactBegin(self._shape(e.begin_events[i].a), self._shape(e.begin_events[i].b)) for i in range(e.begin_count)]
-        end = [ContactEnd(self._shape(e.end_events[i].a), self._shape(e.end_events[i].b)) for i in range(e.end_count)]
+        begin = [ContactBegin(self._shape(b.shape_a), self._shape(b.shape_b)) for b in e.begin_events[: e.begin_count]]
+        end = [ContactEnd(self._shape(n.shape_a), self._shape(n.shape_b)) for n in e.end_events[: e.end_count]]
         return begin, end
 
     def sensor_events(self) -> Tuple[List[SensorBegin], List[SensorEnd]]:
         """(begin, end) sensor events of the last step."""
         e = lib.i2d_world_get_sensor_events(self._id)
         check_last()
-        begin = [SensorBegin(self._shape(e.begin_events[i].a), self._shape(e.begin_events[i].b)) for i in range(e.begin_count)]
-        end = [SensorEnd(self._shape(e.end_events[i].a), self._shape(e.end_events[i].b)) for i in range(e.end_count)]
+        begin = [SensorBegin(self._shape(b.sensor_shape), self._shape(b.visitor_shape)) for b in e.begin_events[: e.begin_count]]
+        end = [SensorEnd(self._shape(n.sensor_shape), self._shape(n.visitor_shape)) for n in e.end_events[: e.end_count]]
         return begin, end
 
     def body_events(self) -> List[BodyMove]:
@@ -224,7 +224,7 @@ class World:
         mask_bits: int = _ALL_BITS,
     ) -> List[Shape]:
         """Every shape whose geometry overlaps the box from lower to upper."""
-        box = AABB(vec2(lower), vec2(upper))
+        box = AABB(min=vec2(lower), max=vec2(upper))
         qf = _query_filter(category_bits, mask_bits)
         capacity = 64
         while True:
