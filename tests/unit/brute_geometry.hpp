@@ -221,6 +221,11 @@ inline i2d::Polygon random_polygon(TestRng& rng, float radius) {
     }
 }
 
+/// The kinds random_geometry makes: every ShapeType before chain_segment. A chain segment
+/// takes its neighbours' ghost points and is not a shape on its own (tests/physics/
+/// test_chain.cpp and tests/api/test_api_chains.c test chains).
+constexpr int32_t random_kind_count = int32_t(i2d::ShapeType::chain_segment);
+
 inline i2d::Geometry random_geometry(TestRng& rng, i2d::ShapeType type) {
     i2d::Geometry g;
     g.type = type;
