@@ -49,11 +49,9 @@ bool ball_passes(Rng& rng, bool continuous, Wall kind, float wall_speed) {
     const i2d_body_type wall_type = kind == Wall::fixed       ? I2D_BODY_STATIC
                                     : kind == Wall::kinematic ? I2D_BODY_KINEMATIC
                                                               : I2D_BODY_DYNAMIC;
-    Material heavy;
-    heavy.density = 1000.0f;
     i2d_body_def wall_def = body_def(wall_type, i2d_vec2{0, 0}, i2d_vec2{-wall_speed, 0});
     wall_def.is_bullet = kind == Wall::bullet && continuous;
-    i2d_body_id wall = scene.box(wall_def, wall_half_thickness, wall_half_height, heavy);
+    i2d_body_id wall = scene.box(wall_def, wall_half_thickness, wall_half_height, with_density(1000.0f));
     const float angle = rng.uniform(-1.047f, 1.047f);
     const float aim = rng.uniform(-1.0f, 1.0f);
     const float distance = rng.uniform(1.0f, 6.0f);
@@ -141,9 +139,7 @@ HeadOnResult head_on_bullets(bool bullets) {
     i2d_body_def def_a = body_def(I2D_BODY_DYNAMIC, i2d_vec2{-4.1f, 0.0f}, i2d_vec2{speed, 0});
     i2d_body_def def_b = body_def(I2D_BODY_DYNAMIC, i2d_vec2{4.1f, 0.01f}, i2d_vec2{-speed, 0});
     def_a.is_bullet = def_b.is_bullet = bullets;
-    Material heavy;
-    heavy.density = 2.0f;
-    i2d_body_id a = scene.circle(def_a, ball_radius, heavy);
+    i2d_body_id a = scene.circle(def_a, ball_radius, with_density(2.0f));
     i2d_body_id b = scene.circle(def_b, ball_radius);
     HeadOnResult r{};
     if (I2D_IS_NULL(a) || I2D_IS_NULL(b)) {
