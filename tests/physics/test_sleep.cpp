@@ -9,6 +9,7 @@
 // friction, never the engine's earlier output.
 #include <cmath>
 #include <cstdio>
+#include <initializer_list>
 #include <vector>
 
 #include "physics_fixture.hpp"
@@ -49,6 +50,29 @@ double wait_asleep(Scene& scene, const Bodies& bodies, double max_seconds) {
         }
     }
     return -1;
+}
+
+// Piles of `height` unit boxes on the ground (its top at y = 0), one centred on each x,
+// stepped until every box sleeps (within 3 s); none (and a message) when a box could not
+// be made or they stayed awake.
+std::vector<Bodies> sleeping_piles(Scene& scene, std::initializer_list<float> xs, int height) {
+    if (I2D_IS_NULL(scene.ground(0.0f))) {
+        return {};
+    }
+    std::vector<Bodies> piles;
+    Bodies all;
+    for (const float x : xs) {
+        piles.push_back(scene.column(x, height));
+        if (!all_valid(piles.back())) {
+            return {};
+        }
+        all = join(all, piles.back());
+    }
+    if (wait_asleep(scene, all, 3.0) <= 0) {
+        fprintf(stderr, "    piles still awake after 3 s\n");
+        return {};
+    }
+    return piles;
 }
 
 // Every body's transform and velocities, for bitwise comparison.
@@ -196,10 +220,9 @@ I2D_TEST(phys_sleep_impulse_wakes_only_its_pile) {
     // the next step) and not pile B. After one step the box moves up at
     // 2 - g dt = 1.833 m/s (within 0.02).
     Scene scene;
-    I2D_REQUIRE(!I2D_IS_NULL(scene.ground(0.0f)));
-    const Bodies a = scene.column(-20.0f, 3), b = scene.column(20.0f, 3);
-    I2D_REQUIRE(all_valid(a) && all_valid(b));
-    I2D_REQUIRE(wait_asleep(scene, join(a, b), 3.0) > 0);
+    const std::vector<Bodies> piles = sleeping_piles(scene, {-20.0f, 20.0f}, 3);
+    I2D_REQUIRE(piles.size() == 2);
+    const Bodies &a = piles[0], &b = piles[1];
     const i2d_world_counters c0 = i2d_world_get_counters(scene.world);
     I2D_CHECK(c0.sleeping_island_count == 2);
     const Snapshot b_before(b);
@@ -237,10 +260,9 @@ I2D_TEST(phys_sleep_no_wake_keeps_sleeping) {
     // wake = false on a sleeping body: an impulse, a force, a torque and an angular
     // impulse leave it (and its pile) asleep, and the pile does not move over 0.5 s.
     Scene scene;
-    I2D_REQUIRE(!I2D_IS_NULL(scene.ground(0.0f)));
-    const Bodies pile = scene.column(0.0f, 3);
-    I2D_REQUIRE(all_valid(pile));
-    I2D_REQUIRE(wait_asleep(scene, pile, 3.0) > 0);
+    const std::vector<Bodies> piles = sleeping_piles(scene, {0.0f}, 3);
+    I2D_REQUIRE(piles.size() == 1);
+    const Bodies& pile = piles[0];
     const Snapshot before(pile);
     const i2d_body_id top = pile.back();
     const i2d_vec2 c = i2d_body_get_world_center_of_mass(top);
@@ -270,16 +292,12 @@ I2D_TEST(phys_sleep_setters_wake) {
     // 1e-4 rad, is left after 3 steps). A force with
     // wake = true wakes a fourth pile D. The piles not touched stay asleep.
     Scene scene;
-    I2D_REQUIRE(!I2D_IS_NULL(scene.ground(0.0f)));
-    const Bodies a = scene.column(-30.0f, 3), b = scene.column(-10.0f, 3), c = scene.column(10.0f, 3),
-                 d = scene.column(30.0f, 3);
-    I2D_REQUIRE(all_valid(a) && all_valid(b) && all_valid(c) && all_valid(d));
-    I2D_REQUIRE(wait_asleep(scene, join(join(a, b), join(c, d)), 3.0) > 0);
-    const Bodies* piles[4] = {&a, &b, &c, &d};
+    const std::vector<Bodies> piles = sleeping_piles(scene, {-30.0f, -10.0f, 10.0f, 30.0f}, 3);
+    I2D_REQUIRE(piles.size() == 4);
     const char* names[4] = {"set_linear_velocity", "set_transform", "set_angular_velocity", "apply_force wake"};
     for (int k = 0; k < 4; ++k) {
         const int before = i2d_check_failures;
-        const Bodies& pile = *piles[k];
+        const Bodies& pile = piles[k];
         const i2d_body_id top = pile.back();
         const i2d_vec2 p0 = position(top);
         const double angle0 = angle_of(top);
@@ -304,7 +322,7 @@ I2D_TEST(phys_sleep_setters_wake) {
         const int pile_awake = count_awake(pile);
         int others_awake = 0;
         for (int j = k + 1; j < 4; ++j) {
-            others_awake += count_awake(*piles[j]);
+            others_awake += count_awake(piles[j]);
         }
         I2D_REQUIRE(scene.step(2));
         const i2d_vec2 p1 = position(top);
@@ -343,10 +361,9 @@ I2D_TEST(phys_sleep_destroying_support_wakes) {
     for (bool shape_only : {false, true}) {
         const int before = i2d_check_failures;
         Scene scene;
-        I2D_REQUIRE(!I2D_IS_NULL(scene.ground(0.0f)));
-        const Bodies pile = scene.column(0.0f, 2);
-        I2D_REQUIRE(all_valid(pile));
-        I2D_REQUIRE(wait_asleep(scene, pile, 3.0) > 0);
+        const std::vector<Bodies> piles = sleeping_piles(scene, {0.0f}, 2);
+        I2D_REQUIRE(piles.size() == 1);
+        const Bodies& pile = piles[0];
         const i2d_body_id a = pile[0], b = pile[1];
         const double y0 = position(b).y;
         if (shape_only) {
@@ -382,10 +399,9 @@ I2D_TEST(phys_sleep_landing_body_wakes_pile) {
     // 0.5 m above the pile; the pile wakes when it lands, by the step after free fall
     // says it arrives (t = sqrt(2 h / g) = 0.632 s).
     Scene scene;
-    I2D_REQUIRE(!I2D_IS_NULL(scene.ground(0.0f)));
-    const Bodies pile = scene.column(0.0f, 3);
-    I2D_REQUIRE(all_valid(pile));
-    I2D_REQUIRE(wait_asleep(scene, pile, 3.0) > 0);
+    const std::vector<Bodies> piles = sleeping_piles(scene, {0.0f}, 3);
+    I2D_REQUIRE(piles.size() == 1);
+    const Bodies& pile = piles[0];
     const double top = position(pile.back()).y + 0.5;
     const double h = 2.0;
     i2d_body_id falling = scene.dynamic_box(i2d_vec2{0, float(top + h + 0.5)}, 0.5f, 0.5f);
