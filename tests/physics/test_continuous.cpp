@@ -18,6 +18,7 @@ constexpr float wall_half_thickness = 0.01f;  // a 2 cm wall
 constexpr float wall_half_height = 50.0f;     // tall enough that no ball slides around it
 constexpr int ball_cases = 1000;
 constexpr int steps_per_case = 10;
+constexpr float oncoming_wall_speed = 50.0f;  // m/s, of the walls that move at the balls
 
 // xorshift32: the same angles and offsets on every run and platform.
 struct Rng {
@@ -80,47 +81,32 @@ int count_passes(bool continuous, Wall kind, float wall_speed = 0.0f) {
     return passes;
 }
 
-}  // namespace
-
-I2D_TEST(phys_ccd_fast_balls_never_pass_a_thin_static_wall) {
-    const int with = count_passes(true, Wall::fixed);
-    const int without = count_passes(false, Wall::fixed);
-    fprintf(stderr, "    static wall: %d of %d balls passed with continuous collision, %d without\n", with,
-            ball_cases, without);
-    I2D_CHECK(with == 0);
-    I2D_CHECK(without > ball_cases / 10);  // the control: the scene does tunnel
-}
-
-I2D_TEST(phys_ccd_fast_balls_never_pass_a_kinematic_wall_moving_at_them) {
-    constexpr float wall_speed = 50.0f;
-    const int with = count_passes(true, Wall::kinematic, wall_speed);
-    const int without = count_passes(false, Wall::kinematic, wall_speed);
-    fprintf(stderr, "    kinematic wall at %.0f m/s: %d of %d balls passed with continuous collision, %d without\n",
+// No ball (bullet, for a dynamic wall) passes the wall with continuous collision, and the
+// control, the same balls without it, does tunnel: more than a tenth pass.
+void check_no_ball_passes(const char* wall, Wall kind, float wall_speed = 0.0f) {
+    const int with = count_passes(true, kind, wall_speed);
+    const int without = count_passes(false, kind, wall_speed);
+    fprintf(stderr, "    %s wall at %.0f m/s: %d of %d balls passed with continuous collision, %d without\n", wall,
             double(wall_speed), with, ball_cases, without);
     I2D_CHECK(with == 0);
     I2D_CHECK(without > ball_cases / 10);
+}
+
+}  // namespace
+
+I2D_TEST(phys_ccd_fast_balls_never_pass_a_thin_static_wall) { check_no_ball_passes("static", Wall::fixed); }
+
+I2D_TEST(phys_ccd_fast_balls_never_pass_a_kinematic_wall_moving_at_them) {
+    check_no_ball_passes("kinematic", Wall::kinematic, oncoming_wall_speed);
 }
 
 // Bullets against a heavy dynamic wall: non-bullets are swept against static and
 // kinematic shapes only, so the control (not bullets) tunnels.
-I2D_TEST(phys_ccd_bullets_never_pass_a_thin_dynamic_wall) {
-    const int with = count_passes(true, Wall::dynamic);
-    const int without = count_passes(false, Wall::dynamic);
-    fprintf(stderr, "    dynamic wall: %d of %d bullets passed, %d balls that are not bullets\n", with, ball_cases,
-            without);
-    I2D_CHECK(with == 0);
-    I2D_CHECK(without > ball_cases / 10);
-}
+I2D_TEST(phys_ccd_bullets_never_pass_a_thin_dynamic_wall) { check_no_ball_passes("dynamic", Wall::dynamic); }
 
 // Two bullets meeting: a heavy thin wall that is a bullet at 50 m/s and the balls.
 I2D_TEST(phys_ccd_bullets_never_pass_a_thin_bullet_wall_moving_at_them) {
-    constexpr float wall_speed = 50.0f;
-    const int with = count_passes(true, Wall::bullet, wall_speed);
-    const int without = count_passes(false, Wall::bullet, wall_speed);
-    fprintf(stderr, "    bullet wall at %.0f m/s: %d of %d bullets passed, %d when neither is a bullet\n",
-            double(wall_speed), with, ball_cases, without);
-    I2D_CHECK(with == 0);
-    I2D_CHECK(without > ball_cases / 10);
+    check_no_ball_passes("bullet", Wall::bullet, oncoming_wall_speed);
 }
 
 namespace {
