@@ -55,9 +55,7 @@ struct Slide {
 Slide slide_box(bool chain) {
     Scene scene;
     build_floor(scene, chain);
-    Material slick;
-    slick.friction = 0.0f;
-    i2d_body_id box = scene.dynamic_box(i2d_vec2{1.0f, box_half}, box_half, box_half, slick);
+    i2d_body_id box = scene.dynamic_box(i2d_vec2{1.0f, box_half}, box_half, box_half, with_friction(0.0f));
     Slide s{0.0, 1e9, 0.0, 0.0};
     if (I2D_IS_NULL(box)) {
         ++i2d_check_failures;

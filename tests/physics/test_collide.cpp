@@ -15,6 +15,10 @@
 #include <limits>
 
 #include "check.h"
+#include "physics_fixture.hpp"
+
+using phys::deepest_penetration;
+using phys::report_case;
 
 namespace {
 
@@ -68,20 +72,6 @@ struct Expected {
     i2d_vec2 points[2];
 };
 
-void report_context(int failures_before, const char* what) {
-    if (i2d_check_failures != failures_before) {
-        fprintf(stderr, "    ... in case: %s\n", what);
-    }
-}
-
-double max_penetration(const i2d_manifold& m) {
-    double p = -std::numeric_limits<double>::infinity();
-    for (int i = 0; i < m.point_count && i < 2; ++i) {
-        p = std::max(p, double(m.points[i].penetration));
-    }
-    return p;
-}
-
 // Contract properties that hold for every touching pair: the normal is unit and points
 // from A to B (never against the centre difference), and moving B along the normal by the
 // largest penetration leaves the shapes touching or apart.
@@ -94,7 +84,7 @@ void check_properties(A a, B b, const i2d_manifold& m, double gap_tol) {
     i2d_vec2 ca = center_of(a), cb = center_of(b);
     double along = m.normal.x * (double(cb.x) - ca.x) + m.normal.y * (double(cb.y) - ca.y);
     I2D_CHECK(along >= -gap_tol);
-    double p = max_penetration(m);
+    double p = deepest_penetration(m);
     I2D_CHECK(p >= -gap_tol);
     B separated = moved(b, m.normal.x * p, m.normal.y * p);
     I2D_CHECK(gap(a, separated) >= -gap_tol);
@@ -132,7 +122,7 @@ void check_manifold(const char* what, A a, B b, const i2d_manifold& m, const Exp
         check_points(m, e);
         check_properties(a, b, m, tol);
     }
-    report_context(before, what);
+    report_case(before, what);
 }
 
 Expected none() { return Expected{v2(0, 0), 0, 0, {v2(0, 0), v2(0, 0)}}; }
@@ -179,28 +169,22 @@ void check_invalid(const char* what, const i2d_manifold& m) {
     int before = i2d_check_failures;
     I2D_CHECK(m.point_count == 0);
     I2D_CHECK(i2d_last_status() == I2D_ERR_INVALID_ARGUMENT);
-    report_context(before, what);
+    report_case(before, what);
 }
 
-// splitmix64: a tiny fixed-seed generator so the randomized tests are reproducible.
-struct Rng {
-    uint64_t state;
-    uint64_t next() {
-        uint64_t z = (state += 0x9E3779B97F4A7C15ull);
-        z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-        z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-        return z ^ (z >> 31);
-    }
-    double uniform(double lo, double hi) { return lo + (hi - lo) * double(next() >> 11) * (1.0 / 9007199254740992.0); }
-    float coord() { return float(uniform(-3, 3)); }
-    float size() { return float(uniform(0.05, 3)); }
-};
+// Random shapes from a fixed seed, so that the randomized tests are reproducible: corners
+// and centres in [-3, 3), sizes and radii in [0.05, 3).
+using Rng = phys::SplitMix64;
+float random_coord(Rng& rng) { return float(rng.uniform(-3, 3)); }
+float random_size(Rng& rng) { return float(rng.uniform(0.05, 3)); }
 
 i2d_aabb random_aabb(Rng& rng) {
-    float x = rng.coord(), y = rng.coord(), w = rng.size(), h = rng.size();
+    float x = random_coord(rng), y = random_coord(rng), w = random_size(rng), h = random_size(rng);
     return i2d_aabb{i2d_vec2{x, y}, i2d_vec2{x + w, y + h}};
 }
-i2d_circle random_circle(Rng& rng) { return i2d_circle{i2d_vec2{rng.coord(), rng.coord()}, rng.size()}; }
+i2d_circle random_circle(Rng& rng) {
+    return i2d_circle{i2d_vec2{random_coord(rng), random_coord(rng)}, random_size(rng)};
+}
 
 // Reference penetration (double) of a touching pair: the depth of the minimum
 // translation along the contact normal.
@@ -238,7 +222,7 @@ void random_pairs(const char* what, uint64_t seed, MakeA make_a, MakeB make_b) {
         }
         if (m.point_count > 0) {
             ++touching;
-            I2D_CHECK_NEAR(max_penetration(m), reference_penetration(a, b), band);
+            I2D_CHECK_NEAR(deepest_penetration(m), reference_penetration(a, b), band);
             check_properties(a, b, m, band);
         } else {
             ++apart;

@@ -8,20 +8,18 @@
 #include <limits>
 
 #include "check.h"
+#include "physics_fixture.hpp"
+
+using phys::deepest_penetration;
+using phys::pi;
 
 namespace {
 
 const i2d_transform identity = {{0.0f, 0.0f}, {1.0f, 0.0f}};
 
-i2d_transform at(float x, float y, float angle = 0.0f) { return {{x, y}, {std::cos(angle), std::sin(angle)}}; }
+i2d_transform at(float x, float y, double angle = 0.0) { return {{x, y}, phys::rot(angle)}; }
 
 bool message_has(const char* text) { return std::strstr(i2d_last_error_message(), text) != nullptr; }
-
-float deepest(const i2d_manifold& m) {
-    float best = -1e30f;
-    for (int i = 0; i < m.point_count; ++i) best = std::fmax(best, m.points[i].penetration);
-    return best;
-}
 
 }  // namespace
 
@@ -45,9 +43,9 @@ I2D_TEST(physics_collide_make_polygon_and_boxes) {
     I2D_CHECK_NEAR(md.mass, 4.0, 1e-5);
     I2D_CHECK_NEAR(md.rotational_inertia, 4.0 * (4.0 + 1.0) / 12.0, 1e-5);
     const i2d_circle disc = {{1.0f, 1.0f}, 0.5f};
-    I2D_CHECK_NEAR(i2d_compute_circle_mass(&disc, 1.0f).rotational_inertia, 0.5 * 3.14159265 * 0.25 * 0.25, 1e-6);
+    I2D_CHECK_NEAR(i2d_compute_circle_mass(&disc, 1.0f).rotational_inertia, 0.5 * pi * 0.25 * 0.25, 1e-6);
     const i2d_capsule cap = {{-1.0f, 0.0f}, {1.0f, 0.0f}, 0.5f};
-    I2D_CHECK_NEAR(i2d_compute_capsule_mass(&cap, 1.0f).mass, 2.0 + 3.14159265 * 0.25, 1e-5);
+    I2D_CHECK_NEAR(i2d_compute_capsule_mass(&cap, 1.0f).mass, 2.0 + pi * 0.25, 1e-5);
 }
 
 I2D_TEST(physics_collide_make_polygon_refusals) {
@@ -89,7 +87,7 @@ I2D_TEST(physics_collide_every_pair_hand_worked) {
     const i2d_segment seg = {{-2.0f, 0.0f}, {2.0f, 0.0f}};
 
     // Boxes: B turned 90 degrees (still a unit box) resting 0.1 deep on A's top face.
-    i2d_manifold m = i2d_collide_polygons(&box, identity, &box, at(0.5f, 1.9f, 1.5707963f));
+    i2d_manifold m = i2d_collide_polygons(&box, identity, &box, at(0.5f, 1.9f, pi / 2));
     I2D_REQUIRE(m.point_count == 2);
     I2D_CHECK_NEAR(m.normal.y, 1.0, 1e-5);
     I2D_CHECK_NEAR(m.points[0].penetration, 0.1, 1e-5);
@@ -111,26 +109,26 @@ I2D_TEST(physics_collide_every_pair_hand_worked) {
     // Capsule lying on the box top, 0.05 deep: two points.
     m = i2d_collide_polygon_capsule(&box, identity, &cap, at(0.0f, 1.2f));
     I2D_REQUIRE(m.point_count == 2);
-    I2D_CHECK_NEAR(deepest(m), 0.05, 1e-5);
+    I2D_CHECK_NEAR(deepest_penetration(m), 0.05, 1e-5);
     m = i2d_collide_capsule_circle(&cap, identity, &circle, at(0.0f, 0.7f));
     I2D_REQUIRE(m.point_count == 1);
     I2D_CHECK_NEAR(m.points[0].penetration, 0.05, 1e-5);
     I2D_CHECK_NEAR(m.points[0].point.y, 0.225, 1e-5);
     m = i2d_collide_capsules(&cap, identity, &cap, at(0.5f, 0.45f));
     I2D_REQUIRE(m.point_count == 2);
-    I2D_CHECK_NEAR(deepest(m), 0.05, 1e-5);
+    I2D_CHECK_NEAR(deepest_penetration(m), 0.05, 1e-5);
     m = i2d_collide_segment_circle(&seg, identity, &circle, at(1.0f, -0.4f));
     I2D_REQUIRE(m.point_count == 1);
     I2D_CHECK_NEAR(m.normal.y, -1.0, 1e-6);
     I2D_CHECK_NEAR(m.points[0].penetration, 0.1, 1e-5);
-    m = i2d_collide_segment_capsule(&seg, identity, &cap, at(0.0f, 0.2f, 3.14159265f));
+    m = i2d_collide_segment_capsule(&seg, identity, &cap, at(0.0f, 0.2f, pi));
     I2D_REQUIRE(m.point_count == 2);
-    I2D_CHECK_NEAR(deepest(m), 0.05, 1e-5);
+    I2D_CHECK_NEAR(deepest_penetration(m), 0.05, 1e-5);
     // A box dropped on a segment ground, turned 45 degrees: one corner 0.1 deep.
-    m = i2d_collide_segment_polygon(&seg, identity, &box, at(0.0f, 1.4142136f - 0.1f, 0.78539816f));
+    m = i2d_collide_segment_polygon(&seg, identity, &box, at(0.0f, float(std::sqrt(2.0) - 0.1), pi / 4));
     I2D_REQUIRE(m.point_count >= 1);
     I2D_CHECK_NEAR(m.normal.y, 1.0, 1e-5);
-    I2D_CHECK_NEAR(deepest(m), 0.1, 1e-4);
+    I2D_CHECK_NEAR(deepest_penetration(m), 0.1, 1e-4);
 }
 
 I2D_TEST(physics_collide_refusals) {
@@ -178,7 +176,7 @@ I2D_TEST(physics_collide_refusals) {
 
 I2D_TEST(physics_collide_ray_casts) {
     const i2d_polygon box = i2d_make_box(1.0f, 1.0f);
-    i2d_cast_output r = i2d_ray_cast_polygon(&box, at(0.0f, 0.0f, 0.78539816f), {-3.0f, 0.0f}, {6.0f, 0.0f});
+    i2d_cast_output r = i2d_ray_cast_polygon(&box, at(0.0f, 0.0f, pi / 4), {-3.0f, 0.0f}, {6.0f, 0.0f});
     I2D_REQUIRE(r.hit);
     I2D_CHECK_NEAR(r.fraction, (3.0 - std::sqrt(2.0)) / 6.0, 1e-6);
     I2D_CHECK_NEAR(r.point.x, -std::sqrt(2.0), 1e-5);

@@ -11,16 +11,9 @@ using namespace phys;
 
 namespace {
 
-Material with_friction(float mu) {
-    Material m;
-    m.friction = mu;
-    return m;
-}
-
 // A unit box resting on the ground slides off at v0 along x. Returns the distance it
 // slides before stopping, and checks its speed half-way through against v0 - mu g t.
 double slide(float mu_box, float mu_ground, double v0, double mu_expected) {
-    const double g = 10.0;
     Scene scene;
     i2d_body_id ground = scene.ground(0.0f, 50.0f, with_friction(mu_ground));
     i2d_body_id box = scene.dynamic_box(i2d_vec2{0, 0.5f}, 0.5f, 0.5f, with_friction(mu_box), i2d_vec2{float(v0), 0});
@@ -67,7 +60,7 @@ I2D_TEST(phys_friction_geometric_mean) {
 I2D_TEST(phys_friction_static_threshold) {
     // A horizontal push below mu m g does not move a resting box; twice mu m g
     // accelerates it at (F - mu m g) / m = mu g.
-    const double g = 10.0, mu = 0.5;
+    const double mu = 0.5;
     const double m = box_mass(0.5, 0.5, 1.0);
     Scene scene;
     I2D_REQUIRE(!I2D_IS_NULL(scene.ground(0.0f, 50.0f, with_friction(float(mu)))));
@@ -98,8 +91,8 @@ I2D_TEST(phys_friction_changed_on_a_sliding_box_takes_effect_at_once) {
     I2D_REQUIRE(!I2D_IS_NULL(ground) && !I2D_IS_NULL(box));
     I2D_REQUIRE(scene.step(steps_for(0.5)));
     const double free_speed = velocity(box).x;
-    i2d_shape_id shape;
-    I2D_REQUIRE(i2d_body_get_shapes(box, &shape, 1) == 1);
+    const i2d_shape_id shape = only_shape(box);
+    I2D_REQUIRE(!I2D_IS_NULL(shape));
     I2D_CHECK_STATUS(i2d_shape_set_friction(shape, 0.5f), I2D_OK);
     I2D_REQUIRE(scene.step(steps_for(0.4)));
     const double slowed = velocity(box).x;

@@ -62,7 +62,6 @@ Hits drop_ball(double height, float threshold, bool opt_in) {
 }  // namespace
 
 I2D_TEST(phys_hit_event_speed_is_free_fall_speed) {
-    const double g = 10.0;
     for (const double h : {0.5, 2.0, 7.5}) {
         const int before = i2d_check_failures;
         const Hits hits = drop_ball(h, 1.0f, true);

@@ -47,8 +47,7 @@ Chain make_chain(Scene& s, bool with_weight, bool level = false) {
     Chain c;
     const i2d_body_id ceiling = s.anchor(top);
     i2d_body_id above = ceiling;
-    Material link;
-    link.density = density_for(link_mass, link_half_width, 0.5f * link_length);
+    const Material link = with_density(density_for(link_mass, link_half_width, 0.5f * link_length));
     // Along the chain from the top: where a point at distance d lies, and a box's half sizes.
     const auto along = [&](float d) { return level ? i2d_vec2{top.x + d, top.y} : i2d_vec2{top.x, top.y - d}; };
     const float half_x = level ? 0.5f * link_length : link_half_width;
@@ -70,8 +69,7 @@ Chain make_chain(Scene& s, bool with_weight, bool level = false) {
     c.last_link = above;
     if (with_weight) {
         const float end = float(chain_length);
-        Material heavy;
-        heavy.density = density_for(weight_mass, weight_half_size, weight_half_size);
+        const Material heavy = with_density(density_for(weight_mass, weight_half_size, weight_half_size));
         const i2d_body_id weight =
             s.dynamic_box(along(end + weight_half_size), weight_half_size, weight_half_size, heavy);
         i2d_revolute_joint_def def = i2d_default_revolute_joint_def();
@@ -90,7 +88,7 @@ Chain make_chain(Scene& s, bool with_weight, bool level = false) {
 double stretch(const Chain& c, bool level = false) {
     const i2d_vec2 end = i2d_body_get_world_point(
         c.last_link, level ? i2d_vec2{0.5f * link_length, 0.0f} : i2d_vec2{0.0f, -0.5f * link_length});
-    return std::hypot(double(end.x - top.x), double(end.y - top.y)) - chain_length;
+    return distance(end, top) - chain_length;
 }
 
 // What a soft-joint solver gives, for the report beside the measurement: each rigid joint
@@ -234,7 +232,7 @@ I2D_TEST(phys_joint_chain_with_100kg_weight_released_level_keeps_its_energy) {
             const i2d_vec2 a = i2d_body_get_world_point(c.bodies[i], link_far);
             const i2d_vec2 near_end = i + 2 == c.bodies.size() ? weight_near : link_near;
             const i2d_vec2 b = i2d_body_get_world_point(c.bodies[i + 1], near_end);
-            widest = std::max(widest, std::hypot(double(a.x - b.x), double(a.y - b.y)));
+            widest = std::max(widest, distance(a, b));
         }
         for (const i2d_body_id b : c.bodies) {
             finite = finite && is_finite(b);

@@ -30,11 +30,7 @@ struct Spring {
 
 // A mass on a spring is measured for seconds as its amplitude decays, so sleep is off (the
 // world would rightly put a body this slow to sleep, freezing the oscillation).
-i2d_world_def spring_world_def() {
-    i2d_world_def def = Scene::zero_gravity_def();
-    def.enable_sleep = false;
-    return def;
-}
+i2d_world_def spring_world_def() { return Scene::no_sleep_def(Scene::zero_gravity_def()); }
 
 // A 0.25 m disc on a spring of rest_length from a static point, released at rest
 // stretched by `amplitude` along x.

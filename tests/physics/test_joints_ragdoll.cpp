@@ -35,7 +35,7 @@ constexpr double max_below_ground = 0.05;  // m
 double joint_gap(i2d_joint_id joint) {
     const i2d_vec2 a = i2d_body_get_world_point(i2d_joint_get_body_a(joint), i2d_joint_get_local_anchor_a(joint));
     const i2d_vec2 b = i2d_body_get_world_point(i2d_joint_get_body_b(joint), i2d_joint_get_local_anchor_b(joint));
-    return std::hypot(double(a.x - b.x), double(a.y - b.y));
+    return distance(a, b);
 }
 
 // Drops `count` ragdolls in layers of per_layer, each in its own filter group (so that a
@@ -64,7 +64,7 @@ void drop_ragdolls(int count, double seconds) {
     // Nothing can move faster than falling from the highest layer's top (the head at about
     // 1.8 m above the feet) with a margin for the joints' springs and contact push-out.
     const double top = drop_height + layer_height * ((count - 1) / per_layer) + 1.8;
-    const double speed_bound = std::sqrt(2.0 * 10.0 * top) + 3.0;
+    const double speed_bound = std::sqrt(2.0 * s.gravity() * top) + 3.0;
     double fastest = 0.0, widest_gap = 0.0, lowest = 1e9;
     bool finite = true;
     int asleep_at = -1;

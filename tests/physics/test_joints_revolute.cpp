@@ -60,9 +60,7 @@ I2D_TEST(phys_joint_pendulum_small_angle_period_is_2pi_sqrt_l_over_g) {
         I2D_REQUIRE(s.step());
         const i2d_vec2 x = position(p.bob);
         swing.add(k * double(time_step), double(x.x - pivot.x));
-        worst_length_error = std::max(worst_length_error, std::fabs(std::hypot(double(x.x - pivot.x),
-                                                                                double(x.y - pivot.y)) -
-                                                                     pendulum_length));
+        worst_length_error = std::max(worst_length_error, std::fabs(distance(x, pivot) - pendulum_length));
     }
     const double expected = physical_pendulum_period(p.bob, g, amplitude);
     const double point_mass = 2.0 * pi * std::sqrt(pendulum_length / g);

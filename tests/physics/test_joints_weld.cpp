@@ -64,12 +64,11 @@ I2D_TEST(phys_joint_weld_to_static_holds_within_1mm_under_gravity) {
     for (int k = 0; k < steps_for(3.0); ++k) {
         I2D_REQUIRE(s.step());
         const i2d_vec2 far = i2d_body_get_world_point(bar, far_end_local), c = position(bar);
-        worst = std::max({worst, std::hypot(double(far.x - far_start.x), double(far.y - far_start.y)),
-                          std::hypot(double(c.x - centre_start.x), double(c.y - centre_start.y))});
+        worst = std::max({worst, distance(far, far_start), distance(c, centre_start)});
     }
     fprintf(stderr, "    worst displacement of the bar's centre or far end: %.4f mm (allowed 1 mm); angle %.2e rad; "
             "reaction (%.4f, %.4f) N, %.4f N m (weight %.4f N, its torque %.4f N m)\n",
-            1000.0 * worst, angle(bar), double(i2d_joint_get_reaction_force(joint).x),
+            1000.0 * worst, angle_of(bar), double(i2d_joint_get_reaction_force(joint).x),
             double(i2d_joint_get_reaction_force(joint).y), double(i2d_joint_get_reaction_torque(joint)),
             double(i2d_body_get_mass(bar)) * s.gravity(), double(i2d_body_get_mass(bar)) * s.gravity() * 0.5);
     I2D_CHECK(worst < tolerance);
@@ -84,7 +83,7 @@ I2D_TEST(phys_joint_weld_to_static_holds_within_1mm_under_gravity) {
 I2D_TEST(phys_joint_weld_cantilever_of_10_boxes_holds_its_shape) {
     constexpr double length = 2.0 * box_half_length * cantilever_boxes;
     constexpr double max_drop = 0.02 * length;         // m
-    constexpr double max_turn = 2.0 * pi / 180.0;      // rad
+    constexpr double max_turn = degrees(2.0);          // rad
     constexpr double max_creep = 0.001;                // m
     Scene s;
     const std::vector<i2d_body_id> boxes = build_cantilever(s);
@@ -97,11 +96,11 @@ I2D_TEST(phys_joint_weld_cantilever_of_10_boxes_holds_its_shape) {
     double turn = 0.0;
     bool finite = true;
     for (const i2d_body_id b : boxes) {
-        turn = std::max(turn, std::fabs(angle(b)));
+        turn = std::max(turn, std::fabs(angle_of(b)));
         finite = finite && is_finite(b);
     }
     const double drop = double(cantilever_wall.y) - double(tip.y);
-    const double creep = std::hypot(double(tip.x - tip_at_2s.x), double(tip.y - tip_at_2s.y));
+    const double creep = distance(tip, tip_at_2s);
     fprintf(stderr, "    tip dropped %.3f mm (allowed %.0f cm), largest box angle %.4f deg, tip moved %.4f mm "
             "between 2 s and 5 s\n",
             1000.0 * drop, 100.0 * max_drop, turn * 180.0 / pi, 1000.0 * creep);
@@ -126,7 +125,7 @@ I2D_TEST(phys_joint_weld_cantilever_of_10_boxes_stays_joined) {
         for (std::size_t i = 1; i < boxes.size(); ++i) {
             const i2d_vec2 a = i2d_body_get_world_point(boxes[i - 1], right_end);
             const i2d_vec2 b = i2d_body_get_world_point(boxes[i], left_end);
-            widest = std::max(widest, std::hypot(double(a.x - b.x), double(a.y - b.y)));
+            widest = std::max(widest, distance(a, b));
             finite = finite && is_finite(boxes[i]);
         }
     }

@@ -31,8 +31,7 @@ I2D_TEST(phys_joint_wheel_car_sags_by_its_weight_over_the_spring_stiffness) {
     constexpr float spring_hertz = 4.0f, damping_ratio = 0.7f;
     Scene s;
     I2D_REQUIRE(!I2D_IS_NULL(s.ground(0.0f)));
-    Material steel_ish;
-    steel_ish.density = 2.0f;
+    const Material steel_ish = with_density(2.0f);
     const i2d_vec2 chassis_at{0.0f, wheel_radius + axle_below_chassis};
     const i2d_body_id chassis = s.dynamic_box(chassis_at, chassis_half_width, chassis_half_height, steel_ish);
     I2D_REQUIRE(!I2D_IS_NULL(chassis));
@@ -68,6 +67,6 @@ I2D_TEST(phys_joint_wheel_car_sags_by_its_weight_over_the_spring_stiffness) {
     // The wheel rides up the axis as the chassis settles onto the springs.
     I2D_CHECK_NEAR(sag[0], expected, 0.05 * expected);
     I2D_CHECK_NEAR(sag[1], expected, 0.05 * expected);
-    I2D_CHECK_NEAR(angle(chassis), 0.0, 1e-3);
+    I2D_CHECK_NEAR(angle_of(chassis), 0.0, 1e-3);
 }
 

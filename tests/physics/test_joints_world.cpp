@@ -186,12 +186,27 @@ bool listed(i2d_world_id world, i2d_joint_id joint) {
     return found;
 }
 
-// Events come from the joints solved in a step: a sleeping weight's joint is not solved (its
-// reaction is that of its last awake step), so these scenes keep their bodies awake.
-i2d_world_def no_sleep_def() {
-    i2d_world_def def = i2d_default_world_def();
-    def.enable_sleep = false;
-    return def;
+// How often each of two breakable joints, the first to break at 0.9 of its load and the
+// second at 1.1, was listed over 2 s of steps; the second only once the load has settled
+// (after 0.05 s).
+struct Listings {
+    int steps = steps_for(2.0), settling_steps = steps_for(0.05);
+    int low = 0, high = 0, high_first = -1;  // high_first: the first step listing the second
+};
+
+bool count_listings(Scene& s, const i2d_joint_id (&joints)[2], Listings* out) {
+    for (int k = 0; k < out->steps; ++k) {
+        if (!s.step()) {
+            return false;
+        }
+        out->low += listed(s.world, joints[0]);
+        const bool high = k >= out->settling_steps && listed(s.world, joints[1]);
+        out->high += high;
+        if (high && out->high_first < 0) {
+            out->high_first = k + 1;
+        }
+    }
+    return true;
 }
 
 }  // namespace
@@ -200,7 +215,9 @@ i2d_world_def no_sleep_def() {
 // The first is listed after every step, the second never. Destroyed between steps, the
 // first lets its weight fall freely (g t^2 / 2 in the next half second).
 I2D_TEST(phys_joint_breakable_force_event_fires_above_the_threshold_and_not_below) {
-    Scene s(no_sleep_def());
+    // Events come from the joints solved in a step: a sleeping weight's joint is not solved
+    // (its reaction is that of its last awake step), so these scenes keep their bodies awake.
+    Scene s(Scene::no_sleep_def());
     const double g = s.gravity();
     i2d_joint_id joints[2];
     i2d_body_id weights[2];
@@ -216,23 +233,14 @@ I2D_TEST(phys_joint_breakable_force_event_fires_above_the_threshold_and_not_belo
         joints[i] = i2d_joint_create_revolute(s.world, &join_at(def, ceiling, weights[i], pivot));
         I2D_REQUIRE(!I2D_IS_NULL(joints[i]));
     }
-    int low_listed = 0, high_listed = 0, high_first = -1;
-    const int steps = steps_for(2.0), settling_steps = steps_for(0.05);
-    for (int k = 0; k < steps; ++k) {
-        I2D_REQUIRE(s.step());
-        low_listed += listed(s.world, joints[0]);
-        const bool high = k >= settling_steps && listed(s.world, joints[1]);
-        high_listed += high;
-        if (high && high_first < 0) {
-            high_first = k + 1;
-        }
-    }
+    Listings l;
+    I2D_REQUIRE(count_listings(s, joints, &l));
     fprintf(stderr, "    threshold 0.9 m g listed after %d of %d steps, 1.1 m g after %d (first: step %d); reaction %.4f N, "
             "m g %.4f N\n",
-            low_listed, steps, high_listed, high_first, speed(i2d_joint_get_reaction_force(joints[0])),
+            l.low, l.steps, l.high, l.high_first, speed(i2d_joint_get_reaction_force(joints[0])),
             double(i2d_body_get_mass(weights[0])) * g);
-    I2D_CHECK(low_listed == steps);
-    I2D_CHECK(high_listed == 0);
+    I2D_CHECK(l.low == l.steps);
+    I2D_CHECK(l.high == 0);
     // Broken between steps, as a game would on the event: the weight falls freely.
     const double y0 = position(weights[0]).y;
     I2D_CHECK_STATUS(i2d_joint_destroy(joints[0]), I2D_OK);
@@ -250,7 +258,7 @@ I2D_TEST(phys_joint_breakable_force_event_fires_above_the_threshold_and_not_belo
 // starts in free fall): 1.44 m g d at the first step, 0.91 at the second, within 4 % from
 // the third, 2026-11-24; a rigid joint would hold m g d from the start.
 I2D_TEST(phys_joint_breakable_torque_event_fires_above_the_threshold_and_not_below) {
-    Scene s(no_sleep_def());
+    Scene s(Scene::no_sleep_def());  // awake, as the test above says why
     const double g = s.gravity();
     i2d_joint_id joints[2];
     const double factors[2] = {0.9, 1.1};
@@ -265,20 +273,11 @@ I2D_TEST(phys_joint_breakable_torque_event_fires_above_the_threshold_and_not_bel
         joints[i] = i2d_joint_create_weld(s.world, &join_at(def, ground, bar, wall));
         I2D_REQUIRE(!I2D_IS_NULL(joints[i]));
     }
-    int low_listed = 0, high_listed = 0, high_first = -1;
-    const int steps = steps_for(2.0), settling_steps = steps_for(0.05);
-    for (int k = 0; k < steps; ++k) {
-        I2D_REQUIRE(s.step());
-        low_listed += listed(s.world, joints[0]);
-        const bool high = k >= settling_steps && listed(s.world, joints[1]);
-        high_listed += high;
-        if (high && high_first < 0) {
-            high_first = k + 1;
-        }
-    }
+    Listings l;
+    I2D_REQUIRE(count_listings(s, joints, &l));
     fprintf(stderr, "    torque threshold 0.9 m g d listed after %d of %d steps, 1.1 m g d after %d once settled (first: step %d); "
             "reaction torque %.4f N m\n",
-            low_listed, steps, high_listed, high_first, double(i2d_joint_get_reaction_torque(joints[0])));
-    I2D_CHECK(low_listed == steps);
-    I2D_CHECK(high_listed == 0);
+            l.low, l.steps, l.high, l.high_first, double(i2d_joint_get_reaction_torque(joints[0])));
+    I2D_CHECK(l.low == l.steps);
+    I2D_CHECK(l.high == 0);
 }

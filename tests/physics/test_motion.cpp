@@ -13,14 +13,14 @@ I2D_TEST(phys_motion_mass_from_shapes) {
     // Mass = density x area: box 4 hw hh, circle pi r^2; a dynamic body without shapes
     // weighs 1 kg; static and kinematic bodies report 0.
     Scene scene;
-    i2d_body_id box = scene.dynamic_box(i2d_vec2{0, 0}, 1.5f, 0.25f, with_restitution(0.0f, 2.0f));
-    i2d_body_id ball = scene.dynamic_circle(i2d_vec2{5, 0}, 0.75f, with_restitution(0.0f, 3.0f));
+    i2d_body_id box = scene.dynamic_box(i2d_vec2{0, 0}, 1.5f, 0.25f, with_density(2.0f));
+    i2d_body_id ball = scene.dynamic_circle(i2d_vec2{5, 0}, 0.75f, with_density(3.0f));
     I2D_REQUIRE(!I2D_IS_NULL(box) && !I2D_IS_NULL(ball));
     I2D_CHECK_NEAR(i2d_body_get_mass(box), box_mass(1.5, 0.25, 2.0), 1e-5);
     I2D_CHECK_NEAR(i2d_body_get_mass(ball), circle_mass(0.75, 3.0), 1e-5);
 
     // A second shape adds its mass.
-    i2d_shape_def sd = shape_def(with_restitution(0.0f, 0.5f));
+    i2d_shape_def sd = shape_def(with_density(0.5f));
     i2d_circle c{i2d_vec2{0, 0}, 0.5f};
     I2D_REQUIRE(!I2D_IS_NULL(i2d_shape_create_circle(box, &sd, &c)));
     I2D_CHECK_NEAR(i2d_body_get_mass(box), box_mass(1.5, 0.25, 2.0) + circle_mass(0.5, 0.5), 1e-5);
@@ -42,7 +42,7 @@ I2D_TEST(phys_motion_free_fall) {
     // y_n = y0 - g h^2 n (n + 1) / 2 = y0 - g t^2 / 2 - g h t / 2: the position error
     // against the exact parabola is at most g h t / 2. x never changes.
     Scene scene;
-    const double g = 10.0, y0 = 10.0;
+    const double y0 = 10.0;
     i2d_body_id ball = scene.dynamic_circle(i2d_vec2{3, float(y0)}, 0.5f);
     I2D_REQUIRE(!I2D_IS_NULL(ball));
     double worst_v = 0.0, worst_y_excess = 0.0;
@@ -61,7 +61,7 @@ I2D_TEST(phys_motion_free_fall) {
     I2D_CHECK(x_fixed);
     // World gravity read back.
     i2d_vec2 gravity = i2d_world_get_gravity(scene.world);
-    I2D_CHECK(gravity.x == 0.0f && gravity.y == -10.0f);
+    I2D_CHECK(gravity.x == 0.0f && gravity.y == float(-g));
 }
 
 I2D_TEST(phys_motion_gravity_scale) {
@@ -79,10 +79,10 @@ I2D_TEST(phys_motion_gravity_scale) {
     I2D_REQUIRE(scene.step(steps_for(1.0)));
     for (int i = 0; i < 4; ++i) {
         int before = i2d_check_failures;
-        const double v_expected = -10.0 * scales[i] * 1.0;
+        const double v_expected = -g * scales[i] * 1.0;
         I2D_CHECK_NEAR(velocity(bodies[i]).y, v_expected, 1e-4 * 20 + 1e-6);
         // y = -g s t^2 / 2 within the semi-implicit bound g |s| h t / 2.
-        I2D_CHECK_NEAR(position(bodies[i]).y, -10.0 * scales[i] / 2, 10.0 * std::fabs(scales[i]) * substep / 2 + 1e-4);
+        I2D_CHECK_NEAR(position(bodies[i]).y, -g * scales[i] / 2, g * std::fabs(scales[i]) * substep / 2 + 1e-4);
         char what[48];
         snprintf(what, sizeof what, "gravity_scale %g", scales[i]);
         report_case(before, what);
@@ -94,8 +94,8 @@ I2D_TEST(phys_motion_set_gravity) {
     // Gravity can point anywhere: with (3, -4) a body reaches v = (3, -4) m/s after 1 s.
     Scene scene;
     I2D_CHECK_STATUS(i2d_world_set_gravity(scene.world, i2d_vec2{3, -4}), I2D_OK);
-    i2d_vec2 g = i2d_world_get_gravity(scene.world);
-    I2D_CHECK(g.x == 3.0f && g.y == -4.0f);
+    const i2d_vec2 gravity = i2d_world_get_gravity(scene.world);
+    I2D_CHECK(gravity.x == 3.0f && gravity.y == -4.0f);
     i2d_body_id box = scene.dynamic_box(i2d_vec2{0, 0}, 0.5f, 0.5f);
     I2D_REQUIRE(!I2D_IS_NULL(box));
     I2D_REQUIRE(scene.step(steps_for(1.0)));
@@ -182,7 +182,7 @@ I2D_TEST(phys_motion_force) {
     // x = a t^2 / 2 within a h t / 2. Forces are cleared after each step: once we stop
     // applying it the velocity stays constant.
     Scene scene(Scene::zero_gravity_def());
-    i2d_body_id box = scene.dynamic_box(i2d_vec2{0, 0}, 1.0f, 0.5f, with_restitution(0.0f, 2.0f));
+    i2d_body_id box = scene.dynamic_box(i2d_vec2{0, 0}, 1.0f, 0.5f, with_density(2.0f));
     I2D_REQUIRE(!I2D_IS_NULL(box));
     const double m = box_mass(1.0, 0.5, 2.0);
     I2D_CHECK_NEAR(i2d_body_get_mass(box), m, 1e-6);
@@ -209,7 +209,7 @@ I2D_TEST(phys_motion_linear_impulse) {
     // J = (2, -6) N s gives dv = (0.5, -1.5) m/s. Impulses add up. Kinematic and static
     // bodies do not respond.
     Scene scene(Scene::zero_gravity_def());
-    i2d_body_id box = scene.dynamic_box(i2d_vec2{0, 0}, 1.0f, 0.5f, with_restitution(0.0f, 2.0f),
+    i2d_body_id box = scene.dynamic_box(i2d_vec2{0, 0}, 1.0f, 0.5f, with_density(2.0f),
                                         i2d_vec2{1, 1});
     i2d_body_id kin = scene.box(body_def(I2D_BODY_KINEMATIC, i2d_vec2{5, 0}, i2d_vec2{1, 0}), 0.5f, 0.5f);
     I2D_REQUIRE(!I2D_IS_NULL(box) && !I2D_IS_NULL(kin));

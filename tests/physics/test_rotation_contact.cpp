@@ -13,38 +13,6 @@ using namespace phys;
 
 namespace {
 
-constexpr double g = 10.0;
-
-double deg(double d) { return d * pi / 180.0; }
-
-double wrap(double a) {
-    a = std::fmod(a, 2 * pi);
-    if (a > pi) {
-        a -= 2 * pi;
-    } else if (a <= -pi) {
-        a += 2 * pi;
-    }
-    return a;
-}
-
-double angle_of(i2d_body_id b) {
-    const i2d_rot q = i2d_body_get_rotation(b);
-    return std::atan2(double(q.s), double(q.c));
-}
-
-i2d_rot rot(double angle) { return i2d_rot{float(std::cos(angle)), float(std::sin(angle))}; }
-
-// Running min/max of a value.
-struct Range {
-    double lo = INFINITY, hi = -INFINITY;
-    void add(double v) {
-        lo = std::min(lo, v);
-        hi = std::max(hi, v);
-    }
-    double width() const { return hi - lo; }
-    double abs_max() const { return std::max(std::fabs(lo), std::fabs(hi)); }
-};
-
 // The total turn of a body, unwrapped across the +-pi seam (sample at least every
 // quarter turn).
 struct TurnTracker {
@@ -52,17 +20,15 @@ struct TurnTracker {
     explicit TurnTracker(i2d_body_id b) : last(angle_of(b)) {}
     void add(i2d_body_id b) {
         const double a = angle_of(b);
-        total += wrap(a - last);
+        total += wrap_angle(a - last);
         last = a;
     }
 };
 
 // A body turned by angle with one shape made by `make`.
 template <class MakeShape>
-i2d_body_id make_body(Scene& scene, i2d_body_type type, i2d_vec2 position, double angle, MakeShape make,
-                      i2d_vec2 velocity = i2d_vec2{0, 0}) {
-    i2d_body_def def = body_def(type, position, velocity);
-    def.rotation = rot(angle);
+i2d_body_id make_body(Scene& scene, i2d_body_type type, i2d_vec2 position, double angle, MakeShape make) {
+    const i2d_body_def def = turned_body_def(type, position, angle);
     i2d_body_id body = i2d_body_create(scene.world, &def);
     if (I2D_IS_NULL(body)) {
         fprintf(stderr, "    body creation failed: %s\n", i2d_last_error_message());
@@ -75,46 +41,10 @@ i2d_body_id make_body(Scene& scene, i2d_body_type type, i2d_vec2 position, doubl
     return body;
 }
 
-i2d_body_id turned_box(Scene& scene, i2d_body_type type, i2d_vec2 position, double angle, float hw, float hh,
-                       const Material& m = Material{}, i2d_vec2 velocity = i2d_vec2{0, 0}) {
-    return make_body(
-        scene, type, position, angle,
-        [&](i2d_body_id b) {
-            i2d_shape_def sd = shape_def(m);
-            return i2d_shape_create_box(b, &sd, hw, hh);
-        },
-        velocity);
-}
+// The slopes here: 8 m long.
+constexpr double slope_half_length = 4.0;
 
-Material with_friction(float mu) {
-    Material m;
-    m.friction = mu;
-    return m;
-}
-
-// A static slope: a 8 x 0.5 box turned by theta about (x0, 0). Its top face is the line
-// through center + n 0.25 along t, with t = (cos, sin) and n = (-sin, cos).
-struct Slope {
-    double theta, x0;
-    double tx() const { return std::cos(theta); }
-    double ty() const { return std::sin(theta); }
-    double nx() const { return -std::sin(theta); }
-    double ny() const { return std::cos(theta); }
-    static constexpr double half_length = 4.0, half_thickness = 0.25;
-    // A point at distance s along the slope and height h above its top face.
-    i2d_vec2 at(double s, double h) const {
-        return i2d_vec2{float(x0 + tx() * s + nx() * (half_thickness + h)), float(ty() * s + ny() * (half_thickness + h))};
-    }
-    // Coordinates of a world point: along the slope, and above its top face.
-    double along(i2d_vec2 p) const { return (p.x - x0) * tx() + p.y * ty(); }
-    double above(i2d_vec2 p) const { return (p.x - x0) * nx() + p.y * ny() - half_thickness; }
-};
-
-i2d_body_id make_slope(Scene& scene, const Slope& s, const Material& m = Material{}) {
-    return turned_box(scene, I2D_BODY_STATIC, i2d_vec2{float(s.x0), 0}, s.theta, float(Slope::half_length),
-                      float(Slope::half_thickness), m);
-}
-
+// Kinetic energy, J, with the closed-form mass and inertia rather than the engine's.
 double kinetic_energy(i2d_body_id b, double m, double inertia) {
     const i2d_vec2 v = velocity(b);
     const double w = i2d_body_get_angular_velocity(b);
@@ -245,7 +175,7 @@ I2D_TEST(phys_rotcontact_tilted_drop_lands_flat) {
     // above the ground, and it is at rest.
     Scene scene;
     I2D_REQUIRE(!I2D_IS_NULL(scene.ground()));
-    i2d_body_id box = turned_box(scene, I2D_BODY_DYNAMIC, i2d_vec2{0, 1.5f}, deg(30), 0.5f, 0.5f);
+    i2d_body_id box = scene.turned_box(I2D_BODY_DYNAMIC, i2d_vec2{0, 1.5f}, degrees(30), 0.5f, 0.5f);
     I2D_REQUIRE(!I2D_IS_NULL(box));
     I2D_REQUIRE(scene.step(steps_for(4.0)));
     const double a = angle_of(box);
@@ -266,8 +196,8 @@ I2D_TEST(phys_rotcontact_capsule_rolls_off_slope) {
     // tips once tan(theta) > 0.1 / 0.4 = 0.25 (tan 20 = 0.36) and rolls downhill
     // (counter-clockwise, to the left) off the slope's lower end.
     Scene scene;
-    const Slope slope{deg(20), 0.0};
-    I2D_REQUIRE(!I2D_IS_NULL(make_slope(scene, slope)));
+    const Slope slope{degrees(20), slope_half_length};
+    I2D_REQUIRE(!I2D_IS_NULL(scene.slope(slope)));
     i2d_body_id capsule = make_body(scene, I2D_BODY_DYNAMIC, slope.at(1.0, 0.4 + 0.002), slope.theta, [](i2d_body_id b) {
         i2d_shape_def sd = i2d_default_shape_def();
         return i2d_shape_create_capsule(b, &sd, i2d_vec2{-0.1f, 0}, i2d_vec2{0.1f, 0}, 0.4f);
@@ -278,16 +208,16 @@ I2D_TEST(phys_rotcontact_capsule_rolls_off_slope) {
     for (int s = 1; s <= steps_for(5.0); ++s) {
         I2D_REQUIRE(scene.step());
         turn.add(capsule);
-        if (left_at < 0 && slope.along(i2d_body_get_world_center_of_mass(capsule)) < -Slope::half_length) {
+        if (left_at < 0 && slope.along(i2d_body_get_world_center_of_mass(capsule)) < -slope.half_length) {
             left_at = s * double(time_step);
         }
     }
     const i2d_vec2 c = i2d_body_get_world_center_of_mass(capsule);
     printf("    capsule on 20 deg slope: rolled %.2f rad, left the slope at %.2f s, ends %.2f m along it at (%.2f, %.2f)\n",
            turn.total, left_at, slope.along(c), c.x, c.y);
-    I2D_CHECK(turn.total > pi / 2);                      // it rolled, not just slid
-    I2D_CHECK(slope.along(c) < -Slope::half_length);     // past the lower end
-    I2D_CHECK(c.y < slope.at(-Slope::half_length, 0).y);  // and below it
+    I2D_CHECK(turn.total > pi / 2);                       // it rolled, not just slid
+    I2D_CHECK(slope.along(c) < -slope.half_length);       // past the lower end
+    I2D_CHECK(c.y < slope.at(-slope.half_length, 0).y);  // and below it
 }
 
 I2D_TEST(phys_rotcontact_box_holds_on_slope) {
@@ -296,11 +226,11 @@ I2D_TEST(phys_rotcontact_box_holds_on_slope) {
     // 2 s and keeps the slope's angle. A box of friction 0.05 (mixed sqrt(0.05 x 0.6) =
     // 0.173 < 0.36) slides down at a = g (sin 20 - mu cos 20) = 1.79 m/s^2.
     Scene scene;
-    const Slope slope{deg(20), 0.0};
-    I2D_REQUIRE(!I2D_IS_NULL(make_slope(scene, slope, with_friction(0.6f))));
-    i2d_body_id holder = turned_box(scene, I2D_BODY_DYNAMIC, slope.at(2.5, 0.5), slope.theta, 0.5f, 0.5f,
+    const Slope slope{degrees(20), slope_half_length};
+    I2D_REQUIRE(!I2D_IS_NULL(scene.slope(slope, with_friction(0.6f))));
+    i2d_body_id holder = scene.turned_box(I2D_BODY_DYNAMIC, slope.at(2.5, 0.5), slope.theta, 0.5f, 0.5f,
                                     with_friction(0.6f));
-    i2d_body_id slider = turned_box(scene, I2D_BODY_DYNAMIC, slope.at(-2.5, 0.5), slope.theta, 0.5f, 0.5f,
+    i2d_body_id slider = scene.turned_box(I2D_BODY_DYNAMIC, slope.at(-2.5, 0.5), slope.theta, 0.5f, 0.5f,
                                     with_friction(0.05f));
     I2D_REQUIRE(!I2D_IS_NULL(holder) && !I2D_IS_NULL(slider));
     const double s_holder = slope.along(position(holder)), s_slider = slope.along(position(slider));
@@ -410,11 +340,8 @@ I2D_TEST(phys_rotcontact_stack_of_three) {
     const double slop = i2d_default_world_def().contact_slop;
     Scene scene;
     I2D_REQUIRE(!I2D_IS_NULL(scene.ground()));
-    i2d_body_id boxes[3];
-    for (int i = 0; i < 3; ++i) {
-        boxes[i] = scene.dynamic_box(i2d_vec2{0, 0.5f + float(i)}, 0.5f, 0.5f);
-        I2D_REQUIRE(!I2D_IS_NULL(boxes[i]));
-    }
+    const std::vector<i2d_body_id> boxes = scene.column(0.0f, 3);
+    I2D_REQUIRE(boxes.size() == 3);
     double turn = 0, slide = 0;
     for (int s = 0; s < steps_for(3.0); ++s) {
         I2D_REQUIRE(scene.step());
@@ -483,10 +410,7 @@ struct Collision {
 
 bool collide_off_centre(float restitution, float friction, Collision* out) {
     Scene scene(Scene::zero_gravity_def());
-    Material ma, mb;
-    ma.restitution = mb.restitution = restitution;
-    ma.friction = mb.friction = friction;
-    mb.density = 2.0f;
+    const Material ma = material(friction, restitution), mb = material(friction, restitution, 2.0f);
     i2d_body_id a = scene.dynamic_box(i2d_vec2{-2, 0.3f}, 0.5f, 0.5f, ma, i2d_vec2{4, 0});
     i2d_body_id b = scene.dynamic_box(i2d_vec2{2, -0.3f}, 0.5f, 0.5f, mb, i2d_vec2{-1, 0});
     if (I2D_IS_NULL(a) || I2D_IS_NULL(b)) {

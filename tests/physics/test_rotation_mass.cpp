@@ -23,16 +23,9 @@ double rel_tol(double expected) { return rel * std::fabs(expected) + 1e-7; }
 
 i2d_body_id make_body(Scene& scene, i2d_body_type type, i2d_vec2 position, float angle = 0.0f,
                       bool fixed_rotation = false) {
-    i2d_body_def def = body_def(type, position);
-    def.rotation = i2d_rot{float(std::cos(double(angle))), float(std::sin(double(angle)))};
+    i2d_body_def def = turned_body_def(type, position, angle);
     def.fixed_rotation = fixed_rotation;
     return i2d_body_create(scene.world, &def);
-}
-
-i2d_shape_def density_def(float density) {
-    i2d_shape_def def = i2d_default_shape_def();
-    def.density = density;
-    return def;
 }
 
 // Mass, inertia and local centre of mass, checked against closed-form values.
@@ -46,11 +39,10 @@ void check_mass(i2d_body_id body, double m, double inertia, double cx, double cy
 
 // The closed form of the world centre of mass: position + R(angle) local.
 void check_world_center(i2d_body_id body, double px, double py, double angle, double cx, double cy) {
-    const double wx = px + std::cos(angle) * cx - std::sin(angle) * cy;
-    const double wy = py + std::sin(angle) * cx + std::cos(angle) * cy;
+    const Point expected = transform_point(px, py, angle, cx, cy);
     const i2d_vec2 w = i2d_body_get_world_center_of_mass(body);
-    I2D_CHECK_NEAR(w.x, wx, 2e-5 * (1 + std::fabs(wx)));
-    I2D_CHECK_NEAR(w.y, wy, 2e-5 * (1 + std::fabs(wy)));
+    I2D_CHECK_NEAR(w.x, expected.x, 2e-5 * (1 + std::fabs(expected.x)));
+    I2D_CHECK_NEAR(w.y, expected.y, 2e-5 * (1 + std::fabs(expected.y)));
 }
 
 // Everything a refused shape creation must leave untouched, bit for bit.
@@ -97,7 +89,7 @@ I2D_TEST(phys_rotmass_box) {
     Scene scene;
     i2d_body_id body = make_body(scene, I2D_BODY_DYNAMIC, i2d_vec2{2, -1}, 0.7f);
     I2D_REQUIRE(!I2D_IS_NULL(body));
-    i2d_shape_def sd = density_def(2.0f);
+    i2d_shape_def sd = shape_def(with_density(2.0f));
     I2D_REQUIRE(!I2D_IS_NULL(i2d_shape_create_box(body, &sd, 1.5f, 0.25f)));
     const double m = 2.0 * 3.0 * 0.5, inertia = m * (3.0 * 3.0 + 0.5 * 0.5) / 12.0;
     printf("    box 3 x 0.5, density 2: m %.6f (expected %.6f), I %.6f (expected %.6f)\n", i2d_body_get_mass(body), m,
@@ -112,7 +104,7 @@ I2D_TEST(phys_rotmass_disc) {
     Scene scene;
     i2d_body_id body = make_body(scene, I2D_BODY_DYNAMIC, i2d_vec2{-3, 4}, -0.4f);
     I2D_REQUIRE(!I2D_IS_NULL(body));
-    i2d_shape_def sd = density_def(2.0f);
+    i2d_shape_def sd = shape_def(with_density(2.0f));
     const i2d_circle circle{i2d_vec2{0.5f, -0.25f}, 0.75f};
     I2D_REQUIRE(!I2D_IS_NULL(i2d_shape_create_circle(body, &sd, &circle)));
     const double r = 0.75, m = 2.0 * pi * r * r, inertia = m * r * r / 2;
@@ -132,7 +124,7 @@ I2D_TEST(phys_rotmass_capsule) {
     Scene scene;
     i2d_body_id body = make_body(scene, I2D_BODY_DYNAMIC, i2d_vec2{1, 1}, 1.1f);
     I2D_REQUIRE(!I2D_IS_NULL(body));
-    i2d_shape_def sd = density_def(3.0f);
+    i2d_shape_def sd = shape_def(with_density(3.0f));
     const i2d_vec2 c1{-0.3f, -0.4f}, c2{0.6f, 0.8f};
     const float radius = 0.25f;
     i2d_shape_id shape = i2d_shape_create_capsule(body, &sd, c1, c2, radius);
@@ -166,7 +158,7 @@ I2D_TEST(phys_rotmass_offset_box) {
     const double body_angle = 0.3;
     i2d_body_id body = make_body(scene, I2D_BODY_DYNAMIC, i2d_vec2{1, 1}, float(body_angle));
     I2D_REQUIRE(!I2D_IS_NULL(body));
-    i2d_shape_def sd = density_def(2.0f);
+    i2d_shape_def sd = shape_def(with_density(2.0f));
     const double box_angle = 0.5;
     const i2d_rot q{float(std::cos(box_angle)), float(std::sin(box_angle))};
     i2d_shape_id shape = i2d_shape_create_offset_box(body, &sd, 1.0f, 0.25f, i2d_vec2{2, -1}, q);
@@ -184,12 +176,11 @@ I2D_TEST(phys_rotmass_offset_box) {
     I2D_REQUIRE(poly.count == 4);
     const double signs[4][2] = {{1, 1}, {-1, 1}, {-1, -1}, {1, -1}};
     for (const auto& s : signs) {
-        const double lx = s[0] * 1.0, ly = s[1] * 0.25;
-        const double ex = 2 + std::cos(box_angle) * lx - std::sin(box_angle) * ly;
-        const double ey = -1 + std::sin(box_angle) * lx + std::cos(box_angle) * ly;
+        const Point corner = transform_point(2, -1, box_angle, s[0] * 1.0, s[1] * 0.25);
         bool found = false;
         for (int i = 0; i < poly.count; ++i) {
-            found = found || (std::fabs(poly.vertices[i].x - ex) < 1e-5 && std::fabs(poly.vertices[i].y - ey) < 1e-5);
+            found = found ||
+                    (std::fabs(poly.vertices[i].x - corner.x) < 1e-5 && std::fabs(poly.vertices[i].y - corner.y) < 1e-5);
         }
         I2D_CHECK(found);
     }
@@ -211,7 +202,7 @@ I2D_TEST(phys_rotmass_triangle) {
     Scene scene;
     i2d_body_id body = make_body(scene, I2D_BODY_DYNAMIC, i2d_vec2{0, 0}, -2.0f);
     I2D_REQUIRE(!I2D_IS_NULL(body));
-    i2d_shape_def sd = density_def(0.5f);
+    i2d_shape_def sd = shape_def(with_density(0.5f));
     const i2d_vec2 points[4] = {{0, 0}, {0, 2}, {1, 0.5f}, {3, 0}};
     i2d_shape_id shape = i2d_shape_create_polygon(body, &sd, points, 4);
     I2D_REQUIRE(!I2D_IS_NULL(shape));
@@ -249,7 +240,7 @@ I2D_TEST(phys_rotmass_rounded_box) {
                              {float(-w / 2), float(h / 2)}};
     i2d_polygon poly;
     I2D_CHECK_STATUS(i2d_make_polygon(pts, 4, float(r), &poly), I2D_OK);
-    i2d_shape_def sd = density_def(float(rho));
+    i2d_shape_def sd = shape_def(with_density(float(rho)));
     i2d_shape_id shape = i2d_shape_create_polygon_from(body, &sd, &poly);
     I2D_REQUIRE(!I2D_IS_NULL(shape));
     const double area = w * h + 2 * r * (w + h) + pi * r * r;
@@ -276,7 +267,7 @@ I2D_TEST(phys_rotmass_two_shapes) {
     const double body_angle = -0.8;
     i2d_body_id body = make_body(scene, I2D_BODY_DYNAMIC, i2d_vec2{5, 2}, float(body_angle));
     I2D_REQUIRE(!I2D_IS_NULL(body));
-    i2d_shape_def box_def = density_def(1.0f), disc_def = density_def(2.0f);
+    i2d_shape_def box_def = shape_def(with_density(1.0f)), disc_def = shape_def(with_density(2.0f));
     I2D_REQUIRE(!I2D_IS_NULL(i2d_shape_create_box(body, &box_def, 0.5f, 0.5f)));
     const i2d_circle circle{i2d_vec2{2, 0}, 0.5f};
     i2d_shape_id disc = i2d_shape_create_circle(body, &disc_def, &circle);
@@ -300,7 +291,7 @@ I2D_TEST(phys_rotmass_no_inertia_bodies) {
     // bodies report neither. A segment adds no mass: a box plus a segment weighs what the
     // box weighs, with the same centre and inertia.
     Scene scene;
-    i2d_shape_def sd = density_def(1.0f);
+    i2d_shape_def sd = shape_def(with_density(1.0f));
     i2d_body_id fixed = make_body(scene, I2D_BODY_DYNAMIC, i2d_vec2{0, 0}, 0.0f, true);
     i2d_body_id still = make_body(scene, I2D_BODY_STATIC, i2d_vec2{5, 0});
     i2d_body_id kin = make_body(scene, I2D_BODY_KINEMATIC, i2d_vec2{10, 0}, 0.4f);
@@ -344,7 +335,7 @@ I2D_TEST(phys_rotmass_shape_refusals) {
     Scene scene;
     i2d_body_id body = make_body(scene, I2D_BODY_DYNAMIC, i2d_vec2{1, 2}, 0.3f);
     I2D_REQUIRE(!I2D_IS_NULL(body));
-    i2d_shape_def sd = density_def(1.0f);
+    i2d_shape_def sd = shape_def(with_density(1.0f));
     I2D_REQUIRE(!I2D_IS_NULL(i2d_shape_create_offset_box(body, &sd, 0.5f, 0.25f, i2d_vec2{0.5f, 0}, i2d_make_rot(0))));
     const MassSnapshot before = MassSnapshot::of(body);
     I2D_CHECK_NEAR(before.mass, 0.5, rel_tol(0.5));
@@ -410,7 +401,7 @@ I2D_TEST(phys_rotmass_polygon_from_refusals) {
     Scene scene;
     i2d_body_id body = make_body(scene, I2D_BODY_DYNAMIC, i2d_vec2{0, 0});
     I2D_REQUIRE(!I2D_IS_NULL(body));
-    i2d_shape_def sd = density_def(1.0f);
+    i2d_shape_def sd = shape_def(with_density(1.0f));
     I2D_REQUIRE(!I2D_IS_NULL(i2d_shape_create_box(body, &sd, 0.5f, 0.5f)));
     const MassSnapshot before = MassSnapshot::of(body);
 

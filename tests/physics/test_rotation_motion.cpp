@@ -14,30 +14,13 @@ using namespace phys;
 
 namespace {
 
-// An angle folded into (-pi, pi].
-double wrap(double a) {
-    a = std::fmod(a, 2 * pi);
-    if (a > pi) {
-        a -= 2 * pi;
-    } else if (a <= -pi) {
-        a += 2 * pi;
-    }
-    return a;
-}
-
-double angle_of(i2d_body_id b) {
-    const i2d_rot q = i2d_body_get_rotation(b);
-    return std::atan2(double(q.s), double(q.c));
-}
-
 double norm2(i2d_rot q) { return double(q.c) * q.c + double(q.s) * q.s; }
 
 // A dynamic (or other) body turned by angle with one box of half sizes hw x hh centred at
 // `center` in its frame. No gravity is assumed by the callers.
 i2d_body_id box_body(Scene& scene, i2d_body_type type, i2d_vec2 position, double angle, float hw, float hh,
                      i2d_vec2 center = i2d_vec2{0, 0}, float density = 1.0f, bool fixed_rotation = false) {
-    i2d_body_def def = body_def(type, position);
-    def.rotation = i2d_rot{float(std::cos(angle)), float(std::sin(angle))};
+    i2d_body_def def = turned_body_def(type, position, angle);
     def.fixed_rotation = fixed_rotation;
     i2d_body_id body = i2d_body_create(scene.world, &def);
     if (I2D_IS_NULL(body)) {
@@ -59,12 +42,6 @@ double box_inertia(double hw, double hh, double density) {
     return m * (4 * hw * hw + 4 * hh * hh) / 12;
 }
 
-// p + R(angle) l in double.
-void transform_point(double px, double py, double angle, double lx, double ly, double* wx, double* wy) {
-    *wx = px + std::cos(angle) * lx - std::sin(angle) * ly;
-    *wy = py + std::sin(angle) * lx + std::cos(angle) * ly;
-}
-
 }  // namespace
 
 I2D_TEST(phys_rotmotion_make_rot_and_angle) {
@@ -77,7 +54,7 @@ I2D_TEST(phys_rotmotion_make_rot_and_angle) {
         I2D_CHECK_NEAR(q.s, std::sin(a), 2e-6);
         const double back = i2d_rot_get_angle(q);
         I2D_CHECK(back > -pi - 1e-6 && back <= pi + 1e-6);
-        I2D_CHECK_NEAR(wrap(back - a), 0.0, 2e-6);
+        I2D_CHECK_NEAR(wrap_angle(back - a), 0.0, 2e-6);
         char what[48];
         snprintf(what, sizeof what, "angle %g", a);
         report_case(before, what);
@@ -111,13 +88,13 @@ I2D_TEST(phys_rotmotion_free_spin) {
     const int steps = 10000;
     I2D_REQUIRE(scene.step(steps - 60));
     const double t = steps * double(time_step);
-    const double err_centred = wrap(angle_of(centred) - w * t), err_offset = wrap(angle_of(offset) - w * t);
+    const double err_centred = wrap_angle(angle_of(centred) - w * t), err_offset = wrap_angle(angle_of(offset) - w * t);
     const double n_centred = norm2(i2d_body_get_rotation(centred)), n_offset = norm2(i2d_body_get_rotation(offset));
     const i2d_vec2 c = i2d_body_get_world_center_of_mass(offset), p = position(offset);
     const double theta = angle_of(offset);
     printf("    free spin w 0.5: angle after 1 s %.6f (expected 0.5); after %d steps error %.3g / %.3g rad, "
            "|q|^2 - 1 = %.3g / %.3g, centre drift %.3g m\n",
-           a1, steps, err_centred, err_offset, n_centred - 1, n_offset - 1, std::hypot(c.x - c0.x, c.y - c0.y));
+           a1, steps, err_centred, err_offset, n_centred - 1, n_offset - 1, distance(c, c0));
     I2D_CHECK_NEAR(err_centred, 0.0, 0.01);
     I2D_CHECK_NEAR(err_offset, 0.0, 0.01);
     I2D_CHECK_NEAR(n_centred, 1.0, 1e-5);
@@ -160,7 +137,7 @@ I2D_TEST(phys_rotmotion_torque) {
 
     I2D_REQUIRE(scene.step(steps_for(0.5)));
     I2D_CHECK_NEAR(i2d_body_get_angular_velocity(box), w1, 1e-6);
-    I2D_CHECK_NEAR(wrap(angle_of(box) - a1 - w1 * 0.5), 0.0, 1e-3);
+    I2D_CHECK_NEAR(wrap_angle(angle_of(box) - a1 - w1 * 0.5), 0.0, 1e-3);
 }
 
 I2D_TEST(phys_rotmotion_force_at_point) {
@@ -222,10 +199,9 @@ I2D_TEST(phys_rotmotion_impulse_at_point) {
     I2D_CHECK_STATUS(i2d_body_set_angular_velocity(body, 1.0f), I2D_OK);
 
     const i2d_vec2 c = i2d_body_get_world_center_of_mass(body);
-    double cx, cy;
-    transform_point(1, 2, 0.5, 0.5, 0, &cx, &cy);
-    I2D_CHECK_NEAR(c.x, cx, 1e-5);
-    I2D_CHECK_NEAR(c.y, cy, 1e-5);
+    const Point expected_c = transform_point(1, 2, 0.5, 0.5, 0);
+    I2D_CHECK_NEAR(c.x, expected_c.x, 1e-5);
+    I2D_CHECK_NEAR(c.y, expected_c.y, 1e-5);
     const double rx = 0.2, ry = 0.7, jx = 3, jy = -1;
     const double dw = (rx * jy - ry * jx) / inertia;
     I2D_CHECK_STATUS(i2d_body_apply_linear_impulse(body, i2d_vec2{float(jx), float(jy)},
@@ -352,7 +328,7 @@ I2D_TEST(phys_rotmotion_kinematic_spin) {
         kept = kept && i2d_body_get_angular_velocity(kin) == 1.5f && velocity(kin).x == 1.0f && velocity(kin).y == 0.0f;
     }
     I2D_CHECK_STATUS(i2d_body_apply_angular_impulse(kin, 100.0f, true), I2D_OK);
-    const double err = wrap(angle_of(kin) - 1.5 * 2.0);
+    const double err = wrap_angle(angle_of(kin) - 1.5 * 2.0);
     printf("    kinematic spin: angle error %.3g rad after 2 s, x %.6f (expected 2), velocities kept %d\n", err,
            position(kin).x, int(kept));
     I2D_CHECK(kept);
@@ -384,10 +360,9 @@ I2D_TEST(phys_rotmotion_set_transform) {
     I2D_CHECK_NEAR(xf.q.c, std::cos(0.7), 1e-6);
     I2D_CHECK_NEAR(xf.q.s, std::sin(0.7), 1e-6);
     I2D_CHECK(i2d_body_get_rotation(body).c == xf.q.c && i2d_body_get_rotation(body).s == xf.q.s);
-    double cx, cy;
-    transform_point(p.x, p.y, 0.7, 1, 0.5, &cx, &cy);
-    I2D_CHECK_NEAR(i2d_body_get_world_center_of_mass(body).x, cx, 1e-5);
-    I2D_CHECK_NEAR(i2d_body_get_world_center_of_mass(body).y, cy, 1e-5);
+    const Point c = transform_point(p.x, p.y, 0.7, 1, 0.5);
+    I2D_CHECK_NEAR(i2d_body_get_world_center_of_mass(body).x, c.x, 1e-5);
+    I2D_CHECK_NEAR(i2d_body_get_world_center_of_mass(body).y, c.y, 1e-5);
 
     // 0.04 % too long: accepted and normalised.
     const float k = 1.0004f;
@@ -425,15 +400,14 @@ I2D_TEST(phys_rotmotion_point_helpers) {
     const double locals[4][2] = {{0, 0}, {1, 0.5}, {-2.5, 4}, {0.3, -7}};
     double worst_world = 0, worst_round = 0;
     for (const auto& l : locals) {
-        double wx, wy;
-        transform_point(px, py, angle, l[0], l[1], &wx, &wy);
+        const Point world = transform_point(px, py, angle, l[0], l[1]);
         const i2d_vec2 w = i2d_body_get_world_point(body, i2d_vec2{float(l[0]), float(l[1])});
-        worst_world = std::max(worst_world, std::hypot(w.x - wx, w.y - wy));
+        worst_world = std::max(worst_world, std::hypot(w.x - world.x, w.y - world.y));
         const i2d_vec2 back = i2d_body_get_local_point(body, w);
         worst_round = std::max(worst_round, std::hypot(back.x - l[0], back.y - l[1]));
         // The local point of a world point, against R^T (w - p).
-        const double dx = wx - px, dy = wy - py;
-        const i2d_vec2 loc = i2d_body_get_local_point(body, i2d_vec2{float(wx), float(wy)});
+        const double dx = world.x - px, dy = world.y - py;
+        const i2d_vec2 loc = i2d_body_get_local_point(body, i2d_vec2{float(world.x), float(world.y)});
         worst_round = std::max(worst_round, std::hypot(loc.x - (std::cos(angle) * dx + std::sin(angle) * dy),
                                                        loc.y - (-std::sin(angle) * dx + std::cos(angle) * dy)));
     }
@@ -443,12 +417,11 @@ I2D_TEST(phys_rotmotion_point_helpers) {
     const double vx = 1, vy = -2, w = 3;
     I2D_CHECK_STATUS(i2d_body_set_linear_velocity(body, i2d_vec2{float(vx), float(vy)}), I2D_OK);
     I2D_CHECK_STATUS(i2d_body_set_angular_velocity(body, float(w)), I2D_OK);
-    double cx, cy;
-    transform_point(px, py, angle, 1, 0.5, &cx, &cy);  // the centre of mass
-    const double points[3][2] = {{4, 1}, {cx, cy}, {-1, 6}};
+    const Point c = transform_point(px, py, angle, 1, 0.5);  // the centre of mass
+    const double points[3][2] = {{4, 1}, {c.x, c.y}, {-1, 6}};
     double worst_v = 0;
     for (const auto& pt : points) {
-        const double ex = vx - w * (pt[1] - cy), ey = vy + w * (pt[0] - cx);
+        const double ex = vx - w * (pt[1] - c.y), ey = vy + w * (pt[0] - c.x);
         const i2d_vec2 pv = i2d_body_get_world_point_velocity(body, i2d_vec2{float(pt[0]), float(pt[1])});
         worst_v = std::max(worst_v, std::hypot(pv.x - ex, pv.y - ey));
     }
@@ -460,19 +433,15 @@ I2D_TEST(phys_rotmotion_point_helpers) {
 I2D_TEST(phys_rotmotion_spin_in_place_is_a_move_event) {
     // A kinematic wheel that only turns (no translation) moved as far as a binding's
     // renderer is concerned: it must be in the body move events with its new rotation.
-    i2d_world_def def = i2d_default_world_def();
-    i2d_world_id world = i2d_world_create(&def);
-    i2d_body_def body_def = i2d_default_body_def();
-    body_def.type = I2D_BODY_KINEMATIC;
-    body_def.angular_velocity = 2.0f;
-    i2d_body_id wheel = i2d_body_create(world, &body_def);
-    i2d_shape_def shape_def = i2d_default_shape_def();
-    i2d_shape_create_box(wheel, &shape_def, 1.0f, 0.1f);
-    I2D_REQUIRE(i2d_world_step(world, 1.0f / 60.0f, 4) == I2D_OK);
-    i2d_body_events events = i2d_world_get_body_events(world);
+    Scene scene;
+    i2d_body_def def = body_def(I2D_BODY_KINEMATIC, i2d_vec2{0, 0});
+    def.angular_velocity = 2.0f;
+    const i2d_body_id wheel = scene.box(def, 1.0f, 0.1f);
+    I2D_REQUIRE(!I2D_IS_NULL(wheel));
+    I2D_REQUIRE(scene.step());
+    i2d_body_events events = i2d_world_get_body_events(scene.world);
     I2D_REQUIRE(events.move_count == 1);
     I2D_CHECK(events.move_events[0].body.bits == wheel.bits);
-    I2D_CHECK_NEAR(i2d_rot_get_angle(events.move_events[0].transform.q), 2.0 / 60.0, 1e-4);
+    I2D_CHECK_NEAR(i2d_rot_get_angle(events.move_events[0].transform.q), 2.0 * time_step, 1e-4);
     I2D_CHECK(events.move_events[0].transform.p.x == 0.0f && events.move_events[0].transform.p.y == 0.0f);
-    i2d_world_destroy(world);
 }

@@ -7,10 +7,9 @@
 // of its bodies disables sleep; the speed threshold and time to sleep are the world
 // def's. Expectations are bounds from the settings and closed-form free fall and
 // friction, never the engine's earlier output.
-#include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <cstring>
+#include <initializer_list>
 #include <vector>
 
 #include "physics_fixture.hpp"
@@ -19,43 +18,7 @@ using namespace phys;
 
 namespace {
 
-constexpr double g = 10.0;
-
 using Bodies = std::vector<i2d_body_id>;
-
-Material mat(float friction, float density = 1.0f) {
-    Material m;
-    m.friction = friction;
-    m.density = density;
-    return m;
-}
-
-// A stack of n unit boxes touching each other on whatever is at y = base (the ground's
-// top face), centred on x.
-Bodies make_pile(Scene& scene, float x, int n, float base = 0.0f, const Material& m = Material{},
-                 bool enable_sleep_bottom = true) {
-    Bodies pile;
-    for (int i = 0; i < n; ++i) {
-        i2d_body_def def = body_def(I2D_BODY_DYNAMIC, i2d_vec2{x, base + 0.5f + float(i)});
-        def.enable_sleep = i == 0 ? enable_sleep_bottom : true;
-        const i2d_body_id b = scene.box(def, 0.5f, 0.5f, m);
-        pile.push_back(b);
-    }
-    return pile;
-}
-
-// A small pyramid of unit boxes on whatever is at y = base, centred on x: rows of
-// rows, rows - 1, ..., 1 boxes (4 rows: 10 boxes), each touching its neighbours.
-Bodies make_pyramid(Scene& scene, float x, int rows, float base = 0.0f) {
-    Bodies pile;
-    for (int row = 0; row < rows; ++row) {
-        const int n = rows - row;
-        for (int k = 0; k < n; ++k) {
-            pile.push_back(scene.dynamic_box(i2d_vec2{x + float(k - 0.5 * (n - 1)), base + 0.5f + float(row)}, 0.5f, 0.5f));
-        }
-    }
-    return pile;
-}
 
 bool all_valid(const Bodies& bodies) {
     for (i2d_body_id b : bodies) {
@@ -64,14 +27,6 @@ bool all_valid(const Bodies& bodies) {
         }
     }
     return !bodies.empty();
-}
-
-int count_awake(const Bodies& bodies) {
-    int n = 0;
-    for (i2d_body_id b : bodies) {
-        n += i2d_body_is_awake(b) ? 1 : 0;
-    }
-    return n;
 }
 
 bool all_awake(const Bodies& bodies) { return count_awake(bodies) == int(bodies.size()); }
@@ -97,29 +52,43 @@ double wait_asleep(Scene& scene, const Bodies& bodies, double max_seconds) {
     return -1;
 }
 
+// Piles of `height` unit boxes on the ground (its top at y = 0), one centred on each x,
+// stepped until every box sleeps (within 3 s); none (and a message) when a box could not
+// be made or they stayed awake.
+std::vector<Bodies> sleeping_piles(Scene& scene, std::initializer_list<float> xs, int height) {
+    if (I2D_IS_NULL(scene.ground(0.0f))) {
+        return {};
+    }
+    std::vector<Bodies> piles;
+    Bodies all;
+    for (const float x : xs) {
+        piles.push_back(scene.column(x, height));
+        if (!all_valid(piles.back())) {
+            return {};
+        }
+        all = join(all, piles.back());
+    }
+    if (wait_asleep(scene, all, 3.0) <= 0) {
+        fprintf(stderr, "    piles still awake after 3 s\n");
+        return {};
+    }
+    return piles;
+}
+
 // Every body's transform and velocities, for bitwise comparison.
 struct Snapshot {
-    struct State {
-        i2d_transform t;
-        i2d_vec2 v;
-        float w;
-    };
-    std::vector<State> states;
+    std::vector<BodyState> states;
     explicit Snapshot(const Bodies& bodies) {
         for (i2d_body_id b : bodies) {
-            states.push_back(State{i2d_body_get_transform(b), velocity(b), i2d_body_get_angular_velocity(b)});
+            states.push_back(BodyState::of(b));
         }
     }
     // Bodies whose transform (and, when with_velocity, velocity) differ bitwise from other's.
     int differ(const Snapshot& other, bool with_velocity = false) const {
         int n = 0;
         for (size_t i = 0; i < states.size(); ++i) {
-            const State &a = states[i], &b = other.states[i];
-            bool same = std::memcmp(&a.t, &b.t, sizeof a.t) == 0;
-            if (with_velocity) {
-                same = same && std::memcmp(&a.v, &b.v, sizeof a.v) == 0 && std::memcmp(&a.w, &b.w, sizeof a.w) == 0;
-            }
-            n += same ? 0 : 1;
+            const BodyState &a = states[i], &b = other.states[i];
+            n += (with_velocity ? a.same_bits(b) : a.same_pose(b)) ? 0 : 1;
         }
         return n;
     }
@@ -150,7 +119,7 @@ I2D_TEST(phys_sleep_pile_falls_asleep_with_events) {
     I2D_CHECK_NEAR(def.sleep_speed_threshold, 0.05, 1e-6);
     Scene scene(def);
     I2D_REQUIRE(!I2D_IS_NULL(scene.ground(0.0f)));
-    const Bodies pile = make_pyramid(scene, 0.0f, 4);
+    const Bodies pile = scene.pyramid(0.0f, 4);
     I2D_REQUIRE(all_valid(pile));
     I2D_CHECK(all_awake(pile));
     I2D_CHECK(i2d_world_get_counters(scene.world).awake_body_count == 10);
@@ -214,7 +183,7 @@ I2D_TEST(phys_sleep_time_to_sleep_from_world_def) {
     def.time_to_sleep = 2.0f;
     Scene scene(def);
     I2D_REQUIRE(!I2D_IS_NULL(scene.ground(0.0f)));
-    const Bodies pile = make_pile(scene, 0.0f, 5);
+    const Bodies pile = scene.column(0.0f, 5);
     I2D_REQUIRE(all_valid(pile));
     const double t = wait_asleep(scene, pile, 4.0);
     fprintf(stderr, "    time_to_sleep 2 s: pile of 5 asleep at %.4f s\n", t);
@@ -227,7 +196,7 @@ I2D_TEST(phys_sleep_sleeping_pile_is_bitwise_still) {
     // further steps, and the counters stay at 0 awake, 1 sleeping island.
     Scene scene;
     I2D_REQUIRE(!I2D_IS_NULL(scene.ground(0.0f)));
-    const Bodies pile = make_pyramid(scene, 0.0f, 4);
+    const Bodies pile = scene.pyramid(0.0f, 4);
     I2D_REQUIRE(all_valid(pile));
     I2D_REQUIRE(wait_asleep(scene, pile, 3.0) > 0);
     const Snapshot before(pile);
@@ -251,10 +220,9 @@ I2D_TEST(phys_sleep_impulse_wakes_only_its_pile) {
     // the next step) and not pile B. After one step the box moves up at
     // 2 - g dt = 1.833 m/s (within 0.02).
     Scene scene;
-    I2D_REQUIRE(!I2D_IS_NULL(scene.ground(0.0f)));
-    const Bodies a = make_pile(scene, -20.0f, 3), b = make_pile(scene, 20.0f, 3);
-    I2D_REQUIRE(all_valid(a) && all_valid(b));
-    I2D_REQUIRE(wait_asleep(scene, join(a, b), 3.0) > 0);
+    const std::vector<Bodies> piles = sleeping_piles(scene, {-20.0f, 20.0f}, 3);
+    I2D_REQUIRE(piles.size() == 2);
+    const Bodies &a = piles[0], &b = piles[1];
     const i2d_world_counters c0 = i2d_world_get_counters(scene.world);
     I2D_CHECK(c0.sleeping_island_count == 2);
     const Snapshot b_before(b);
@@ -292,10 +260,9 @@ I2D_TEST(phys_sleep_no_wake_keeps_sleeping) {
     // wake = false on a sleeping body: an impulse, a force, a torque and an angular
     // impulse leave it (and its pile) asleep, and the pile does not move over 0.5 s.
     Scene scene;
-    I2D_REQUIRE(!I2D_IS_NULL(scene.ground(0.0f)));
-    const Bodies pile = make_pile(scene, 0.0f, 3);
-    I2D_REQUIRE(all_valid(pile));
-    I2D_REQUIRE(wait_asleep(scene, pile, 3.0) > 0);
+    const std::vector<Bodies> piles = sleeping_piles(scene, {0.0f}, 3);
+    I2D_REQUIRE(piles.size() == 1);
+    const Bodies& pile = piles[0];
     const Snapshot before(pile);
     const i2d_body_id top = pile.back();
     const i2d_vec2 c = i2d_body_get_world_center_of_mass(top);
@@ -325,19 +292,15 @@ I2D_TEST(phys_sleep_setters_wake) {
     // 1e-4 rad, is left after 3 steps). A force with
     // wake = true wakes a fourth pile D. The piles not touched stay asleep.
     Scene scene;
-    I2D_REQUIRE(!I2D_IS_NULL(scene.ground(0.0f)));
-    const Bodies a = make_pile(scene, -30.0f, 3), b = make_pile(scene, -10.0f, 3), c = make_pile(scene, 10.0f, 3),
-                 d = make_pile(scene, 30.0f, 3);
-    I2D_REQUIRE(all_valid(a) && all_valid(b) && all_valid(c) && all_valid(d));
-    I2D_REQUIRE(wait_asleep(scene, join(join(a, b), join(c, d)), 3.0) > 0);
-    const Bodies* piles[4] = {&a, &b, &c, &d};
+    const std::vector<Bodies> piles = sleeping_piles(scene, {-30.0f, -10.0f, 10.0f, 30.0f}, 3);
+    I2D_REQUIRE(piles.size() == 4);
     const char* names[4] = {"set_linear_velocity", "set_transform", "set_angular_velocity", "apply_force wake"};
     for (int k = 0; k < 4; ++k) {
         const int before = i2d_check_failures;
-        const Bodies& pile = *piles[k];
+        const Bodies& pile = piles[k];
         const i2d_body_id top = pile.back();
         const i2d_vec2 p0 = position(top);
-        const double angle0 = i2d_rot_get_angle(i2d_body_get_rotation(top));
+        const double angle0 = angle_of(top);
         switch (k) {
             case 0:
                 I2D_CHECK_STATUS(i2d_body_set_linear_velocity(top, i2d_vec2{0, 1}), I2D_OK);
@@ -359,11 +322,11 @@ I2D_TEST(phys_sleep_setters_wake) {
         const int pile_awake = count_awake(pile);
         int others_awake = 0;
         for (int j = k + 1; j < 4; ++j) {
-            others_awake += count_awake(*piles[j]);
+            others_awake += count_awake(piles[j]);
         }
         I2D_REQUIRE(scene.step(2));
         const i2d_vec2 p1 = position(top);
-        const double turned = i2d_rot_get_angle(i2d_body_get_rotation(top)) - angle0;
+        const double turned = angle_of(top) - angle0;
         fprintf(stderr,
                 "    %s: top awake at once %d, pile %d/3 awake after a step, untouched piles awake %d; after 3 steps "
                 "moved by (%.4f, %.4f) m, turned %.4f rad\n",
@@ -398,15 +361,14 @@ I2D_TEST(phys_sleep_destroying_support_wakes) {
     for (bool shape_only : {false, true}) {
         const int before = i2d_check_failures;
         Scene scene;
-        I2D_REQUIRE(!I2D_IS_NULL(scene.ground(0.0f)));
-        const Bodies pile = make_pile(scene, 0.0f, 2);
-        I2D_REQUIRE(all_valid(pile));
-        I2D_REQUIRE(wait_asleep(scene, pile, 3.0) > 0);
+        const std::vector<Bodies> piles = sleeping_piles(scene, {0.0f}, 2);
+        I2D_REQUIRE(piles.size() == 1);
+        const Bodies& pile = piles[0];
         const i2d_body_id a = pile[0], b = pile[1];
         const double y0 = position(b).y;
         if (shape_only) {
-            i2d_shape_id shape;
-            I2D_REQUIRE(i2d_body_get_shapes(a, &shape, 1) == 1);
+            const i2d_shape_id shape = only_shape(a);
+            I2D_REQUIRE(!I2D_IS_NULL(shape));
             // A is left a 1 kg body without shapes: nothing of it can hold B.
             I2D_CHECK_STATUS(i2d_shape_destroy(shape), I2D_OK);
         } else {
@@ -437,10 +399,9 @@ I2D_TEST(phys_sleep_landing_body_wakes_pile) {
     // 0.5 m above the pile; the pile wakes when it lands, by the step after free fall
     // says it arrives (t = sqrt(2 h / g) = 0.632 s).
     Scene scene;
-    I2D_REQUIRE(!I2D_IS_NULL(scene.ground(0.0f)));
-    const Bodies pile = make_pile(scene, 0.0f, 3);
-    I2D_REQUIRE(all_valid(pile));
-    I2D_REQUIRE(wait_asleep(scene, pile, 3.0) > 0);
+    const std::vector<Bodies> piles = sleeping_piles(scene, {0.0f}, 3);
+    I2D_REQUIRE(piles.size() == 1);
+    const Bodies& pile = piles[0];
     const double top = position(pile.back()).y + 0.5;
     const double h = 2.0;
     i2d_body_id falling = scene.dynamic_box(i2d_vec2{0, float(top + h + 0.5)}, 0.5f, 0.5f);
@@ -475,7 +436,7 @@ I2D_TEST(phys_sleep_disabled_in_world) {
         def.enable_sleep = enabled;
         Scene scene(def);
         I2D_REQUIRE(!I2D_IS_NULL(scene.ground(0.0f)));
-        const Bodies pile = make_pyramid(scene, 0.0f, 4);
+        const Bodies pile = scene.pyramid(0.0f, 4);
         I2D_REQUIRE(all_valid(pile));
         int bad_steps = 0;
         for (int s = 0; s < steps_for(3.0); ++s) {
@@ -498,9 +459,12 @@ I2D_TEST(phys_sleep_disabled_on_body) {
     // awake for 3 s; pile B beside it, all defaults, falls asleep.
     Scene scene;
     I2D_REQUIRE(!I2D_IS_NULL(scene.ground(0.0f)));
-    const Bodies a = make_pile(scene, -10.0f, 3, 0.0f, Material{}, false);
-    const Bodies b = make_pile(scene, 10.0f, 3);
-    I2D_REQUIRE(all_valid(a) && all_valid(b));
+    i2d_body_def sleepless = body_def(I2D_BODY_DYNAMIC, i2d_vec2{-10.0f, 0.5f});
+    sleepless.enable_sleep = false;
+    const i2d_body_id bottom = scene.box(sleepless, 0.5f, 0.5f);
+    const Bodies a = join(Bodies{bottom}, scene.column(-10.0f, 2, 1.0f));
+    const Bodies b = scene.column(10.0f, 3);
+    I2D_REQUIRE(a.size() == 3 && all_valid(a) && all_valid(b));
     int a_asleep_steps = 0;
     for (int s = 0; s < steps_for(3.0); ++s) {
         I2D_REQUIRE(scene.step());
@@ -526,7 +490,7 @@ I2D_TEST(phys_sleep_set_awake) {
     const i2d_body_id ground = scene.ground(0.0f);
     I2D_REQUIRE(!I2D_IS_NULL(ground));
     const i2d_body_id faller = scene.dynamic_box(i2d_vec2{-20, 30}, 0.5f, 0.5f);
-    const Bodies pile = make_pile(scene, 0.0f, 4);
+    const Bodies pile = scene.column(0.0f, 4);
     I2D_REQUIRE(!I2D_IS_NULL(faller) && all_valid(pile));
     I2D_REQUIRE(scene.step(steps_for(0.2)));
     I2D_REQUIRE(i2d_body_is_awake(faller) && all_awake(pile));
@@ -644,9 +608,9 @@ I2D_TEST(phys_sleep_kinematic_support_wakes_pile) {
     // its contact allows) until it moves with the platform after 0.2 s: 1 s after the
     // platform starts the boxes have moved 1 - 1 / (2 x 5) = 0.9 m (within 2 cm).
     Scene scene;
-    i2d_body_id platform = scene.box(body_def(I2D_BODY_KINEMATIC, i2d_vec2{0, -0.5f}), 10.0f, 0.5f, mat(0.25f));
+    i2d_body_id platform = scene.box(body_def(I2D_BODY_KINEMATIC, i2d_vec2{0, -0.5f}), 10.0f, 0.5f, with_friction(0.25f));
     I2D_REQUIRE(!I2D_IS_NULL(platform));
-    const Bodies pile = make_pile(scene, 0.0f, 2, 0.0f, mat(1.0f));
+    const Bodies pile = scene.column(0.0f, 2, 0.0f, with_friction(1.0f));
     I2D_REQUIRE(all_valid(pile));
     const double t = wait_asleep(scene, pile, 3.0);
     const bool platform_awake = i2d_body_is_awake(platform);

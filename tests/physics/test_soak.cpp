@@ -19,18 +19,7 @@
 
 namespace {
 
-// splitmix64: the same sequence on every platform.
-struct Rng {
-    uint64_t state;
-    uint64_t next() {
-        uint64_t z = (state += 0x9E3779B97F4A7C15ull);
-        z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-        z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-        return z ^ (z >> 31);
-    }
-    float uniform(float lo, float hi) { return lo + (hi - lo) * float(next() >> 40) / float(1u << 24); }
-    int below(int n) { return int(next() % uint64_t(n)); }
-};
+using Rng = phys::SplitMix64;
 
 // Memory the process holds, in KiB, or -1 where it cannot be read (or a sanitizer's
 // allocator makes it meaningless). With glibc, what malloc has handed out and not had
@@ -99,12 +88,7 @@ public:
     int check(const char* when) {
         int bad = 0;
         for (const i2d_body_id b : bodies_) {
-            const i2d_transform xf = i2d_body_get_transform(b);
-            const i2d_vec2 v = i2d_body_get_linear_velocity(b);
-            if (!std::isfinite(xf.p.x) || !std::isfinite(xf.p.y) || !std::isfinite(xf.q.c) ||
-                !std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(i2d_body_get_angular_velocity(b))) {
-                ++bad;
-            }
+            bad += phys::is_finite(b) ? 0 : 1;
         }
         const i2d_world_counters counters = i2d_world_get_counters(world_);
         if (bad > 0 || counters.body_count != int32_t(bodies_.size()) + 2) {
@@ -130,14 +114,14 @@ private:
             change_filter();
         } else if (action == 7) {
             const i2d_body_id b = pick();
-            i2d_body_apply_linear_impulse(b, i2d_vec2{rng_.uniform(-5, 5), rng_.uniform(0, 10)},
+            i2d_body_apply_linear_impulse(b, i2d_vec2{rng_.uniform_float(-5, 5), rng_.uniform_float(0, 10)},
                                           i2d_body_get_world_center_of_mass(b), true);
         } else if (action == 8) {
             i2d_shape_id shapes[4];
             const int32_t n = i2d_body_get_shapes(pick(), shapes, 4);
             if (n > 0) {
-                i2d_shape_set_friction(shapes[0], rng_.uniform(0, 1));
-                i2d_shape_set_restitution(shapes[0], rng_.uniform(0, 0.5f));
+                i2d_shape_set_friction(shapes[0], rng_.uniform_float(0, 1));
+                i2d_shape_set_restitution(shapes[0], rng_.uniform_float(0, 0.5f));
             }
         } else {
             const i2d_body_id b = pick();
@@ -150,9 +134,9 @@ private:
     void create_body() {
         i2d_body_def def = i2d_default_body_def();
         def.type = rng_.below(12) == 0 ? I2D_BODY_KINEMATIC : I2D_BODY_DYNAMIC;
-        def.position = i2d_vec2{rng_.uniform(-25, 25), rng_.uniform(2, 30)};
-        def.rotation = i2d_make_rot(rng_.uniform(-3.1f, 3.1f));
-        def.angular_velocity = def.type == I2D_BODY_KINEMATIC ? rng_.uniform(-1, 1) : 0.0f;
+        def.position = i2d_vec2{rng_.uniform_float(-25, 25), rng_.uniform_float(2, 30)};
+        def.rotation = i2d_make_rot(rng_.uniform_float(-3.1f, 3.1f));
+        def.angular_velocity = def.type == I2D_BODY_KINEMATIC ? rng_.uniform_float(-1, 1) : 0.0f;
         const i2d_body_id b = i2d_body_create(world_, &def);
         if (I2D_IS_NULL(b)) {
             ++i2d_check_failures;
@@ -164,29 +148,29 @@ private:
 
     void add_shape(i2d_body_id b) {
         i2d_shape_def def = i2d_default_shape_def();
-        def.density = rng_.uniform(0.5f, 3.0f);
-        def.restitution = rng_.uniform(0, 0.3f);
-        const float size = rng_.uniform(0.2f, 0.8f);
-        const i2d_vec2 offset{rng_.uniform(-0.3f, 0.3f), rng_.uniform(-0.3f, 0.3f)};
+        def.density = rng_.uniform_float(0.5f, 3.0f);
+        def.restitution = rng_.uniform_float(0, 0.3f);
+        const float size = rng_.uniform_float(0.2f, 0.8f);
+        const i2d_vec2 offset{rng_.uniform_float(-0.3f, 0.3f), rng_.uniform_float(-0.3f, 0.3f)};
         switch (rng_.below(5)) {
             case 0: {
                 const i2d_circle c{offset, size};
                 i2d_shape_create_circle(b, &def, &c);
                 break;
             }
-            case 1: i2d_shape_create_box(b, &def, size, size * rng_.uniform(0.3f, 1.0f)); break;
+            case 1: i2d_shape_create_box(b, &def, size, size * rng_.uniform_float(0.3f, 1.0f)); break;
             case 2: i2d_shape_create_capsule(b, &def, i2d_vec2{-size, 0}, i2d_vec2{size, 0}, size * 0.4f); break;
             case 3: {
                 i2d_vec2 points[6];
                 for (int i = 0; i < 6; ++i) {
-                    const i2d_rot q = i2d_make_rot(float(i) * 1.047f + rng_.uniform(-0.3f, 0.3f));
+                    const i2d_rot q = i2d_make_rot(float(i) * 1.047f + rng_.uniform_float(-0.3f, 0.3f));
                     points[i] = i2d_vec2{offset.x + size * q.c, offset.y + size * q.s};
                 }
                 i2d_shape_create_polygon(b, &def, points, 6);
                 break;
             }
             default:
-                i2d_shape_create_offset_box(b, &def, size, size * 0.5f, offset, i2d_make_rot(rng_.uniform(0, 3)));
+                i2d_shape_create_offset_box(b, &def, size, size * 0.5f, offset, i2d_make_rot(rng_.uniform_float(0, 3)));
                 break;
         }
     }
@@ -229,7 +213,7 @@ private:
     }
 
     void query() {
-        const i2d_vec2 c{rng_.uniform(-25, 25), rng_.uniform(0, 20)};
+        const i2d_vec2 c{rng_.uniform_float(-25, 25), rng_.uniform_float(0, 20)};
         i2d_shape_id found[32];
         i2d_world_overlap_aabb_ids(world_, i2d_aabb{{c.x - 3, c.y - 3}, {c.x + 3, c.y + 3}},
                                    i2d_default_query_filter(), found, 32);

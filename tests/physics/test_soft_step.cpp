@@ -9,7 +9,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <cstring>
 #include <vector>
 
 #include "physics_fixture.hpp"
@@ -18,71 +17,8 @@ using namespace phys;
 
 namespace {
 
-constexpr double g = 10.0;
-
-double deg(double d) { return d * pi / 180.0; }
-
-i2d_rot rot(double angle) { return i2d_rot{float(std::cos(angle)), float(std::sin(angle))}; }
-
-double angle_of(i2d_body_id b) {
-    const i2d_rot q = i2d_body_get_rotation(b);
-    return std::atan2(double(q.s), double(q.c));
-}
-
-double dist(i2d_vec2 a, i2d_vec2 b) { return std::hypot(double(a.x) - b.x, double(a.y) - b.y); }
-
-Material mat(float friction, float restitution = 0.0f, float density = 1.0f) {
-    Material m;
-    m.friction = friction;
-    m.restitution = restitution;
-    m.density = density;
-    return m;
-}
-
-i2d_world_def no_sleep_def() {
-    i2d_world_def def = i2d_default_world_def();
-    def.enable_sleep = false;
-    return def;
-}
-
-// A body of `type` turned by `angle` with one box.
-i2d_body_id turned_box(Scene& scene, i2d_body_type type, i2d_vec2 p, double angle, float hw, float hh,
-                       const Material& m, i2d_vec2 v = i2d_vec2{0, 0}) {
-    i2d_body_def def = body_def(type, p, v);
-    def.rotation = rot(angle);
-    return scene.box(def, hw, hh, m);
-}
-
-// A static incline: a 20 m x 0.5 m box turned by theta about (0, 0). Its top face is the
-// line through n 0.25 along t, t = (cos, sin) uphill, n = (-sin, cos) its outward normal.
-struct Incline {
-    double theta;
-    static constexpr double half_length = 10.0, half_thickness = 0.25;
-    double tx() const { return std::cos(theta); }
-    double ty() const { return std::sin(theta); }
-    double nx() const { return -std::sin(theta); }
-    double ny() const { return std::cos(theta); }
-    // The point at distance s along the incline (uphill positive) and h above its top face.
-    i2d_vec2 at(double s, double h) const {
-        return i2d_vec2{float(tx() * s + nx() * (half_thickness + h)), float(ty() * s + ny() * (half_thickness + h))};
-    }
-    double along(i2d_vec2 v) const { return double(v.x) * tx() + double(v.y) * ty(); }
-    double above(i2d_vec2 p) const { return double(p.x) * nx() + double(p.y) * ny() - half_thickness; }
-};
-
-i2d_body_id make_incline(Scene& scene, const Incline& in, const Material& m) {
-    return turned_box(scene, I2D_BODY_STATIC, i2d_vec2{0, 0}, in.theta, float(Incline::half_length),
-                      float(Incline::half_thickness), m);
-}
-
-// Which body ids of `count` are awake (dynamic and kinematic bodies only).
-int awake_count(const i2d_body_id* bodies, int count) {
-    int n = 0;
-    for (int i = 0; i < count; ++i) {
-        n += i2d_body_is_awake(bodies[i]) ? 1 : 0;
-    }
-    return n;
-}
+// The inclines here: 20 m long.
+constexpr double incline_half_length = 10.0;
 
 }  // namespace
 
@@ -98,23 +34,24 @@ I2D_TEST(phys_soft_incline_box_static_and_sliding) {
     // that holding is the friction's work, not a sleeping body's.
     const double mu = 0.5;
     const double critical = std::atan(mu);
-    const double holding[] = {deg(10), deg(20), deg(25)};
-    const double sliding[] = {deg(30), deg(35), deg(40)};
+    const double holding[] = {degrees(10), degrees(20), degrees(25)};
+    const double sliding[] = {degrees(30), degrees(35), degrees(40)};
     char what[96];
     for (double theta : holding) {
         const int before = i2d_check_failures;
         I2D_REQUIRE(theta < critical);
-        Scene scene(no_sleep_def());
-        const Incline in{theta};
-        I2D_REQUIRE(!I2D_IS_NULL(make_incline(scene, in, mat(float(mu)))));
-        i2d_body_id box = turned_box(scene, I2D_BODY_DYNAMIC, in.at(3.0, 0.5), theta, 0.5f, 0.5f, mat(float(mu)));
+        Scene scene(Scene::no_sleep_def());
+        const Slope in{theta, incline_half_length};
+        I2D_REQUIRE(!I2D_IS_NULL(scene.slope(in, with_friction(float(mu)))));
+        i2d_body_id box =
+            scene.turned_box(I2D_BODY_DYNAMIC, in.at(3.0, 0.5), theta, 0.5f, 0.5f, with_friction(float(mu)));
         I2D_REQUIRE(!I2D_IS_NULL(box));
         I2D_REQUIRE(scene.step(steps_for(0.5)));
         const i2d_vec2 p0 = position(box);
         double drift = 0;
         for (int s = 0; s < steps_for(2.0); ++s) {
             I2D_REQUIRE(scene.step());
-            drift = std::max(drift, dist(position(box), p0));
+            drift = std::max(drift, distance(position(box), p0));
         }
         fprintf(stderr, "    incline %.0f deg (below %.2f deg): drift %.4f mm over 2 s from t = 0.5 s\n",
                 theta * 180 / pi, critical * 180 / pi, drift * 1e3);
@@ -125,10 +62,11 @@ I2D_TEST(phys_soft_incline_box_static_and_sliding) {
     for (double theta : sliding) {
         const int before = i2d_check_failures;
         I2D_REQUIRE(theta > critical);
-        Scene scene(no_sleep_def());
-        const Incline in{theta};
-        I2D_REQUIRE(!I2D_IS_NULL(make_incline(scene, in, mat(float(mu)))));
-        i2d_body_id box = turned_box(scene, I2D_BODY_DYNAMIC, in.at(6.0, 0.5), theta, 0.5f, 0.5f, mat(float(mu)));
+        Scene scene(Scene::no_sleep_def());
+        const Slope in{theta, incline_half_length};
+        I2D_REQUIRE(!I2D_IS_NULL(scene.slope(in, with_friction(float(mu)))));
+        i2d_body_id box =
+            scene.turned_box(I2D_BODY_DYNAMIC, in.at(6.0, 0.5), theta, 0.5f, 0.5f, with_friction(float(mu)));
         I2D_REQUIRE(!I2D_IS_NULL(box));
         const int s1 = steps_for(0.25), s2 = steps_for(1.25);
         I2D_REQUIRE(scene.step(s1));
@@ -156,13 +94,13 @@ I2D_TEST(phys_soft_disc_rolls_down_incline) {
     // degrees); mu = 0.6 here. Measured from the speed along the incline at 0.25 s and
     // 1.25 s, within 2 %; the contact point does not slip: w r = -(v . t) within 2 %.
     const double r = 0.5, mu = 0.6;
-    for (double theta : {deg(15), deg(30)}) {
+    for (double theta : {degrees(15), degrees(30)}) {
         const int before = i2d_check_failures;
-        Scene scene(no_sleep_def());
-        const Incline in{theta};
+        Scene scene(Scene::no_sleep_def());
+        const Slope in{theta, incline_half_length};
         I2D_REQUIRE(std::tan(theta) / 3 < mu);
-        I2D_REQUIRE(!I2D_IS_NULL(make_incline(scene, in, mat(float(mu)))));
-        i2d_body_id disc = scene.dynamic_circle(in.at(6.0, r), float(r), mat(float(mu)));
+        I2D_REQUIRE(!I2D_IS_NULL(scene.slope(in, with_friction(float(mu)))));
+        i2d_body_id disc = scene.dynamic_circle(in.at(6.0, r), float(r), with_friction(float(mu)));
         I2D_REQUIRE(!I2D_IS_NULL(disc));
         const int s1 = steps_for(0.25), s2 = steps_for(1.25);
         I2D_REQUIRE(scene.step(s1));
@@ -219,19 +157,13 @@ bool run_pyramid(const i2d_world_def& def, PyramidResult* out, int rows = 20, do
     if (I2D_IS_NULL(scene.ground(0.0f, 40.0f))) {
         return false;
     }
-    std::vector<i2d_body_id> boxes;
-    std::vector<i2d_vec2> start;
-    for (int row = 0; row < rows; ++row) {
-        const int n = rows - row;
-        for (int k = 0; k < n; ++k) {
-            const i2d_vec2 p{float(k - 0.5 * (n - 1)), float(0.5 + row)};
-            const i2d_body_id b = scene.dynamic_box(p, 0.5f, 0.5f);
-            if (I2D_IS_NULL(b)) {
-                return false;
-            }
-            boxes.push_back(b);
-            start.push_back(p);
-        }
+    const std::vector<i2d_body_id> boxes = scene.pyramid(0.0f, rows);
+    if (boxes.empty()) {
+        return false;
+    }
+    std::vector<i2d_vec2> start;  // where each box was built
+    for (const i2d_body_id b : boxes) {
+        start.push_back(position(b));
     }
     out->count = int(boxes.size());
     const i2d_body_id top = boxes.back();
@@ -239,10 +171,10 @@ bool run_pyramid(const i2d_world_def& def, PyramidResult* out, int rows = 20, do
         if (!scene.step()) {
             return false;
         }
-        out->top_drift = std::max(out->top_drift, dist(position(top), start.back()));
+        out->top_drift = std::max(out->top_drift, distance(position(top), start.back()));
         if (s % 10 == 0) {
             for (int i = 0; i < out->count; ++i) {
-                out->any_drift = std::max(out->any_drift, dist(position(boxes[i]), start[i]));
+                out->any_drift = std::max(out->any_drift, distance(position(boxes[i]), start[i]));
             }
         }
         const i2d_world_counters c = i2d_world_get_counters(scene.world);
@@ -253,7 +185,7 @@ bool run_pyramid(const i2d_world_def& def, PyramidResult* out, int rows = 20, do
             out->checkpoint_mean_slide = mean_sideways_slide(boxes, start);
         }
         if (s == steps_for(5.0)) {
-            out->awake_at_5 = awake_count(boxes.data(), out->count);
+            out->awake_at_5 = count_awake(boxes);
             out->awake_counter_at_5 = c.awake_body_count;
             out->islands_at_5 = c.sleeping_island_count;
         }
@@ -294,7 +226,7 @@ I2D_TEST(phys_soft_pyramid_20_rows_stands_without_sleep) {
     // The same pyramid with sleep off, so that the solver, not sleeping, holds it for
     // all of the 10 s: the top box still moves less than 2 cm, and nothing sleeps.
     PyramidResult r;
-    I2D_REQUIRE(run_pyramid(no_sleep_def(), &r));
+    I2D_REQUIRE(run_pyramid(Scene::no_sleep_def(), &r));
     I2D_REQUIRE(r.count == 210);
     fprintf(stderr, "    pyramid of 20 rows, sleep off, 10 s: top drift %.3f cm, largest drift of any box %.3f cm; %d awake at 5 s\n",
             r.top_drift * 100, r.any_drift * 100, r.awake_at_5);
@@ -310,7 +242,7 @@ I2D_TEST(phys_long_soft_pyramid_70_rows_does_not_slide_apart) {
     // graph colour, boxes slid up to 11.1 cm (4.8 cm on average), and the benchmark's
     // 100-row pyramid slid apart.
     PyramidResult r;
-    I2D_REQUIRE(run_pyramid(no_sleep_def(), &r, 70, 5.0));
+    I2D_REQUIRE(run_pyramid(Scene::no_sleep_def(), &r, 70, 5.0));
     I2D_REQUIRE(r.count == 2485);
     fprintf(stderr,
             "    pyramid of 70 rows, sleep off, 5 s: largest sideways slide %.3f cm, mean %.3f cm; top ends %.3f cm "
@@ -330,7 +262,7 @@ I2D_TEST(phys_long_soft_pyramid_70_rows_stops_creeping) {
     // second relax sweep, the mean grew from 3.1 to 3.5 cm over those steps and the top
     // box ended 2.3 cm aside (and in the benchmark's 100-row pyramid from 15 to 26 cm).
     PyramidResult r;
-    I2D_REQUIRE(run_pyramid(no_sleep_def(), &r, 70, 2000 * double(time_step), 500 * double(time_step)));
+    I2D_REQUIRE(run_pyramid(Scene::no_sleep_def(), &r, 70, 2000 * double(time_step), 500 * double(time_step)));
     I2D_REQUIRE(r.count == 2485);
     fprintf(stderr,
             "    pyramid of 70 rows, sleep off: mean sideways slide %.3f cm at step 500, %.3f cm at step 2000; top "
@@ -356,14 +288,14 @@ struct StackResult {
 // A stack of unit boxes of the given densities (bottom first), built touching on static
 // ground at x = 0, run for `seconds` with sleep off.
 bool run_stack(const std::vector<float>& densities, double seconds, StackResult* out) {
-    Scene scene(no_sleep_def());
+    Scene scene(Scene::no_sleep_def());
     if (I2D_IS_NULL(scene.ground(0.0f))) {
         return false;
     }
     std::vector<i2d_body_id> boxes;
     for (size_t i = 0; i < densities.size(); ++i) {
         const i2d_body_id b = scene.dynamic_box(i2d_vec2{0, float(0.5 + double(i))}, 0.5f, 0.5f,
-                                                mat(0.6f, 0.0f, densities[i]));
+                                                with_density(densities[i]));
         if (I2D_IS_NULL(b)) {
             return false;
         }
@@ -374,7 +306,7 @@ bool run_stack(const std::vector<float>& densities, double seconds, StackResult*
         if (!scene.step()) {
             return false;
         }
-        out->top_drift = std::max(out->top_drift, dist(position(boxes.back()), top0));
+        out->top_drift = std::max(out->top_drift, distance(position(boxes.back()), top0));
         for (i2d_body_id b : boxes) {
             out->x_drift = std::max(out->x_drift, std::fabs(double(position(b).x)));
             out->turn = std::max(out->turn, std::fabs(angle_of(b)));
@@ -469,14 +401,12 @@ namespace {
 // first moving at v; returns the x velocities after 2 s.
 bool run_cradle(double v, double gap, double vx[5], float restitution = 1.0f) {
     const double r = 0.5;
-    i2d_world_def def = Scene::zero_gravity_def();
-    def.enable_sleep = false;  // a slow ball put to sleep would lose its momentum
-    Scene scene(def);
+    Scene scene(Scene::no_sleep_def(Scene::zero_gravity_def()));  // a slow ball put to sleep would lose its momentum
     i2d_body_id balls[5];
     for (int i = 0; i < 5; ++i) {
         const double x = i * (2 * r + gap) - (i == 0 ? 0.5 : 0.0);
         const i2d_vec2 vel{i == 0 ? float(v) : 0.0f, 0};
-        balls[i] = scene.dynamic_circle(i2d_vec2{float(x), 0}, float(r), mat(0.0f, restitution), vel);
+        balls[i] = scene.dynamic_circle(i2d_vec2{float(x), 0}, float(r), material(0.0f, restitution), vel);
         if (I2D_IS_NULL(balls[i])) {
             return false;
         }
@@ -560,9 +490,9 @@ I2D_TEST(phys_soft_elastic_ball_keeps_energy) {
     // at every apex of the next 60 s it must be within 1 % of that. (At an apex the speed
     // is at most g dt, so sampling once per step costs < 0.1 %.)
     const double r = 0.25, h = 2.0;
-    Scene scene(no_sleep_def());
-    I2D_REQUIRE(!I2D_IS_NULL(scene.ground(0.0f, 50.0f, mat(0.0f, 1.0f))));
-    i2d_body_id ball = scene.dynamic_circle(i2d_vec2{0, float(h + r)}, float(r), mat(0.0f, 1.0f));
+    Scene scene(Scene::no_sleep_def());
+    I2D_REQUIRE(!I2D_IS_NULL(scene.ground(0.0f, 50.0f, material(0.0f, 1.0f))));
+    i2d_body_id ball = scene.dynamic_circle(i2d_vec2{0, float(h + r)}, float(r), material(0.0f, 1.0f));
     I2D_REQUIRE(!I2D_IS_NULL(ball));
     const double e0 = g * h;
     auto energy = [&]() {
@@ -641,14 +571,14 @@ I2D_TEST(phys_soft_elastic_ball_on_a_resting_box_bounces_back_to_its_height) {
     // (0.82 m; 92 % from 20 m, and not from the ground's stiffness or the number of
     // restitution iterations), an open fidelity gap that the bound below allows.
     const double r = 0.25, h = 1.0, plank_half_height = 0.1;
-    Scene scene(no_sleep_def());
-    I2D_REQUIRE(!I2D_IS_NULL(scene.ground(0.0f, 50.0f, mat(0.0f, 0.0f))));
+    Scene scene(Scene::no_sleep_def());
+    I2D_REQUIRE(!I2D_IS_NULL(scene.ground(0.0f, 50.0f, material(0.0f, 0.0f))));
     const i2d_body_id plank =
-        scene.dynamic_box(i2d_vec2{0, float(plank_half_height)}, 0.5f, float(plank_half_height), mat(0.0f, 1.0f));
+        scene.dynamic_box(i2d_vec2{0, float(plank_half_height)}, 0.5f, float(plank_half_height), material(0.0f, 1.0f));
     I2D_REQUIRE(!I2D_IS_NULL(plank));
     I2D_REQUIRE(scene.step(steps_for(0.5)));  // the plank settles before the drop
     const double top = 2 * plank_half_height;
-    const i2d_body_id ball = scene.dynamic_circle(i2d_vec2{0, float(top + h + r)}, float(r), mat(0.0f, 1.0f));
+    const i2d_body_id ball = scene.dynamic_circle(i2d_vec2{0, float(top + h + r)}, float(r), material(0.0f, 1.0f));
     I2D_REQUIRE(!I2D_IS_NULL(ball));
     const Rebound rebound = follow_rebound(scene, ball, r, plank, top);
     I2D_REQUIRE(rebound.stepped);
@@ -669,16 +599,16 @@ I2D_TEST(phys_soft_ball_made_elastic_at_rest_bounces_off_a_resting_plank) {
     // of 1 m (0.31 m when the colouring kept its stale note that nothing was elastic),
     // and the plank stays put.
     const double r = 0.25, h = 1.0, plank_half_height = 0.1, top = 2 * plank_half_height;
-    Scene scene(no_sleep_def());
-    I2D_REQUIRE(!I2D_IS_NULL(scene.ground(0.0f, 50.0f, mat(0.0f, 0.0f))));
+    Scene scene(Scene::no_sleep_def());
+    I2D_REQUIRE(!I2D_IS_NULL(scene.ground(0.0f, 50.0f, material(0.0f, 0.0f))));
     const i2d_body_id plank =
-        scene.dynamic_box(i2d_vec2{0, float(plank_half_height)}, 0.5f, float(plank_half_height), mat(0.0f, 0.0f));
-    const i2d_body_id ball = scene.dynamic_circle(i2d_vec2{0, float(top + r)}, float(r), mat(0.0f, 0.0f));
+        scene.dynamic_box(i2d_vec2{0, float(plank_half_height)}, 0.5f, float(plank_half_height), material(0.0f, 0.0f));
+    const i2d_body_id ball = scene.dynamic_circle(i2d_vec2{0, float(top + r)}, float(r), material(0.0f, 0.0f));
     I2D_REQUIRE(!I2D_IS_NULL(plank) && !I2D_IS_NULL(ball));
     I2D_REQUIRE(scene.step(steps_for(1.0)));
     for (const i2d_body_id body : {plank, ball}) {
-        i2d_shape_id shape;
-        I2D_REQUIRE(i2d_body_get_shapes(body, &shape, 1) == 1);
+        const i2d_shape_id shape = only_shape(body);
+        I2D_REQUIRE(!I2D_IS_NULL(shape));
         I2D_REQUIRE(i2d_shape_set_restitution(shape, 1.0f) == I2D_OK);
     }
     I2D_REQUIRE(i2d_body_set_linear_velocity(ball, i2d_vec2{0, float(-std::sqrt(2 * g * h))}) == I2D_OK);
@@ -698,7 +628,7 @@ namespace {
 // its speeds at t1 and t2.
 bool roll_disc(float rolling_resistance, double v0, double t1, double t2, double* v1, double* v2, double* w2) {
     const double r = 0.5;
-    Scene scene(no_sleep_def());
+    Scene scene(Scene::no_sleep_def());
     if (I2D_IS_NULL(scene.ground(0.0f, 50.0f))) {
         return false;
     }
@@ -708,7 +638,7 @@ bool roll_disc(float rolling_resistance, double v0, double t1, double t2, double
     if (I2D_IS_NULL(disc)) {
         return false;
     }
-    i2d_shape_def sd = shape_def(mat(0.6f));
+    i2d_shape_def sd = shape_def(with_friction(0.6f));
     sd.rolling_resistance = rolling_resistance;
     i2d_circle c{i2d_vec2{0, 0}, float(r)};
     if (I2D_IS_NULL(i2d_shape_create_circle(disc, &sd, &c))) {
@@ -765,7 +695,7 @@ namespace {
 // the belt is shape A of the contact in one order and B in the other, whatever the
 // engine's ordering is).
 bool ride_belt(float belt_speed, bool belt_first, double* va, double* vb, double* vend, double* y_end) {
-    Scene scene(no_sleep_def());
+    Scene scene(Scene::no_sleep_def());
     i2d_body_id box{0}, belt{0};
     auto make_belt = [&]() {
         const i2d_body_def def = body_def(I2D_BODY_STATIC, i2d_vec2{0, -0.5f});
@@ -773,7 +703,7 @@ bool ride_belt(float belt_speed, bool belt_first, double* va, double* vb, double
         if (I2D_IS_NULL(b)) {
             return b;
         }
-        i2d_shape_def sd = shape_def(mat(0.5f));
+        i2d_shape_def sd = shape_def(with_friction(0.5f));
         sd.tangent_speed = belt_speed;
         if (I2D_IS_NULL(i2d_shape_create_box(b, &sd, 50.0f, 0.5f))) {
             fprintf(stderr, "    belt creation failed: %s\n", i2d_last_error_message());
@@ -783,9 +713,9 @@ bool ride_belt(float belt_speed, bool belt_first, double* va, double* vb, double
     };
     if (belt_first) {
         belt = make_belt();
-        box = scene.dynamic_box(i2d_vec2{0, 0.5f}, 0.5f, 0.5f, mat(0.5f));
+        box = scene.dynamic_box(i2d_vec2{0, 0.5f}, 0.5f, 0.5f, with_friction(0.5f));
     } else {
-        box = scene.dynamic_box(i2d_vec2{0, 0.5f}, 0.5f, 0.5f, mat(0.5f));
+        box = scene.dynamic_box(i2d_vec2{0, 0.5f}, 0.5f, 0.5f, with_friction(0.5f));
         belt = make_belt();
     }
     if (I2D_IS_NULL(box) || I2D_IS_NULL(belt)) {
@@ -865,11 +795,12 @@ I2D_TEST(phys_soft_friction_mixing_rules) {
     I2D_CHECK(i2d_default_world_def().friction_mixing == I2D_MIX_GEOMETRIC_MEAN);
     for (const Case& c : cases) {
         const int before = i2d_check_failures;
-        i2d_world_def def = no_sleep_def();
+        i2d_world_def def = Scene::no_sleep_def();
         def.friction_mixing = c.rule;
         Scene scene(def);
-        I2D_REQUIRE(!I2D_IS_NULL(scene.ground(0.0f, 50.0f, mat(mu_ground))));
-        i2d_body_id box = scene.dynamic_box(i2d_vec2{-40, 0.5f}, 0.5f, 0.5f, mat(mu_box), i2d_vec2{float(v0), 0});
+        I2D_REQUIRE(!I2D_IS_NULL(scene.ground(0.0f, 50.0f, with_friction(mu_ground))));
+        i2d_body_id box =
+            scene.dynamic_box(i2d_vec2{-40, 0.5f}, 0.5f, 0.5f, with_friction(mu_box), i2d_vec2{float(v0), 0});
         I2D_REQUIRE(!I2D_IS_NULL(box));
         const double stop = v0 / (c.mu * g);
         const int s1 = steps_for(0.1), s2 = steps_for(0.6 * stop);
@@ -892,8 +823,8 @@ namespace {
 double bounce_apex(const i2d_world_def& def, float e_ball, float e_ground, double h, double seconds) {
     const double r = 0.25;
     Scene scene(def);
-    i2d_body_id ground = scene.ground(0.0f, 50.0f, mat(0.0f, e_ground));
-    i2d_body_id ball = scene.dynamic_circle(i2d_vec2{0, float(h + r)}, float(r), mat(0.0f, e_ball));
+    i2d_body_id ground = scene.ground(0.0f, 50.0f, material(0.0f, e_ground));
+    i2d_body_id ball = scene.dynamic_circle(i2d_vec2{0, float(h + r)}, float(r), material(0.0f, e_ball));
     if (I2D_IS_NULL(ground) || I2D_IS_NULL(ball)) {
         ++i2d_check_failures;
         return NAN;
@@ -942,7 +873,7 @@ I2D_TEST(phys_soft_restitution_mixing_rules) {
     I2D_CHECK(i2d_default_world_def().restitution_mixing == I2D_MIX_MINIMUM);
     for (const Case& c : cases) {
         const int before = i2d_check_failures;
-        i2d_world_def def = no_sleep_def();
+        i2d_world_def def = Scene::no_sleep_def();
         def.restitution_mixing = c.rule;
         const double apex = bounce_apex(def, c.ball, c.ground, h, 2.5);
         const double expected = c.e * c.e * h;
@@ -951,7 +882,7 @@ I2D_TEST(phys_soft_restitution_mixing_rules) {
         I2D_CHECK_NEAR(apex, expected, 0.05 * expected);
         report_case(before, c.name);
     }
-    const double dead = bounce_apex(no_sleep_def(), 0.8f, 0.0f, h, 2.5);
+    const double dead = bounce_apex(Scene::no_sleep_def(), 0.8f, 0.0f, h, 2.5);
     fprintf(stderr, "    restitution (0.8, 0) under the default minimum: apex %.4f m\n", dead);
     I2D_CHECK(dead < 0.01 * h);
 }
@@ -978,15 +909,15 @@ I2D_TEST(phys_soft_speculative_no_tunnelling) {
                 const i2d_body_def wall_def = body_def(I2D_BODY_STATIC, i2d_vec2{0, 0});
                 i2d_body_id wall = i2d_body_create(scene.world, &wall_def);
                 I2D_REQUIRE(!I2D_IS_NULL(wall));
-                i2d_shape_def sd = shape_def(mat(0.6f));
+                i2d_shape_def sd = shape_def(with_friction(0.6f));
                 const i2d_shape_id shape =
                     segment ? i2d_shape_create_segment(wall, &sd, i2d_vec2{0, -3}, i2d_vec2{0, 3})
                             : i2d_shape_create_offset_box(wall, &sd, 0.01f, 3.0f, i2d_vec2{0.01f, 0}, i2d_make_rot(0.0f));
                 I2D_REQUIRE(!I2D_IS_NULL(shape));
                 // The near face is x = 0 for both.
                 const double x0 = -6.0 - 0.1 * k * v * double(time_step);
-                i2d_body_id ball =
-                    scene.dynamic_circle(i2d_vec2{float(x0), 0.1f}, float(r), mat(0.6f), i2d_vec2{float(v), 0});
+                const i2d_vec2 start{float(x0), 0.1f};
+                i2d_body_id ball = scene.dynamic_circle(start, float(r), with_friction(0.6f), i2d_vec2{float(v), 0});
                 I2D_REQUIRE(!I2D_IS_NULL(ball));
                 double max_x = -INFINITY;
                 for (int s = 0; s < steps_for(1.0); ++s) {
@@ -1065,8 +996,7 @@ I2D_TEST(phys_soft_push_out_speed_limit) {
     const double slop = i2d_default_world_def().contact_slop;
     for (float limit : {0.0f, 1.0f}) {
         const int before = i2d_check_failures;
-        i2d_world_def def = Scene::zero_gravity_def();
-        def.enable_sleep = false;
+        i2d_world_def def = Scene::no_sleep_def(Scene::zero_gravity_def());
         if (limit > 0) {
             def.contact_push_max_speed = limit;
         }
@@ -1085,7 +1015,7 @@ I2D_TEST(phys_soft_push_out_speed_limit) {
     }
     {
         const int before = i2d_check_failures;
-        const i2d_world_def def = no_sleep_def();
+        const i2d_world_def def = Scene::no_sleep_def();
         const double max_speed = def.contact_push_max_speed;
         Scene scene(def);
         I2D_REQUIRE(!I2D_IS_NULL(scene.ground(0.0f)));
@@ -1121,12 +1051,12 @@ void build_busy_scene(Scene& scene, std::vector<i2d_body_id>& bodies) {
         for (int k = 0; k < 8 - row; ++k) {
             i2d_body_def def = body_def(I2D_BODY_DYNAMIC, i2d_vec2{float(k * 1.05 - 0.525 * (7 - row)), float(0.52 + row * 1.02)});
             def.rotation = i2d_make_rot(0.02f * float((k + row) % 5 - 2));
-            bodies.push_back(scene.box(def, 0.5f, 0.5f, mat(0.6f, 0.1f)));
+            bodies.push_back(scene.box(def, 0.5f, 0.5f, material(0.6f, 0.1f)));
         }
     }
     for (int i = 0; i < 6; ++i) {
         bodies.push_back(scene.dynamic_circle(i2d_vec2{float(-3 + 1.1 * i), float(11 + 0.7 * i)}, 0.3f + 0.05f * i,
-                                              mat(0.4f, 0.5f, 2.0f), i2d_vec2{float(0.5 * (i - 3)), 0}));
+                                              material(0.4f, 0.5f, 2.0f), i2d_vec2{float(0.5 * (i - 3)), 0}));
     }
 }
 
@@ -1150,12 +1080,7 @@ I2D_TEST(phys_soft_determinism_two_worlds) {
     }
     int differ = 0;
     for (size_t i = 0; i < ba.size(); ++i) {
-        const i2d_transform ta = i2d_body_get_transform(ba[i]), tb = i2d_body_get_transform(bb[i]);
-        const i2d_vec2 va = velocity(ba[i]), vb = velocity(bb[i]);
-        const float wa = i2d_body_get_angular_velocity(ba[i]), wb = i2d_body_get_angular_velocity(bb[i]);
-        const bool same = std::memcmp(&ta, &tb, sizeof ta) == 0 && std::memcmp(&va, &vb, sizeof va) == 0 &&
-                          std::memcmp(&wa, &wb, sizeof wa) == 0;
-        differ += same ? 0 : 1;
+        differ += BodyState::of(ba[i]).same_bits(BodyState::of(bb[i])) ? 0 : 1;
     }
     // The scene did something: the last circle (built at y = 14.5) fell onto the pyramid.
     const double ball_drop = 14.5 - position(ba.back()).y;

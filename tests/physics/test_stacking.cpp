@@ -4,33 +4,16 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <cstring>
 
 #include "physics_fixture.hpp"
 
 using namespace phys;
 
-namespace {
-
-bool same_bits(i2d_vec2 a, i2d_vec2 b) { return std::memcmp(&a, &b, sizeof a) == 0; }
-
-// Running min/max of a value over a time window.
-struct Range {
-    double lo = INFINITY, hi = -INFINITY;
-    void add(double v) {
-        lo = std::min(lo, v);
-        hi = std::max(hi, v);
-    }
-    double width() const { return hi - lo; }
-};
-
-}  // namespace
-
 I2D_TEST(phys_stack_documented_solver_defaults) {
     // The settings the resting and bouncing expectations depend on, as the header
     // documents them (types.h): a scene built from the defaults must get these.
     const i2d_world_def def = i2d_default_world_def();
-    I2D_CHECK(def.gravity.x == 0.0f && def.gravity.y == -10.0f);
+    I2D_CHECK(def.gravity.x == 0.0f && def.gravity.y == float(-g));  // the fixture's g
     I2D_CHECK_NEAR(def.contact_slop, 0.005, 1e-7);
     I2D_CHECK(def.contact_hertz == 60.0f && def.contact_damping_ratio == 10.0f);
     I2D_CHECK(def.contact_push_max_speed == 3.0f);
@@ -117,13 +100,9 @@ I2D_TEST(phys_stack_five_boxes) {
     const double tol = 1e-3;
     const int count = 5;
     Scene scene(def);
-    i2d_body_id ground = scene.ground(0.0f);
-    I2D_REQUIRE(!I2D_IS_NULL(ground));
-    i2d_body_id boxes[count];
-    for (int i = 0; i < count; ++i) {
-        boxes[i] = scene.dynamic_box(i2d_vec2{0, 0.5f + float(i)}, 0.5f, 0.5f);
-        I2D_REQUIRE(!I2D_IS_NULL(boxes[i]));
-    }
+    I2D_REQUIRE(!I2D_IS_NULL(scene.ground(0.0f)));
+    const std::vector<i2d_body_id> boxes = scene.column(0.0f, count);
+    I2D_REQUIRE(boxes.size() == size_t(count));
 
     double max_sink[count] = {0}, max_rise[count] = {0}, max_contact_pen = 0.0, max_dx = 0.0, late_speed = 0.0;
     double late_low[count], late_high[count];
@@ -250,12 +229,9 @@ I2D_TEST(phys_stack_tall_column_holds) {
     const int count = 20;
     Scene scene(def);
     I2D_REQUIRE(!I2D_IS_NULL(scene.ground(0.0f)));
-    i2d_body_id boxes[count];
-    for (int i = 0; i < count; ++i) {
-        boxes[i] = scene.dynamic_box(i2d_vec2{0, 0.5f + float(i)}, 0.5f, 0.5f);
-        I2D_REQUIRE(!I2D_IS_NULL(boxes[i]));
-    }
-    const i2d_body_id top = boxes[count - 1];
+    const std::vector<i2d_body_id> boxes = scene.column(0.0f, count);
+    I2D_REQUIRE(boxes.size() == size_t(count));
+    const i2d_body_id top = boxes.back();
     const int steps = steps_for(10.0);
     double low = 1e9, high = -1e9, late_speed = 0.0;
     for (int s = 0; s < steps; ++s) {

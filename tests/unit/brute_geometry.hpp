@@ -27,6 +27,15 @@ inline double len(P a) { return std::sqrt(dot(a, a)); }
 inline P unit(P a) { return (1.0 / len(a)) * a; }
 inline P p(i2d::Vec2 v) { return {v.x, v.y}; }
 
+// Closed intervals: boxes that only touch overlap.
+inline bool boxes_overlap(const i2d::AABB& a, const i2d::AABB& b) {
+    return a.lower.x <= b.upper.x && b.lower.x <= a.upper.x && a.lower.y <= b.upper.y && b.lower.y <= a.upper.y;
+}
+
+inline bool same_box(const i2d::AABB& a, const i2d::AABB& b) {
+    return a.lower.x == b.lower.x && a.lower.y == b.lower.y && a.upper.x == b.upper.x && a.upper.y == b.upper.y;
+}
+
 inline P to_world(const i2d::Transform& xf, i2d::Vec2 v) {
     const double c = xf.q.c, s = xf.q.s;
     return {c * v.x - s * v.y + xf.p.x, s * v.x + c * v.y + xf.p.y};
@@ -220,6 +229,11 @@ inline i2d::Polygon random_polygon(TestRng& rng, float radius) {
         }
     }
 }
+
+/// The kinds random_geometry makes: every ShapeType before chain_segment. A chain segment
+/// takes its neighbours' ghost points and is not a shape on its own (tests/physics/
+/// test_chain.cpp and tests/api/test_api_chains.c test chains).
+constexpr int32_t random_kind_count = int32_t(i2d::ShapeType::chain_segment);
 
 inline i2d::Geometry random_geometry(TestRng& rng, i2d::ShapeType type) {
     i2d::Geometry g;

@@ -15,10 +15,13 @@
 #include <vector>
 
 #include "broadphase/broad_phase.hpp"
+#include "brute_geometry.hpp"
 #include "check.h"
 #include "test_rng.hpp"
 
 using namespace i2d;
+using brute::boxes_overlap;
+using brute::same_box;
 
 namespace {
 
@@ -26,22 +29,12 @@ using Pair = std::pair<int32_t, int32_t>;  // shape ids, first < second
 
 constexpr float margin = 0.1f;  // fat box = tight box grown by this, as the engine does
 
-// Closed intervals: touching boxes overlap. Written here, independently of the library.
-bool bf_overlap(const AABB& a, const AABB& b) {
-    return a.lower.x <= b.upper.x && b.lower.x <= a.upper.x && a.lower.y <= b.upper.y && b.lower.y <= a.upper.y;
-}
-
 bool inside(const AABB& inner, const AABB& outer) {
     return inner.lower.x >= outer.lower.x && inner.lower.y >= outer.lower.y && inner.upper.x <= outer.upper.x &&
            inner.upper.y <= outer.upper.y;
 }
 
 AABB fatten(const AABB& b) { return {{b.lower.x - margin, b.lower.y - margin}, {b.upper.x + margin, b.upper.y + margin}}; }
-
-
-bool same_box(const AABB& a, const AABB& b) {
-    return a.lower.x == b.lower.x && a.lower.y == b.lower.y && a.upper.x == b.upper.x && a.upper.y == b.upper.y;
-}
 
 struct Shape {
     int32_t key = null_index;
@@ -256,7 +249,7 @@ private:
                 } else if (ka != ProxyKind::dynamic_proxy && kb != ProxyKind::dynamic_proxy) {
                     ++report_.static_kinematic;
                 }
-                if (!bf_overlap(shapes_[a].fat, shapes_[b].fat)) {
+                if (!boxes_overlap(shapes_[a].fat, shapes_[b].fat)) {
                     ++report_.not_overlapping;
                 }
                 if (!called.insert({a, b}).second) {
@@ -294,7 +287,7 @@ private:
 
         // The narrowphase drops contacts whose fat boxes stopped overlapping.
         for (auto it = known_.begin(); it != known_.end();) {
-            it = bf_overlap(shapes_[it->first].fat, shapes_[it->second].fat) ? std::next(it) : known_.erase(it);
+            it = boxes_overlap(shapes_[it->first].fat, shapes_[it->second].fat) ? std::next(it) : known_.erase(it);
         }
         report_.max_known = std::max(report_.max_known, int32_t(known_.size()));
         check_against_brute_force();
@@ -331,7 +324,7 @@ private:
             for (int32_t b = a + 1; b < n; ++b) {
                 const Shape& sb = shapes_[b];
                 if (sb.alive && (sa.kind == ProxyKind::dynamic_proxy || sb.kind == ProxyKind::dynamic_proxy) &&
-                    bf_overlap(sa.fat, sb.fat) && !filtered_out(a, b)) {
+                    boxes_overlap(sa.fat, sb.fat) && !filtered_out(a, b)) {
                     expected.push_back({a, b});
                 }
             }
@@ -702,7 +695,7 @@ I2D_TEST(unit_broad_phase_moves_in_place_find_the_pairs_reinsertion_finds) {
             for (int32_t j = 0; j < int32_t(fat.size()); ++j) {
                 const bool both_static = i % 10 == 0 && j % 10 == 0;
                 const Pair p{std::min(i, j), std::max(i, j)};
-                if (j != i && !both_static && bf_overlap(fat[i], fat[j]) && known.count(p) == 0) {
+                if (j != i && !both_static && boxes_overlap(fat[i], fat[j]) && known.count(p) == 0) {
                     expected.insert(p);
                 }
             }
@@ -725,7 +718,7 @@ I2D_TEST(unit_broad_phase_moves_in_place_find_the_pairs_reinsertion_finds) {
             }
         }
         for (auto it = known.begin(); it != known.end();) {
-            it = bf_overlap(fat[it->first], fat[it->second]) ? std::next(it) : known.erase(it);
+            it = boxes_overlap(fat[it->first], fat[it->second]) ? std::next(it) : known.erase(it);
         }
         const std::set<Pair> expected = brute_new_pairs(moved);
         const std::set<Pair> got_in_place = update(in_place, false), got_reinserted = update(reinserted, true);

@@ -10,25 +10,19 @@
 #include <vector>
 
 #include "broadphase/dynamic_tree.hpp"
+#include "brute_geometry.hpp"
 #include "check.h"
 #include "test_rng.hpp"
 
 using namespace i2d;
+using brute::boxes_overlap;
+using brute::same_box;
 
 namespace {
 
 constexpr uint64_t all_bits = ~uint64_t(0);
 
 // ---- Brute force, written independently of the library ----------------------------------
-
-// Closed intervals: boxes that only touch overlap.
-bool bf_overlap(const AABB& a, const AABB& b) {
-    return a.lower.x <= b.upper.x && b.lower.x <= a.upper.x && a.lower.y <= b.upper.y && b.lower.y <= a.upper.y;
-}
-
-bool same_box(const AABB& a, const AABB& b) {
-    return a.lower.x == b.lower.x && a.lower.y == b.lower.y && a.upper.x == b.upper.x && a.upper.y == b.upper.y;
-}
 
 // Slab test in double: does origin + t * d, t in [0, t_max], meet the box grown by `grow`
 // on every side? A negative `grow` shrinks the box, except along an axis where it is thinner
@@ -172,7 +166,7 @@ public:
         std::vector<int32_t> out;
         for (size_t u = 0; u < entries.size(); ++u) {
             const Entry& e = entries[u];
-            if (e.alive && (e.category & mask) != 0 && bf_overlap(e.box, box)) {
+            if (e.alive && (e.category & mask) != 0 && boxes_overlap(e.box, box)) {
                 out.push_back(int32_t(u));
             }
         }

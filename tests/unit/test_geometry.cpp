@@ -9,24 +9,14 @@
 #include "collision/hull.hpp"
 #include "math/math.hpp"
 #include "test_rng.hpp"
+#include "world_fixture.hpp"
 
 using namespace i2d;
+using unit::box_geometry;
+using unit::circle_geometry;
+using unit::pi_d;
 
 namespace {
-
-Geometry make_circle(Vec2 center, float radius) {
-    Geometry g;
-    g.type = ShapeType::circle;
-    g.circle = {center, radius};
-    return g;
-}
-
-Geometry box_geometry(float hx, float hy) {
-    Geometry g;
-    g.type = ShapeType::polygon;
-    g.polygon = i2d::make_box(hx, hy);
-    return g;
-}
 
 Transform at(float x, float y) { return {{x, y}, Rot{}}; }
 
@@ -44,8 +34,8 @@ float sampled_entry(const Geometry& g, const Transform& xf, Vec2 origin, Vec2 tr
 }  // namespace
 
 I2D_TEST(unit_geometry_mass_closed_form) {
-    const MassData disc = compute_mass(make_circle({0.5f, -2.0f}, 0.75f), 3.0f);
-    I2D_CHECK_NEAR(disc.mass, 3.0 * 3.14159265358979 * 0.75 * 0.75, 1e-5);
+    const MassData disc = compute_mass(circle_geometry({0.5f, -2.0f}, 0.75f), 3.0f);
+    I2D_CHECK_NEAR(disc.mass, 3.0 * pi_d * 0.75 * 0.75, 1e-5);
     I2D_CHECK(disc.center == (Vec2{0.5f, -2.0f}));
     const MassData box = compute_mass(box_geometry(0.5f, 2.0f), 2.0f);
     I2D_CHECK_NEAR(box.mass, 2.0 * 1.0 * 4.0, 1e-6);
@@ -53,7 +43,7 @@ I2D_TEST(unit_geometry_mass_closed_form) {
 }
 
 I2D_TEST(unit_geometry_aabb_is_tight) {
-    const AABB c = compute_aabb(make_circle({1.0f, 0.0f}, 0.5f), at(2.0f, 3.0f));
+    const AABB c = compute_aabb(circle_geometry({1.0f, 0.0f}, 0.5f), at(2.0f, 3.0f));
     I2D_CHECK(c.lower == (Vec2{2.5f, 2.5f}) && c.upper == (Vec2{3.5f, 3.5f}));
     const AABB b = compute_aabb(box_geometry(1.0f, 0.25f), at(-1.0f, 1.0f));
     I2D_CHECK(b.lower == (Vec2{-2.0f, 0.75f}) && b.upper == (Vec2{0.0f, 1.25f}));
@@ -152,7 +142,7 @@ I2D_TEST(unit_geometry_polygon_aabb_bits_match_the_scalar_formula) {
 }
 
 I2D_TEST(unit_geometry_contains_point_includes_boundary) {
-    const Geometry circle = make_circle({0.0f, 0.0f}, 1.0f);
+    const Geometry circle = circle_geometry({0.0f, 0.0f}, 1.0f);
     I2D_CHECK(contains_point(circle, at(0, 0), {1.0f, 0.0f}));
     I2D_CHECK(!contains_point(circle, at(0, 0), {1.0001f, 0.0f}));
     I2D_CHECK(!contains_point(circle, at(0, 0), {0.71f, 0.71f}));
@@ -162,7 +152,7 @@ I2D_TEST(unit_geometry_contains_point_includes_boundary) {
 }
 
 I2D_TEST(unit_geometry_circle_overlaps_box_only_near_corner_arc) {
-    const Geometry circle = make_circle({0.0f, 0.0f}, 1.0f);
+    const Geometry circle = circle_geometry({0.0f, 0.0f}, 1.0f);
     // The query box's corner (0.75, 0.75) is outside the circle although the bounds overlap.
     I2D_CHECK(!overlaps_aabb(circle, at(0, 0), {{0.75f, 0.75f}, {2.0f, 2.0f}}));
     I2D_CHECK(overlaps_aabb(circle, at(0, 0), {{0.7f, 0.7f}, {2.0f, 2.0f}}));
@@ -175,7 +165,7 @@ I2D_TEST(unit_geometry_ray_cast_matches_sampling) {
     int32_t hits = 0;
     for (int32_t trial = 0; trial < 400; ++trial) {
         const bool circle = trial % 2 == 0;
-        const Geometry g = circle ? make_circle({rng.uniform(-0.5f, 0.5f), rng.uniform(-0.5f, 0.5f)},
+        const Geometry g = circle ? circle_geometry({rng.uniform(-0.5f, 0.5f), rng.uniform(-0.5f, 0.5f)},
                                                 rng.uniform(0.2f, 2.0f))
                                   : box_geometry(rng.uniform(0.2f, 2.0f), rng.uniform(0.2f, 2.0f));
         const Transform xf = at(rng.uniform(-2.0f, 2.0f), rng.uniform(-2.0f, 2.0f));

@@ -9,13 +9,11 @@
 
 using namespace i2d;
 using unit::add_body;
-using unit::add_box;
+using unit::add_box_body;
+using unit::step_validated;
 using unit::without_gravity;
 
 namespace {
-
-constexpr float time_step = 1.0f / 60.0f;
-constexpr int32_t substeps = 4;
 
 int32_t add_joint(World& world, JointType type, int32_t a, int32_t b, bool collide_connected = false) {
     JointDef def;
@@ -27,22 +25,11 @@ int32_t add_joint(World& world, JointType type, int32_t a, int32_t b, bool colli
     return world.create_joint(def);
 }
 
-void step(World& world, int32_t count) {
-    for (int32_t i = 0; i < count; ++i) {
-        world.step(time_step, substeps);
-        world.validate();
-    }
-}
-
 // Two 1 m boxes overlapping by half their width.
 struct OverlappingPair {
     World world{without_gravity()};
-    int32_t a = add_body(world, BodyType::dynamic, {0.0f, 0.0f});
-    int32_t b = add_body(world, BodyType::dynamic, {0.5f, 0.0f});
-    OverlappingPair() {
-        add_box(world, a, 0.5f, 0.5f);
-        add_box(world, b, 0.5f, 0.5f);
-    }
+    int32_t a = add_box_body(world, BodyType::dynamic, {0.0f, 0.0f}, 0.5f, 0.5f);
+    int32_t b = add_box_body(world, BodyType::dynamic, {0.5f, 0.0f}, 0.5f, 0.5f);
     int32_t contacts() const { return world.counters().contact_count; }
 };
 
@@ -69,45 +56,43 @@ I2D_TEST(unit_joint_lists_hold_each_bodys_joints_through_create_and_destroy) {
 
 I2D_TEST(unit_joined_bodies_do_not_collide_unless_collide_connected) {
     OverlappingPair pair;
-    step(pair.world, 1);
+    step_validated(pair.world, 1);
     I2D_CHECK(pair.contacts() == 1);
     const int32_t joint = add_joint(pair.world, JointType::filter, pair.a, pair.b);
     I2D_CHECK(pair.contacts() == 0);  // ended at once
-    step(pair.world, 2);
+    step_validated(pair.world, 2);
     I2D_CHECK(pair.contacts() == 0);
     JointDef def = pair.world.joints()[joint].def;
     def.collide_connected = true;
     pair.world.set_joint_def(joint, def);
-    step(pair.world, 1);
+    step_validated(pair.world, 1);
     I2D_CHECK(pair.contacts() == 1);
 }
 
 I2D_TEST(unit_destroying_a_joint_lets_its_bodies_collide_again) {
     OverlappingPair pair;
     const int32_t joint = add_joint(pair.world, JointType::revolute, pair.a, pair.b);
-    step(pair.world, 2);
+    step_validated(pair.world, 2);
     I2D_CHECK(pair.contacts() == 0);
     pair.world.destroy_joint(joint);
-    step(pair.world, 1);
+    step_validated(pair.world, 1);
     I2D_CHECK(pair.contacts() == 1);
 }
 
 I2D_TEST(unit_joined_bodies_share_an_island_and_wake_together) {
     World world{without_gravity()};
-    const int32_t a = add_body(world, BodyType::dynamic, {0.0f, 0.0f});
-    const int32_t b = add_body(world, BodyType::dynamic, {5.0f, 0.0f});
-    add_box(world, a, 0.5f, 0.5f);
-    add_box(world, b, 0.5f, 0.5f);
+    const int32_t a = add_box_body(world, BodyType::dynamic, {0.0f, 0.0f}, 0.5f, 0.5f);
+    const int32_t b = add_box_body(world, BodyType::dynamic, {5.0f, 0.0f}, 0.5f, 0.5f);
     const int32_t joint = add_joint(world, JointType::distance, a, b);
     I2D_CHECK(world.bodies()[a].island == world.bodies()[b].island);
-    step(world, 60);  // at rest: the pair sleeps after time_to_sleep
+    step_validated(world, 60);  // at rest: the pair sleeps after time_to_sleep
     I2D_CHECK(!world.is_awake(a) && !world.is_awake(b));
     I2D_CHECK(world.counters().sleeping_island_count == 1);
     world.wake_body(b);
     I2D_CHECK(world.is_awake(a));
     // Once the joint goes, the island splits when it next sleeps: two islands.
     world.destroy_joint(joint);
-    step(world, 60);
+    step_validated(world, 60);
     I2D_CHECK(world.counters().sleeping_island_count == 2);
 }
 
@@ -147,8 +132,7 @@ I2D_TEST(unit_joint_gathered_once_from_the_first_awake_body) {
 I2D_TEST(unit_joints_that_cannot_both_hold_leave_the_world_finite) {
     World world{WorldDef{}};
     const int32_t ground = add_body(world, BodyType::static_body, {0.0f, -1.0f});
-    const int32_t box = add_body(world, BodyType::dynamic, {-1.0f, -3.86f});
-    add_box(world, box, 0.25f, 0.25f);
+    const int32_t box = add_box_body(world, BodyType::dynamic, {-1.0f, -3.86f}, 0.25f, 0.25f);
     JointDef wheel;
     wheel.type = JointType::wheel;
     wheel.body_a = box;
@@ -162,9 +146,9 @@ I2D_TEST(unit_joints_that_cannot_both_hold_leave_the_world_finite) {
     prismatic.local_anchor_b = {-4.0f, -3.25f};
     world.create_joint(prismatic);
     for (int32_t i = 0; i < 600; ++i) {
-        world.step(time_step, substeps);
+        unit::step(world, 1);
         const Body& b = world.bodies()[box];
-        I2D_CHECK(is_finite(b.center) && is_finite(b.linear_velocity) && std::isfinite(b.angular_velocity));
+        I2D_CHECK(unit::is_finite_body(b));
         I2D_CHECK(length(b.linear_velocity) <= world.settings().maximum_linear_speed);
     }
     world.validate();

@@ -8,19 +8,25 @@
 #include "check.h"
 #include "collision/geometry.hpp"
 #include "collision/hull.hpp"
+#include "world_fixture.hpp"
 
 using namespace i2d;
+using unit::box_geometry;
+using unit::capsule_geometry;
+using unit::circle_geometry;
+using unit::pi_d;
+using unit::polygon_geometry;
+using unit::segment_geometry;
 
 namespace {
 
-constexpr double pi_d = 3.14159265358979323846;
-
-Geometry polygon_geometry(const Polygon& p) {
-    Geometry g;
-    g.type = ShapeType::polygon;
-    g.polygon = p;
-    return g;
-}
+// How close compute_mass must come to the 1500 x 1500 grid of integrate(): the grid's
+// cells along the boundary are in or out whole, so mass and inertia are good to a few
+// parts in a thousand, the centre to a millimetre.
+constexpr double grid_mass_tolerance = 2e-3;     // share of the grid's mass
+constexpr double grid_center_tolerance = 1e-3;   // m
+constexpr double grid_inertia_tolerance = 3e-3;  // share of the grid's inertia
+constexpr int32_t grid_cells = 1500;             // per side
 
 struct Integrated {
     double mass = 0.0, cx = 0.0, cy = 0.0, inertia = 0.0;
@@ -50,6 +56,14 @@ Integrated integrate(const Geometry& g, double density, int32_t n) {
     return out;
 }
 
+// compute_mass against the grid: mass, centre and inertia.
+void check_matches_integration(const MassData& m, const Integrated& grid) {
+    I2D_CHECK_NEAR(m.mass, grid.mass, grid_mass_tolerance * grid.mass);
+    I2D_CHECK_NEAR(m.center.x, grid.cx, grid_center_tolerance);
+    I2D_CHECK_NEAR(m.center.y, grid.cy, grid_center_tolerance);
+    I2D_CHECK_NEAR(m.rotational_inertia, grid.inertia, grid_inertia_tolerance * grid.inertia);
+}
+
 }  // namespace
 
 I2D_TEST(unit_mass_box_and_disc_closed_form) {
@@ -60,19 +74,13 @@ I2D_TEST(unit_mass_box_and_disc_closed_form) {
     // m (w^2 + h^2) / 12 with full sizes w = 1, h = 4.
     I2D_CHECK_NEAR(box.rotational_inertia, 8.0 * (1.0 + 16.0) / 12.0, 1e-5);
 
-    Geometry disc;
-    disc.type = ShapeType::circle;
-    disc.circle = {{0.5f, -2.0f}, 0.75f};
-    const MassData d = compute_mass(disc, 3.0f);
+    const MassData d = compute_mass(circle_geometry({0.5f, -2.0f}, 0.75f), 3.0f);
     const double m = 3.0 * pi_d * 0.75 * 0.75;
     I2D_CHECK_NEAR(d.mass, m, 1e-5);
     I2D_CHECK(d.center == (Vec2{0.5f, -2.0f}));
     I2D_CHECK_NEAR(d.rotational_inertia, 0.5 * m * 0.75 * 0.75, 1e-5);
 
-    Geometry seg;
-    seg.type = ShapeType::segment;
-    seg.segment = {{0.0f, 0.0f}, {2.0f, 0.0f}};
-    const MassData s = compute_mass(seg, 5.0f);
+    const MassData s = compute_mass(segment_geometry({0.0f, 0.0f}, {2.0f, 0.0f}), 5.0f);
     I2D_CHECK(s.mass == 0.0f && s.rotational_inertia == 0.0f);
 }
 
@@ -108,9 +116,7 @@ I2D_TEST(unit_mass_capsule_closed_form_and_integration) {
     // Horizontal capsule, length L = 2, radius r = 0.5, density 2:
     // rectangle 2r x L, I = m (L^2 + 4 r^2) / 12; two half discs = one disc of mass md with
     // I = md (r^2 / 2 + h^2 + 2 h (4 r / (3 pi))), h = L / 2 (parallel axis per half disc).
-    Geometry g;
-    g.type = ShapeType::capsule;
-    g.capsule = {{-1.0f, 0.0f}, {1.0f, 0.0f}, 0.5f};
+    Geometry g = capsule_geometry({-1.0f, 0.0f}, {1.0f, 0.0f}, 0.5f);
     const double rho = 2.0, L = 2.0, r = 0.5, h = 1.0;
     const double mr = rho * 2.0 * r * L, md = rho * pi_d * r * r;
     const double expected = mr * (L * L + 4 * r * r) / 12.0 + md * (0.5 * r * r + h * h + 2.0 * h * 4.0 * r / (3.0 * pi_d));
@@ -120,11 +126,8 @@ I2D_TEST(unit_mass_capsule_closed_form_and_integration) {
     // A turned, offset capsule against the grid.
     g.capsule = {{0.3f, -0.2f}, {1.1f, 0.9f}, 0.35f};
     const MassData m = compute_mass(g, 3.0f);
-    const Integrated num = integrate(g, 3.0, 1500);
-    I2D_CHECK_NEAR(m.mass, num.mass, 2e-3 * num.mass);
-    I2D_CHECK_NEAR(m.center.x, num.cx, 1e-3);
-    I2D_CHECK_NEAR(m.center.y, num.cy, 1e-3);
-    I2D_CHECK_NEAR(m.rotational_inertia, num.inertia, 3e-3 * num.inertia);
+    const Integrated num = integrate(g, 3.0, grid_cells);
+    check_matches_integration(m, num);
     std::printf("capsule vs grid: mass %.3g, inertia %.3g relative\n", std::fabs(m.mass - num.mass) / num.mass,
                 std::fabs(m.rotational_inertia - num.inertia) / num.inertia);
 }
@@ -136,11 +139,8 @@ I2D_TEST(unit_mass_rounded_polygon_matches_integration) {
     for (float radius : {0.0f, 0.1f, 0.4f}) {
         const Geometry g = polygon_geometry(make_polygon(hull, radius));
         const MassData m = compute_mass(g, 2.5f);
-        const Integrated num = integrate(g, 2.5, 1500);
-        I2D_CHECK_NEAR(m.mass, num.mass, 2e-3 * num.mass);
-        I2D_CHECK_NEAR(m.center.x, num.cx, 1e-3);
-        I2D_CHECK_NEAR(m.center.y, num.cy, 1e-3);
-        I2D_CHECK_NEAR(m.rotational_inertia, num.inertia, 3e-3 * num.inertia);
+        const Integrated num = integrate(g, 2.5, grid_cells);
+        check_matches_integration(m, num);
         std::printf("rounded polygon r=%.1f vs grid: mass %.3g, inertia %.3g relative\n", double(radius),
                     std::fabs(m.mass - num.mass) / num.mass, std::fabs(m.rotational_inertia - num.inertia) / num.inertia);
         I2D_CHECK_NEAR(area(g), m.mass / 2.5, 1e-5);
@@ -148,9 +148,7 @@ I2D_TEST(unit_mass_rounded_polygon_matches_integration) {
     // A rounded box in closed form: rectangle (w+2r) x h, w x 2r strips... simpler: box
     // of half sizes a, b rounded by r = core + 4 side slabs + one full disc.
     const float a = 1.0f, b = 0.5f, r = 0.25f;
-    Polygon rb = make_box(a, b);
-    rb.radius = r;
-    const MassData m = compute_mass(polygon_geometry(rb), 1.0f);
+    const MassData m = compute_mass(box_geometry(a, b, r), 1.0f);
     const double A = 4.0 * a * b + 2.0 * (2.0 * a) * r + 2.0 * (2.0 * b) * r + pi_d * r * r;
     // Inertia: core 4ab((2a)^2+(2b)^2)/12; top/bottom slabs (2a x r) at distance b + r/2;
     // left/right slabs (r x 2b) at a + r/2; four quarter discs at the corners (a, b).

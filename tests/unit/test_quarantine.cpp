@@ -13,12 +13,14 @@
 using namespace i2d;
 
 using unit::add_body;
-using unit::add_box;
+using unit::add_box_body;
+using unit::is_finite_body;
+using unit::step;
+using unit::substeps;
+using unit::time_step;
 
 namespace {
 
-constexpr float time_step = 1.0f / 60.0f;
-constexpr int32_t substeps = 4;
 constexpr float half_size = 0.5f;        // boxes, m
 constexpr float ground_top = 0.5f;       // m
 constexpr float resting_y = ground_top + half_size;
@@ -34,27 +36,11 @@ WorldDef awake_world() {
 }
 
 int32_t add_ground(World& world) {
-    const int32_t ground = add_body(world, BodyType::static_body, {0.0f, 0.0f});
-    add_box(world, ground, 40.0f, ground_top);
-    return ground;
+    return add_box_body(world, BodyType::static_body, {0.0f, 0.0f}, 40.0f, ground_top);
 }
 
 int32_t add_dynamic_box(World& world, Vec2 at) {
-    const int32_t body = add_body(world, BodyType::dynamic, at);
-    add_box(world, body, half_size, half_size);
-    return body;
-}
-
-void step(World& world, int32_t count) {
-    for (int32_t i = 0; i < count; ++i) {
-        world.step(time_step, substeps);
-    }
-}
-
-bool is_finite_body(const Body& b) {
-    return std::isfinite(b.transform.p.x) && std::isfinite(b.transform.p.y) && std::isfinite(b.transform.q.c) &&
-           std::isfinite(b.transform.q.s) && std::isfinite(b.linear_velocity.x) &&
-           std::isfinite(b.linear_velocity.y) && std::isfinite(b.angular_velocity);
+    return add_box_body(world, BodyType::dynamic, at, half_size, half_size);
 }
 
 bool every_body_finite(const World& world) {

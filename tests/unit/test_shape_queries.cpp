@@ -7,8 +7,10 @@
 #include "brute_geometry.hpp"
 #include "check.h"
 #include "collision/geometry.hpp"
+#include "world_fixture.hpp"
 
 using namespace i2d;
+using brute::random_kind_count;
 
 namespace {
 
@@ -45,7 +47,7 @@ I2D_TEST(unit_queries_ray_cast_every_kind_matches_sampling) {
     TestRng rng(7);
     const int32_t samples = 20000;
     const double step = 1.0 / samples;
-    for (int32_t k = 0; k < static_cast<int32_t>(ShapeType::chain_segment) /* chains: test_chain_manifold */; ++k) {
+    for (int32_t k = 0; k < random_kind_count; ++k) {
         const ShapeType type = static_cast<ShapeType>(k);
         int32_t hits = 0;
         double worst = 0.0;
@@ -89,9 +91,7 @@ I2D_TEST(unit_queries_ray_cast_every_kind_matches_sampling) {
 }
 
 I2D_TEST(unit_queries_ray_cast_edge_cases) {
-    Geometry box;
-    box.type = ShapeType::polygon;
-    box.polygon = make_box(1.0f, 1.0f);
+    const Geometry box = unit::box_geometry(1.0f, 1.0f);
     const Transform turned{{0.0f, 0.0f}, Rot{std::cos(0.7853982f), std::sin(0.7853982f)}};
     // A 45-degree diamond: its right corner at (sqrt 2, 0).
     const RayHit corner = ray_cast(box, turned, {-3.0f, 0.0f}, {6.0f, 0.0f}, 1.0f);
@@ -101,18 +101,14 @@ I2D_TEST(unit_queries_ray_cast_edge_cases) {
     I2D_CHECK(!ray_cast(box, turned, {0.1f, 0.1f}, {6.0f, 0.0f}, 1.0f).hit);   // inside
     I2D_CHECK(!ray_cast(box, turned, {-3.0f, 0.0f}, {0.0f, 0.0f}, 1.0f).hit);  // no length
     // Segments are hit from both sides, the normal facing the ray.
-    Geometry seg;
-    seg.type = ShapeType::segment;
-    seg.segment = {{-1.0f, 0.0f}, {1.0f, 0.0f}};
+    const Geometry seg = unit::segment_geometry({-1.0f, 0.0f}, {1.0f, 0.0f});
     const RayHit down = ray_cast(seg, Transform{}, {0.0f, 2.0f}, {0.0f, -4.0f}, 1.0f);
     const RayHit up = ray_cast(seg, Transform{}, {0.0f, -2.0f}, {0.0f, 4.0f}, 1.0f);
     I2D_REQUIRE(down.hit && up.hit);
     I2D_CHECK(down.normal == (Vec2{0.0f, 1.0f}) && up.normal == (Vec2{0.0f, -1.0f}));
     I2D_CHECK_NEAR(down.fraction, 0.5, 1e-6);
     // A capsule from inside its cap: no hit; from outside along its axis: the cap.
-    Geometry cap;
-    cap.type = ShapeType::capsule;
-    cap.capsule = {{-1.0f, 0.0f}, {1.0f, 0.0f}, 0.5f};
+    const Geometry cap = unit::capsule_geometry({-1.0f, 0.0f}, {1.0f, 0.0f}, 0.5f);
     I2D_CHECK(!ray_cast(cap, Transform{}, {1.2f, 0.0f}, {5.0f, 0.0f}, 1.0f).hit);
     const RayHit axial = ray_cast(cap, Transform{}, {4.0f, 0.0f}, {-4.0f, 0.0f}, 1.0f);
     I2D_REQUIRE(axial.hit);
@@ -122,7 +118,7 @@ I2D_TEST(unit_queries_ray_cast_edge_cases) {
 
 I2D_TEST(unit_queries_contains_point_matches_brute_force) {
     TestRng rng(19);
-    for (int32_t k = 0; k < static_cast<int32_t>(ShapeType::chain_segment) /* chains: test_chain_manifold */; ++k) {
+    for (int32_t k = 0; k < random_kind_count; ++k) {
         const ShapeType type = static_cast<ShapeType>(k);
         int32_t inside = 0;
         for (int32_t trial = 0; trial < 200; ++trial) {
@@ -147,7 +143,7 @@ I2D_TEST(unit_queries_contains_point_matches_brute_force) {
 
 I2D_TEST(unit_queries_overlaps_aabb_matches_brute_force) {
     TestRng rng(23);
-    for (int32_t k = 0; k < static_cast<int32_t>(ShapeType::chain_segment) /* chains: test_chain_manifold */; ++k) {
+    for (int32_t k = 0; k < random_kind_count; ++k) {
         const ShapeType type = static_cast<ShapeType>(k);
         int32_t overlaps_seen = 0, misses_seen = 0;
         for (int32_t trial = 0; trial < 3000; ++trial) {
@@ -177,7 +173,7 @@ I2D_TEST(unit_queries_overlaps_aabb_matches_brute_force) {
 
 I2D_TEST(unit_queries_aabb_is_tight_for_rotated_shapes) {
     TestRng rng(29);
-    for (int32_t k = 0; k < static_cast<int32_t>(ShapeType::chain_segment) /* chains: test_chain_manifold */; ++k) {
+    for (int32_t k = 0; k < random_kind_count; ++k) {
         for (int32_t trial = 0; trial < 300; ++trial) {
             const Geometry g = brute::random_geometry(rng, static_cast<ShapeType>(k));
             const Transform xf = brute::random_transform(rng, 5.0f);

@@ -10,13 +10,13 @@
 #include "collision/shape_proxy.hpp"
 #include "collision/toi.hpp"
 #include "test_rng.hpp"
+#include "world_fixture.hpp"
 
 using namespace i2d;
 using namespace brute;
+using unit::box_geometry;
 
 namespace {
-
-constexpr int32_t convex_kinds = int32_t(ShapeType::chain_segment);  // chains: manifold tests
 
 std::vector<P> core_points(const ShapeProxy& p) {
     std::vector<P> out;
@@ -32,8 +32,8 @@ I2D_TEST(unit_core_distance_matches_brute_force) {
     TestRng rng(77);
     int failures = 0;
     for (int c = 0; c < 4000; ++c) {
-        const Geometry ga = random_geometry(rng, ShapeType(rng.below(convex_kinds)));
-        const Geometry gb = random_geometry(rng, ShapeType(rng.below(convex_kinds)));
+        const Geometry ga = random_geometry(rng, ShapeType(rng.below(random_kind_count)));
+        const Geometry gb = random_geometry(rng, ShapeType(rng.below(random_kind_count)));
         const ShapeProxy a = transformed(make_shape_proxy(ga), random_transform(rng, 2.0f));
         const ShapeProxy b = transformed(make_shape_proxy(gb), random_transform(rng, 2.0f));
         const ProxyDistance d = core_distance(a, b);
@@ -58,8 +58,8 @@ I2D_TEST(unit_time_of_impact_is_never_late) {
     constexpr float tolerance = 0.25f * linear_slop;
     int hits = 0, late = 0, far = 0;
     for (int c = 0; c < 600; ++c) {
-        const ShapeProxy a = make_shape_proxy(random_geometry(rng, ShapeType(rng.below(convex_kinds))));
-        const ShapeProxy b = make_shape_proxy(random_geometry(rng, ShapeType(rng.below(convex_kinds))));
+        const ShapeProxy a = make_shape_proxy(random_geometry(rng, ShapeType(rng.below(random_kind_count))));
+        const ShapeProxy b = make_shape_proxy(random_geometry(rng, ShapeType(rng.below(random_kind_count))));
         // A turns a little and drifts; B flies across it, turning fast.
         const Sweep sa{Vec2{}, Vec2{rng.uniform(-0.5f, 0.5f), rng.uniform(-0.5f, 0.5f)},
                        Vec2{rng.uniform(-0.5f, 0.5f), rng.uniform(-0.5f, 0.5f)}, make_rot(rng.uniform(-1.0f, 1.0f)),
@@ -112,9 +112,7 @@ I2D_TEST(unit_shape_cast_of_a_disc_has_a_closed_form) {
     disc.points[0] = Vec2{-5.0f, 0.3f};
     disc.count = 1;
     disc.radius = 0.5f;
-    Geometry box;
-    box.type = ShapeType::polygon;
-    box.polygon = make_box(1.0f, 1.0f);
+    const Geometry box = box_geometry(1.0f, 1.0f);
     const CastHit hit = shape_cast(make_shape_proxy(box), Transform{}, disc, Vec2{10.0f, 0.0f}, 1.0f);
     I2D_REQUIRE(hit.hit);
     I2D_CHECK(hit.fraction <= 0.35f + 1e-6f);

@@ -10,7 +10,10 @@ using namespace i2d;
 
 using unit::add_body;
 using unit::add_box;
+using unit::add_box_body;
 using unit::add_circle;
+using unit::pi_d;
+using unit::time_step;
 
 I2D_TEST(unit_world_mass_and_center_follow_shapes) {
     World world{WorldDef{}};
@@ -18,19 +21,16 @@ I2D_TEST(unit_world_mass_and_center_follow_shapes) {
     I2D_CHECK(world.bodies()[body].mass == 1.0f);  // no shapes yet: 1 kg
     add_box(world, body, 1.0f, 1.0f);           // 4 kg at the origin
     add_circle(world, body, {3.0f, 0.0f}, 1.0f);  // pi kg at x = 3
-    const float pi_f = 3.14159265f;
-    I2D_CHECK_NEAR(world.bodies()[body].mass, 4.0 + pi_f, 1e-5);
-    I2D_CHECK_NEAR(world.bodies()[body].local_center.x, 3.0 * pi_f / (4.0 + pi_f), 1e-5);
-    I2D_CHECK_NEAR(world.bodies()[body].center.x, 10.0 + 3.0 * pi_f / (4.0 + pi_f), 1e-5);
-    I2D_CHECK_NEAR(world.bodies()[body].inv_mass, 1.0 / (4.0 + pi_f), 1e-6);
+    I2D_CHECK_NEAR(world.bodies()[body].mass, 4.0 + pi_d, 1e-5);
+    I2D_CHECK_NEAR(world.bodies()[body].local_center.x, 3.0 * pi_d / (4.0 + pi_d), 1e-5);
+    I2D_CHECK_NEAR(world.bodies()[body].center.x, 10.0 + 3.0 * pi_d / (4.0 + pi_d), 1e-5);
+    I2D_CHECK_NEAR(world.bodies()[body].inv_mass, 1.0 / (4.0 + pi_d), 1e-6);
 }
 
 I2D_TEST(unit_world_static_and_kinematic_have_no_mass) {
     World world{WorldDef{}};
-    const int32_t s = add_body(world, BodyType::static_body, {});
-    const int32_t k = add_body(world, BodyType::kinematic, {});
-    add_box(world, s, 1.0f, 1.0f);
-    add_box(world, k, 1.0f, 1.0f);
+    const int32_t s = add_box_body(world, BodyType::static_body, {}, 1.0f, 1.0f);
+    const int32_t k = add_box_body(world, BodyType::kinematic, {}, 1.0f, 1.0f);
     I2D_CHECK(world.bodies()[s].mass == 0.0f && world.bodies()[s].inv_mass == 0.0f);
     I2D_CHECK(world.bodies()[k].mass == 0.0f && world.bodies()[k].inv_mass == 0.0f);
 }
@@ -76,15 +76,12 @@ I2D_TEST(unit_world_filter_truth_table) {
 
 I2D_TEST(unit_world_no_contacts_between_static_and_kinematic) {
     World world{WorldDef{}};
-    const int32_t s = add_body(world, BodyType::static_body, {});
-    const int32_t k = add_body(world, BodyType::kinematic, {0.5f, 0.0f});
-    add_box(world, s, 1.0f, 1.0f);
-    add_box(world, k, 1.0f, 1.0f);
-    world.step(1.0f / 60.0f, 4);
+    add_box_body(world, BodyType::static_body, {}, 1.0f, 1.0f);
+    add_box_body(world, BodyType::kinematic, {0.5f, 0.0f}, 1.0f, 1.0f);
+    unit::step(world, 1);
     I2D_CHECK(world.counters().pair_count == 0);
-    const int32_t d = add_body(world, BodyType::dynamic, {0.0f, 1.5f});
-    add_box(world, d, 0.5f, 0.6f);
-    world.step(1.0f / 60.0f, 1);
+    add_box_body(world, BodyType::dynamic, {0.0f, 1.5f}, 0.5f, 0.6f);
+    world.step(time_step, 1);
     I2D_CHECK(world.counters().pair_count == 2);
     I2D_CHECK(world.counters().contact_count == 2);
 }
@@ -94,6 +91,6 @@ I2D_TEST(unit_world_shapes_on_one_body_never_collide) {
     const int32_t d = add_body(world, BodyType::dynamic, {});
     add_box(world, d, 1.0f, 1.0f);
     add_box(world, d, 1.0f, 1.0f);
-    world.step(1.0f / 60.0f, 1);
+    world.step(time_step, 1);
     I2D_CHECK(world.counters().pair_count == 0);
 }
