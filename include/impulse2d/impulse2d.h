@@ -334,9 +334,10 @@ I2D_API int32_t i2d_world_overlap_point_ids(i2d_world_id world, i2d_vec2 point, 
  *  fn's return value works as for rays. A shape the proxy overlaps at the start is hit at
  *  fraction 0, whatever the translation, with a point inside both and the unit normal
  *  along which the proxy leaves the shape soonest (the shape's outward side; back along
- *  the translation when a circle proxy's centre is the circle shape's). Refused (I2D_ERR_INVALID_ARGUMENT): a proxy of count 0 or outside 1..8, NaN
- *  or infinite values, a zero translation (use i2d_world_overlap_shape) or one longer
- *  than 1e9 m (its length; exactly 1e9 m is taken). Runs with the world locked. */
+ *  the translation when a circle proxy's centre is the circle shape's). Refused
+ *  (I2D_ERR_INVALID_ARGUMENT): a proxy of count 0 or outside 1..8, NaN or infinite
+ *  values, a zero translation (use i2d_world_overlap_shape) or one longer than 1e9 m
+ *  (its length; exactly 1e9 m is taken). Runs with the world locked. */
 I2D_API i2d_status i2d_world_cast_shape(i2d_world_id world, const i2d_shape_proxy* proxy, i2d_vec2 translation,
                                         i2d_query_filter filter, i2d_cast_result_fn* fn, void* context);
 /** The closest shape the swept proxy touches; .hit false when none. */

@@ -208,7 +208,8 @@ static void check_far_angles_act_as_reduced(const angle_setting* setting) {
                        (double)got.rotation.c, (double)got.rotation.s, reduced, (double)expected.position.x,
                        (double)expected.position.y, (double)expected.rotation.c, (double)expected.rotation.s);
             }
-            if (setting->revolute && !(within_half_turn(got.joint_angle_start) && within_half_turn(got.joint_angle_end))) {
+            const bool wound = within_half_turn(got.joint_angle_start) && within_half_turn(got.joint_angle_end);
+            if (setting->revolute && !wound) {
                 ++i2d_check_failures;
                 report("%s %g by %s: i2d_revolute_joint_get_angle reads %g at the start and %g at the end, "
                        "outside (-pi, pi]",

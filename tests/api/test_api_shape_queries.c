@@ -220,7 +220,8 @@ static void check_cast(const scene* sc, rng* r, const probe* p) {
             const double px = closest.point.x, py = closest.point.y;
             if (closest.fraction == 0.0f) {
                 const probe point = {0, 0.0, 0.0, 0.0};
-                const double in_probe = p->is_box ? point_box(px, py, x, y, p->px, p->py) : hypot(px - x, py - y) - p->pr;
+                const double in_probe =
+                    p->is_box ? point_box(px, py, x, y, p->px, p->py) : hypot(px - x, py - y) - p->pr;
                 I2D_CHECK(gap(&point, px, py, s) < EPS && in_probe < EPS);
             } else {
                 double surface = s->is_box ? point_box(px, py, s->cx, s->cy, s->hx, s->hy)
@@ -510,7 +511,9 @@ static double distance_to_segment(double x, double y, double ax, double ay, doub
 
 /* A disc at (1.5, 0.2) inside the box [-2, 2] x [-1, 1]: 0.5 m from the right face, 0.8
  * from the top; it leaves soonest by +x. */
-static bool in_wide_box(double x, double y) { return point_box(x, y, 0.0, 0.0, 2.0, 1.0) <= k_overlap_inside_tolerance; }
+static bool in_wide_box(double x, double y) {
+    return point_box(x, y, 0.0, 0.0, 2.0, 1.0) <= k_overlap_inside_tolerance;
+}
 static bool in_small_disc(double x, double y) { return hypot(x - 1.5, y - 0.2) <= 0.25 + k_overlap_inside_tolerance; }
 
 static void run_overlap_disc_in_box(i2d_world_id world) {
@@ -521,12 +524,18 @@ static void run_overlap_disc_in_box(i2d_world_id world) {
     check_overlap_casts(world, &disc, in_wide_box, in_small_disc, 1.0, 0.0);
 }
 
-I2D_TEST(api_shape_cast_overlap_disc_in_box_leaves_by_the_nearest_face) { run_in_default_world(run_overlap_disc_in_box); }
+I2D_TEST(api_shape_cast_overlap_disc_in_box_leaves_by_the_nearest_face) {
+    run_in_default_world(run_overlap_disc_in_box);
+}
 
 /* The box [0.8, 2.8] x [0.5, 1.5] over the unit box reaches 0.2 m into it along x, 0.5
  * along y: it leaves soonest by +x. */
-static bool in_unit_box(double x, double y) { return point_box(x, y, 0.0, 0.0, 1.0, 1.0) <= k_overlap_inside_tolerance; }
-static bool in_offset_box(double x, double y) { return point_box(x, y, 1.8, 1.0, 1.0, 0.5) <= k_overlap_inside_tolerance; }
+static bool in_unit_box(double x, double y) {
+    return point_box(x, y, 0.0, 0.0, 1.0, 1.0) <= k_overlap_inside_tolerance;
+}
+static bool in_offset_box(double x, double y) {
+    return point_box(x, y, 1.8, 1.0, 1.0, 0.5) <= k_overlap_inside_tolerance;
+}
 
 static void run_overlap_box_on_box(i2d_world_id world) {
     i2d_shape_def sd = i2d_default_shape_def();

@@ -238,7 +238,8 @@ I2D_TEST(unit_shape_cast_overlap_exit_beats_every_sampled_direction) {
         const Geometry ga = random_geometry(rng, ShapeType(rng.below(convex_kinds)));
         const Geometry gb = random_geometry(rng, ShapeType(rng.below(convex_kinds)));
         const Transform xa = random_transform(rng, 0.6f), xb = random_transform(rng, 0.6f);
-        const CastHit hit = shape_cast(make_shape_proxy(ga), xa, transformed(make_shape_proxy(gb), xb), tiny_cast, 1.0f);
+        const ShapeProxy moving = transformed(make_shape_proxy(gb), xb);
+        const CastHit hit = shape_cast(make_shape_proxy(ga), xa, moving, tiny_cast, 1.0f);
         if (!hit.hit || hit.fraction > 0.0f) {
             continue;
         }
@@ -263,7 +264,7 @@ I2D_TEST(unit_shape_cast_overlap_exit_beats_every_sampled_direction) {
         const bool ok = std::fabs(len(n) - 1.0) <= normal_tolerance && push(n) <= least + push_tolerance &&
                         signed_distance(a, point) <= slack && signed_distance(b, point) <= slack;
         if (!ok && failures++ < 5) {
-            std::fprintf(stderr, "    case %d: normal (%g, %g) pushes %.6f, sampled least %.6f; point inside by %g and %g\n",
+            std::fprintf(stderr, "    case %d: normal (%g, %g) pushes %.6f, least sampled %.6f; point out by %g, %g\n",
                          c, n.x, n.y, push(n), least, signed_distance(a, point), signed_distance(b, point));
         }
     }
