@@ -162,6 +162,19 @@ bool Call::coordinate(i2d_vec2 v, const char* what) {
     return true;
 }
 
+bool Call::cast_translation(i2d_vec2 v, const char* what) {
+    if (!finite(v, what)) {
+        return false;
+    }
+    const double length = std::hypot(double(v.x), double(v.y));
+    if (length > double(max_cast_length)) {
+        return fail(I2D_ERR_INVALID_ARGUMENT, "%s (%g, %g) is %g m long; a cast goes at most %g m", what,
+                    static_cast<double>(v.x), static_cast<double>(v.y), length,
+                    static_cast<double>(max_cast_length));
+    }
+    return true;
+}
+
 bool Call::local_point(i2d_vec2 v, const char* what) {
     if (!finite(v, what)) {
         return false;

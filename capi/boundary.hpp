@@ -81,6 +81,9 @@ public:
     bool finite(i2d_vec2 v, const char* what);
     /// Finite and within max_coordinate.
     bool coordinate(i2d_vec2 v, const char* what);
+    /// A cast's translation: finite and at most max_cast_length long (its length, in
+    /// double: a component bound would let a diagonal reach 1.41 times as far).
+    bool cast_translation(i2d_vec2 v, const char* what);
     /// A point of a shape in its body's frame: finite and within max_shape_extent.
     bool local_point(i2d_vec2 v, const char* what);
     /// Finite and lo <= v <= hi.

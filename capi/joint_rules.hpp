@@ -16,6 +16,7 @@
 #include "convert.hpp"
 #include "limits.hpp"
 #include "dynamics/joint/joint.hpp"
+#include "math/trig.hpp"
 
 namespace i2d::capi::joint_rules {
 
@@ -42,12 +43,20 @@ constexpr double min_axis_length = 1.0e-6;
 // Each rule: Public (the C type), check (the caller's value, message naming `what`), store
 // (into the core) and out (back to the caller).
 
-/// Any finite number: angles, speeds, targets, translations.
+/// Any finite number: speeds, targets, translations.
 struct Finite {
     using Public = float;
     static bool check(Call& call, float v, const char* what) { return call.finite(v, what); }
     static float store(float v) { return v; }
     static float out(float v) { return v; }
+};
+
+/// An angle a joint holds relative to: any finite number, stored wound into (-pi, pi]
+/// (wind_angle: the same pose, and the getter reads that). The solver winds angle minus
+/// this once (unwind_angle), which lands in (-pi, pi] only when both were there; angles
+/// already in range keep every bit. Defs and setters alike store through here.
+struct Angle : Finite {
+    static float store(float v) { return wind_angle(v); }
 };
 
 /// Forces, torques and thresholds: [0, FLT_MAX] (FLT_MAX: unlimited).
@@ -121,7 +130,7 @@ struct Axis : Point {
 
 // X(kind, field, Rule) for every setting of each kind, in the public def's order.
 #define I2D_REVOLUTE_FIELDS(X)                  \
-    X(revolute, reference_angle, Finite)        \
+    X(revolute, reference_angle, Angle)         \
     X(revolute, enable_limit, Flag)             \
     X(revolute, lower_angle, RevoluteBound)     \
     X(revolute, upper_angle, RevoluteBound)     \
@@ -131,11 +140,11 @@ struct Axis : Point {
     X(revolute, enable_spring, Flag)            \
     X(revolute, hertz, Spring)                  \
     X(revolute, damping_ratio, Spring)          \
-    X(revolute, target_angle, Finite)
+    X(revolute, target_angle, Angle)
 
 #define I2D_PRISMATIC_FIELDS(X)                  \
     X(prismatic, local_axis_a, Axis)             \
-    X(prismatic, reference_angle, Finite)        \
+    X(prismatic, reference_angle, Angle)         \
     X(prismatic, enable_limit, Flag)             \
     X(prismatic, lower_translation, Finite)      \
     X(prismatic, upper_translation, Finite)      \
@@ -160,7 +169,7 @@ struct Axis : Point {
     X(distance, max_motor_force, NonNegative)
 
 #define I2D_WELD_FIELDS(X)                   \
-    X(weld, reference_angle, Finite)         \
+    X(weld, reference_angle, Angle)          \
     X(weld, linear_hertz, Spring)            \
     X(weld, angular_hertz, Spring)           \
     X(weld, linear_damping_ratio, Spring)    \
@@ -180,7 +189,7 @@ struct Axis : Point {
 
 #define I2D_MOTOR_FIELDS(X)                  \
     X(motor, linear_offset, Point)           \
-    X(motor, angular_offset, Finite)         \
+    X(motor, angular_offset, Angle)          \
     X(motor, max_force, NonNegative)         \
     X(motor, max_torque, NonNegative)        \
     X(motor, correction_factor, Share)

@@ -19,6 +19,10 @@ constexpr float min_shape_extent = 1.0e-4f;
 /// resolution out there: beyond it geometry is meaningless.
 constexpr float max_coordinate = 1.0e9f;
 
+/// Longest translation of a ray or shape cast, m: the length, not each component, so
+/// that a cast reaches no farther than a position may lie from the origin.
+constexpr float max_cast_length = 1.0e9f;
+
 /// A rotation given by a caller must have c^2 + s^2 within this of 1; it is then
 /// normalised exactly. Looser input is more likely a bug than rounding.
 constexpr float rotation_normalization_tolerance = 1.0e-3f;

@@ -62,7 +62,7 @@ I2D_API i2d_status i2d_world_cast_ray(i2d_world_id world, i2d_vec2 origin, i2d_v
     return guarded("i2d_world_cast_ray", I2D_ERR_OUT_OF_MEMORY, [&](Call& call) {
         WorldRef w;
         if (!call.world(world, w) || !call.coordinate(origin, "origin") ||
-            !call.coordinate(translation, "translation") || !call.not_null(reinterpret_cast<void*>(fn), "fn")) {
+            !call.cast_translation(translation, "translation") || !call.not_null(reinterpret_cast<void*>(fn), "fn")) {
             return last_status();
         }
         CastAdapter adapter{w.world, w.id, fn, context};
@@ -78,7 +78,7 @@ I2D_API i2d_ray_result i2d_world_cast_ray_closest(i2d_world_id world, i2d_vec2 o
     return guarded("i2d_world_cast_ray_closest", i2d_ray_result{}, [&](Call& call) {
         WorldRef w;
         if (!call.world(world, w) || !call.coordinate(origin, "origin") ||
-            !call.coordinate(translation, "translation")) {
+            !call.cast_translation(translation, "translation")) {
             return i2d_ray_result{};
         }
         const RayResult r = w.world->cast_ray_closest(capi::to_core(origin), capi::to_core(translation),
@@ -131,7 +131,7 @@ I2D_API int32_t i2d_world_cast_ray_all(i2d_world_id world, i2d_vec2 origin, i2d_
     return guarded("i2d_world_cast_ray_all", int32_t(-1), [&](Call& call) -> int32_t {
         WorldRef w;
         if (!call.world(world, w) || !call.coordinate(origin, "origin") ||
-            !call.coordinate(translation, "translation")) {
+            !call.cast_translation(translation, "translation")) {
             return -1;
         }
         if (capacity < 0 || (capacity > 0 && out == nullptr)) {

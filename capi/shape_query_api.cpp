@@ -46,7 +46,7 @@ bool core_proxy(Call& call, const i2d_shape_proxy* proxy, ShapeProxy& out) {
 
 // A sweep must go somewhere (a zero one is an overlap query) and stay in range.
 bool valid_translation(Call& call, i2d_vec2 translation) {
-    if (!call.coordinate(translation, "translation")) {
+    if (!call.cast_translation(translation, "translation")) {
         return false;
     }
     if (translation.x == 0.0f && translation.y == 0.0f) {

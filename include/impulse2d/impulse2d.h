@@ -300,7 +300,10 @@ typedef struct i2d_ray_result {
 } i2d_ray_result;
 
 /** The first shape along origin + t * translation, t in [0, 1]. A shape that contains
- *  the origin is not hit (the ray starts inside it). Zero translation hits nothing. */
+ *  the origin is not hit (the ray starts inside it). Zero translation hits nothing.
+ *  Refused (I2D_ERR_INVALID_ARGUMENT), as by every ray cast of the world: NaN or
+ *  infinite values, an origin beyond 1e9 m of the world origin on either axis, or a
+ *  translation longer than 1e9 m (its length; exactly 1e9 m is taken). */
 I2D_API i2d_ray_result i2d_world_cast_ray_closest(i2d_world_id world, i2d_vec2 origin, i2d_vec2 translation,
                                                   i2d_query_filter filter);
 
@@ -329,9 +332,12 @@ I2D_API int32_t i2d_world_overlap_point_ids(i2d_world_id world, i2d_vec2 point, 
  *  shape it would touch to fn: the fraction of the translation at which they first touch
  *  (to within 1.25 mm), the point on that shape's surface and its outward normal there;
  *  fn's return value works as for rays. A shape the proxy overlaps at the start is hit at
- *  fraction 0. Refused (I2D_ERR_INVALID_ARGUMENT): a proxy of count 0 or outside 1..8, NaN
- *  or infinite values, a zero translation (use i2d_world_overlap_shape) or one longer
- *  than 1e9 m. Runs with the world locked. */
+ *  fraction 0, whatever the translation, with a point inside both and the unit normal
+ *  along which the proxy leaves the shape soonest (the shape's outward side; back along
+ *  the translation when a circle proxy's centre is the circle shape's). Refused
+ *  (I2D_ERR_INVALID_ARGUMENT): a proxy of count 0 or outside 1..8, NaN or infinite
+ *  values, a zero translation (use i2d_world_overlap_shape) or one longer than 1e9 m
+ *  (its length; exactly 1e9 m is taken). Runs with the world locked. */
 I2D_API i2d_status i2d_world_cast_shape(i2d_world_id world, const i2d_shape_proxy* proxy, i2d_vec2 translation,
                                         i2d_query_filter filter, i2d_cast_result_fn* fn, void* context);
 /** The closest shape the swept proxy touches; .hit false when none. */

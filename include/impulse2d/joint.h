@@ -11,9 +11,11 @@
  * edited, then i2d_joint_create_<kind>(). A joint needs two different bodies of one
  * world, at least one of them dynamic. Destroying a body destroys its joints. Every
  * setter checks its value as the def would, wakes the two bodies, and is refused with
- * I2D_ERR_WORLD_LOCKED inside a callback. Getters on a stale id, or on a joint of
- * another kind, return a zero value and record I2D_ERR_INVALID_HANDLE or
- * I2D_ERR_INVALID_ARGUMENT. */
+ * I2D_ERR_WORLD_LOCKED inside a callback. The angles that take any finite value
+ * (reference_angle, target_angle, angular_offset) are stored wound into (-pi, pi], by
+ * def and setter alike: the same pose, and what their getters read back. Getters on a
+ * stale id, or on a joint of another kind, return a zero value and record
+ * I2D_ERR_INVALID_HANDLE or I2D_ERR_INVALID_ARGUMENT. */
 #ifndef IMPULSE2D_JOINT_H
 #define IMPULSE2D_JOINT_H
 
@@ -56,7 +58,9 @@ typedef struct i2d_joint_base {
 /** A hinge at the anchors. Angles are of B relative to A, minus reference_angle. */
 typedef struct i2d_revolute_joint_def {
     i2d_joint_base base;
-    float reference_angle;      /**< rad: angle_b - angle_a when the joint angle is 0; default 0 */
+    /** rad: angle_b - angle_a when the joint angle is 0; default 0; any finite angle;
+     *  stored wound into (-pi, pi] */
+    float reference_angle;
     bool enable_limit;          /**< default false */
     float lower_angle, upper_angle;  /**< rad, lower <= upper, within [-0.99 pi, 0.99 pi] */
     bool enable_motor;          /**< default false */
@@ -64,7 +68,7 @@ typedef struct i2d_revolute_joint_def {
     float max_motor_torque;     /**< N m, >= 0 */
     bool enable_spring;         /**< default false: a spring toward target_angle */
     float hertz, damping_ratio; /**< Hz and ratio, range [0, 1e5]; default 0 */
-    float target_angle;         /**< rad */
+    float target_angle;         /**< rad; any finite angle; stored wound into (-pi, pi] */
     uint32_t internal_cookie;
 } i2d_revolute_joint_def;
 
@@ -72,7 +76,7 @@ typedef struct i2d_revolute_joint_def {
 typedef struct i2d_prismatic_joint_def {
     i2d_joint_base base;
     i2d_vec2 local_axis_a;      /**< default (1, 0); normalised, must not be zero */
-    float reference_angle;
+    float reference_angle;      /**< rad; any finite angle; stored wound into (-pi, pi] */
     bool enable_limit;
     float lower_translation, upper_translation;  /**< m, finite, lower <= upper */
     bool enable_motor;
@@ -104,7 +108,7 @@ typedef struct i2d_distance_joint_def {
 /** Holds B's pose relative to A; hertz 0 makes that part rigid. */
 typedef struct i2d_weld_joint_def {
     i2d_joint_base base;
-    float reference_angle;
+    float reference_angle;      /**< rad; any finite angle; stored wound into (-pi, pi] */
     float linear_hertz, angular_hertz;               /**< range [0, 1e5]; default 0 */
     float linear_damping_ratio, angular_damping_ratio;  /**< range [0, 1e5]; default 1 */
     uint32_t internal_cookie;
@@ -130,7 +134,7 @@ typedef struct i2d_wheel_joint_def {
 typedef struct i2d_motor_joint_def {
     i2d_joint_base base;
     i2d_vec2 linear_offset;     /**< m, within 1e9 */
-    float angular_offset;       /**< rad */
+    float angular_offset;       /**< rad; any finite angle; stored wound into (-pi, pi] */
     float max_force;            /**< N, default 1 */
     float max_torque;           /**< N m, default 1 */
     float correction_factor;    /**< share of the pose error removed per step, [0, 1]; default 0.3 */

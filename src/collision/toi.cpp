@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "collision/collision_constants.hpp"
+#include "collision/overlap_exit.hpp"
 #include "math/math.hpp"
 
 namespace i2d {
@@ -100,8 +101,18 @@ CastHit shape_cast(const ShapeProxy& shape, const Transform& xf, const ShapeProx
     }
     hit.hit = true;
     hit.fraction = r.fraction;
+    if (r.state == ToiState::overlapped) {
+        // Inside at the start: the closest points say nothing of overlapping cores, nor
+        // does the translation (it may be 1e-30 m). The overlap itself gives the normal,
+        // the way the proxy leaves the shape soonest, and a point inside both.
+        const OverlapExit exit = overlap_exit(placed, moving, -translation);
+        hit.normal = exit.normal;
+        hit.point = exit.point;
+        return hit;
+    }
     const float gap = length(r.point_b - r.point_a);
-    // Overlapping cores have no closest-point normal: face the way the caster came from.
+    // Touching after the start: conservative advancement stops with the cores apart, so
+    // their closest points give the normal (the translation only if the gap rounded to 0).
     hit.normal = gap > 0.0f ? r.normal : -normalize(translation);
     hit.point = r.point_a + placed.radius * hit.normal;
     return hit;

@@ -48,7 +48,9 @@ ToiResult time_of_impact(const ShapeProxy& a, const Sweep& sweep_a, const ShapeP
 /// A proxy (world space) translated by `translation` against a shape placed by xf: the
 /// first fraction at which their surfaces touch (within a quarter of the linear slop),
 /// with the point on the shape's surface and the shape's outward normal there. Overlap
-/// at the start is a hit at fraction 0.
+/// at the start is a hit at fraction 0 with a point inside both and the unit normal
+/// along which the proxy leaves the shape soonest (overlap_exit.hpp; back along the
+/// translation when both cores are one and the same point), for any translation.
 struct CastHit {
     Vec2 point;
     Vec2 normal;

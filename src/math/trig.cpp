@@ -23,6 +23,8 @@ constexpr double pi = 3.14159265358979311600e+00;
 constexpr double pi_lo = 1.22464679914735317723e-16;  // pi - (double)pi
 constexpr double quarter_pi = 7.85398163397448278999e-01;
 constexpr double tan_eighth_pi = 4.14213562373095034237e-01;
+// The float nearest pi, the bound of the joint angles' range (wind_angle).
+constexpr float pi_f = 3.14159265f;
 
 // Taylor series on |r| <= pi/4: the first omitted terms are below 1e-16 relative.
 double sin_series(double r) {
@@ -121,6 +123,15 @@ float atan2(float y, float x) {
         angle = x_negative ? (pi - a) + pi_lo : a;
     }
     return float(y_negative ? -angle : angle);
+}
+
+float wind_angle(float angle) {
+    if (angle > -pi_f && angle <= pi_f) {
+        return angle;  // in range: untouched, so that no existing setting changes a bit
+    }
+    // In [-pi, pi] of double; rounding to float lands in [-pi_f, pi_f].
+    const float wound = float(std::remainder(double(angle), two_pi));
+    return wound == -pi_f ? pi_f : wound;
 }
 
 }  // namespace i2d

@@ -26,4 +26,11 @@ inline float cos(float angle) { return sin_cos(angle).c; }
 /// The angle of (x, y) in [-pi, pi], with IEEE's signed-zero and infinity cases.
 float atan2(float y, float x);
 
+/// The same angle wound into (-pi, pi], pi being the float nearest it (3.14159274, as the
+/// joint solver's unwind_angle takes it): any finite angle, however many turns out. An
+/// angle already there comes back unchanged, bit for bit; any other loses whole turns by
+/// an exact remainder in double (std::remainder is exact under IEEE 754, so the bits are
+/// the same everywhere), rounded to float once, -pi taken as pi. NaN for NaN or infinity.
+float wind_angle(float angle);
+
 }  // namespace i2d

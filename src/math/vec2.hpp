@@ -39,6 +39,19 @@ inline Vec2 normalize(Vec2 a) {
     return len > 1e-30f ? (1.0f / len) * a : Vec2{};
 }
 
+/// Unit vector along a however short or long a is: scaled by its largest component
+/// first, so that the square neither underflows (normalize gives zero below 1e-30) nor
+/// overflows. Zero for zero.
+inline Vec2 unit_direction(Vec2 a) {
+    const float ax = std::fabs(a.x), ay = std::fabs(a.y);
+    const float scale = ax > ay ? ax : ay;
+    if (!(scale > 0.0f)) {
+        return Vec2{};
+    }
+    const Vec2 scaled{a.x / scale, a.y / scale};  // largest component +-1: length in [1, sqrt 2]
+    return (1.0f / length(scaled)) * scaled;
+}
+
 /// Rotation as cosine and sine; kept normalised.
 struct Rot {
     float c = 1.0f, s = 0.0f;

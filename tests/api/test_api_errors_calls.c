@@ -487,6 +487,81 @@ static void run_query_bad_arguments(const fixture* f) {
 
 I2D_TEST(api_errors_query_bad_arguments) { run_on_fixture(run_query_bad_arguments); }
 
+/* ---- The casts' translation bound: its length, as documented ---------------------- */
+
+/* Every cast refuses a translation longer than 1e9 m, however it is split between x and
+ * y, and takes one exactly that long. */
+typedef struct cast_translation_row {
+    float x, y;
+    bool accepted;
+} cast_translation_row;
+
+static const cast_translation_row k_cast_translations[] = {
+    {1.0e9f, 1.0e9f, false},  /* 1.41e9 m */
+    {7.1e8f, 7.1e8f, false},  /* 1.004e9 m, though each component is within 1e9 */
+    {-7.1e8f, 7.1e8f, false},
+    {1.0e9f, 0.0f, true},     /* exactly the bound */
+    {0.0f, -1.0e9f, true},
+};
+enum { CAST_TRANSLATION_COUNT = sizeof k_cast_translations / sizeof k_cast_translations[0] };
+
+static float count_cast_hit(i2d_shape_id shape, i2d_vec2 point, i2d_vec2 normal, float fraction, void* context) {
+    (void)shape, (void)point, (void)normal, (void)fraction;
+    ++*(int*)context;
+    return 1.0f;
+}
+
+/* The call just made answered as the row says; a refusal names the field and the limit. */
+static void check_cast_translation_answer(const char* what, i2d_status returned, bool accepted) {
+    if (accepted) {
+        CHECK_ACCEPTED(what, returned);
+        return;
+    }
+    char message[256];
+    copy_message(message, sizeof message, i2d_last_error_message());
+    CHECK_REFUSED(what, returned, I2D_ERR_INVALID_ARGUMENT);
+    if (strstr(message, "translation") == NULL || strstr(message, "1e+09") == NULL) {
+        ++i2d_check_failures;
+        fprintf(stderr, "%s: the message \"%s\" does not name both the field and the limit\n", what, message);
+    }
+}
+
+static void run_cast_translation_bound(const fixture* f) {
+    static snapshot before;
+    snapshot_take(f, &before);
+    const i2d_query_filter filter = i2d_default_query_filter();
+    const i2d_vec2 origin = v2(0.0f, 50.0f);
+    const i2d_shape_proxy ball = i2d_make_proxy(&origin, 1, 0.25f);
+    I2D_REQUIRE(ball.count == 1);
+    char what[160];
+    for (int i = 0; i < CAST_TRANSLATION_COUNT; ++i) {
+        const cast_translation_row row = k_cast_translations[i];
+        const i2d_vec2 t = v2(row.x, row.y);
+        int calls = 0;
+        snprintf(what, sizeof what, "i2d_world_cast_shape translation (%g, %g)", t.x, t.y);
+        check_cast_translation_answer(what, i2d_world_cast_shape(f->world, &ball, t, filter, count_cast_hit, &calls),
+                                      row.accepted);
+        snprintf(what, sizeof what, "i2d_world_cast_shape_closest translation (%g, %g)", t.x, t.y);
+        const i2d_ray_result shape_hit = i2d_world_cast_shape_closest(f->world, &ball, t, filter);
+        check_cast_translation_answer(what, i2d_last_status(), row.accepted);
+        snprintf(what, sizeof what, "i2d_world_cast_ray translation (%g, %g)", t.x, t.y);
+        check_cast_translation_answer(what, i2d_world_cast_ray(f->world, origin, t, filter, count_cast_hit, &calls),
+                                      row.accepted);
+        snprintf(what, sizeof what, "i2d_world_cast_ray_closest translation (%g, %g)", t.x, t.y);
+        const i2d_ray_result ray_hit = i2d_world_cast_ray_closest(f->world, origin, t, filter);
+        check_cast_translation_answer(what, i2d_last_status(), row.accepted);
+        snprintf(what, sizeof what, "i2d_world_cast_ray_all translation (%g, %g)", t.x, t.y);
+        const int32_t all = i2d_world_cast_ray_all(f->world, origin, t, filter, NULL, 0);
+        check_cast_translation_answer(what, i2d_last_status(), row.accepted);
+        if (!row.accepted) {
+            I2D_CHECK(calls == 0 && !shape_hit.hit && !ray_hit.hit && all == -1);
+        }
+    }
+    CHECK_UNCHANGED("the casts with long translations", f, &before);
+}
+
+I2D_TEST(api_errors_cast_translation_bound_is_a_length) { run_on_fixture(run_cast_translation_bound); }
+
 /* ---- Overflow of accumulated forces, torques and velocities ------------------------- */
 
 /* Forces accumulate until the step. The accumulated force is not observable directly,

@@ -212,13 +212,22 @@ static void check_cast(const scene* sc, rng* r, const probe* p) {
             ++i2d_check_failures;
             report("cast closest: brute force %.6f, library %d %.6f", best, (int)closest.hit, closest.fraction);
         }
-        /* The point lies on the hit shape's surface, the normal is unit. */
+        /* The point lies on the hit shape's surface, or inside both it and the probe
+         * when the cast starts overlapping (fraction 0); the normal is unit. */
         int k = find_shape(sc, closest.shape);
         if (k >= 0 && closest.hit) {
             const ref* s = &sc->shapes[k];
-            double surface = s->is_box ? point_box(closest.point.x, closest.point.y, s->cx, s->cy, s->hx, s->hy)
-                                       : fabs(hypot(closest.point.x - s->cx, closest.point.y - s->cy) - s->r);
-            I2D_CHECK(surface < EPS);
+            const double px = closest.point.x, py = closest.point.y;
+            if (closest.fraction == 0.0f) {
+                const probe point = {0, 0.0, 0.0, 0.0};
+                const double in_probe =
+                    p->is_box ? point_box(px, py, x, y, p->px, p->py) : hypot(px - x, py - y) - p->pr;
+                I2D_CHECK(gap(&point, px, py, s) < EPS && in_probe < EPS);
+            } else {
+                double surface = s->is_box ? point_box(px, py, s->cx, s->cy, s->hx, s->hy)
+                                           : fabs(hypot(px - s->cx, py - s->cy) - s->r);
+                I2D_CHECK(surface < EPS);
+            }
             I2D_CHECK_NEAR(hypot(closest.normal.x, closest.normal.y), 1.0, 1e-4);
         }
     }
@@ -424,4 +433,157 @@ I2D_TEST(api_shape_queries_refuse_bad_input) {
     I2D_CHECK(i2d_world_get_state_hash(world) == hash);
     I2D_CHECK(i2d_world_get_counters(world).body_count == 1);
     i2d_world_destroy(world);
+}
+
+/* ---- Casts that start overlapping: a unit normal and a point from the overlap ------- */
+
+/* Translations from rounding noise to a metre, along a direction none of the exits
+ * below takes, so that a normal copied from the translation shows. */
+static const float k_overlap_cast_lengths[] = {1e-30f, 1e-6f, 1.0f};
+enum { OVERLAP_CAST_LENGTHS = sizeof k_overlap_cast_lengths / sizeof k_overlap_cast_lengths[0] };
+static const double k_overlap_cast_dx = 0.6, k_overlap_cast_dy = -0.8;
+/* A unit normal and an exit direction agree to float rounding. */
+static const double k_overlap_normal_tolerance = 1e-5;
+/* A point counts as inside a shape within this of its surface, m. */
+static const double k_overlap_inside_tolerance = 1e-5;
+
+typedef bool (*inside_fn)(double x, double y);
+
+typedef struct first_hit {
+    int count;
+    i2d_vec2 point, normal;
+    float fraction;
+} first_hit;
+
+static float keep_first_hit(i2d_shape_id shape, i2d_vec2 point, i2d_vec2 normal, float fraction, void* context) {
+    first_hit* hit = (first_hit*)context;
+    (void)shape;
+    if (hit->count++ == 0) {
+        hit->point = point;
+        hit->normal = normal;
+        hit->fraction = fraction;
+    }
+    return 1.0f;
+}
+
+static void check_overlap_hit(const char* call, float cast_length, i2d_vec2 point, i2d_vec2 normal, float fraction,
+                              inside_fn in_shape, inside_fn in_proxy, double exit_x, double exit_y) {
+    const double length = hypot(normal.x, normal.y);
+    const bool ok = fraction == 0.0f && fabs(length - 1.0) <= k_overlap_normal_tolerance &&
+                    hypot(normal.x - exit_x, normal.y - exit_y) <= k_overlap_normal_tolerance &&
+                    in_shape(point.x, point.y) && in_proxy(point.x, point.y);
+    if (!ok) {
+        ++i2d_check_failures;
+        report("%s, cast %g: fraction %g, normal (%g, %g) (expected (%g, %g)), point (%g, %g) inside shape %d, "
+               "proxy %d",
+               call, (double)cast_length, (double)fraction, (double)normal.x, (double)normal.y, exit_x, exit_y,
+               (double)point.x, (double)point.y, (int)in_shape(point.x, point.y), (int)in_proxy(point.x, point.y));
+    }
+}
+
+/* The proxy starts inside the world's one shape: both cast calls hit it at fraction 0
+ * for every cast length, with the unit normal (exit_x, exit_y) and a point inside both. */
+static void check_overlap_casts(i2d_world_id world, const i2d_shape_proxy* proxy, inside_fn in_shape,
+                                inside_fn in_proxy, double exit_x, double exit_y) {
+    g_reports_left = 12;
+    const i2d_query_filter all = i2d_default_query_filter();
+    for (int i = 0; i < OVERLAP_CAST_LENGTHS; ++i) {
+        const float cast_length = k_overlap_cast_lengths[i];
+        const i2d_vec2 t = v2((float)(cast_length * k_overlap_cast_dx), (float)(cast_length * k_overlap_cast_dy));
+        const i2d_ray_result closest = i2d_world_cast_shape_closest(world, proxy, t, all);
+        I2D_CHECK(i2d_last_status() == I2D_OK && closest.hit);
+        check_overlap_hit("i2d_world_cast_shape_closest", cast_length, closest.point, closest.normal,
+                          closest.fraction, in_shape, in_proxy, exit_x, exit_y);
+        first_hit hit = {0};
+        I2D_CHECK_STATUS(i2d_world_cast_shape(world, proxy, t, all, keep_first_hit, &hit), I2D_OK);
+        I2D_CHECK(hit.count == 1);
+        check_overlap_hit("i2d_world_cast_shape", cast_length, hit.point, hit.normal, hit.fraction, in_shape, in_proxy,
+                          exit_x, exit_y);
+    }
+}
+
+static double distance_to_segment(double x, double y, double ax, double ay, double bx, double by) {
+    const double ex = bx - ax, ey = by - ay;
+    double t = ((x - ax) * ex + (y - ay) * ey) / (ex * ex + ey * ey);
+    t = t < 0.0 ? 0.0 : (t > 1.0 ? 1.0 : t);
+    return hypot(x - (ax + t * ex), y - (ay + t * ey));
+}
+
+/* A disc at (1.5, 0.2) inside the box [-2, 2] x [-1, 1]: 0.5 m from the right face, 0.8
+ * from the top; it leaves soonest by +x. */
+static bool in_wide_box(double x, double y) {
+    return point_box(x, y, 0.0, 0.0, 2.0, 1.0) <= k_overlap_inside_tolerance;
+}
+static bool in_small_disc(double x, double y) { return hypot(x - 1.5, y - 0.2) <= 0.25 + k_overlap_inside_tolerance; }
+
+static void run_overlap_disc_in_box(i2d_world_id world) {
+    i2d_shape_def sd = i2d_default_shape_def();
+    i2d_shape_create_box(make_body(world, I2D_BODY_STATIC, 0.0f, 0.0f), &sd, 2.0f, 1.0f);
+    const i2d_vec2 centre = v2(1.5f, 0.2f);
+    const i2d_shape_proxy disc = i2d_make_proxy(&centre, 1, 0.25f);
+    check_overlap_casts(world, &disc, in_wide_box, in_small_disc, 1.0, 0.0);
+}
+
+I2D_TEST(api_shape_cast_overlap_disc_in_box_leaves_by_the_nearest_face) {
+    run_in_default_world(run_overlap_disc_in_box);
+}
+
+/* The box [0.8, 2.8] x [0.5, 1.5] over the unit box reaches 0.2 m into it along x, 0.5
+ * along y: it leaves soonest by +x. */
+static bool in_unit_box(double x, double y) {
+    return point_box(x, y, 0.0, 0.0, 1.0, 1.0) <= k_overlap_inside_tolerance;
+}
+static bool in_offset_box(double x, double y) {
+    return point_box(x, y, 1.8, 1.0, 1.0, 0.5) <= k_overlap_inside_tolerance;
+}
+
+static void run_overlap_box_on_box(i2d_world_id world) {
+    i2d_shape_def sd = i2d_default_shape_def();
+    i2d_shape_create_box(make_body(world, I2D_BODY_STATIC, 0.0f, 0.0f), &sd, 1.0f, 1.0f);
+    const i2d_vec2 corners[4] = {{0.8f, 0.5f}, {2.8f, 0.5f}, {2.8f, 1.5f}, {0.8f, 1.5f}};
+    const i2d_shape_proxy box_proxy = i2d_make_proxy(corners, 4, 0.0f);
+    check_overlap_casts(world, &box_proxy, in_unit_box, in_offset_box, 1.0, 0.0);
+}
+
+I2D_TEST(api_shape_cast_overlap_box_on_box_leaves_along_the_shallower_axis) {
+    run_in_default_world(run_overlap_box_on_box);
+}
+
+/* A capsule from (0, -0.2) to (0, 0.6), radius 0.1, across the segment from (-1, 0) to
+ * (1, 0): 0.3 m up clears it, 0.7 m down, 1.1 m sideways; it leaves soonest by +y. */
+static bool on_flat_segment(double x, double y) {
+    return distance_to_segment(x, y, -1.0, 0.0, 1.0, 0.0) <= k_overlap_inside_tolerance;
+}
+static bool in_upright_capsule(double x, double y) {
+    return distance_to_segment(x, y, 0.0, -0.2, 0.0, 0.6) <= 0.1 + k_overlap_inside_tolerance;
+}
+
+static void run_overlap_capsule_across_segment(i2d_world_id world) {
+    i2d_shape_def sd = i2d_default_shape_def();
+    i2d_shape_create_segment(make_body(world, I2D_BODY_STATIC, 0.0f, 0.0f), &sd, v2(-1.0f, 0.0f), v2(1.0f, 0.0f));
+    const i2d_vec2 ends[2] = {{0.0f, -0.2f}, {0.0f, 0.6f}};
+    const i2d_shape_proxy capsule = i2d_make_proxy(ends, 2, 0.1f);
+    check_overlap_casts(world, &capsule, on_flat_segment, in_upright_capsule, 0.0, 1.0);
+}
+
+I2D_TEST(api_shape_cast_overlap_capsule_across_segment_leaves_the_shorter_way) {
+    run_in_default_world(run_overlap_capsule_across_segment);
+}
+
+/* Discs on one centre: every way out is as short, and the cast faces back the way it
+ * came. */
+static bool in_big_disc(double x, double y) { return hypot(x, y) <= 0.5 + k_overlap_inside_tolerance; }
+static bool in_centred_disc(double x, double y) { return hypot(x, y) <= 0.25 + k_overlap_inside_tolerance; }
+
+static void run_overlap_coincident_discs(i2d_world_id world) {
+    i2d_shape_def sd = i2d_default_shape_def();
+    const i2d_circle circle = {{0.0f, 0.0f}, 0.5f};
+    i2d_shape_create_circle(make_body(world, I2D_BODY_STATIC, 0.0f, 0.0f), &sd, &circle);
+    const i2d_vec2 centre = v2(0.0f, 0.0f);
+    const i2d_shape_proxy disc = i2d_make_proxy(&centre, 1, 0.25f);
+    check_overlap_casts(world, &disc, in_big_disc, in_centred_disc, -k_overlap_cast_dx, -k_overlap_cast_dy);
+}
+
+I2D_TEST(api_shape_cast_overlap_coincident_discs_face_back_along_the_cast) {
+    run_in_default_world(run_overlap_coincident_discs);
 }

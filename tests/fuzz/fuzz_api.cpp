@@ -9,7 +9,8 @@
 // bodies (of any world, live or dead) with hostile settings, then changed, read and
 // broken. The library must never crash, leak or trip a sanitizer, and a world (into
 // which the API accepts only finite values) must never report a non-finite position,
-// velocity or joint measure: that aborts with a message.
+// velocity or joint measure; a cast's normal is unit and a translation longer than 1e9 m
+// is refused; a joint's angles read back in (-pi, pi]. A breach aborts with a message.
 //
 // Only the public header is used: the harness is a hostile C API caller.
 #include <impulse2d/impulse2d.h>
@@ -158,6 +159,30 @@ void check_body_finite(i2d_body_id b) {
 void check_all_finite() {
     for (int i = 0; i < g_held->body_count; ++i) {
         check_body_finite(g_held->bodies[i]);
+    }
+}
+
+// ---- What the API promises of casts ---------------------------------------------------
+
+// A hit's normal is unit, also for a shape cast that starts overlapping (issue 44: it was
+// (0, 0) for a translation of 1e-30 m).
+constexpr double unit_normal_tolerance = 1e-3;
+
+void check_unit_normal(i2d_vec2 normal, const char* what) {
+    const double length = std::hypot(double(normal.x), double(normal.y));
+    if (!(std::fabs(length - 1.0) <= unit_normal_tolerance)) {
+        fail(what, normal.x, normal.y);
+    }
+}
+
+// A translation longer than 1e9 m is refused, however it is split between x and y (issue
+// 44: each component was bounded instead).
+constexpr double max_cast_length_m = 1e9;
+
+void check_cast_length(i2d_vec2 translation, i2d_status status) {
+    const double length = std::hypot(double(translation.x), double(translation.y));
+    if (std::isfinite(length) && length > max_cast_length_m && status == I2D_OK) {
+        fail("a cast longer than 1e9 m was accepted", translation.x, translation.y);
     }
 }
 
@@ -462,6 +487,7 @@ float ray_callback(i2d_shape_id shape, i2d_vec2 point, i2d_vec2 normal, float fr
     if (!finite2(point) || !finite2(normal) || !(fraction >= 0.0f && fraction <= 1.0f)) {
         fail("ray callback got a non-finite hit", point.x, fraction);
     }
+    check_unit_normal(normal, "a cast callback got a normal that is not unit");
     call_back_in(c, shape);
     switch (c.in->byte() % 6) {
         case 0: return -1.0f;
@@ -851,8 +877,22 @@ void read_joint(i2d_joint_id j) {
         i2d_distance_joint_get_current_length(j), i2d_distance_joint_get_motor_force(j),
         i2d_wheel_joint_get_translation(j),       i2d_wheel_joint_get_motor_torque(j),
     };
+    // The measured revolute angle and every angle the API stores wound lie in (-pi, pi]
+    // (issue 44: a reference of 100 rad read back as 100 and measured -93.7); getters on
+    // another kind's joint read 0.
+    const float angles[] = {
+        i2d_revolute_joint_get_angle(j),            i2d_revolute_joint_get_reference_angle(j),
+        i2d_revolute_joint_get_target_angle(j),     i2d_prismatic_joint_get_reference_angle(j),
+        i2d_weld_joint_get_reference_angle(j),      i2d_motor_joint_get_angular_offset(j),
+    };
     if (!live) {
         return;
+    }
+    constexpr float pi_f = 3.14159265f;
+    for (float angle : angles) {
+        if (!(angle > -pi_f && angle <= pi_f)) {
+            fail("a joint angle outside (-pi, pi]", angle, 0);
+        }
     }
     if (!finite2(force)) {
         fail("non-finite joint reaction force", force.x, force.y);
@@ -932,9 +972,14 @@ void run_query_call(FuzzInput& in, uint8_t op) {
             break;
         }
         case 3: {
-            const i2d_ray_result r = i2d_world_cast_ray_closest(w, in.vec2(), in.vec2(), query_filter(in));
+            const i2d_vec2 origin = in.vec2(), translation = in.vec2();
+            const i2d_ray_result r = i2d_world_cast_ray_closest(w, origin, translation, query_filter(in));
+            check_cast_length(translation, i2d_last_status());
             if (r.hit && (!finite2(r.point) || !finite2(r.normal))) {
                 fail("non-finite closest ray hit", r.point.x, r.fraction);
+            }
+            if (r.hit) {
+                check_unit_normal(r.normal, "a closest ray hit's normal is not unit");
             }
             break;
         }
@@ -951,12 +996,19 @@ void run_query_call(FuzzInput& in, uint8_t op) {
                 proxy.radius = in.real();
             }
             if (in.flag()) {
-                const i2d_ray_result r = i2d_world_cast_shape_closest(w, &proxy, in.vec2(), query_filter(in));
+                const i2d_vec2 translation = in.vec2();
+                const i2d_ray_result r = i2d_world_cast_shape_closest(w, &proxy, translation, query_filter(in));
+                check_cast_length(translation, i2d_last_status());
                 if (r.hit && (!finite2(r.point) || !finite2(r.normal) || !(r.fraction >= 0.0f && r.fraction <= 1.0f))) {
                     fail("non-finite closest shape cast", r.point.x, r.fraction);
                 }
-                i2d_world_cast_shape(w, &proxy, in.vec2(), query_filter(in),
-                                     in.byte() < 245 ? ray_callback : nullptr, &context);
+                if (r.hit) {
+                    check_unit_normal(r.normal, "a closest shape cast's normal is not unit");
+                }
+                const i2d_vec2 swept = in.vec2();
+                const i2d_query_filter f = query_filter(in);
+                check_cast_length(swept, i2d_world_cast_shape(w, &proxy, swept, f,
+                                                             in.byte() < 245 ? ray_callback : nullptr, &context));
             } else {
                 i2d_shape_id out[16];
                 // count() may say 17 (one past its limit), which this buffer cannot take.
@@ -972,8 +1024,11 @@ void run_query_call(FuzzInput& in, uint8_t op) {
             i2d_ray_result hits[16];
             const int32_t capacity = in.flag() ? in.count(16) : static_cast<int32_t>(in.u32());
             const bool null_out = in.byte() > 230;
-            i2d_world_cast_ray_all(w, in.vec2(), in.vec2(), query_filter(in), null_out ? nullptr : hits,
+            const i2d_vec2 origin = in.vec2(), translation = in.vec2();
+            const i2d_query_filter f = query_filter(in);
+            i2d_world_cast_ray_all(w, origin, translation, f, null_out ? nullptr : hits,
                                    capacity > 16 && !null_out ? 16 : capacity);
+            check_cast_length(translation, i2d_last_status());
             for (int32_t i = 0; i < (capacity < 16 ? capacity : 16) && !null_out; ++i) {
                 i2d_shape_is_valid(hits[i].shape);
             }
@@ -983,10 +1038,13 @@ void run_query_call(FuzzInput& in, uint8_t op) {
             i2d_world_overlap_point_ids(w, in.vec2(), query_filter(in), ids, id_capacity > 16 ? 16 : id_capacity);
             break;
         }
-        default:
-            i2d_world_cast_ray(w, in.vec2(), in.vec2(), query_filter(in), in.byte() < 245 ? ray_callback : nullptr,
-                               &context);
+        default: {
+            const i2d_vec2 origin = in.vec2(), translation = in.vec2();
+            const i2d_query_filter f = query_filter(in);
+            check_cast_length(translation, i2d_world_cast_ray(w, origin, translation, f,
+                                                              in.byte() < 245 ? ray_callback : nullptr, &context));
             break;
+        }
     }
 }
 

@@ -3,8 +3,21 @@
 """Writes the fuzzer's seed corpus: small call programs in fuzz_api.cpp's encoding that
 build scenes worth mutating (a pile on a floor, queries with callbacks, pure functions).
 Run from this directory after changing the encoding: python3 make_seeds.py
-The corpus also holds the inputs of past findings (finding_*), kept as regressions."""
+The corpus also holds the inputs of past findings (finding_*), kept as regressions; those
+of issue 44 (far joint angles, a cast starting inside, a cast past 1e9 m) are written here."""
 import os
+import struct
+
+
+def raw_real(v):
+    """real() operand for any float: kind byte 160 and up, then its bits, big-endian."""
+    return [160] + list(struct.pack(">f", v))
+
+
+def special(index):
+    """real() operand for FuzzInput::special's value at index (0.0 is 8, 1e-30 is 10,
+    1e9 is 14)."""
+    return [96 + index]
 
 
 def small(v):
@@ -85,6 +98,72 @@ def joints():
     return p
 
 
+def joint_with_setting(kind, body_b, anchor_a, setting, value):
+    """A joint from the static body 0 to body_b, anchored at anchor_a and at B's (-1, 0),
+    with its def's float k_def_floats[setting] (../api/any_joint_def.h) set to value."""
+    (ax, ay) = anchor_a
+    return ([joint_op(0), 0, kind, 0, body_b, 2, 0] + small(ax) + small(ay) + small(-1) + small(0) +
+            [4, setting] + raw_real(value) + [0, 0])
+
+
+def float_setter(joint, setter, value):
+    """joint_float_setters[setter] (fuzz_api.cpp) of the joint-th held joint."""
+    return [joint_op(3), joint, setter] + raw_real(value)
+
+
+def read_joints(count):
+    return sum(([joint_op(11), k] for k in range(count)), [])
+
+
+def far_joint_angles():
+    """Issue 44, defect 1: joint angles turns from zero, which the solver wound back once
+    only. Four bars held by their left ends to a static body: by def a revolute reference
+    of 100 rad, a prismatic one of -7, a weld one of -1e4 and a motor offset of -100; by
+    setter the revolute's target 1e4, its limit on, and the motor's offset 7 (setters 9
+    and 29, flag setter 1). Read, stepped, read again: the harness checks every angle."""
+    p = world_create() + body_create(0, 0, 0)
+    for i, y in enumerate([-3, -1.5, 0, 1.5]):
+        p += body_create(2, 1, y) + box(i + 1, 0.5, 0.125)
+    p += joint_with_setting(5, 1, (0, -3), 0, 100.0)     # revolute reference_angle
+    p += joint_with_setting(4, 2, (0, -1.5), 10, -7.0)   # prismatic reference_angle
+    p += joint_with_setting(6, 3, (0, 0), 25, -1.0e4)    # weld reference_angle
+    p += joint_with_setting(2, 4, (0, 1.5), 40, -100.0)  # motor angular_offset
+    p += read_joints(4)
+    p += [joint_op(5), 0, 1, 1]                          # revolute enable_limit
+    p += float_setter(0, 9, 1.0e4)                       # revolute target_angle
+    p += float_setter(3, 29, 7.0)                        # motor angular_offset
+    return p + step(30) + read_joints(4)
+
+
+def proxy_cast(points, radius, translation, hits):
+    """Query 5: a proxy of the points (world space) and radius, cast by translation (real()
+    operands) with i2d_world_cast_shape_closest and then i2d_world_cast_shape, whose
+    callback, when the cast hits, sets user data and goes on."""
+    p = [4 + 6 * 5, 0] + small(0) * 4                  # world, an unused box
+    for i in range(9):
+        x, y = points[i] if i < len(points) else (0, 0)
+        p += [1] + small(x) + small(y)                  # small points
+    p += [1, len(points), 0] + small(radius) + [0]      # count, not NULL, radius, not hand-made
+    p += [1] + translation + [0]                        # cast_shape_closest, default filter
+    return p + translation + [0, 0] + ([5, 3] if hits else [])  # cast_shape, callback
+
+
+def cast_starting_inside():
+    """Issue 44, defect 2: a disc proxy inside a box, cast by (1e-30, 0): the hit at
+    fraction 0 had the normal (0, 0)."""
+    box_world = world_create() + body_create(0, 0, 0) + box(0, 1.5, 1)
+    return box_world + proxy_cast([(0.5, 0.25)], 0.25, special(10) + special(8), True)
+
+
+def cast_past_the_bound():
+    """Issue 44, defect 3: a shape cast and a ray cast by (1e9, 1e9), 1.41e9 m long, were
+    accepted (each component was bounded by 1e9 m, not the length)."""
+    p = world_create() + body_create(0, 0, 0) + box(0, 1.5, 1)
+    p += proxy_cast([(0.5, 1.5)], 0.25, special(14) * 2, False)
+    # query 3: i2d_world_cast_ray_closest from (0, 1.5) by (1e9, 1e9), default filter
+    return p + [4 + 6 * 3, 0] + small(0) * 4 + small(0) + small(1.5) + special(14) * 2 + [0]
+
+
 seeds = {
     "pile_steps": pile() + step(30),
     "pile_queries": pile() + step(10) + overlap_query() + ray_query() + step(5),
@@ -96,6 +175,9 @@ seeds = {
     "pile_workers_newest_first": pile(world_create_workers(4, 2)) + step(10),
     "pile_workers_intruding": pile(world_create_workers(2, 3)) + step(10),
     "pile_workers_built_in": pile(world_create_workers(2, 6)) + step(10),
+    "finding_joint_far_angles": far_joint_angles(),
+    "finding_cast_starting_inside": cast_starting_inside(),
+    "finding_cast_past_the_bound": cast_past_the_bound(),
 }
 here = os.path.dirname(os.path.abspath(__file__))
 for name, program in seeds.items():

@@ -108,3 +108,37 @@ I2D_TEST(unit_trig_far_angles_stay_unit) {
         I2D_CHECK(std::fabs(double(sc.c) - double(std::cos((long double)x))) < 2.5e-7);
     }
 }
+
+// wind_angle keeps an angle already in (-pi, pi] bit for bit (so no existing joint
+// changes), and brings any other finite one there: the same pose, to within the float
+// rounding of the result while the double 2 pi's error (|angle| x 4e-17 rad) stays below it.
+I2D_TEST(unit_trig_wind_angle_keeps_range_and_reduces_the_rest) {
+    constexpr float pi_f = 3.14159265f;
+    for (float x : {0.0f, -0.0f, 1e-30f, 0.5f, -3.0f, pi_f, std::nextafter(-pi_f, 0.0f)}) {
+        const float wound = i2d::wind_angle(x);
+        I2D_CHECK(wound == x && std::signbit(wound) == std::signbit(x));
+    }
+    // 3 pi: the remainder, just past -pi in double, rounds to -pi in float, taken as pi.
+    I2D_CHECK(i2d::wind_angle(9.42477796f) == pi_f);
+    const long double two_pi = 2.0L * 3.141592653589793238462643383279502884L;
+    const float far[] = {7.0f, -7.0f, 100.0f, -100.0f, 1.0e4f, -1.0e4f, 123456.7f, 3.5f, -3.5f, -pi_f, 9.42477796f};
+    for (float x : far) {
+        const float wound = i2d::wind_angle(x);
+        const long double reference = std::remainder((long double)x, two_pi);
+        // The same pose: equal but for whole turns (near -pi the float may round to -pi,
+        // taken as pi), to one float ulp at pi, rad.
+        constexpr double wound_tolerance = 2.4e-7;
+        const long double off = std::remainder((long double)wound - reference, two_pi);
+        if (!(wound > -pi_f && wound <= pi_f) || std::fabs(double(off)) > wound_tolerance) {
+            ++i2d_check_failures;
+            std::fprintf(stderr, "wind_angle(%.9g) = %.9g, reference %.9Lg\n", double(x), double(wound), reference);
+        }
+    }
+    // Any finite angle lands in range, however far; NaN and infinities give NaN.
+    for (float x : {3.4028235e38f, -3.4028235e38f, 1e30f, -1e20f}) {
+        const float wound = i2d::wind_angle(x);
+        I2D_CHECK(wound > -pi_f && wound <= pi_f);
+    }
+    I2D_CHECK(std::isnan(i2d::wind_angle(std::numeric_limits<float>::infinity())));
+    I2D_CHECK(std::isnan(i2d::wind_angle(std::numeric_limits<float>::quiet_NaN())));
+}

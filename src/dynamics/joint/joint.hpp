@@ -78,7 +78,9 @@ struct MouseSettings {
     float hertz = 4.0f, damping_ratio = 1.0f, max_force = 1000.0f;
 };
 
-/// What a joint was created with (the C API's def, checked and converted).
+/// What a joint was created with (the C API's def, checked and converted). Its angles
+/// (reference_angle, target_angle, angular_offset) lie in (-pi, pi]: the C boundary winds
+/// them (wind_angle), and the solver's single unwind_angle of a difference relies on it.
 struct JointDef {
     JointType type = JointType::filter;
     int32_t body_a = null_index, body_b = null_index;

@@ -107,7 +107,9 @@ inline void store_bodies(const JointConstraint& c, const JointBodies& j, BodySta
 /// softness in the biased pass, and plainly rigid, without bias, when relaxing.
 inline Softness rigid_pass(const JointStep& step, bool use_bias) { return use_bias ? step.rigid : Softness{}; }
 
-/// An angle brought into (-pi, pi].
+/// An angle brought into (-pi, pi]: one turn added or taken, enough for what it gets, a
+/// difference of two angles in (-pi, pi] (a rotation's, and a reference or target that
+/// the C boundary stores wound: wind_angle, trig.hpp), so within (-2 pi, 2 pi).
 inline float unwind_angle(float angle) {
     constexpr float pi = 3.14159265f, two_pi = 6.28318531f;
     if (angle <= -pi) {

@@ -127,8 +127,21 @@ JointMeasures JointSet::measure(int32_t joint) const {
     return m;
 }
 
-// Every body's list holds exactly its joints' edges, and a joint links islands exactly
-// when it should: between two dynamic bodies, which then share an island.
+#if defined(I2D_VALIDATE)
+namespace {
+
+// The def's angles lie in (-pi, pi], as the solver's single unwind_angle needs (joint.hpp).
+bool angles_wound(const JointDef& d) {
+    auto wound = [](float angle) { return angle > -pi && angle <= pi; };
+    return wound(d.revolute.reference_angle) && wound(d.revolute.target_angle) &&
+           wound(d.prismatic.reference_angle) && wound(d.weld.reference_angle) && wound(d.motor.angular_offset);
+}
+
+}  // namespace
+#endif
+
+// Every body's list holds exactly its joints' edges, a joint links islands exactly when it
+// should (between two dynamic bodies, which then share an island), and its angles are wound.
 void JointSet::validate() const {
 #if defined(I2D_VALIDATE)
     int32_t edges_seen = 0;
@@ -159,6 +172,7 @@ void JointSet::validate() const {
         const bool should_link =
             links_islands(joint) && a.type == BodyType::dynamic && b.type == BodyType::dynamic;
         I2D_ASSERT(joint.island_link == should_link);
+        I2D_ASSERT(angles_wound(joint.def));
         I2D_ASSERT(!should_link || a.island == b.island);
     }
 #endif

@@ -69,7 +69,7 @@ I2D_FORCE_INLINE void apply_hinge_spin(Velocities<L>& v, const HingeLanes<L>& c,
     v.wb = L::blend(has, v.wb, v.wb + c.masses.ib * impulse);
 }
 
-// unwind_angle: into (-pi, pi].
+// unwind_angle: into (-pi, pi], one turn at most (its input is within (-2 pi, 2 pi)).
 template <class L>
 I2D_FORCE_INLINE typename L::F unwind_lanes(typename L::F angle) {
     constexpr float pi = 3.14159265f, two_pi = 6.28318531f;
