@@ -233,8 +233,8 @@ I2D_TEST(unit_shape_cast_overlap_exit_beats_every_sampled_direction) {
     TestRng rng(4404);
     int overlaps = 0, failures = 0;
     for (int c = 0; c < 3000; ++c) {
-        const Geometry ga = random_geometry(rng, ShapeType(rng.below(convex_kinds)));
-        const Geometry gb = random_geometry(rng, ShapeType(rng.below(convex_kinds)));
+        const Geometry ga = random_geometry(rng, ShapeType(rng.below(random_kind_count)));
+        const Geometry gb = random_geometry(rng, ShapeType(rng.below(random_kind_count)));
         const Transform xa = random_transform(rng, 0.6f), xb = random_transform(rng, 0.6f);
         const ShapeProxy moving = transformed(make_shape_proxy(gb), xb);
         const CastHit hit = shape_cast(make_shape_proxy(ga), xa, moving, tiny_cast, 1.0f);
