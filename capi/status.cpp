@@ -50,6 +50,7 @@ I2D_API const char* i2d_status_string(i2d_status status) {
         case I2D_ERR_CAPACITY: return "I2D_ERR_CAPACITY";
         case I2D_ERR_OUT_OF_MEMORY: return "I2D_ERR_OUT_OF_MEMORY";
         case I2D_ERR_INTERNAL: return "I2D_ERR_INTERNAL";
+        case I2D_ERR_INVALID_SNAPSHOT: return "I2D_ERR_INVALID_SNAPSHOT";
         default: return "I2D_UNKNOWN_STATUS";
     }
 }

@@ -111,7 +111,9 @@ typedef enum i2d_status {
     I2D_ERR_WORLD_LOCKED,     /**< called from inside a callback during a step or query */
     I2D_ERR_CAPACITY,         /**< a documented limit would be exceeded */
     I2D_ERR_OUT_OF_MEMORY,
-    I2D_ERR_INTERNAL          /**< a defect inside the library (an unexpected exception); please report it */
+    I2D_ERR_INTERNAL,         /**< a defect inside the library (an unexpected exception); please report it */
+    I2D_ERR_INVALID_SNAPSHOT  /**< a snapshot or rollback state that is truncated, corrupted, foreign, of a
+                                   newer format, or of a world whose structure changed (snapshot.h) */
 } i2d_status;
 
 /** A fixed English name for a status, e.g. "I2D_ERR_INVALID_HANDLE". Never NULL: a value

@@ -34,6 +34,7 @@
 #include "collision.h"
 #include "id.h"
 #include "joint.h"
+#include "snapshot.h"
 #include "types.h"
 
 /* ---- Definitions ---------------------------------------------------------------- */

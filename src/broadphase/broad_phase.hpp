@@ -100,8 +100,14 @@ public:
     /// Proxies waiting for pair finding (destroyed ones no longer count).
     int32_t move_count() const { return move_set_.count(); }
 
+    /// Saves the trees, the boxes ahead and the moves waiting for the next step, or loads
+    /// and checks them (core/field_io.hpp; broad_phase_snapshot.cpp).
+    void save(SaveIo& io) const;
+    void load(LoadIo& io);
+
 private:
     void buffer_move(int32_t key);
+    void check_loaded(LoadIo& io);
     void set_ahead(int32_t key, const AABB& ahead_aabb);
     void order_pending_moves();
     void finish_commit();

@@ -36,6 +36,9 @@
 
 namespace i2d {
 
+class SaveIo;
+class LoadIo;
+
 struct alignas(32) TreeNode {
     AABB aabb;
     int32_t parent = null_index; // also the free list link for free nodes
@@ -141,6 +144,13 @@ public:
     int32_t proxy_count() const { return proxy_count_; }
     /// Sum of the perimeters of all internal nodes: the quality measure the SAH minimises.
     float total_perimeter() const;
+    /// Proxy ids handed out so far (live or freed), and whether one is live.
+    int32_t proxy_slots() const { return int32_t(proxy_nodes_.size()); }
+    bool is_live_proxy(int32_t proxy) const { return proxy_nodes_[std::size_t(proxy)] != null_index; }
+    /// Saves every node, or loads them and checks the tree can be walked (core/field_io.hpp;
+    /// broad_phase_snapshot.cpp).
+    void save(SaveIo& io) const;
+    void load(LoadIo& io);
     /// Aborts on a broken invariant (parent links, heights, counts, internal boxes that
     /// are not exactly their children's union); a no-op unless the build defines
     /// I2D_VALIDATE.
@@ -165,6 +175,9 @@ private:
     }
     int32_t allocate_node();
     void free_node(int32_t node);
+    template <class Io, class Self>
+    static void transfer(Io& io, Self& self);
+    void check_loaded(LoadIo& io);
     /// Inserts below `start`, which must contain the leaf's box (or be the root).
     void insert_leaf(int32_t leaf, int32_t start);
     /// Returns the lowest node the leaf's removal left in its place (null if none).

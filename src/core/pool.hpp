@@ -11,6 +11,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 namespace i2d {
@@ -81,6 +82,24 @@ public:
     int32_t capacity() const { return static_cast<int32_t>(items_.size()); }
     int32_t count() const { return count_; }
 
+    /// Saves the pool to a SaveIo (core/field_io.hpp): every slot's generation and
+    /// liveness, each live item through fields(io, item), and the free list in its order,
+    /// so that the slots handed out after a load are the same.
+    template <class Io, class Fields>
+    void save(Io& io, Fields&& fields) const;
+    /// Loads what save wrote from a LoadIo; refuses (io.check) a slot count past
+    /// max_slots, a live slot of generation 0 and a free list that names a live slot,
+    /// names one twice or leaves the range.
+    template <class Io, class Fields>
+    void load(Io& io, Fields&& fields);
+    void swap(Pool& other) noexcept {
+        items_.swap(other.items_);
+        generations_.swap(other.generations_);
+        alive_.swap(other.alive_);
+        free_.swap(other.free_);
+        std::swap(count_, other.count_);
+    }
+
 private:
     std::vector<T> items_;
     std::vector<uint16_t> generations_;
@@ -88,5 +107,57 @@ private:
     std::vector<int32_t> free_;
     int32_t count_ = 0;
 };
+
+template <class T>
+template <class Io, class Fields>
+void Pool<T>::save(Io& io, Fields&& fields) const {
+    io.count(capacity());
+    for (int32_t i = 0; i < capacity(); ++i) {
+        io(generations_[std::size_t(i)]);
+        io(alive_[std::size_t(i)]);
+        if (alive_[std::size_t(i)] != 0) {
+            fields(io, items_[std::size_t(i)]);
+        }
+    }
+    io.count(int32_t(free_.size()));
+    for (const int32_t index : free_) {
+        io(index);
+    }
+}
+
+template <class T>
+template <class Io, class Fields>
+void Pool<T>::load(Io& io, Fields&& fields) {
+    const int32_t slots = io.count(3, max_slots, "a pool has more slots than the bytes left could hold");
+    *this = Pool{};
+    items_.resize(std::size_t(slots));
+    generations_.resize(std::size_t(slots));
+    alive_.resize(std::size_t(slots));
+    free_.reserve(std::size_t(slots));
+    for (int32_t i = 0; i < slots && !io.failed(); ++i) {
+        io(generations_[std::size_t(i)]);
+        uint8_t& alive = alive_[std::size_t(i)];
+        io(alive);
+        io.check(alive <= 1, "a pool slot is neither live nor free");
+        if (alive == 1) {
+            io.check(generations_[std::size_t(i)] != 0, "a live pool slot has generation 0");
+            fields(io, items_[std::size_t(i)]);
+            ++count_;
+        }
+    }
+    const int32_t free_count = io.count(4, slots, "a pool's free list is longer than its slots");
+    std::vector<uint8_t> listed(std::size_t(slots), 0);
+    for (int32_t k = 0; k < free_count && !io.failed(); ++k) {
+        int32_t index = 0;
+        io(index);
+        if (!io.check(index >= 0 && index < slots, "a pool's free list names a slot out of range") ||
+            !io.check(alive_[std::size_t(index)] == 0 && listed[std::size_t(index)] == 0,
+                      "a pool's free list names a live slot or one slot twice")) {
+            break;
+        }
+        listed[std::size_t(index)] = 1;
+        free_.push_back(index);
+    }
+}
 
 }  // namespace i2d

@@ -149,7 +149,7 @@ I2D_TEST(api_extreme_body_def_velocity_clamped) {
 
 I2D_TEST(api_extreme_status_string_out_of_range) {
     /* A C caller may pass any int; each must give a fixed string, no undefined behaviour. */
-    const int values[] = {139, -1, 6 + 1, 1 << 30, -2147483647 - 1};
+    const int values[] = {139, -1, (int)I2D_ERR_INVALID_SNAPSHOT + 1, 1 << 30, -2147483647 - 1};
     for (size_t k = 0; k < sizeof values / sizeof values[0]; ++k) {
         i2d_status status;
         memcpy(&status, &values[k], sizeof status);
@@ -159,6 +159,7 @@ I2D_TEST(api_extreme_status_string_out_of_range) {
     }
     I2D_CHECK(strcmp(i2d_status_string(I2D_ERR_INTERNAL), "I2D_ERR_INTERNAL") == 0);
     I2D_CHECK(strcmp(i2d_status_string(I2D_ERR_OUT_OF_MEMORY), "I2D_ERR_OUT_OF_MEMORY") == 0);
+    I2D_CHECK(strcmp(i2d_status_string(I2D_ERR_INVALID_SNAPSHOT), "I2D_ERR_INVALID_SNAPSHOT") == 0);
 }
 
 /* ---- The pure collide functions: a documented range, enforced ----------------------- */

@@ -8,6 +8,9 @@
 // platform; a heavy plank carrying more contacts than there are colours (the overflow
 // colour); and a pile that falls asleep while the rest moves.
 //
+// snapshot_scene adds to it a chain, a sensor, a bullet and a joint of every kind, for
+// the snapshot tests.
+//
 // sleeping_bin is large enough for every stage of the step to be shared by workers
 // (several hundred awake bodies, thousands of contacts) and comes to rest: a bin of
 // mixed shapes, some bouncy, with a heavy plank (the overflow colour), that all sleep.
@@ -144,6 +147,88 @@ inline i2d_world_id mixed_scene(const i2d_world_def& wd) {
         const i2d_body_id box = add_body(world, I2D_BODY_DYNAMIC, i2d_vec2{26.0f, 0.5f + float(i)});
         i2d_shape_create_box(box, &heavy, 0.5f, 0.5f);
     }
+    return world;
+}
+
+// mixed_scene with what it lacks for snapshots: a chain, a sensor, a bullet, and one
+// joint of every kind, with motors, limits and springs on.
+inline i2d_world_id snapshot_scene(const i2d_world_def& wd) {
+    const i2d_world_id world = mixed_scene(wd);
+    if (I2D_IS_NULL(world)) {
+        return world;
+    }
+    const i2d_shape_def plain = material(0.6f, 0.0f);
+    // A chain landscape the rain lands on, and a sensor strip it falls through.
+    const i2d_body_id terrain = add_body(world, I2D_BODY_STATIC, i2d_vec2{0, 0});
+    const i2d_vec2 hills[] = {{-17, 9}, {-16, 8}, {-14, 8.6f}, {-12, 8.2f}, {-10, 8.8f}, {-8, 8.4f}, {-7, 9}};
+    i2d_chain_def chain = i2d_default_chain_def();
+    chain.points = hills;
+    chain.count = int32_t(sizeof hills / sizeof hills[0]);
+    i2d_chain_create(terrain, &chain);
+    i2d_shape_def sensor = plain;
+    sensor.is_sensor = true;
+    sensor.enable_sensor_events = true;
+    i2d_shape_create_offset_box(terrain, &sensor, 6.0f, 0.2f, i2d_vec2{6.0f, 1.5f}, i2d_make_rot(0));
+    // A bullet fired at a thin wall.
+    i2d_shape_create_offset_box(terrain, &plain, 0.02f, 2.0f, i2d_vec2{28.0f, 4.0f}, i2d_make_rot(0));
+    i2d_body_def bullet_def = i2d_default_body_def();
+    bullet_def.type = I2D_BODY_DYNAMIC;
+    bullet_def.position = i2d_vec2{20.0f, 4.0f};
+    bullet_def.linear_velocity = i2d_vec2{200.0f, 0.0f};
+    bullet_def.is_bullet = true;
+    const i2d_body_id bullet = i2d_body_create(world, &bullet_def);
+    const i2d_circle pellet = {{0, 0}, 0.05f};
+    i2d_shape_create_circle(bullet, &plain, &pellet);
+    // One joint of every kind, hung from a frame above the scene.
+    const i2d_body_id frame = add_body(world, I2D_BODY_STATIC, i2d_vec2{0, 16});
+    i2d_body_id links[8];
+    for (int k = 0; k < 8; ++k) {
+        links[k] = add_body(world, I2D_BODY_DYNAMIC, i2d_vec2{-14.0f + 4.0f * float(k), 14.0f});
+        add_mixed_shape(links[k], k, &plain);
+    }
+    const auto anchor = [](i2d_joint_base& base, i2d_body_id a, i2d_body_id b, i2d_vec2 local_a) {
+        base.body_a = a;
+        base.body_b = b;
+        base.local_anchor_a = local_a;
+    };
+    i2d_revolute_joint_def revolute = i2d_default_revolute_joint_def();
+    anchor(revolute.base, frame, links[0], i2d_vec2{-14, -2});
+    revolute.enable_limit = true, revolute.lower_angle = -0.5f, revolute.upper_angle = 0.5f;
+    revolute.enable_motor = true, revolute.motor_speed = 1.0f, revolute.max_motor_torque = 5.0f;
+    revolute.enable_spring = true, revolute.hertz = 2.0f, revolute.damping_ratio = 0.3f;
+    i2d_joint_create_revolute(world, &revolute);
+    i2d_prismatic_joint_def prismatic = i2d_default_prismatic_joint_def();
+    anchor(prismatic.base, frame, links[1], i2d_vec2{-10, -2});
+    prismatic.local_axis_a = i2d_vec2{0, 1};
+    prismatic.enable_limit = true, prismatic.lower_translation = -1.0f, prismatic.upper_translation = 0.5f;
+    prismatic.enable_motor = true, prismatic.motor_speed = -0.5f, prismatic.max_motor_force = 20.0f;
+    i2d_joint_create_prismatic(world, &prismatic);
+    i2d_distance_joint_def distance = i2d_default_distance_joint_def();
+    anchor(distance.base, frame, links[2], i2d_vec2{-6, -1});
+    distance.length = 1.5f;
+    distance.enable_spring = true, distance.hertz = 3.0f, distance.damping_ratio = 0.2f;
+    distance.enable_limit = true, distance.min_length = 1.0f, distance.max_length = 2.0f;
+    i2d_joint_create_distance(world, &distance);
+    i2d_weld_joint_def weld = i2d_default_weld_joint_def();
+    anchor(weld.base, links[2], links[3], i2d_vec2{2, 0});
+    weld.linear_hertz = 5.0f, weld.angular_hertz = 5.0f;
+    i2d_joint_create_weld(world, &weld);
+    i2d_wheel_joint_def wheel = i2d_default_wheel_joint_def();
+    anchor(wheel.base, links[3], links[4], i2d_vec2{2, -1});
+    wheel.enable_motor = true, wheel.motor_speed = 4.0f, wheel.max_motor_torque = 2.0f;
+    wheel.enable_limit = true, wheel.lower_translation = -0.3f, wheel.upper_translation = 0.3f;
+    i2d_joint_create_wheel(world, &wheel);
+    i2d_motor_joint_def motor = i2d_default_motor_joint_def();
+    anchor(motor.base, frame, links[5], i2d_vec2{6, -2});
+    motor.linear_offset = i2d_vec2{6, -2.5f}, motor.angular_offset = 0.4f, motor.max_force = 50.0f;
+    i2d_joint_create_motor(world, &motor);
+    i2d_mouse_joint_def mouse = i2d_default_mouse_joint_def();
+    anchor(mouse.base, frame, links[6], i2d_vec2{0, 0});
+    mouse.target = i2d_vec2{10.5f, 13.0f};
+    i2d_joint_create_mouse(world, &mouse);
+    i2d_filter_joint_def filter = i2d_default_filter_joint_def();
+    anchor(filter.base, links[6], links[7], i2d_vec2{0, 0});
+    i2d_joint_create_filter(world, &filter);
     return world;
 }
 

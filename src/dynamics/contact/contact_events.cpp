@@ -23,12 +23,15 @@ Manifold without_speculative_points(Manifold m) {
 
 }  // namespace
 
-// Contact events name the pair in shape order; sensor events name the sensor first.
-ShapePairEvent ContactSet::event_of(const Contact& c) const {
+PendingEnd ContactSet::pair_of(const Contact& c) const {
     const bool sensor_is_b = (c.flags & contact_sensor) != 0 && !shapes_[c.shape_a].is_sensor;
-    const uint64_t a = events_.ids.shape_id(c.shape_a, shapes_.generation(c.shape_a));
-    const uint64_t b = events_.ids.shape_id(c.shape_b, shapes_.generation(c.shape_b));
-    return sensor_is_b ? ShapePairEvent{b, a} : ShapePairEvent{a, b};
+    const int32_t first = sensor_is_b ? c.shape_b : c.shape_a, second = sensor_is_b ? c.shape_a : c.shape_b;
+    return {first, second, shapes_.generation(first), shapes_.generation(second)};
+}
+
+ShapePairEvent ContactSet::event_of(const Contact& c) const {
+    const PendingEnd pair = pair_of(c);
+    return {events_.ids.shape_id(pair.shape_a, pair.generation_a), events_.ids.shape_id(pair.shape_b, pair.generation_b)};
 }
 
 // The contact's manifold as a begin event shows it: world points where A's anchors are.

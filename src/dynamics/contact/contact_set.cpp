@@ -85,7 +85,7 @@ void ContactSet::destroy_contact(int32_t index, bool during_step) {
         // Between steps the last step reported the pair as touching: it ends now, and
         // the end waits for the next step's arrays so that the current ones stay valid.
         const bool sensor = (c.flags & contact_sensor) != 0;
-        (sensor ? events_.pending_sensor_ends : events_.pending_contact_ends).push_back(event_of(c));
+        (sensor ? events_.pending_sensor_ends : events_.pending_contact_ends).push_back(pair_of(c));
     }
     for (int32_t e = 0; e < 2; ++e) {
         const ContactEdge& edge = c.edges[e];

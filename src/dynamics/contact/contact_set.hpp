@@ -45,6 +45,8 @@
 namespace i2d {
 
 class JointSet;
+class LoadIo;
+class SaveIo;
 
 /// Wakes a body (and its island) at once; the world's, handed to a call that needs it.
 using WakeBody = FunctionRef<void(int32_t body)>;
@@ -127,6 +129,12 @@ public:
     int32_t touching_count() const;
     void validate() const;
 
+    // Snapshots (snapshot/stage_snapshots.cpp): the contacts and the awake list saved,
+    // loaded (the pair set made again), or swapped with another set's loaded ones.
+    void save(SaveIo& io) const;
+    void load(LoadIo& io);
+    void swap_state(ContactSet& other) noexcept;
+
 private:
     // contact_set.cpp
     void create_contact(int32_t shape_a, int32_t shape_b, WakeBody wake);
@@ -161,6 +169,8 @@ private:
     void report_touch_changes(const Contact& contact, bool touching_now);
     void report_hit(const Contact& contact);
     Manifold manifold_of(const Contact& contact) const;
+    /// Contact events name the pair in shape order; sensor events name the sensor first.
+    PendingEnd pair_of(const Contact& contact) const;
     ShapePairEvent event_of(const Contact& contact) const;
 
     const WorldDef& settings_;

@@ -35,6 +35,9 @@
 
 namespace i2d {
 
+class LoadIo;
+class SaveIo;
+
 /// Calls follow(other) for each body that a contact or joint links `body` to.
 using LinkVisitor = FunctionRef<void(int32_t body, FunctionRef<void(int32_t other)> follow)>;
 
@@ -75,6 +78,7 @@ public:
     template <class Slept>
     void sleep_island_of(int32_t body, LinkVisitor links, Slept&& slept);
 
+    const Pool<Island>& pool() const { return islands_; }
     /// Kinematic and dynamic bodies that are awake, each at its awake_index.
     const std::vector<int32_t>& awake_bodies() const { return awake_bodies_; }
     /// Changes whenever a body joins or leaves the awake list (and so whenever an awake
@@ -101,6 +105,12 @@ public:
     void sleep_rested_islands(float time_to_sleep, LinkVisitor links, FellAsleep&& fell_asleep, Slept&& slept);
 
     void validate() const;
+
+    // Snapshots (snapshot/stage_snapshots.cpp): the islands and the awake lists saved,
+    // loaded, or swapped with another's loaded ones.
+    void save(SaveIo& io) const;
+    void load(LoadIo& io);
+    void swap_state(Islands& other) noexcept;
 
 private:
     void append_body(int32_t island, int32_t body);

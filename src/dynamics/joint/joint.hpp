@@ -130,6 +130,10 @@ struct alignas(64) Joint {
     bool island_link = false;  // joins the islands of its two bodies
 };
 
+/// Whether the def's angles lie in (-pi, pi], as the solver's single unwind_angle needs
+/// (joint_constraint.hpp): the C boundary stores them wound (joint_set.cpp).
+bool angles_wound(const JointDef& def);
+
 /// What a caller reads of a joint as its bodies stand (not as the solver last saw them).
 struct JointMeasures {
     float angle = 0.0f;        // rad, B relative to A minus the reference, in (-pi, pi]

@@ -127,18 +127,11 @@ JointMeasures JointSet::measure(int32_t joint) const {
     return m;
 }
 
-#if defined(I2D_VALIDATE)
-namespace {
-
-// The def's angles lie in (-pi, pi], as the solver's single unwind_angle needs (joint.hpp).
 bool angles_wound(const JointDef& d) {
     auto wound = [](float angle) { return angle > -pi && angle <= pi; };
     return wound(d.revolute.reference_angle) && wound(d.revolute.target_angle) &&
            wound(d.prismatic.reference_angle) && wound(d.weld.reference_angle) && wound(d.motor.angular_offset);
 }
-
-}  // namespace
-#endif
 
 // Every body's list holds exactly its joints' edges, a joint links islands exactly when it
 // should (between two dynamic bodies, which then share an island), and its angles are wound.

@@ -19,6 +19,9 @@
 
 namespace i2d {
 
+class LoadIo;
+class SaveIo;
+
 class JointSet {
 public:
     explicit JointSet(Pool<Body>& bodies) : bodies_(bodies) {}
@@ -73,6 +76,13 @@ public:
 
     /// Aborts on a broken list or island link; does nothing unless built with I2D_VALIDATE.
     void validate() const;
+
+    // Snapshots (snapshot/stage_snapshots.cpp): the joints saved, loaded, or swapped with
+    // another set's loaded ones; the links between joints and bodies are checked by the
+    // world (snapshot_checks.cpp).
+    void save(SaveIo& io) const;
+    void load(LoadIo& io);
+    void swap_state(JointSet& other) noexcept;
 
 private:
     void link_edge(int32_t joint, int32_t side);

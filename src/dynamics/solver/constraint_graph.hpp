@@ -48,6 +48,10 @@ public:
     /// Whether what the joints' colours depend on (which joint, and the states each
     /// moves) differs from what was last coloured; if so it becomes what is coloured.
     bool take_changed_key(const GraphLinks& links);
+    void forget() {
+        gathered_ = false;
+        colored_key_.clear();
+    }
     /// Per awake joint: the joint, then the states it moves on sides A and B, or -1.
     const std::vector<int32_t>& colored_key() const { return colored_key_; }
 
@@ -68,6 +72,11 @@ public:
     /// whether the colours are laid out in the workers' parts. Returns whether the
     /// contacts were coloured anew.
     bool update(int32_t share_count, int32_t workers, bool parts, BodyShares& shares, ShareBalance& balance);
+    /// Colour and gather afresh at the next update.
+    void forget() {
+        colored_ = false;
+        awake_joints_.forget();
+    }
     /// Whether the last update gathered the joints again (their trees must be found again).
     bool joints_regathered() const { return joints_regathered_; }
 

@@ -60,6 +60,11 @@ void Solver::step(const StepContext& step) {
     body_pass_.finish(step);
 }
 
+void Solver::forget_caches() {
+    graph_.forget();
+    plan_.key.clear();
+}
+
 ContactLayout Solver::contact_layout() const {
     ContactLayout layout{links_.contacts.pool(),        graph_.ordered_contacts().data(),
                          graph_.color_starts().data(),  ConstraintColors::count,

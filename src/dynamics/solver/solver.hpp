@@ -76,6 +76,9 @@ public:
     /// The bodies whose solved state was not finite, in awake order: the last step left
     /// them where it found them, at rest, for the world to quarantine.
     const std::vector<int32_t>& non_finite_bodies() const { return body_pass_.non_finite_bodies(); }
+    /// The world's state was replaced (a snapshot restored): colour, gather and plan
+    /// again at the next step.
+    void forget_caches();
 
 private:
     // A colour that has joints or contacts, in solve order, the overflow colour last.

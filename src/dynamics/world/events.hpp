@@ -86,18 +86,34 @@ struct WorldEvents {
     }
 };
 
+/// A pair of shapes whose end waits for the next step's arrays, by index and generation:
+/// encoded as ids only when it reaches them, so that a world restored from a snapshot
+/// names them with its own ids.
+struct PendingEnd {
+    int32_t shape_a = 0, shape_b = 0;  // as the event names them (a sensor first)
+    uint16_t generation_a = 0, generation_b = 0;
+};
+
 /// The events of the last step, and the ends caused between steps, which wait for the
 /// next step's arrays so that the arrays a caller holds stay valid until then.
 struct EventRecorder {
     WorldEvents current;
-    std::vector<ShapePairEvent> pending_contact_ends;
-    std::vector<ShapePairEvent> pending_sensor_ends;
+    std::vector<PendingEnd> pending_contact_ends;
+    std::vector<PendingEnd> pending_sensor_ends;
     IdEncoder ids;
 
     void begin_step() {
         current.clear();
-        current.contact_end.swap(pending_contact_ends);
-        current.sensor_end.swap(pending_sensor_ends);
+        take_pending(pending_contact_ends, 0, current.contact_end);
+        take_pending(pending_sensor_ends, 0, current.sensor_end);
+    }
+    /// Moves the pending ends from `first` on into `out`, as ids.
+    void take_pending(std::vector<PendingEnd>& pending, std::size_t first, std::vector<ShapePairEvent>& out) const {
+        for (std::size_t k = first; k < pending.size(); ++k) {
+            const PendingEnd& e = pending[k];
+            out.push_back({ids.shape_id(e.shape_a, e.generation_a), ids.shape_id(e.shape_b, e.generation_b)});
+        }
+        pending.resize(first);
     }
 };
 

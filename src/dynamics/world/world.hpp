@@ -13,6 +13,7 @@
 // world_joints.cpp, world_step.cpp, world_query.cpp and world_validate.cpp.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <memory>
 #include <vector>
@@ -196,6 +197,24 @@ public:
     void overlap_shape(const ShapeProxy& proxy, const QueryFilter& filter, ShapeVisitor visit, void* context) const;
     void rebuild_static_tree();
 
+    // Snapshots (snapshot/world_snapshot.cpp, snapshot_format.hpp).
+    /// The bytes a full snapshot of the world takes now, its header included.
+    std::size_t snapshot_size() const;
+    /// Writes a full snapshot into [buffer, buffer + capacity); returns its size, or 0
+    /// (having written nothing useful) when the capacity is short.
+    std::size_t save_snapshot(void* buffer, std::size_t capacity) const;
+    /// Replaces the world's state with a snapshot's, keeping its host wiring (workers,
+    /// task callbacks, SIMD path, profiling); returns null, or what is wrong with the
+    /// snapshot, and then the world is as it was.
+    const char* restore_snapshot(const void* data, std::size_t size);
+    /// A new world from a snapshot, with runtime's host wiring; null, with *problem set,
+    /// when the snapshot is refused.
+    static std::unique_ptr<World> from_snapshot(const void* data, std::size_t size, const WorldDef& runtime,
+                                                const char** problem);
+    /// Takes the state of a world loaded from a snapshot (which gets this one's), keeping
+    /// this world's host wiring. Swaps containers only: cannot fail.
+    void take_state_of(World& loaded) noexcept;
+
 private:
     friend class QueryLock;
     friend class WorldProbe;  // the unit tests' window on the stages (tests/unit/world_fixture.hpp)
@@ -231,6 +250,15 @@ private:
     void visit_island_links(int32_t body, FunctionRef<void(int32_t other)> follow) const;
     // world_validate.cpp
     void validate_body(int32_t body) const;
+    // snapshot/world_snapshot.cpp, snapshot/snapshot_checks.cpp
+    template <class Io, class Self>
+    static void transfer(Io& io, Self& world);
+    const char* load_snapshot(const void* data, std::size_t size);
+    /// What is wrong with a world just loaded from a snapshot, or null: whatever the step
+    /// follows (lists, links, indices) leads where it should.
+    const char* check_loaded() const;
+    const char* check_loaded_islands(int32_t island_members) const;
+    const char* check_loaded_shapes() const;
 
     WorldDef settings_;
     Pool<Body> bodies_;

@@ -104,13 +104,9 @@ void World::quarantine_non_finite_bodies() {
         set_type(body, BodyType::static_body);
         bodies_[body].quarantined = true;
     }
-    const auto take_new_ends = [](std::vector<ShapePairEvent>& pending, std::size_t before,
-                                  std::vector<ShapePairEvent>& current) {
-        current.insert(current.end(), pending.begin() + std::ptrdiff_t(before), pending.end());
-        pending.resize(before);
-    };
-    take_new_ends(stages_->events.pending_contact_ends, contact_ends_before, stages_->events.current.contact_end);
-    take_new_ends(stages_->events.pending_sensor_ends, sensor_ends_before, stages_->events.current.sensor_end);
+    EventRecorder& events = stages_->events;
+    events.take_pending(events.pending_contact_ends, contact_ends_before, events.current.contact_end);
+    events.take_pending(events.pending_sensor_ends, sensor_ends_before, events.current.sensor_end);
 }
 
 // A fast body that passed through a sensor within the step neither began nor ended the

@@ -1,0 +1,72 @@
+/* SPDX-License-Identifier: MIT */
+/** @file snapshot.h
+ *  Snapshots: a world saved to bytes and brought back, in place or as a new world.
+ *
+ *  A snapshot is a portable byte image of one world between steps: every body, shape,
+ *  chain, joint, contact (with the impulses it warm starts from), island, sleep timer,
+ *  broadphase tree and setting. Restoring it and stepping gives the same bits as never
+ *  having saved: in this process or another, on x86-64, AArch64 or WebAssembly, with any
+ *  SIMD path and any worker count. The format is little-endian and versioned, with a
+ *  magic and a checksum; a newer library reads every older format.
+ *
+ *  What a snapshot does not hold: the host's wiring (worker_count, task callbacks,
+ *  simd_path, enable_profile), which stays the world's own, and the events of the last
+ *  step (the arrays are empty after a restore; ends caused between steps before the save
+ *  still reach the next step's arrays). User data travels as its 64-bit value: a pointer
+ *  means nothing in another process, so bind it again there (i2d_body_set_user_data).
+ *
+ *  A refused buffer (truncated, corrupted in any byte, not a snapshot, of a newer format,
+ *  or describing a world that could not be stepped) answers I2D_ERR_INVALID_SNAPSHOT with
+ *  a message saying what is wrong, and the world is exactly as it was: a restore reads
+ *  the whole snapshot aside and checks it before the world changes. */
+#ifndef IMPULSE2D_SNAPSHOT_H
+#define IMPULSE2D_SNAPSHOT_H
+
+#include <stddef.h>
+
+#include "base.h"
+#include "id.h"
+#include "joint.h"
+#include "types.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/** The bytes a snapshot of the world takes now; 0 on a bad id (the status says why). */
+I2D_API size_t i2d_world_get_snapshot_size(i2d_world_id world);
+
+/** Saves a snapshot into buffer. `written` (may be NULL) receives its size; when
+ *  capacity is less than i2d_world_get_snapshot_size, nothing is saved,
+ *  I2D_ERR_INVALID_ARGUMENT is returned and `written` receives the size needed. Reading
+ *  only: allowed inside query callbacks, refused inside a step's job callbacks. */
+I2D_API i2d_status i2d_world_save_snapshot(i2d_world_id world, void* buffer, size_t capacity, size_t* written);
+
+/** Replaces the world's state with a snapshot's. The world keeps its id and its host
+ *  wiring; ids of bodies, shapes, joints and chains that existed at the save are valid
+ *  again (same index and generation), ids made after it are stale. Refused inside
+ *  callbacks (I2D_ERR_WORLD_LOCKED); a bad buffer gets I2D_ERR_INVALID_SNAPSHOT and leaves
+ *  the world untouched. */
+I2D_API i2d_status i2d_world_restore_snapshot(i2d_world_id world, const void* buffer, size_t size);
+
+/** A new world from a snapshot. Its ids keep the snapshot's indices and generations but
+ *  name the new world (i2d_body_in_world and the like translate them). `runtime`: the
+ *  world def whose host wiring (worker_count, task callbacks, simd_path, enable_profile)
+ *  the new world takes; NULL for the defaults; its simulation fields are checked but not
+ *  used: the snapshot's settings are. I2D_NULL_WORLD_ID, with the status set, when the
+ *  buffer or the def is refused or 256 worlds are alive. */
+I2D_API i2d_world_id i2d_world_create_from_snapshot(const void* buffer, size_t size, const i2d_world_def* runtime);
+
+/** The same object in another world made from a snapshot that held it (same index and
+ *  generation): a null id, with I2D_OK, when that world has no such object;
+ *  I2D_ERR_INVALID_HANDLE for an id of another kind or a dead world. */
+I2D_API i2d_body_id i2d_body_in_world(i2d_body_id body, i2d_world_id world);
+I2D_API i2d_shape_id i2d_shape_in_world(i2d_shape_id shape, i2d_world_id world);
+I2D_API i2d_joint_id i2d_joint_in_world(i2d_joint_id joint, i2d_world_id world);
+I2D_API i2d_chain_id i2d_chain_in_world(i2d_chain_id chain, i2d_world_id world);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* IMPULSE2D_SNAPSHOT_H */
