@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// i2d_world_*_snapshot, i2d_world_create_from_snapshot and i2d_*_in_world.
+// i2d_world_*_snapshot, i2d_world_*_state, i2d_world_create_from_snapshot and i2d_*_in_world.
 //
 // A restore reads the snapshot into a world of its own first (World::from_snapshot), then
 // checks the settings it holds against the world def's rules, and only then swaps it in:
@@ -71,6 +71,29 @@ Id in_world(const char* function, uint64_t bits, IdKind kind, const char* kind_n
     });
 }
 
+// Saves a snapshot or a rollback state into the caller's buffer, or says the size needed.
+i2d_status save_into(Call& call, i2d_world_id world, void* buffer, size_t capacity, size_t* written, const char* what,
+                     std::size_t (World::*size_of)() const, std::size_t (World::*save)(void*, std::size_t) const) {
+    WorldRef w;
+    if (!call.world(world, w)) {
+        return last_status();
+    }
+    const std::size_t needed = (w.world->*size_of)();
+    if (buffer == nullptr || capacity < needed) {
+        if (written != nullptr) {
+            *written = needed;
+        }
+        call.fail(I2D_ERR_INVALID_ARGUMENT, "the buffer holds %zu bytes and the %s needs %zu%s",
+                  buffer == nullptr ? size_t(0) : capacity, what, needed, buffer == nullptr ? "; buffer is NULL" : "");
+        return last_status();
+    }
+    const std::size_t size = (w.world->*save)(buffer, capacity);
+    if (written != nullptr) {
+        *written = size;
+    }
+    return I2D_OK;
+}
+
 }  // namespace
 
 I2D_API size_t i2d_world_get_snapshot_size(i2d_world_id world) {
@@ -82,25 +105,8 @@ I2D_API size_t i2d_world_get_snapshot_size(i2d_world_id world) {
 
 I2D_API i2d_status i2d_world_save_snapshot(i2d_world_id world, void* buffer, size_t capacity, size_t* written) {
     return guarded("i2d_world_save_snapshot", I2D_ERR_OUT_OF_MEMORY, [&](Call& call) {
-        WorldRef w;
-        if (!call.world(world, w)) {
-            return last_status();
-        }
-        const std::size_t needed = w.world->snapshot_size();
-        if (buffer == nullptr || capacity < needed) {
-            if (written != nullptr) {
-                *written = needed;
-            }
-            call.fail(I2D_ERR_INVALID_ARGUMENT,
-                      "the buffer holds %zu bytes and the snapshot needs %zu (i2d_world_get_snapshot_size)%s",
-                      buffer == nullptr ? size_t(0) : capacity, needed, buffer == nullptr ? "; buffer is NULL" : "");
-            return last_status();
-        }
-        const std::size_t size = w.world->save_snapshot(buffer, capacity);
-        if (written != nullptr) {
-            *written = size;
-        }
-        return I2D_OK;
+        return save_into(call, world, buffer, capacity, written, "snapshot", &World::snapshot_size,
+                         &World::save_snapshot);
     });
 }
 
@@ -131,6 +137,38 @@ I2D_API i2d_world_id i2d_world_create_from_snapshot(const void* buffer, size_t s
             return I2D_NULL_WORLD_ID;
         }
         return register_new_world(call, std::move(loaded));
+    });
+}
+
+I2D_API size_t i2d_world_get_state_size(i2d_world_id world) {
+    return guarded("i2d_world_get_state_size", size_t(0), [&](Call& call) -> size_t {
+        WorldRef w;
+        return call.world(world, w) ? w.world->state_size() : 0;
+    });
+}
+
+I2D_API i2d_status i2d_world_save_state(i2d_world_id world, void* buffer, size_t capacity, size_t* written) {
+    return guarded("i2d_world_save_state", I2D_ERR_OUT_OF_MEMORY, [&](Call& call) {
+        return save_into(call, world, buffer, capacity, written, "rollback state", &World::state_size,
+                         &World::save_state);
+    });
+}
+
+I2D_API i2d_status i2d_world_restore_state(i2d_world_id world, const void* buffer, size_t size) {
+    return guarded("i2d_world_restore_state", I2D_ERR_OUT_OF_MEMORY, [&](Call& call) {
+        WorldRef w;
+        if (!call.world(world, w) || !call.unlocked(*w.world)) {
+            return last_status();
+        }
+        if (buffer == nullptr && size != 0) {
+            call.fail(I2D_ERR_INVALID_ARGUMENT, "buffer is NULL and size is %zu", size);
+            return last_status();
+        }
+        if (const char* problem = w.world->restore_state(buffer, size)) {
+            call.fail(I2D_ERR_INVALID_SNAPSHOT, "rollback state refused: %s", problem);
+            return last_status();
+        }
+        return I2D_OK;
     });
 }
 

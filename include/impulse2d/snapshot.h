@@ -57,6 +57,23 @@ I2D_API i2d_status i2d_world_restore_snapshot(i2d_world_id world, const void* bu
  *  buffer or the def is refused or 256 worlds are alive. */
 I2D_API i2d_world_id i2d_world_create_from_snapshot(const void* buffer, size_t size, const i2d_world_def* runtime);
 
+/** Rollback states: what a step changes (poses, velocities, forces, sleep, contacts and
+ *  their impulses, joint impulses, islands, the broadphase), for rolling back a few frames
+ *  in a netcode or resetting an environment thousands of times. A state belongs to the
+ *  world it was saved from, as its structure stood: restoring it into another world, or
+ *  after a body, shape, joint or chain was made, destroyed or changed there, or a world
+ *  setting (gravity) was changed, is refused with I2D_ERR_INVALID_SNAPSHOT. Stepping after
+ *  a restore gives the same bits as stepping from the moment it was saved. A state is not
+ *  portable between processes: save a full snapshot for that. */
+I2D_API size_t i2d_world_get_state_size(i2d_world_id world);
+/** As i2d_world_save_snapshot, for a rollback state. */
+I2D_API i2d_status i2d_world_save_state(i2d_world_id world, void* buffer, size_t capacity, size_t* written);
+/** Brings the world back to a rollback state saved from it. A refused state (another
+ *  world's, saved before a structural change, truncated or corrupted in any byte) answers
+ *  I2D_ERR_INVALID_SNAPSHOT with a message, and the world is as it was. Refused inside
+ *  callbacks (I2D_ERR_WORLD_LOCKED). */
+I2D_API i2d_status i2d_world_restore_state(i2d_world_id world, const void* buffer, size_t size);
+
 /** The same object in another world made from a snapshot that held it (same index and
  *  generation): a null id, with I2D_OK, when that world has no such object;
  *  I2D_ERR_INVALID_HANDLE for an id of another kind or a dead world. */

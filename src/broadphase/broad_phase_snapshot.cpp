@@ -54,7 +54,13 @@ void DynamicTree::transfer(Io& io, Self& self) {
 void DynamicTree::save(SaveIo& io) const { transfer(io, *this); }
 
 void DynamicTree::load(LoadIo& io) {
-    *this = DynamicTree{};
+    // Emptied but not freed: a tree loaded again and again (a rollback) allocates nothing.
+    nodes_.clear();
+    proxy_nodes_.clear();
+    proxy_categories_.clear();
+    free_proxies_.clear();
+    root_ = free_list_ = null_index;
+    proxy_count_ = moves_since_compact_ = 0;
     transfer(io, *this);
     check_loaded(io);
 }

@@ -129,7 +129,12 @@ template <class T>
 template <class Io, class Fields>
 void Pool<T>::load(Io& io, Fields&& fields) {
     const int32_t slots = io.count(3, max_slots, "a pool has more slots than the bytes left could hold");
-    *this = Pool{};
+    // Emptied but not freed: a pool loaded again and again (a rollback) allocates nothing.
+    items_.clear();
+    generations_.clear();
+    alive_.clear();
+    free_.clear();
+    count_ = 0;
     items_.resize(std::size_t(slots));
     generations_.resize(std::size_t(slots));
     alive_.resize(std::size_t(slots));

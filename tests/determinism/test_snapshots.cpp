@@ -304,3 +304,111 @@ I2D_TEST(det_snapshot_save_says_the_size_it_needs) {
     I2D_CHECK(i2d_world_get_snapshot_size(i2d_world_id{0}) == 0 && i2d_last_status() == I2D_ERR_INVALID_HANDLE);
     i2d_world_destroy(world);
 }
+
+// ---- Rollback states ---------------------------------------------------------------------
+
+namespace {
+
+Bytes save_state(i2d_world_id world) {
+    Bytes bytes(i2d_world_get_state_size(world));
+    size_t written = 0;
+    if (i2d_world_save_state(world, bytes.data(), bytes.size(), &written) != I2D_OK || written != bytes.size()) {
+        fprintf(stderr, "    state save failed: %s\n", i2d_last_error_message());
+        bytes.clear();
+    }
+    return bytes;
+}
+
+// A frame's input, the same whenever the frame is played: a push on one of the bodies.
+void play_frame(i2d_world_id world, const std::vector<i2d_body_id>& bodies, int frame) {
+    const i2d_body_id body = bodies[size_t(frame * 7) % bodies.size()];
+    const i2d_vec2 impulse = {0.2f * float(frame % 5) - 0.4f, 0.5f};
+    i2d_body_apply_linear_impulse(body, impulse, i2d_body_get_world_center_of_mass(body), true);
+    i2d_world_step(world, det::time_step, det::substeps);
+}
+
+}  // namespace
+
+// A rollback netcode's loop: every frame saved; at frame 100 the game goes back 8 frames
+// and plays them again with the same inputs, then on. Every hash and the final snapshot
+// are those of the run that never went back.
+I2D_TEST(det_rollback_eight_frames_back_and_again_gives_the_same_bits) {
+    constexpr int frames = 130, rollback_at = 100, depth = 8;
+    std::vector<uint64_t> straight_hashes;
+    Bytes straight_end;
+    for (const bool roll_back : {false, true}) {
+        const i2d_world_id world = det::snapshot_scene(i2d_default_world_def());
+        // The players' pieces: boxes the inputs push about.
+        std::vector<i2d_body_id> bodies;
+        const i2d_shape_def plain = det::material(0.6f, 0.0f);
+        for (int k = 0; k < 8; ++k) {
+            bodies.push_back(det::add_body(world, I2D_BODY_DYNAMIC, i2d_vec2{-4.0f + float(k), 12.0f}));
+            i2d_shape_create_box(bodies.back(), &plain, 0.3f, 0.3f);
+        }
+        step(world, steps_before);
+        std::vector<Bytes> saved(frames);
+        std::vector<uint64_t> hashes;
+        for (int frame = 0; frame < frames; ++frame) {
+            saved[size_t(frame)] = save_state(world);
+            if (roll_back && frame == rollback_at) {
+                I2D_REQUIRE(i2d_world_restore_state(world, saved[size_t(frame - depth)].data(),
+                                                    saved[size_t(frame - depth)].size()) == I2D_OK);
+                for (int again = frame - depth; again < frame; ++again) {
+                    play_frame(world, bodies, again);
+                    I2D_CHECK(i2d_world_get_state_hash(world) == straight_hashes[size_t(again)]);
+                }
+            }
+            play_frame(world, bodies, frame);
+            hashes.push_back(i2d_world_get_state_hash(world));
+        }
+        if (!roll_back) {
+            straight_hashes = hashes;
+            straight_end = save(world);
+        } else {
+            I2D_CHECK(hashes == straight_hashes);
+            I2D_CHECK(save(world) == straight_end);
+        }
+        i2d_world_destroy(world);
+    }
+}
+
+// A state restores only into its own world, as its structure stood; truncated, changed
+// or foreign bytes are refused; each refusal leaves the world as it was.
+I2D_TEST(det_rollback_state_refusals_leave_the_world_as_it_was) {
+    const i2d_world_id world = det::mixed_scene(i2d_default_world_def());
+    step(world, 20);
+    const Bytes state = save_state(world);
+    I2D_REQUIRE(!state.empty());
+    step(world, 5);
+    for (size_t length = 0; length < state.size(); length += 97) {
+        const uint64_t hash = i2d_world_get_state_hash(world);
+        I2D_CHECK(i2d_world_restore_state(world, state.data(), length) == I2D_ERR_INVALID_SNAPSHOT);
+        I2D_CHECK(i2d_world_get_state_hash(world) == hash);
+    }
+    for (size_t at = 0; at < state.size(); at += 13) {
+        Bytes changed = state;
+        changed[at] ^= 0x04;
+        const uint64_t hash = i2d_world_get_state_hash(world);
+        I2D_CHECK(i2d_world_restore_state(world, changed.data(), changed.size()) == I2D_ERR_INVALID_SNAPSHOT);
+        I2D_CHECK(i2d_world_get_state_hash(world) == hash);
+    }
+    // Another world of the same scene: not this one.
+    const i2d_world_id twin = det::mixed_scene(i2d_default_world_def());
+    step(twin, 20);
+    I2D_CHECK(i2d_world_restore_state(twin, state.data(), state.size()) == I2D_ERR_INVALID_SNAPSHOT);
+    I2D_CHECK(std::string(i2d_last_error_message()).find("another world") != std::string::npos);
+    // A full snapshot is not a state, nor the other way round.
+    const Bytes snapshot = save(world);
+    I2D_CHECK(i2d_world_restore_state(world, snapshot.data(), snapshot.size()) == I2D_ERR_INVALID_SNAPSHOT);
+    I2D_CHECK(i2d_world_restore_snapshot(world, state.data(), state.size()) == I2D_ERR_INVALID_SNAPSHOT);
+    // Still good until the structure changes.
+    I2D_CHECK(i2d_world_restore_state(world, state.data(), state.size()) == I2D_OK);
+    const i2d_body_id added = det::add_body(world, I2D_BODY_DYNAMIC, i2d_vec2{0, 30});
+    I2D_CHECK(!I2D_IS_NULL(added));
+    const uint64_t hash = i2d_world_get_state_hash(world);
+    I2D_CHECK(i2d_world_restore_state(world, state.data(), state.size()) == I2D_ERR_INVALID_SNAPSHOT);
+    I2D_CHECK(std::string(i2d_last_error_message()).find("structure changed") != std::string::npos);
+    I2D_CHECK(i2d_world_get_state_hash(world) == hash);
+    i2d_world_destroy(twin);
+    i2d_world_destroy(world);
+}

@@ -25,6 +25,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <type_traits>
 
 #include "core/byte_stream.hpp"
 
@@ -81,5 +82,35 @@ private:
     ByteReader& in_;
     std::size_t end_ = 0;
 };
+
+// A snapshot's sections, in their order; a rollback state has the dynamic_* ones in
+// place of settings, bodies, shapes, chains and joints.
+constexpr uint32_t settings_section = section_tag("SETT");
+constexpr uint32_t bodies_section = section_tag("BODY");
+constexpr uint32_t shapes_section = section_tag("SHAP");
+constexpr uint32_t chains_section = section_tag("CHAN");
+constexpr uint32_t joints_section = section_tag("JOIN");
+constexpr uint32_t contacts_section = section_tag("CONT");
+constexpr uint32_t islands_section = section_tag("ISLD");
+constexpr uint32_t broadphase_section = section_tag("BRPH");
+constexpr uint32_t events_section = section_tag("EVNT");
+constexpr uint32_t world_section = section_tag("WRLD");
+constexpr uint32_t dynamic_bodies_section = section_tag("BODS");
+constexpr uint32_t dynamic_shapes_section = section_tag("SHPS");
+constexpr uint32_t dynamic_joints_section = section_tag("JOIS");
+
+/// The section's reader when loading, its writer when saving.
+template <class Io>
+using SectionOf = std::conditional_t<Io::loading, SectionReader, SectionWriter>;
+
+/// A module's own save or load, whichever way the Io goes.
+template <class Io, class Module>
+inline void move_module(Io& io, Module& module) {
+    if constexpr (Io::loading) {
+        module.load(io);
+    } else {
+        module.save(io);
+    }
+}
 
 }  // namespace i2d

@@ -14,37 +14,6 @@
 
 namespace i2d {
 
-namespace {
-
-// A snapshot's sections, in their order.
-constexpr uint32_t settings_section = section_tag("SETT");
-constexpr uint32_t bodies_section = section_tag("BODY");
-constexpr uint32_t shapes_section = section_tag("SHAP");
-constexpr uint32_t chains_section = section_tag("CHAN");
-constexpr uint32_t joints_section = section_tag("JOIN");
-constexpr uint32_t contacts_section = section_tag("CONT");
-constexpr uint32_t islands_section = section_tag("ISLD");
-constexpr uint32_t broadphase_section = section_tag("BRPH");
-constexpr uint32_t events_section = section_tag("EVNT");
-constexpr uint32_t world_section = section_tag("WRLD");
-
-using Section = SectionWriter;
-
-// A module's own save or load, whichever way the Io goes.
-template <class Io, class Module>
-void move_module(Io& io, Module& module) {
-    if constexpr (Io::loading) {
-        module.load(io);
-    } else {
-        module.save(io);
-    }
-}
-
-template <class Io>
-using SectionOf = std::conditional_t<Io::loading, SectionReader, SectionWriter>;
-
-}  // namespace
-
 template <class Io, class Self>
 void World::transfer(Io& io, Self& world) {
     auto& bytes = io.bytes();
@@ -86,6 +55,16 @@ void World::transfer(Io& io, Self& world) {
         SectionOf<Io> s(bytes, joints_section);
         move_module(io, stages.joints);
     }
+    transfer_stages(io, world);
+}
+
+// What a step changes besides bodies, shapes and joints: contacts, islands, the
+// broadphase, the ends waiting for the next step, the boxes to cover. A snapshot and a
+// rollback state hold them alike.
+template <class Io, class Self>
+void World::transfer_stages(Io& io, Self& world) {
+    auto& bytes = io.bytes();
+    WorldStages& stages = *world.stages_;
     {
         SectionOf<Io> s(bytes, contacts_section);
         move_module(io, stages.contacts);
@@ -115,6 +94,9 @@ void World::transfer(Io& io, Self& world) {
         io(world.covered_time_step_);
     }
 }
+
+template void World::transfer_stages<SaveIo, const World>(SaveIo&, const World&);
+template void World::transfer_stages<LoadIo, World>(LoadIo&, World&);
 
 std::size_t World::snapshot_size() const {
     ByteWriter counter;
@@ -171,6 +153,7 @@ std::unique_ptr<World> World::from_snapshot(const void* data, std::size_t size, 
 }
 
 void World::take_state_of(World& loaded) noexcept {
+    ++structure_version_;
     // The simulation's settings come from the snapshot; the host's wiring stays.
     const WorldDef host = settings_;
     settings_ = loaded.settings_;

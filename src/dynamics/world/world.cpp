@@ -3,13 +3,23 @@
 // islands and the contact set, contacts that go when something is taken away.
 #include "dynamics/world/world.hpp"
 
+#include <atomic>
+
 #include "dynamics/world/world_stages.hpp"
 
 namespace i2d {
 
+namespace {
+
+// Serials of the process's worlds: a rollback state restores only into its own world.
+std::atomic<uint64_t> next_world_serial{1};
+
+}  // namespace
+
 World::World(const WorldDef& def)
     : settings_(def),
       stages_(std::make_unique<WorldStages>(settings_, bodies_, shapes_)),
+      serial_(next_world_serial.fetch_add(1, std::memory_order_relaxed)),
       profiling_(def.enable_profile) {}
 
 World::~World() = default;
@@ -63,6 +73,7 @@ void World::visit_island_links(int32_t body, FunctionRef<void(int32_t other)> fo
 
 // Resting bodies must feel the new gravity.
 void World::set_gravity(Vec2 gravity) {
+    ++structure_version_;
     settings_.gravity = gravity;
     wake_all();
 }

@@ -215,6 +215,19 @@ public:
     /// this world's host wiring. Swaps containers only: cannot fail.
     void take_state_of(World& loaded) noexcept;
 
+    // Rollback states (snapshot/rollback_state.cpp): what a step changes, for this world
+    // while its structure (bodies, shapes, joints, chains, settings) stays as it was.
+    /// The bytes a rollback state of the world takes now, its header included.
+    std::size_t state_size() const;
+    /// Writes a rollback state into [buffer, buffer + capacity); returns its size, or 0
+    /// when the capacity is short.
+    std::size_t save_state(void* buffer, std::size_t capacity) const;
+    /// Brings the world back to a rollback state saved from it since its last structural
+    /// change; returns null, or what is wrong with the state (then the world is as it was).
+    const char* restore_state(const void* data, std::size_t size);
+    /// Changes with every structural change: a state saved before it is refused.
+    uint64_t structure_version() const { return structure_version_; }
+
 private:
     friend class QueryLock;
     friend class WorldProbe;  // the unit tests' window on the stages (tests/unit/world_fixture.hpp)
@@ -253,6 +266,11 @@ private:
     // snapshot/world_snapshot.cpp, snapshot/snapshot_checks.cpp
     template <class Io, class Self>
     static void transfer(Io& io, Self& world);
+    template <class Io, class Self>
+    static void transfer_stages(Io& io, Self& world);
+    template <class Io, class Self>
+    static void transfer_state(Io& io, Self& world);
+    const char* load_state(const void* data, std::size_t size);
     const char* load_snapshot(const void* data, std::size_t size);
     /// What is wrong with a world just loaded from a snapshot, or null: whatever the step
     /// follows (lists, links, indices) leads where it should.
@@ -267,6 +285,9 @@ private:
     std::unique_ptr<WorldStages> stages_;
     std::vector<int32_t> to_cover_;  // bodies whose boxes must cover the next step afresh
     float covered_time_step_ = 0.0f;  // the time step the moving fat boxes were made for, s
+    uint64_t serial_ = 0;             // this world's, unique in the process: a state names it
+    uint64_t structure_version_ = 0;  // see structure_version()
+    std::vector<unsigned char> rollback_backup_;  // the state a refused restore goes back to
     StepProfile profile_;
     mutable bool profiling_ = false;
     mutable int32_t lock_depth_ = 0;

@@ -12,6 +12,7 @@
 namespace i2d {
 
 int32_t World::create_body(const BodyDef& def) {
+    ++structure_version_;
     const int32_t index = bodies_.allocate();
     if (index == null_index) {
         return null_index;
@@ -37,6 +38,7 @@ int32_t World::create_body(const BodyDef& def) {
 }
 
 void World::destroy_body(int32_t body) {
+    ++structure_version_;
     wake_body(body);  // the island it slept in loses a member
     while (bodies_[body].head_joint_key != null_index) {
         destroy_joint(bodies_[body].head_joint_key >> 1);
@@ -59,6 +61,7 @@ void World::destroy_body(int32_t body) {
 }
 
 void World::set_type(int32_t body, BodyType type) {
+    ++structure_version_;
     if (bodies_[body].type == type) {
         bodies_[body].quarantined = false;  // a quarantined body kept static on purpose
         return;

@@ -7,6 +7,7 @@
 namespace i2d {
 
 int32_t World::create_joint(const JointDef& def) {
+    ++structure_version_;
     const int32_t joint = stages_->joints.create(def);
     if (joint == null_index) {
         return null_index;
@@ -21,6 +22,7 @@ int32_t World::create_joint(const JointDef& def) {
 }
 
 void World::destroy_joint(int32_t joint) {
+    ++structure_version_;
     const JointDef& def = stages_->joints.joint(joint).def;
     const int32_t body_a = def.body_a, body_b = def.body_b;
     const bool kept_apart = !def.collide_connected;
@@ -34,6 +36,7 @@ void World::destroy_joint(int32_t joint) {
 }
 
 void World::set_joint_def(int32_t joint, const JointDef& def) {
+    ++structure_version_;
     stages_->joints.joint(joint).def = def;
     stages_->joints.touch();  // a setting may change which rows the tree pass takes
     wake_body(def.body_a);

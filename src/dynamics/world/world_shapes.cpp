@@ -54,6 +54,7 @@ int32_t World::attach_shape(int32_t body, const ShapeDef& def, const Geometry& g
 }
 
 int32_t World::create_shape(int32_t body, const ShapeDef& def, const Geometry& geometry) {
+    ++structure_version_;
     const int32_t index = attach_shape(body, def, geometry);
     if (index != null_index) {
         update_mass(body);
@@ -63,6 +64,7 @@ int32_t World::create_shape(int32_t body, const ShapeDef& def, const Geometry& g
 }
 
 void World::destroy_shape(int32_t shape) {
+    ++structure_version_;
     const int32_t body = shapes_[shape].body;
     detach_shape(shape);
     update_mass(body);
@@ -91,6 +93,7 @@ void World::detach_shape(int32_t shape) {
 // Every segment is attached first and the mass (extents) updated once: a chain of n
 // segments costs O(n), not O(n^2).
 int32_t World::create_chain(int32_t body, const ChainDef& def) {
+    ++structure_version_;
     const int32_t index = chains_.allocate();
     if (index == null_index) {
         return null_index;
@@ -131,6 +134,7 @@ int32_t World::create_chain(int32_t body, const ChainDef& def) {
 }
 
 void World::destroy_chain(int32_t chain) {
+    ++structure_version_;
     const int32_t body = chains_[chain].body;
     for (const int32_t shape : chains_[chain].shapes) {
         detach_shape(shape);
@@ -141,11 +145,13 @@ void World::destroy_chain(int32_t chain) {
 }
 
 void World::set_friction(int32_t shape, float friction) {
+    ++structure_version_;
     shapes_[shape].friction = friction;
     stages_->contacts.mix_materials_of_shape(shape);
 }
 
 void World::set_restitution(int32_t shape, float restitution) {
+    ++structure_version_;
     shapes_[shape].restitution = restitution;
     stages_->contacts.mix_materials_of_shape(shape);
 }
@@ -153,6 +159,7 @@ void World::set_restitution(int32_t shape, float restitution) {
 // The proxy is re-created because the trees keep category bits for query masks; its
 // new pairs are found at the next step (known pairs are skipped).
 void World::set_filter(int32_t shape, const Filter& filter) {
+    ++structure_version_;
     wake_body(shapes_[shape].body);
     shapes_[shape].filter = filter;
     destroy_contacts_of_shape(shape, true);
