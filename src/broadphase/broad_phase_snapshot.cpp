@@ -77,7 +77,8 @@ void DynamicTree::check_loaded(LoadIo& io) {
     if (!io.check(proxy_categories_.size() == proxy_nodes_.size(), "a tree's proxy tables differ in length") ||
         !io.check(root_ == null_index || in_nodes(root_), "a tree's root is out of range") ||
         !io.check(free_list_ == null_index || in_nodes(free_list_), "a tree's free list is out of range") ||
-        !io.check(moves_since_compact_ >= 0, "a tree's move count is negative")) {
+        !io.check(moves_since_compact_ >= 0 && moves_since_compact_ <= max_tree_items,
+                  "a tree's move count is out of range")) {
         return;
     }
     std::vector<uint8_t> seen(std::size_t(n), 0);
