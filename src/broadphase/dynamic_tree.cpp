@@ -9,23 +9,6 @@
 
 namespace i2d {
 
-int32_t DynamicTree::allocate_node() {
-    if (free_list_ != null_index) {
-        const int32_t index = free_list_;
-        free_list_ = nodes_[index].parent;
-        nodes_[index] = TreeNode{};
-        return index;
-    }
-    nodes_.emplace_back();
-    return int32_t(nodes_.size()) - 1;
-}
-
-void DynamicTree::free_node(int32_t node) {
-    nodes_[node].height = -1;
-    nodes_[node].parent = free_list_;
-    free_list_ = node;
-}
-
 int32_t DynamicTree::create_proxy(const AABB& fat_aabb, uint64_t category_bits, int32_t user_value) {
     // Room for the proxy table first (growing geometrically), so that a bad_alloc
     // changes nothing and destroy_proxy never allocates.

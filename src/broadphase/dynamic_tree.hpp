@@ -231,6 +231,25 @@ private:
     std::vector<TreeNodePair> split_scratch_;  // split_self_overlaps
 };
 
+// Node allocation is called from insertion and from the rebuild (two files): inline, so
+// that neither pays a call per node.
+inline int32_t DynamicTree::allocate_node() {
+    if (free_list_ != null_index) {
+        const int32_t index = free_list_;
+        free_list_ = nodes_[index].parent;
+        nodes_[index] = TreeNode{};
+        return index;
+    }
+    nodes_.emplace_back();
+    return int32_t(nodes_.size()) - 1;
+}
+
+inline void DynamicTree::free_node(int32_t node) {
+    nodes_[node].height = -1;
+    nodes_[node].parent = free_list_;
+    free_list_ = node;
+}
+
 }  // namespace i2d
 
 #include "broadphase/dynamic_tree_query.inl"

@@ -79,6 +79,7 @@ void BodyPass::gather(const StepContext& step, BodyPass& pass, const NoStageArg&
     const std::vector<int32_t>& awake = pass.links_.islands.awake_bodies();
     const Vec2 gravity = step.settings.gravity;
     const float acceleration_limit = step.settings.maximum_linear_speed / step.time_step;
+    const float h = step.substep;
     const IntegrationTerms terms = integration_terms(step);
     for (int32_t k = begin; k < end; ++k) {
         const Body& b = pass.links_.bodies[awake[std::size_t(k)]];
@@ -92,8 +93,8 @@ void BodyPass::gather(const StepContext& step, BodyPass& pass, const NoStageArg&
         m.inv_inertia = b.inv_inertia;
         m.gravity_scale = b.gravity_scale;
         m.linear_damping = b.linear_damping;
-        m.linear_damping_factor = 1.0f / (1.0f + step.substep * b.linear_damping);
-        m.angular_damping_factor = 1.0f / (1.0f + step.substep * b.angular_damping);
+        m.linear_damping_factor = 1.0f / (1.0f + h * b.linear_damping);
+        m.angular_damping_factor = 1.0f / (1.0f + h * b.angular_damping);
         m.free_acceleration = free_acceleration(b, gravity, acceleration_limit);
         m.start_linear_velocity = b.linear_velocity;
         m.start_angular_velocity = b.angular_velocity;
@@ -154,15 +155,18 @@ void BodyPass::integrate_positions(const StepContext& step, BodyPass& pass, cons
 
 void BodyPass::finalize(const StepContext& step, BodyPass& pass, const NoStageArg&, int32_t begin, int32_t end,
                         int32_t) {
+    const WorldDef& settings = step.settings;
+    const FinalTerms terms{step.time_step, settings.sleep_speed_threshold, settings.enable_sleep,
+                           settings.enable_continuous};
     for (int32_t k = begin; k < end; ++k) {
-        pass.finalize_body(step, k);
+        pass.finalize_body(terms, k);
     }
 }
 
 // The body's new pose (bodies that did not turn keep their rotation's exact bits), its
 // shapes' bounds and its rest time. What reaches beyond the body waits in its slots for
 // finish().
-void BodyPass::finalize_body(const StepContext& step, int32_t k) {
+void BodyPass::finalize_body(const FinalTerms& terms, int32_t k) {
     const int32_t index = links_.islands.awake_bodies()[std::size_t(k)];
     Body& b = links_.bodies[index];
     // A state that overflowed is not written: the body stays where the step found it,
@@ -185,14 +189,13 @@ void BodyPass::finalize_body(const StepContext& step, int32_t k) {
     b.force = {};
     b.torque = 0.0f;
     // Fattened for the next step too, assuming the same time step (the world checks).
-    const float time_step = step.time_step;
+    const float time_step = terms.time_step;
     uint8_t flags = refit_shape_bounds(b, links_.shapes, time_step * b.linear_velocity, true,
                                        turn_reach(b, time_step)) ? proxies_enlarged : 0;
 
-    const WorldDef& settings = step.settings;
-    if (settings.enable_sleep) {
+    if (terms.enable_sleep) {
         // A body rests while its fastest point (spin x extent) and its centre stay slow.
-        const float threshold = settings.sleep_speed_threshold;
+        const float threshold = terms.sleep_speed_threshold;
         const bool resting = b.enable_sleep && length(b.linear_velocity) <= threshold &&
                              std::fabs(b.angular_velocity) * b.max_extent <= threshold;
         b.sleep_time = resting ? b.sleep_time + time_step : 0.0f;
@@ -202,7 +205,7 @@ void BodyPass::finalize_body(const StepContext& step, int32_t k) {
     }
     const bool moved = !(b.transform.p == start.p && b.transform.q.c == start.q.c && b.transform.q.s == start.q.s);
     flags |= moved ? body_moved : 0;
-    flags |= settings.enable_continuous && is_fast(b, s, time_step) ? fast_body : 0;
+    flags |= terms.enable_continuous && is_fast(b, s, time_step) ? fast_body : 0;
     flags |= finite ? 0 : non_finite_state;
     final_flags_[std::size_t(k)] = flags;
 }

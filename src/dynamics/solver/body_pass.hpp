@@ -85,7 +85,14 @@ private:
     };
     static IntegrationTerms integration_terms(const StepContext& step);
     void integrate_velocity(int32_t k, const IntegrationTerms& terms);
-    void finalize_body(const StepContext& step, int32_t k);
+    // What the final pass reads besides the body, read once per block: through the
+    // context, each body's stores would make the compiler read them again.
+    struct FinalTerms {
+        float time_step;  // s
+        float sleep_speed_threshold;  // m/s
+        bool enable_sleep, enable_continuous;
+    };
+    void finalize_body(const FinalTerms& terms, int32_t k);
     void share_kinematic_rest(int32_t body);
 
     // What the final pass leaves per awake body for finish().

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 // The solver's colour stages: each colour's joints and contacts prepared, warm started,
 // solved, relaxed, bounced and stored, over any split of the colour's items.
+#include <algorithm>
+
 #include "dynamics/contact/contact_set.hpp"
 #include "dynamics/solver/solver.hpp"
 
@@ -30,6 +32,14 @@ template void Solver::run_group<&Solver::restitution, false>(const StepContext&,
                                                                int32_t, int32_t);
 template void Solver::run_group<&Solver::store_color, true>(const StepContext&, Solver&, const ColorPass&, int32_t,
                                                               int32_t, int32_t);
+
+// Items [begin, end) of a colour run: its joints first, then its contact items.
+Solver::RunSplit Solver::split_run(int32_t run, int32_t begin, int32_t end) const {
+    const ColorRun& r = plan_.color_runs[std::size_t(run)];
+    const int32_t joints = r.joint_count;
+    return {r.joint_begin + std::min(begin, joints), r.joint_begin + std::min(end, joints),
+            std::max(begin, joints) - joints, std::max(end, joints) - joints};
+}
 
 // What one pass over the contacts reads: the substep's rates and the softness of its
 // push-out (solve passes) or none (relax passes).

@@ -151,13 +151,6 @@ int32_t Solver::min_contact_items() const {
     return (contacts_per_work_block + width - 1) / width;
 }
 
-Solver::RunSplit Solver::split_run(int32_t run, int32_t begin, int32_t end) const {
-    const ColorRun& r = plan_.color_runs[std::size_t(run)];
-    const int32_t joints = r.joint_count;
-    return {r.joint_begin + std::min(begin, joints), r.joint_begin + std::min(end, joints),
-            std::max(begin, joints) - joints, std::max(end, joints) - joints};
-}
-
 // The colours that have joints or contacts, in solve order: the contact solver's runs
 // are its colours that have contacts, in the same order, its overflow run last.
 void Solver::lay_out_color_runs() {
