@@ -9,6 +9,9 @@
 #include "convert.hpp"
 #include "geometry_checks.hpp"
 #include "limits.hpp"
+#include "loaded_values.hpp"
+#include "dynamics/body/body_rules.hpp"
+#include "dynamics/constants.hpp"
 #include "math/math.hpp"
 
 using namespace i2d;
@@ -76,6 +79,62 @@ BodyDef to_core(const i2d_body_def& def) {
 bool mutable_body(Call& call, i2d_body_id id, BodyRef& b) { return call.body(id, b) && call.unlocked(*b.world); }
 
 }  // namespace
+
+namespace i2d::capi {
+
+namespace {
+
+// The mass, inertia, centre and extents the body's shapes give it, bit for bit: no call
+// sets them any other way.
+bool mass_from_shapes(Call& call, const World& world, const Body& body, int32_t index) {
+    Body expected = body;
+    update_mass_from_shapes(expected, world.shapes());
+    const bool same = expected.mass == body.mass && expected.inv_mass == body.inv_mass &&
+                      expected.inertia == body.inertia && expected.inv_inertia == body.inv_inertia &&
+                      expected.local_center == body.local_center && expected.max_extent == body.max_extent &&
+                      expected.min_extent == body.min_extent && expected.angular_velocity == body.angular_velocity;
+    if (!same) {
+        return call.fail(I2D_ERR_INVALID_ARGUMENT, "body %d: its mass, inertia or extents are not its shapes'",
+                         static_cast<int>(index));
+    }
+    const Vec2 center = transform_point(body.transform, body.local_center);
+    const float reach = max_of(1.0f, max_of(std::fabs(center.x), std::fabs(center.y)));
+    if (!(length(center - body.center) <= loaded_center_tolerance * reach)) {
+        return call.fail(I2D_ERR_INVALID_ARGUMENT, "body %d: its centre of mass is not where its origin puts it",
+                         static_cast<int>(index));
+    }
+    return true;
+}
+
+}  // namespace
+
+bool valid_loaded_body(Call& call, const World& world, int32_t index) {
+    const Body& b = world.bodies()[index];
+    Rot unused;
+    if (!call.coordinate(to_public(b.transform.p), FieldName("body", index, "position")) ||
+        !normalized_rotation(call, to_public(b.transform.q), FieldName("body", index, "rotation"), unused) ||
+        !call.coordinate(to_public(b.center), FieldName("body", index, "center")) ||
+        !call.coordinate(to_public(b.center0), FieldName("body", index, "center0")) ||
+        !normalized_rotation(call, to_public(b.rotation0), FieldName("body", index, "rotation0"), unused) ||
+        !call.in_range(b.linear_damping, 0.0f, FLT_MAX, FieldName("body", index, "linear_damping")) ||
+        !call.in_range(b.angular_damping, 0.0f, FLT_MAX, FieldName("body", index, "angular_damping")) ||
+        !call.in_range(b.sleep_time, 0.0f, FLT_MAX, FieldName("body", index, "sleep_time")) ||
+        !call.in_range(b.angular_velocity, -max_angular_speed, max_angular_speed,
+                       FieldName("body", index, "angular_velocity"))) {
+        return false;
+    }
+    const double speed = std::hypot(double(b.linear_velocity.x), double(b.linear_velocity.y));
+    if (!(speed <= double(world.settings().maximum_linear_speed) * (1.0 + loaded_speed_tolerance))) {
+        return call.fail(I2D_ERR_INVALID_ARGUMENT, "body %d: its speed %g m/s is above the world's maximum %g",
+                         static_cast<int>(index), speed, double(world.settings().maximum_linear_speed));
+    }
+    if (b.type == BodyType::static_body && !(b.linear_velocity == Vec2{} && b.angular_velocity == 0.0f)) {
+        return call.fail(I2D_ERR_INVALID_ARGUMENT, "body %d: it is static and moves", static_cast<int>(index));
+    }
+    return mass_from_shapes(call, world, b, index);
+}
+
+}  // namespace i2d::capi
 
 I2D_API i2d_body_id i2d_body_create(i2d_world_id world_id, const i2d_body_def* def) {
     return guarded("i2d_body_create", I2D_NULL_BODY_ID, [&](Call& call) -> i2d_body_id {

@@ -8,6 +8,7 @@
 #include "boundary.hpp"
 #include "convert.hpp"
 #include "joint_rules.hpp"
+#include "loaded_values.hpp"
 
 using namespace i2d;
 using namespace i2d::capi;
@@ -104,6 +105,39 @@ I2D_JOINT_DEF_CHECK(filter, I2D_FILTER_FIELDS)
 #undef I2D_STORE_FIELD
 #undef I2D_CHECK_FIELD
 
+// A loaded joint's settings: each field as its def's rule checks it and in the form the
+// rule stores it, then the cross-field checks.
+#define I2D_CHECK_LOADED_FIELD(kind, field, Rule)                                                          \
+    &&(joint_rules::Rule::check(call, joint_rules::Rule::out(core.kind.field), FieldName("joint", index, #field)) && \
+       (joint_rules::stored_form<joint_rules::Rule>(core.kind.field) ||                                    \
+        call.fail(I2D_ERR_INVALID_ARGUMENT, "joint %d: " #field " is not as a joint stores it", int(index))))
+#define I2D_LOADED_SETTINGS_CHECK(kind, FIELDS)                                        \
+    case JointType::kind:                                                              \
+        if (!(true FIELDS(I2D_CHECK_LOADED_FIELD))) {                                  \
+            return false;                                                              \
+        }                                                                              \
+        break;
+
+bool valid_loaded_settings(Call& call, const JointDef& core, int32_t index) {
+    switch (core.type) {
+        I2D_LOADED_SETTINGS_CHECK(revolute, I2D_REVOLUTE_FIELDS)
+        I2D_LOADED_SETTINGS_CHECK(prismatic, I2D_PRISMATIC_FIELDS)
+        I2D_LOADED_SETTINGS_CHECK(distance, I2D_DISTANCE_FIELDS)
+        I2D_LOADED_SETTINGS_CHECK(weld, I2D_WELD_FIELDS)
+        I2D_LOADED_SETTINGS_CHECK(wheel, I2D_WHEEL_FIELDS)
+        I2D_LOADED_SETTINGS_CHECK(motor, I2D_MOTOR_FIELDS)
+        I2D_LOADED_SETTINGS_CHECK(mouse, I2D_MOUSE_FIELDS)
+        case JointType::filter:
+            break;
+        default:
+            return call.fail(I2D_ERR_INVALID_ARGUMENT, "joint %d: its kind is unknown", int(index));
+    }
+    return ordered_bounds(call, core, FieldName("joint", index, ""));
+}
+
+#undef I2D_LOADED_SETTINGS_CHECK
+#undef I2D_CHECK_LOADED_FIELD
+
 // The order of every create: the world, not locked, the def there and initialised, its
 // bodies, its base, its settings; only then the core, so a refusal changes nothing.
 template <class Def>
@@ -153,6 +187,21 @@ R read_joint(const char* function, i2d_joint_id id, R on_failure, Read&& read) {
 }
 
 }  // namespace
+
+namespace i2d::capi {
+
+// A loaded joint as check_base and its kind's settings would take it.
+bool valid_loaded_joint(Call& call, const World& world, int32_t index) {
+    // Its bodies' types are not checked: i2d_body_set_type may since have made both static.
+    const JointDef& core = world.joints()[index].def;
+    return call.local_point(to_public(core.local_anchor_a), FieldName("joint", index, "local_anchor_a")) &&
+           call.local_point(to_public(core.local_anchor_b), FieldName("joint", index, "local_anchor_b")) &&
+           NonNegative::check(call, core.force_threshold, FieldName("joint", index, "force_threshold")) &&
+           NonNegative::check(call, core.torque_threshold, FieldName("joint", index, "torque_threshold")) &&
+           valid_loaded_settings(call, core, index);
+}
+
+}  // namespace i2d::capi
 
 #define I2D_JOINT_CREATE(kind, is_mouse)                                                                        \
     I2D_API i2d_joint_id i2d_joint_create_##kind(i2d_world_id world, const i2d_##kind##_joint_def* def) {      \

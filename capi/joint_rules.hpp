@@ -128,6 +128,21 @@ struct Axis : Point {
     }
 };
 
+/// How far from unit length a stored axis may be: store() divides in double, so its float
+/// result is unit to within an ulp or two.
+constexpr float stored_axis_tolerance = 1.0e-6f;
+
+/// Whether a core value is one the rule's store() gives (a snapshot's value is checked by
+/// the rule's check on out(v), then by this).
+template <class Rule, class T>
+bool stored_form(const T& v) {
+    return Rule::store(Rule::out(v)) == v;
+}
+template <>
+inline bool stored_form<Axis, Vec2>(const Vec2& v) {
+    return std::fabs(length(v) - 1.0f) <= stored_axis_tolerance;
+}
+
 // X(kind, field, Rule) for every setting of each kind, in the public def's order.
 #define I2D_REVOLUTE_FIELDS(X)                  \
     X(revolute, reference_angle, Angle)         \

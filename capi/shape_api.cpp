@@ -3,25 +3,38 @@
 #include <cfloat>
 
 #include "boundary.hpp"
-#include "collision/hull.hpp"
-#include "geometry_checks.hpp"
 #include "collision/geometry.hpp"
 #include "collision/hull.hpp"
+#include "geometry_checks.hpp"
 #include "convert.hpp"
 #include "limits.hpp"
+#include "loaded_values.hpp"
+#include "dynamics/constants.hpp"
 
 using namespace i2d;
 using namespace i2d::capi;
 
 namespace {
 
+// What a shape is made of, as a def gives it and a shape keeps it.
+struct Material {
+    float density, friction, restitution, rolling_resistance, tangent_speed;
+};
+
+// `object` and `index` name the owner in messages (index < 0: none).
+bool valid_material(Call& call, const Material& m, const char* object, int32_t index) {
+    return call.in_range(m.density, 0.0f, max_density, FieldName(object, index, "density")) &&
+           call.in_range(m.friction, 0.0f, FLT_MAX, FieldName(object, index, "friction")) &&
+           call.in_range(m.restitution, 0.0f, max_restitution, FieldName(object, index, "restitution")) &&
+           call.in_range(m.rolling_resistance, 0.0f, max_setting, FieldName(object, index, "rolling_resistance")) &&
+           call.in_range(m.tangent_speed, -max_speed_limit, max_speed_limit, FieldName(object, index, "tangent_speed"));
+}
+
 bool validate_shape_def(Call& call, const i2d_shape_def* def) {
     return call.not_null(def, "shape def") && call.cookie(def->internal_cookie, "shape_def") &&
-           call.in_range(def->density, 0.0f, max_density, "shape def: density") &&
-           call.in_range(def->friction, 0.0f, FLT_MAX, "shape def: friction") &&
-           call.in_range(def->restitution, 0.0f, max_restitution, "shape def: restitution") &&
-           call.in_range(def->rolling_resistance, 0.0f, max_setting, "shape def: rolling_resistance") &&
-           call.in_range(def->tangent_speed, -max_speed_limit, max_speed_limit, "shape def: tangent_speed");
+           valid_material(call,
+                          {def->density, def->friction, def->restitution, def->rolling_resistance, def->tangent_speed},
+                          "shape def", -1);
 }
 
 ShapeDef to_core(const i2d_shape_def& def) {
@@ -52,6 +65,80 @@ i2d_shape_id create_shape(Call& call, const BodyRef& b, const i2d_shape_def* def
 bool mutable_shape(Call& call, i2d_shape_id id, ShapeRef& s) { return call.shape(id, s) && call.unlocked(*s.world); }
 
 }  // namespace
+
+namespace i2d::capi {
+
+namespace {
+
+// A chain's points lie anywhere in the world (its body is static or kinematic), and each
+// of its edges, ghost edges included, is longer than the slop, measured as a chain def is.
+bool valid_chain_segment(Call& call, const ChainSegment& c, int32_t index) {
+    const Vec2 points[4] = {c.ghost1, c.point1, c.point2, c.ghost2};
+    for (int32_t i = 0; i < 4; ++i) {
+        if (!call.coordinate(to_public(points[i]), FieldName("shape", index, "chain segment"))) {
+            return false;
+        }
+    }
+    for (int32_t i = 0; i < 3; ++i) {
+        const double dx = double(points[i + 1].x) - points[i].x, dy = double(points[i + 1].y) - points[i].y;
+        if (dx * dx + dy * dy < double(linear_slop) * linear_slop) {
+            return call.fail(I2D_ERR_INVALID_ARGUMENT, "shape %d: a chain segment's edge is shorter than %g m",
+                             static_cast<int>(index), double(linear_slop));
+        }
+    }
+    return true;
+}
+
+// The geometry a create call would have taken, each kind under its own call's rules.
+bool valid_geometry(Call& call, const Geometry& g, int32_t index) {
+    const FieldName name("shape", index, "geometry");
+    switch (g.type) {
+        case ShapeType::circle:
+            return call.local_point(to_public(g.circle.center), name) && call.extent(g.circle.radius, name);
+        case ShapeType::capsule:
+            return call.local_point(to_public(g.capsule.center1), name) &&
+                   call.local_point(to_public(g.capsule.center2), name) && call.extent(g.capsule.radius, name) &&
+                   valid_core_length(call, to_public(g.capsule.center1), to_public(g.capsule.center2), name);
+        case ShapeType::segment:
+            return call.local_point(to_public(g.segment.point1), name) &&
+                   call.local_point(to_public(g.segment.point2), name) &&
+                   valid_core_length(call, to_public(g.segment.point1), to_public(g.segment.point2), name);
+        case ShapeType::polygon: {
+            const i2d_polygon polygon = to_public(g.polygon);
+            if (!valid_convex_polygon(call, &polygon, name) ||
+                !call.in_range(polygon.radius, 0.0f, max_shape_extent, name)) {
+                return false;
+            }
+            for (int32_t i = 0; i < polygon.count; ++i) {
+                if (!call.local_point(polygon.vertices[i], name)) {
+                    return false;
+                }
+            }
+            return true;
+        }
+        case ShapeType::chain_segment:
+            return valid_chain_segment(call, g.chain_segment, index);
+        default:
+            return call.fail(I2D_ERR_INVALID_ARGUMENT, "shape %d: its kind is unknown", static_cast<int>(index));
+    }
+}
+
+}  // namespace
+
+bool valid_loaded_shape(Call& call, const World& world, int32_t index) {
+    const Shape& s = world.shapes()[index];
+    const Material material{s.density, s.friction, s.restitution, s.rolling_resistance, s.tangent_speed};
+    if ((s.chain != null_index) != (s.geometry.type == ShapeType::chain_segment) ||
+        (s.chain != null_index && world.bodies()[s.body].type == BodyType::dynamic)) {
+        return call.fail(I2D_ERR_INVALID_ARGUMENT,
+                         "shape %d: a chain segment outside a chain or on a dynamic body, or a chain of other shapes",
+                         static_cast<int>(index));
+    }
+    return valid_material(call, material, "shape", index) && valid_geometry(call, s.geometry, index) &&
+           call.in_range(s.aabb_margin, 0.0f, max_aabb_margin, FieldName("shape", index, "aabb_margin"));
+}
+
+}  // namespace i2d::capi
 
 I2D_API i2d_shape_id i2d_shape_create_circle(i2d_body_id body, const i2d_shape_def* def, const i2d_circle* circle) {
     return guarded("i2d_shape_create_circle", I2D_NULL_SHAPE_ID, [&](Call& call) -> i2d_shape_id {

@@ -2,12 +2,15 @@
 // i2d_world_*_snapshot, i2d_world_*_state, i2d_world_create_from_snapshot and i2d_*_in_world.
 //
 // A restore reads the snapshot into a world of its own first (World::from_snapshot), then
-// checks the settings it holds against the world def's rules, and only then swaps it in:
-// a refused buffer leaves the world untouched.
+// checks the settings and every value it holds against the rules of the calls that set
+// them (loaded_values.hpp), and only then swaps it in: a refused buffer leaves the world
+// untouched.
 #include <cstdio>
+#include <cstring>
 #include <memory>
 
 #include "boundary.hpp"
+#include "loaded_values.hpp"
 #include "world_def.hpp"
 
 using namespace i2d;
@@ -21,6 +24,39 @@ WorldDef holder_of(const WorldDef& host) {
     holder.worker_count = 1;
     holder.tasks = TaskCallbacks{};
     return holder;
+}
+
+// Turns the failure a value check left (I2D_ERR_INVALID_ARGUMENT, naming the field) into
+// the snapshot's refusal, keeping its message.
+std::unique_ptr<World> refuse_values(Call& call, const char* what) {
+    // The message starts with this call's name; it is said once.
+    const char* message = i2d_last_error_message();
+    const char* after_name = std::strstr(message, ": ");
+    char detail[256];
+    std::snprintf(detail, sizeof detail, "%s", after_name != nullptr ? after_name + 2 : message);
+    call.fail(I2D_ERR_INVALID_SNAPSHOT, "snapshot refused: %s (%s)", what, detail);
+    return nullptr;
+}
+
+// Every body, shape and joint under the rules of the calls that make and change them.
+bool valid_loaded_values(Call& call, const World& world) {
+    // Shapes before bodies: a body's mass follows from its shapes.
+    for (int32_t i = 0; i < world.shapes().capacity(); ++i) {
+        if (world.shapes().is_live(i) && !valid_loaded_shape(call, world, i)) {
+            return false;
+        }
+    }
+    for (int32_t i = 0; i < world.bodies().capacity(); ++i) {
+        if (world.bodies().is_live(i) && !valid_loaded_body(call, world, i)) {
+            return false;
+        }
+    }
+    for (int32_t i = 0; i < world.joints().capacity(); ++i) {
+        if (world.joints().is_live(i) && !valid_loaded_joint(call, world, i)) {
+            return false;
+        }
+    }
+    return true;
 }
 
 // Reads and checks a snapshot; null, with the status set, when it is refused.
@@ -37,10 +73,10 @@ std::unique_ptr<World> load_checked(Call& call, const void* buffer, std::size_t 
     }
     const i2d_world_def settings = to_public(loaded->settings());
     if (!validate_world_def(call, &settings)) {
-        char detail[256];
-        std::snprintf(detail, sizeof detail, "%s", i2d_last_error_message());
-        call.fail(I2D_ERR_INVALID_SNAPSHOT, "snapshot refused: its settings are out of range (%s)", detail);
-        return nullptr;
+        return refuse_values(call, "its settings are out of range");
+    }
+    if (!valid_loaded_values(call, *loaded)) {
+        return refuse_values(call, "it holds a value no call could have set");
     }
     return loaded;
 }

@@ -161,3 +161,81 @@ I2D_TEST(unit_checksum_changes_with_every_byte_and_the_length) {
     const Bytes zeros(64, 0);
     I2D_CHECK(i2d::checksum64(zeros.data(), 32) != i2d::checksum64(zeros.data(), 33));
 }
+
+namespace {
+
+// A world whose values are each unique as bits, so a test finds one in a snapshot's
+// bytes: a circle of radius 0.4321 m and density 2.718 kg/m^2 hinged to a box, its angle
+// limited to [-0.123, 0.456] rad.
+i2d_world_id world_of_distinct_values() {
+    const i2d_world_def wd = i2d_default_world_def();
+    const i2d_world_id world = i2d_world_create(&wd);
+    i2d_body_def bd = i2d_default_body_def();
+    bd.type = I2D_BODY_DYNAMIC;
+    const i2d_body_id box = i2d_body_create(world, &bd);
+    bd.position = i2d_vec2{1.5f, 0.0f};
+    const i2d_body_id ball = i2d_body_create(world, &bd);
+    i2d_shape_def sd = i2d_default_shape_def();
+    i2d_shape_create_box(box, &sd, 0.5f, 0.5f);
+    sd.density = 2.718f;
+    const i2d_circle circle = {{0, 0}, 0.4321f};
+    i2d_shape_create_circle(ball, &sd, &circle);
+    i2d_revolute_joint_def rd = i2d_default_revolute_joint_def();
+    rd.base.body_a = box;
+    rd.base.body_b = ball;
+    rd.base.local_anchor_a = i2d_vec2{0.75f, 0.0f};
+    rd.base.local_anchor_b = i2d_vec2{-0.75f, 0.0f};
+    rd.enable_limit = true;
+    rd.lower_angle = -0.123f;
+    rd.upper_angle = 0.456f;
+    i2d_joint_create_revolute(world, &rd);
+    i2d_world_step(world, time_step, 4);
+    return world;
+}
+
+// The snapshot with every float of value `from` set to `to`, its checksum fixed; false
+// when `from` is not in it.
+bool replace_float(Bytes& bytes, float from, float to) {
+    bool found = false;
+    for (std::size_t at = i2d::snapshot_header_size; at + sizeof(float) <= bytes.size(); ++at) {
+        if (std::memcmp(&bytes[at], &from, sizeof from) == 0) {
+            std::memcpy(&bytes[at], &to, sizeof to);
+            found = true;
+        }
+    }
+    fix_checksum(bytes);
+    return found;
+}
+
+}  // namespace
+
+// Values the calls that make and change objects would refuse are refused in a snapshot
+// too, with a message naming the field, and the world keeps its state: a negative radius,
+// a density its body's mass does not follow from, joint limits out of order.
+I2D_TEST(unit_snapshot_values_no_call_could_set_are_refused) {
+    struct Change {
+        float from, to;
+        const char* message;
+    };
+    const Change changes[] = {
+        {0.4321f, -0.4321f, "geometry"},          // circle radius
+        {2.718f, 5.0f, "not its shapes'"},        // density, mass unchanged
+        {2.718f, -1.0f, "density"},               // density out of range
+        {-0.123f, 0.9f, "lower_angle"},           // lower above upper
+        {0.456f, 3.13f, "upper_angle"},           // beyond the revolute limit
+        {-0.75f, 2.0e5f, "local_anchor_b"},       // anchor beyond a body's reach
+    };
+    const i2d_world_id world = world_of_distinct_values();
+    const Bytes good = save(world);
+    const uint64_t hash = i2d_world_get_state_hash(world);
+    for (const Change& change : changes) {
+        Bytes bad = good;
+        I2D_REQUIRE(replace_float(bad, change.from, change.to));
+        I2D_CHECK(i2d_world_restore_snapshot(world, bad.data(), bad.size()) == I2D_ERR_INVALID_SNAPSHOT);
+        I2D_CHECK(std::strstr(i2d_last_error_message(), change.message) != nullptr);
+        I2D_CHECK(i2d_world_get_state_hash(world) == hash);
+        I2D_CHECK(I2D_IS_NULL(i2d_world_create_from_snapshot(bad.data(), bad.size(), nullptr)));
+    }
+    I2D_CHECK(i2d_world_restore_snapshot(world, good.data(), good.size()) == I2D_OK);
+    i2d_world_destroy(world);
+}

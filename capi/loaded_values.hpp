@@ -1,0 +1,44 @@
+// SPDX-License-Identifier: MIT
+// Checks of a world read from a snapshot against the rules the C API holds callers to.
+//
+// Design note: a snapshot's checksum says its bytes are the ones saved, not that a world
+// saved them: any caller can hand bytes with a matching checksum. The core checks what
+// links its stages (World::check_loaded); these check each value a body, shape or joint
+// brings in against the same rule its create call or setter applies, kept beside that
+// rule, so a restored world holds nothing a caller could not have put there. Each fails
+// through call.fail, naming the object and the field.
+#pragma once
+
+#include <cstdint>
+#include <cstdio>
+
+#include "boundary.hpp"
+
+namespace i2d::capi {
+
+/// How far past the world's maximum_linear_speed a saved speed may be: the solver clamps
+/// in float, so a speed at the limit can read an ulp or two above it.
+constexpr double loaded_speed_tolerance = 1.0e-5;
+/// How far a body's centre of mass may be from where its origin and rotation put it, as a
+/// share of the distance from the world origin (at least 1 m): the step moves the centre
+/// and derives the origin, so the two agree to rounding only.
+constexpr float loaded_center_tolerance = 1.0e-5f;
+
+/// A field's name in a message: "body 12: position", or "shape def: density" for no index.
+struct FieldName {
+    char text[96];
+    FieldName(const char* object, int32_t index, const char* field) {
+        if (index < 0) {
+            std::snprintf(text, sizeof text, "%s: %s", object, field);
+        } else {
+            std::snprintf(text, sizeof text, "%s %d: %s", object, static_cast<int>(index), field);
+        }
+    }
+    operator const char*() const { return text; }
+};
+
+bool valid_loaded_body(Call& call, const World& world, int32_t body);
+bool valid_loaded_shape(Call& call, const World& world, int32_t shape);
+bool valid_loaded_joint(Call& call, const World& world, int32_t joint);
+
+}  // namespace i2d::capi
