@@ -134,6 +134,15 @@ bool valid_loaded_body(Call& call, const World& world, int32_t index) {
     return mass_from_shapes(call, world, b, index);
 }
 
+// As validate_body_def; velocities are finite as read, and the world limits them.
+bool valid_recorded_body_def(Call& call, const BodyDef& def) {
+    Rot unused;
+    return call.coordinate(to_public(def.position), "body def: position") &&
+           normalized_rotation(call, to_public(def.rotation), "body def: rotation", unused) &&
+           call.in_range(def.linear_damping, 0.0f, FLT_MAX, "body def: linear_damping") &&
+           call.in_range(def.angular_damping, 0.0f, FLT_MAX, "body def: angular_damping");
+}
+
 }  // namespace i2d::capi
 
 I2D_API i2d_body_id i2d_body_create(i2d_world_id world_id, const i2d_body_def* def) {

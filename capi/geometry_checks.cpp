@@ -119,7 +119,7 @@ bool valid_polygon(Call& call, const i2d_polygon* p, const char* what) {
 // What a polygon made by i2d_make_polygon or i2d_make_box looks like: counter-clockwise,
 // convex (every turn to the left), edges longer than the slop, and each normal the
 // outward unit normal of its edge. A caller's hand-edited polygon must still be one.
-bool valid_convex_polygon(Call& call, const i2d_polygon* p, const char* what) {
+bool valid_convex_polygon(Call& call, const i2d_polygon* p, const char* what, float min_edge) {
     if (!valid_polygon(call, p, what)) {
         return false;
     }
@@ -128,8 +128,9 @@ bool valid_convex_polygon(Call& call, const i2d_polygon* p, const char* what) {
         const i2d_vec2 a = p->vertices[i], b = p->vertices[(i + 1) % n], c = p->vertices[(i + 2) % n];
         const float ex = b.x - a.x, ey = b.y - a.y;
         const float length = std::sqrt(ex * ex + ey * ey);
-        if (!(length >= linear_slop)) {
-            return call.fail(I2D_ERR_INVALID_ARGUMENT, "%s edge %d is shorter than 0.005 m", what, static_cast<int>(i));
+        if (!(length >= min_edge)) {
+            return call.fail(I2D_ERR_INVALID_ARGUMENT, "%s edge %d is shorter than %g m", what, static_cast<int>(i),
+                             static_cast<double>(min_edge));
         }
         const float outward = (ey * p->normals[i].x - ex * p->normals[i].y) / length;
         if (!(outward >= 1.0f - 1.0e-3f)) {

@@ -5,6 +5,7 @@
 #include <impulse2d/impulse2d.h>
 
 #include "boundary.hpp"
+#include "collision/collision_constants.hpp"
 
 namespace i2d::capi {
 
@@ -21,6 +22,8 @@ bool valid_core_length(Call& call, i2d_vec2 p1, i2d_vec2 p2, const char* what);
 bool valid_capsule(Call& call, const i2d_capsule* c, const char* what);
 bool valid_segment(Call& call, const i2d_segment* s, const char* what);
 bool valid_polygon(Call& call, const i2d_polygon* p, const char* what);
-bool valid_convex_polygon(Call& call, const i2d_polygon* p, const char* what);
+/// `min_edge`: a caller's polygon has edges of at least the slop; one a world already holds
+/// may be a box of the smallest half extents (min_box_edge).
+bool valid_convex_polygon(Call& call, const i2d_polygon* p, const char* what, float min_edge = linear_slop);
 
 }  // namespace i2d::capi

@@ -190,10 +190,26 @@ R read_joint(const char* function, i2d_joint_id id, R on_failure, Read&& read) {
 
 namespace i2d::capi {
 
-// A loaded joint as check_base and its kind's settings would take it.
+// A loaded joint as check_base and its kind's settings would take it. Its bodies' types
+// are not checked: i2d_body_set_type may since have made both static.
 bool valid_loaded_joint(Call& call, const World& world, int32_t index) {
-    // Its bodies' types are not checked: i2d_body_set_type may since have made both static.
-    const JointDef& core = world.joints()[index].def;
+    return valid_joint_values(call, world.joints()[index].def, index);
+}
+
+bool valid_recorded_joint(Call& call, const World& world, const JointDef& def) {
+    const Pool<Body>& bodies = world.bodies();
+    if (!bodies.is_live(def.body_a) || !bodies.is_live(def.body_b) || def.body_a == def.body_b) {
+        return call.fail(I2D_ERR_INVALID_ARGUMENT, "joint: its bodies are not two live bodies");
+    }
+    const bool a_dynamic = bodies[def.body_a].type == BodyType::dynamic;
+    const bool b_dynamic = bodies[def.body_b].type == BodyType::dynamic;
+    if (def.type == JointType::mouse ? !b_dynamic : !(a_dynamic || b_dynamic)) {
+        return call.fail(I2D_ERR_INVALID_ARGUMENT, "joint: it has no dynamic body to move");
+    }
+    return valid_joint_values(call, def, -1);
+}
+
+bool valid_joint_values(Call& call, const JointDef& core, int32_t index) {
     return call.local_point(to_public(core.local_anchor_a), FieldName("joint", index, "local_anchor_a")) &&
            call.local_point(to_public(core.local_anchor_b), FieldName("joint", index, "local_anchor_b")) &&
            NonNegative::check(call, core.force_threshold, FieldName("joint", index, "force_threshold")) &&

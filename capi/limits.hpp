@@ -14,6 +14,9 @@ constexpr float max_shape_extent = 100000.0f;
 /// Smallest radius or half extent, m. Far below the contact slop (0.005 m) already;
 /// smaller shapes have masses whose inverse overflows.
 constexpr float min_shape_extent = 1.0e-4f;
+/// The shortest edge a polygon in a world can have: a box of the smallest half extents,
+/// less 1 % for the rounding of its length.
+constexpr float min_box_edge = 0.99f * 2.0f * min_shape_extent;
 
 /// Largest |coordinate| accepted for positions and points, m. Float has about 60 m of
 /// resolution out there: beyond it geometry is meaningless.

@@ -41,4 +41,16 @@ bool valid_loaded_body(Call& call, const World& world, int32_t body);
 bool valid_loaded_shape(Call& call, const World& world, int32_t shape);
 bool valid_loaded_joint(Call& call, const World& world, int32_t joint);
 
+// The same rules for the arguments of a recorded call, which a replay passes to the core
+// as they were recorded (calls that would change them on the way, normalising a rotation
+// again, say, could change a bit).
+bool valid_recorded_body_def(Call& call, const BodyDef& def);
+/// A shape's def and geometry (not a chain segment's: chains are made whole).
+bool valid_recorded_shape(Call& call, const ShapeDef& def, const Geometry& geometry);
+/// Bodies live and distinct, one of them dynamic (body_b for a mouse joint), then the
+/// anchors, thresholds and settings.
+bool valid_recorded_joint(Call& call, const World& world, const JointDef& def);
+/// The anchors, thresholds and settings of a joint def; `index` names it (-1: none).
+bool valid_joint_values(Call& call, const JointDef& def, int32_t index);
+
 }  // namespace i2d::capi

@@ -105,7 +105,7 @@ bool valid_geometry(Call& call, const Geometry& g, int32_t index) {
                    valid_core_length(call, to_public(g.segment.point1), to_public(g.segment.point2), name);
         case ShapeType::polygon: {
             const i2d_polygon polygon = to_public(g.polygon);
-            if (!valid_convex_polygon(call, &polygon, name) ||
+            if (!valid_convex_polygon(call, &polygon, name, min_box_edge) ||
                 !call.in_range(polygon.radius, 0.0f, max_shape_extent, name)) {
                 return false;
             }
@@ -136,6 +136,14 @@ bool valid_loaded_shape(Call& call, const World& world, int32_t index) {
     }
     return valid_material(call, material, "shape", index) && valid_geometry(call, s.geometry, index) &&
            call.in_range(s.aabb_margin, 0.0f, max_aabb_margin, FieldName("shape", index, "aabb_margin"));
+}
+
+bool valid_recorded_shape(Call& call, const ShapeDef& def, const Geometry& geometry) {
+    if (geometry.type == ShapeType::chain_segment) {
+        return call.fail(I2D_ERR_INVALID_ARGUMENT, "shape: a chain segment made alone; chains are made whole");
+    }
+    const Material material{def.density, def.friction, def.restitution, def.rolling_resistance, def.tangent_speed};
+    return valid_material(call, material, "shape def", -1) && valid_geometry(call, geometry, -1);
 }
 
 }  // namespace i2d::capi

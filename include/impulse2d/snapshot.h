@@ -82,6 +82,57 @@ I2D_API i2d_shape_id i2d_shape_in_world(i2d_shape_id shape, i2d_world_id world);
 I2D_API i2d_joint_id i2d_joint_in_world(i2d_joint_id joint, i2d_world_id world);
 I2D_API i2d_chain_id i2d_chain_in_world(i2d_chain_id chain, i2d_world_id world);
 
+/* ---- Recording and replay ---------------------------------------------------------- */
+
+/** Receives a recording's bytes as they are made, a whole record at a time; append them
+ *  to a file or a buffer. It runs with the world locked: it may not call the library on
+ *  that world. */
+typedef void i2d_write_fn(const void* bytes, size_t size, void* context);
+
+/** Starts recording the world: `write` receives at once a header and a full snapshot,
+ *  then every call that changes the world (creations, destructions, setters, forces,
+ *  impulses, bulk writes, restores) and every step with the state hash it produced, as
+ *  they happen. The format is little-endian and versioned, each record with a checksum
+ *  (docs/snapshots.md). A world that already records starts again with the new writer.
+ *  Refused inside callbacks (I2D_ERR_WORLD_LOCKED); `write` NULL: I2D_ERR_INVALID_ARGUMENT.
+ *  Recording costs a state hash per step and a few bytes per call. */
+I2D_API i2d_status i2d_world_start_recording(i2d_world_id world, i2d_write_fn* write, void* context);
+/** Stops recording; I2D_OK if it was not recording. */
+I2D_API i2d_status i2d_world_stop_recording(i2d_world_id world);
+
+/** A recording being replayed. */
+typedef struct i2d_replay_id {
+    uint64_t bits;
+} i2d_replay_id;
+
+/** Opens a recording (its bytes are copied) and makes its world from the snapshot it
+ *  starts with: step 0. `runtime`: the host wiring, as for i2d_world_create_from_snapshot.
+ *  A refused recording (not a recording, a newer format, a record whose checksum does not
+ *  match, a first snapshot refused) gives a null id and I2D_ERR_INVALID_SNAPSHOT; a last
+ *  record cut short (a program that stopped mid-write) is left out. At most 64 replays are
+ *  open at once (I2D_ERR_CAPACITY). */
+I2D_API i2d_replay_id i2d_replay_open(const void* recording, size_t size, const i2d_world_def* runtime);
+/** The replay's world, to read (or draw) as the replay goes; it belongs to the replay. */
+I2D_API i2d_world_id i2d_replay_get_world(i2d_replay_id replay);
+/** Replays up to step_count more steps, each with the calls recorded before it, checking
+ *  the hash after each. Returns the steps run: fewer at the recording's end, or when a
+ *  step's hash differs from the recorded one (that step is then the divergent step; the
+ *  next call goes on from there). A call the replay world refuses (a recording changed
+ *  behind its checksums) stops the replay with I2D_ERR_INVALID_SNAPSHOT. */
+I2D_API int32_t i2d_replay_step(i2d_replay_id replay, int32_t step_count);
+/** Steps replayed so far: the world is as it was after that many recorded steps. */
+I2D_API int32_t i2d_replay_get_step(i2d_replay_id replay);
+/** Steps in the recording. */
+I2D_API int32_t i2d_replay_get_step_count(i2d_replay_id replay);
+/** The first step whose hash differed from the recording's (1 for the first step), or -1. */
+I2D_API int32_t i2d_replay_get_divergent_step(i2d_replay_id replay);
+/** Brings the replay to step `step` (0 to the step count), backwards too (from the first
+ *  snapshot again). Step k is the state after k recorded steps, before the calls recorded
+ *  after it. Divergences met on the way are noted, not stopped at. */
+I2D_API i2d_status i2d_replay_seek(i2d_replay_id replay, int32_t step);
+/** Closes the replay and destroys its world. */
+I2D_API i2d_status i2d_replay_close(i2d_replay_id replay);
+
 #ifdef __cplusplus
 }
 #endif

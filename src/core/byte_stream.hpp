@@ -14,6 +14,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
+#include <vector>
 
 namespace i2d {
 
@@ -24,6 +25,8 @@ public:
     /// Writes into [buffer, buffer + capacity); past the end it only counts, and
     /// overflowed() says so.
     ByteWriter(void* buffer, std::size_t capacity) : out_(static_cast<unsigned char*>(buffer)), capacity_(capacity) {}
+    /// Appends to `grow`, which grows as needed (a recording's records).
+    explicit ByteWriter(std::vector<unsigned char>& grow) : grow_(&grow) {}
 
     void u8(uint8_t v) { put(&v, 1); }
     void u16(uint16_t v) {
@@ -49,19 +52,28 @@ public:
 
     /// Bytes written (or counted) so far.
     std::size_t size() const { return size_; }
-    bool overflowed() const { return size_ > capacity_; }
+    bool overflowed() const { return grow_ == nullptr && size_ > capacity_; }
     /// Where byte `offset` went, for patching a length written before its content.
-    unsigned char* at(std::size_t offset) const { return out_ != nullptr && offset < capacity_ ? out_ + offset : nullptr; }
+    unsigned char* at(std::size_t offset) const {
+        if (grow_ != nullptr) {
+            return offset < grow_->size() ? grow_->data() + offset : nullptr;
+        }
+        return out_ != nullptr && offset < capacity_ ? out_ + offset : nullptr;
+    }
 
 private:
     void put(const void* data, std::size_t size) {
-        if (out_ != nullptr && size_ + size <= capacity_) {
+        if (grow_ != nullptr) {
+            const auto* bytes = static_cast<const unsigned char*>(data);
+            grow_->insert(grow_->end(), bytes, bytes + size);
+        } else if (out_ != nullptr && size_ + size <= capacity_) {
             std::memcpy(out_ + size_, data, size);
         }
         size_ += size;
     }
 
     unsigned char* out_ = nullptr;
+    std::vector<unsigned char>* grow_ = nullptr;
     std::size_t capacity_ = 0;
     std::size_t size_ = 0;
 };

@@ -165,8 +165,8 @@ I2D_TEST(unit_checksum_changes_with_every_byte_and_the_length) {
 namespace {
 
 // A world whose values are each unique as bits, so a test finds one in a snapshot's
-// bytes: a circle of radius 0.4321 m and density 2.718 kg/m^2 hinged to a box, its angle
-// limited to [-0.123, 0.456] rad.
+// bytes: a circle of radius 0.4321 m and density 2.718 kg/m^2 hinged to a box (which
+// carries the smallest box a call makes), its angle limited to [-0.123, 0.456] rad.
 i2d_world_id world_of_distinct_values() {
     const i2d_world_def wd = i2d_default_world_def();
     const i2d_world_id world = i2d_world_create(&wd);
@@ -177,6 +177,7 @@ i2d_world_id world_of_distinct_values() {
     const i2d_body_id ball = i2d_body_create(world, &bd);
     i2d_shape_def sd = i2d_default_shape_def();
     i2d_shape_create_box(box, &sd, 0.5f, 0.5f);
+    i2d_shape_create_offset_box(box, &sd, 1.0e-4f, 1.0e-4f, i2d_vec2{0.4f, 0.4f}, i2d_make_rot(0));  // smallest
     sd.density = 2.718f;
     const i2d_circle circle = {{0, 0}, 0.4321f};
     i2d_shape_create_circle(ball, &sd, &circle);
@@ -236,6 +237,6 @@ I2D_TEST(unit_snapshot_values_no_call_could_set_are_refused) {
         I2D_CHECK(i2d_world_get_state_hash(world) == hash);
         I2D_CHECK(I2D_IS_NULL(i2d_world_create_from_snapshot(bad.data(), bad.size(), nullptr)));
     }
-    I2D_CHECK(i2d_world_restore_snapshot(world, good.data(), good.size()) == I2D_OK);
+    I2D_CHECK(i2d_world_restore_snapshot(world, good.data(), good.size()) == I2D_OK);  // the smallest box too
     i2d_world_destroy(world);
 }

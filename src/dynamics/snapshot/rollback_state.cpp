@@ -129,6 +129,7 @@ const char* World::restore_state(const void* data, std::size_t size) {
     stages_->events.current.clear();
     stages_->solver.forget_caches();
     profile_ = StepProfile{};
+    record_snapshot();
     return nullptr;
 }
 

@@ -7,6 +7,7 @@
 #include <cstring>
 
 #include "core/checksum.hpp"
+#include "dynamics/recording/recorder.hpp"
 #include "dynamics/snapshot/snapshot_format.hpp"
 #include "dynamics/snapshot/world_fields.hpp"
 #include "dynamics/world/world.hpp"
@@ -177,6 +178,15 @@ void World::take_state_of(World& loaded) noexcept {
     to_cover_.swap(loaded.to_cover_);
     std::swap(covered_time_step_, loaded.covered_time_step_);
     profile_ = StepProfile{};
+    if (recorder_ != nullptr) {
+        // A recording goes on from what the world became; one that cannot be written
+        // (no memory for the snapshot) stops rather than leave the world half restored.
+        try {
+            record_snapshot();
+        } catch (...) {
+            recorder_.reset();
+        }
+    }
 }
 
 const char* World::restore_snapshot(const void* data, std::size_t size) {

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // World: creation, and the wiring that keeps the stages in step: waking, links between the
 // islands and the contact set, contacts that go when something is taken away.
+#include "dynamics/recording/recorder.hpp"
 #include "dynamics/world/world.hpp"
 
 #include <atomic>
@@ -27,16 +28,21 @@ World::~World() = default;
 const Pool<Joint>& World::joints() const { return stages_->joints.pool(); }
 
 void World::wake_body(int32_t body) {
+    RecordScope record(recorder_.get(), RecordedOp::wake_body);
+    record.write(body);
     stages_->islands.wake_body(body);
     follow_woken_bodies();
 }
 
 void World::wake_all() {
+    RecordScope record(recorder_.get(), RecordedOp::wake_all);
     stages_->islands.wake_all();
     follow_woken_bodies();
 }
 
 void World::sleep_body(int32_t body) {
+    RecordScope record(recorder_.get(), RecordedOp::sleep_body);
+    record.write(body);
     stages_->islands.sleep_island_of(body, [this](int32_t b, FunctionRef<void(int32_t)> follow) { visit_island_links(b, follow); },
                              [this](int32_t b) { stages_->contacts.body_slept(b); });
 }
@@ -73,6 +79,8 @@ void World::visit_island_links(int32_t body, FunctionRef<void(int32_t other)> fo
 
 // Resting bodies must feel the new gravity.
 void World::set_gravity(Vec2 gravity) {
+    RecordScope record(recorder_.get(), RecordedOp::set_gravity);
+    record.write(gravity);
     ++structure_version_;
     settings_.gravity = gravity;
     wake_all();

@@ -26,10 +26,13 @@
 #include "dynamics/body/chain.hpp"
 #include "dynamics/body/shape.hpp"
 #include "dynamics/joint/joint.hpp"
+#include "dynamics/recording/recording_format.hpp"
 #include "dynamics/world/events.hpp"
 #include "dynamics/world/world_def.hpp"
 
 namespace i2d {
+
+class Recorder;
 
 struct WorldStages;
 
@@ -112,7 +115,7 @@ public:
     bool apply_torque(int32_t body, float torque, bool wake);
     bool apply_linear_impulse(int32_t body, Vec2 impulse, Vec2 point, bool wake);
     bool apply_angular_impulse(int32_t body, float impulse, bool wake);
-    void set_user_data(int32_t body, void* user_data) { bodies_[body].user_data = user_data; }
+    void set_user_data(int32_t body, void* user_data);
 
     bool is_awake(int32_t body) const { return bodies_[body].awake_index != null_index; }
     bool is_quarantined(int32_t body) const { return bodies_[body].quarantined; }
@@ -137,7 +140,7 @@ public:
     void set_restitution(int32_t shape, float restitution);
     /// Changes a shape's filter; its contacts are rebuilt at the next step.
     void set_filter(int32_t shape, const Filter& filter);
-    void set_shape_user_data(int32_t shape, void* user_data) { shapes_[shape].user_data = user_data; }
+    void set_shape_user_data(int32_t shape, void* user_data);
 
     // Joints (world_joints.cpp). The def must be valid (two live, different bodies,
     // settings in range: the C boundary checks). Creating and destroying wake both
@@ -228,6 +231,14 @@ public:
     /// Changes with every structural change: a state saved before it is refused.
     uint64_t structure_version() const { return structure_version_; }
 
+    // Recording (recording/world_recording.cpp): from here on, every public call above
+    // that changes the world, and every step with the hash it produced, goes to `write`
+    // (recording_format.hpp), after the header and a snapshot of the world as it is now.
+    // The world is locked while `write` runs. Starting again replaces the writer.
+    void start_recording(RecordWriter write, void* context);
+    void stop_recording();
+    bool is_recording() const { return recorder_ != nullptr; }
+
 private:
     friend class QueryLock;
     friend class WorldProbe;  // the unit tests' window on the stages (tests/unit/world_fixture.hpp)
@@ -250,7 +261,10 @@ private:
     void unlink_joints(int32_t body);
     void let_bodies_meet(int32_t body_a, int32_t body_b);
     void forget_joint_impulses(int32_t body);
+    // recording/world_recording.cpp
+    void record_snapshot();
     // world_step.cpp
+    void run_step(float time_step, int32_t substep_count);
     void report_falling_asleep(int32_t body);
     void quarantine_non_finite_bodies();
     void report_sensor_crossings();
@@ -288,6 +302,7 @@ private:
     uint64_t serial_ = 0;             // this world's, unique in the process: a state names it
     uint64_t structure_version_ = 0;  // see structure_version()
     std::vector<unsigned char> rollback_backup_;  // the state a refused restore goes back to
+    std::unique_ptr<Recorder> recorder_;          // while recording: host wiring, kept by restores
     StepProfile profile_;
     mutable bool profiling_ = false;
     mutable int32_t lock_depth_ = 0;

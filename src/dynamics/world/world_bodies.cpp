@@ -5,6 +5,7 @@
 
 #include "dynamics/body/body_rules.hpp"
 #include "dynamics/body/shape_bounds.hpp"
+#include "dynamics/recording/recorder.hpp"
 #include "dynamics/world/world.hpp"
 #include "dynamics/world/world_stages.hpp"
 #include "math/math.hpp"
@@ -12,6 +13,8 @@
 namespace i2d {
 
 int32_t World::create_body(const BodyDef& def) {
+    RecordScope record(recorder_.get(), RecordedOp::create_body);
+    record.write(def);
     ++structure_version_;
     const int32_t index = bodies_.allocate();
     if (index == null_index) {
@@ -38,6 +41,8 @@ int32_t World::create_body(const BodyDef& def) {
 }
 
 void World::destroy_body(int32_t body) {
+    RecordScope record(recorder_.get(), RecordedOp::destroy_body);
+    record.write(body);
     ++structure_version_;
     wake_body(body);  // the island it slept in loses a member
     while (bodies_[body].head_joint_key != null_index) {
@@ -61,6 +66,8 @@ void World::destroy_body(int32_t body) {
 }
 
 void World::set_type(int32_t body, BodyType type) {
+    RecordScope record(recorder_.get(), RecordedOp::set_type);
+    record.write(body, type);
     ++structure_version_;
     if (bodies_[body].type == type) {
         bodies_[body].quarantined = false;  // a quarantined body kept static on purpose
@@ -146,6 +153,11 @@ void World::set_transform(int32_t body, const Transform& xf) { set_transforms(&b
 // are walked only when an island may wake or the timers count; either way every body
 // ends as wake_body would leave it.
 void World::set_transforms(const int32_t* list, const Transform* transforms, int32_t count) {
+    RecordScope record(recorder_.get(), RecordedOp::set_transforms);
+    record.write(count);
+    for (int32_t k = 0; k < count; ++k) {
+        record.write(list[k], transforms[k]);
+    }
     const bool may_wake = stages_->islands.sleeping_island_count() > 0;
     const bool timers_count = settings_.enable_sleep;
     for (int32_t i = 0; i < count; ++i) {
@@ -182,6 +194,8 @@ Vec2 World::limited_linear_velocity(Vec2 v) const {
 float World::limited_angular_velocity(float w) const { return i2d::limited_angular_velocity(w); }
 
 void World::set_linear_velocity(int32_t body, Vec2 v) {
+    RecordScope record(recorder_.get(), RecordedOp::set_linear_velocity);
+    record.write(body, v);
     Body& b = bodies_[body];
     if (b.type == BodyType::static_body) {
         return;
@@ -194,6 +208,8 @@ void World::set_linear_velocity(int32_t body, Vec2 v) {
 }
 
 void World::set_angular_velocity(int32_t body, float w) {
+    RecordScope record(recorder_.get(), RecordedOp::set_angular_velocity);
+    record.write(body, w);
     Body& b = bodies_[body];
     if (!can_turn(b)) {
         return;
@@ -248,20 +264,40 @@ bool World::change_velocity(int32_t body, Vec2 dv, float dw, bool wake) {
 }
 
 bool World::apply_force(int32_t body, Vec2 force, Vec2 point, bool wake) {
+    RecordScope record(recorder_.get(), RecordedOp::apply_force);
+    record.write(body, force, point, wake);
     return accumulate(body, force, cross(point - bodies_[body].center, force), wake);
 }
 
-bool World::apply_force_to_center(int32_t body, Vec2 force, bool wake) { return accumulate(body, force, 0.0f, wake); }
+bool World::apply_force_to_center(int32_t body, Vec2 force, bool wake) {
+    RecordScope record(recorder_.get(), RecordedOp::apply_force_to_center);
+    record.write(body, force, wake);
+    return accumulate(body, force, 0.0f, wake);
+}
 
-bool World::apply_torque(int32_t body, float torque, bool wake) { return accumulate(body, Vec2{}, torque, wake); }
+bool World::apply_torque(int32_t body, float torque, bool wake) {
+    RecordScope record(recorder_.get(), RecordedOp::apply_torque);
+    record.write(body, torque, wake);
+    return accumulate(body, Vec2{}, torque, wake);
+}
 
 bool World::apply_linear_impulse(int32_t body, Vec2 impulse, Vec2 point, bool wake) {
+    RecordScope record(recorder_.get(), RecordedOp::apply_linear_impulse);
+    record.write(body, impulse, point, wake);
     const Body& b = bodies_[body];
     return change_velocity(body, b.inv_mass * impulse, b.inv_inertia * cross(point - b.center, impulse), wake);
 }
 
 bool World::apply_angular_impulse(int32_t body, float impulse, bool wake) {
+    RecordScope record(recorder_.get(), RecordedOp::apply_angular_impulse);
+    record.write(body, impulse, wake);
     return change_velocity(body, Vec2{}, bodies_[body].inv_inertia * impulse, wake);
+}
+
+void World::set_user_data(int32_t body, void* user_data) {
+    RecordScope record(recorder_.get(), RecordedOp::set_body_user_data);
+    record.write(body, user_data);
+    bodies_[body].user_data = user_data;
 }
 
 }  // namespace i2d

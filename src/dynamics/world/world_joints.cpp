@@ -1,12 +1,15 @@
 // SPDX-License-Identifier: MIT
 // World: creating, changing and destroying joints, and keeping islands and contacts in
 // step with them.
+#include "dynamics/recording/recorder.hpp"
 #include "dynamics/world/world.hpp"
 #include "dynamics/world/world_stages.hpp"
 
 namespace i2d {
 
 int32_t World::create_joint(const JointDef& def) {
+    RecordScope record(recorder_.get(), RecordedOp::create_joint);
+    record.write(def);
     ++structure_version_;
     const int32_t joint = stages_->joints.create(def);
     if (joint == null_index) {
@@ -22,6 +25,8 @@ int32_t World::create_joint(const JointDef& def) {
 }
 
 void World::destroy_joint(int32_t joint) {
+    RecordScope record(recorder_.get(), RecordedOp::destroy_joint);
+    record.write(joint);
     ++structure_version_;
     const JointDef& def = stages_->joints.joint(joint).def;
     const int32_t body_a = def.body_a, body_b = def.body_b;
@@ -36,6 +41,8 @@ void World::destroy_joint(int32_t joint) {
 }
 
 void World::set_joint_def(int32_t joint, const JointDef& def) {
+    RecordScope record(recorder_.get(), RecordedOp::set_joint_def);
+    record.write(joint, def);
     ++structure_version_;
     stages_->joints.joint(joint).def = def;
     stages_->joints.touch();  // a setting may change which rows the tree pass takes
@@ -49,6 +56,8 @@ void World::set_joint_def(int32_t joint, const JointDef& def) {
 }
 
 void World::set_joint_user_data(int32_t joint, void* user_data) {
+    RecordScope record(recorder_.get(), RecordedOp::set_joint_user_data);
+    record.write(joint, user_data);
     stages_->joints.joint(joint).def.user_data = user_data;
 }
 

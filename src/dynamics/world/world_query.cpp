@@ -6,6 +6,7 @@
 // passed the exact test.
 #include "collision/geometry.hpp"
 #include "collision/toi.hpp"
+#include "dynamics/recording/recorder.hpp"
 #include "dynamics/world/world.hpp"
 #include "dynamics/world/world_stages.hpp"
 
@@ -150,6 +151,9 @@ void World::overlap_shape(const ShapeProxy& proxy, const QueryFilter& filter, Sh
     }
 }
 
-void World::rebuild_static_tree() { stages_->broad_phase.tree(ProxyKind::static_proxy).rebuild(); }
+void World::rebuild_static_tree() {
+    RecordScope record(recorder_.get(), RecordedOp::rebuild_static_tree);
+    stages_->broad_phase.tree(ProxyKind::static_proxy).rebuild();
+}
 
 }  // namespace i2d

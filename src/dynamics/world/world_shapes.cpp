@@ -2,6 +2,7 @@
 // World: creating and destroying shapes and chains, their proxies, materials and filters.
 #include "collision/geometry.hpp"
 #include "dynamics/body/shape_bounds.hpp"
+#include "dynamics/recording/recorder.hpp"
 #include "dynamics/world/world.hpp"
 #include "dynamics/world/world_stages.hpp"
 
@@ -54,6 +55,8 @@ int32_t World::attach_shape(int32_t body, const ShapeDef& def, const Geometry& g
 }
 
 int32_t World::create_shape(int32_t body, const ShapeDef& def, const Geometry& geometry) {
+    RecordScope record(recorder_.get(), RecordedOp::create_shape);
+    record.write(body, def, geometry);
     ++structure_version_;
     const int32_t index = attach_shape(body, def, geometry);
     if (index != null_index) {
@@ -64,6 +67,8 @@ int32_t World::create_shape(int32_t body, const ShapeDef& def, const Geometry& g
 }
 
 void World::destroy_shape(int32_t shape) {
+    RecordScope record(recorder_.get(), RecordedOp::destroy_shape);
+    record.write(shape);
     ++structure_version_;
     const int32_t body = shapes_[shape].body;
     detach_shape(shape);
@@ -93,6 +98,8 @@ void World::detach_shape(int32_t shape) {
 // Every segment is attached first and the mass (extents) updated once: a chain of n
 // segments costs O(n), not O(n^2).
 int32_t World::create_chain(int32_t body, const ChainDef& def) {
+    RecordScope record(recorder_.get(), RecordedOp::create_chain);
+    record.write(body, def);
     ++structure_version_;
     const int32_t index = chains_.allocate();
     if (index == null_index) {
@@ -134,6 +141,8 @@ int32_t World::create_chain(int32_t body, const ChainDef& def) {
 }
 
 void World::destroy_chain(int32_t chain) {
+    RecordScope record(recorder_.get(), RecordedOp::destroy_chain);
+    record.write(chain);
     ++structure_version_;
     const int32_t body = chains_[chain].body;
     for (const int32_t shape : chains_[chain].shapes) {
@@ -145,12 +154,16 @@ void World::destroy_chain(int32_t chain) {
 }
 
 void World::set_friction(int32_t shape, float friction) {
+    RecordScope record(recorder_.get(), RecordedOp::set_friction);
+    record.write(shape, friction);
     ++structure_version_;
     shapes_[shape].friction = friction;
     stages_->contacts.mix_materials_of_shape(shape);
 }
 
 void World::set_restitution(int32_t shape, float restitution) {
+    RecordScope record(recorder_.get(), RecordedOp::set_restitution);
+    record.write(shape, restitution);
     ++structure_version_;
     shapes_[shape].restitution = restitution;
     stages_->contacts.mix_materials_of_shape(shape);
@@ -159,12 +172,20 @@ void World::set_restitution(int32_t shape, float restitution) {
 // The proxy is re-created because the trees keep category bits for query masks; its
 // new pairs are found at the next step (known pairs are skipped).
 void World::set_filter(int32_t shape, const Filter& filter) {
+    RecordScope record(recorder_.get(), RecordedOp::set_filter);
+    record.write(shape, filter);
     ++structure_version_;
     wake_body(shapes_[shape].body);
     shapes_[shape].filter = filter;
     destroy_contacts_of_shape(shape, true);
     stages_->broad_phase.destroy_proxy(shapes_[shape].proxy_key);
     create_proxy(shape, true);
+}
+
+void World::set_shape_user_data(int32_t shape, void* user_data) {
+    RecordScope record(recorder_.get(), RecordedOp::set_shape_user_data);
+    record.write(shape, user_data);
+    shapes_[shape].user_data = user_data;
 }
 
 }  // namespace i2d

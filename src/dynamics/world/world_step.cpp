@@ -3,6 +3,7 @@
 // its substeps, bounds, events and sleep.
 #include "core/state_hash.hpp"
 #include "core/timer.hpp"
+#include "dynamics/recording/recorder.hpp"
 #include "dynamics/world/world.hpp"
 #include "dynamics/world/world_stages.hpp"
 
@@ -24,7 +25,17 @@ private:
 
 }  // namespace
 
+// A recorded step ends with the hash it produced, which a replay checks.
 void World::step(float time_step, int32_t substep_count) {
+    RecordScope record(recorder_.get(), RecordedOp::step);
+    record.write(time_step, substep_count);
+    run_step(time_step, substep_count);
+    if (record) {
+        record.write(state_hash());
+    }
+}
+
+void World::run_step(float time_step, int32_t substep_count) {
     const SteppingMark mark(stepping_);
     Timer total(profiling_), timer(profiling_);
     profile_ = StepProfile{};
