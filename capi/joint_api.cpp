@@ -210,6 +210,10 @@ bool valid_recorded_joint(Call& call, const World& world, const JointDef& def) {
 }
 
 bool valid_joint_values(Call& call, const JointDef& core, int32_t index) {
+    // Every kind's angles, not only this kind's, are stored wound (the joint set checks).
+    if (!angles_wound(core)) {
+        return call.fail(I2D_ERR_INVALID_ARGUMENT, "joint %d: an angle is not wound into (-pi, pi]", int(index));
+    }
     return call.local_point(to_public(core.local_anchor_a), FieldName("joint", index, "local_anchor_a")) &&
            call.local_point(to_public(core.local_anchor_b), FieldName("joint", index, "local_anchor_b")) &&
            NonNegative::check(call, core.force_threshold, FieldName("joint", index, "force_threshold")) &&

@@ -105,8 +105,9 @@ void DynamicTree::check_loaded(LoadIo& io) {
             seen[std::size_t(node)] = 1;
             if (t.is_leaf()) {
                 const int32_t proxy = t.proxy();
-                if (!io.check(proxy >= 0 && proxy < proxies && proxy_nodes_[std::size_t(proxy)] == node,
-                              "a tree leaf and its proxy do not name each other")) {
+                // Only inner nodes are marked grown: a rebuild takes a grown node's children.
+                if (!io.check(proxy >= 0 && proxy < proxies && proxy_nodes_[std::size_t(proxy)] == node && !t.grown,
+                              "a tree leaf and its proxy do not name each other, or the leaf is marked grown")) {
                     return;
                 }
                 ++proxy_count_;

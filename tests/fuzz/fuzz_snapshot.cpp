@@ -9,11 +9,14 @@
 // should reach the checks behind it: the loaded world's lists, links and indices.
 //
 // Input: a mode byte, then the change.
-//   mode % 3 == 0: patches (3 bytes of offset into the payload, 1 byte of value each) to the
+//   mode % 4 == 0: patches (3 bytes of offset into the payload, 1 byte of value each) to the
 //                  small world's snapshot, restored into a copy of the world and made into
 //                  a new world;
-//   mode % 3 == 1: the same patches to the small world's rollback state, restored into it;
-//   mode % 3 == 2: the rest of the input is a whole snapshot (its header made valid).
+//   mode % 4 == 1: the same patches to the small world's rollback state, restored into it;
+//   mode % 4 == 2: the rest of the input is a whole snapshot (its header made valid);
+//   mode % 4 == 3: the patches to a recording of the small world (a body made, forces,
+//                  a joint changed, steps), each record's checksum fixed, then replayed
+//                  to its end: a refused record stops the replay, nothing crashes.
 #include <impulse2d/impulse2d.h>
 
 #include <cstdint>
@@ -23,6 +26,7 @@
 #include <vector>
 
 #include "core/checksum.hpp"
+#include "dynamics/recording/recording_format.hpp"
 #include "dynamics/snapshot/snapshot_format.hpp"
 
 namespace {
@@ -122,6 +126,61 @@ void restore_and_step(i2d_world_id world, const Bytes& bytes, bool state) {
     }
 }
 
+void append(const void* bytes, std::size_t size, void* context) {
+    Bytes& out = *static_cast<Bytes*>(context);
+    out.insert(out.end(), static_cast<const unsigned char*>(bytes), static_cast<const unsigned char*>(bytes) + size);
+}
+
+// A short session of the small world: every kind of argument a replay reads.
+Bytes recorded_session(i2d_world_id original) {
+    Bytes out;
+    const Bytes start = saved(original, false);
+    const i2d_world_id world = i2d_world_create_from_snapshot(start.data(), start.size(), nullptr);
+    i2d_world_start_recording(world, append, &out);
+    i2d_body_def bd = i2d_default_body_def();
+    bd.type = I2D_BODY_DYNAMIC;
+    bd.position = i2d_vec2{1, 4};
+    const i2d_body_id body = i2d_body_create(world, &bd);
+    bd.position = i2d_vec2{2, 4};
+    const i2d_body_id other = i2d_body_create(world, &bd);
+    const i2d_shape_def sd = i2d_default_shape_def();
+    i2d_shape_create_box(body, &sd, 0.3f, 0.2f);
+    const i2d_circle ball = {{0, 0}, 0.25f};
+    i2d_shape_create_circle(other, &sd, &ball);
+    i2d_distance_joint_def dd = i2d_default_distance_joint_def();
+    dd.base.body_a = body;
+    dd.base.body_b = other;
+    dd.length = 1.0f;
+    const i2d_joint_id joint = i2d_joint_create_distance(world, &dd);
+    for (int s = 0; s < 6; ++s) {
+        i2d_body_apply_linear_impulse(body, i2d_vec2{0.3f, 0}, i2d_vec2{1, 4}, true);
+        i2d_body_set_angular_velocity(other, 0.5f);
+        i2d_distance_joint_set_length(joint, 1.0f + 0.1f * float(s));
+        i2d_world_step(world, time_step, 4);
+    }
+    i2d_world_stop_recording(world);
+    i2d_world_destroy(world);
+    return out;
+}
+
+// Each record's checksum made to match what it now holds.
+void fix_records(Bytes& recording) {
+    std::size_t at = i2d::recording_header_size;
+    while (recording.size() - at >= i2d::record_header_size) {
+        const std::size_t payload = std::size_t(recording[at + 5]) | std::size_t(recording[at + 6]) << 8 |
+                                    std::size_t(recording[at + 7]) << 16 | std::size_t(recording[at + 8]) << 24;
+        if (payload > recording.size() - at - i2d::record_header_size) {
+            return;
+        }
+        const std::size_t end = at + i2d::record_header_size + payload;
+        const uint64_t sum = i2d::checksum64(recording.data() + at + 4, end - at - 4);
+        for (int i = 0; i < 4; ++i) {
+            recording[at + std::size_t(i)] = (unsigned char)(sum >> (8 * i));
+        }
+        at = end;
+    }
+}
+
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, std::size_t size) {
@@ -130,7 +189,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, std::size_t size) {
     if (size == 0) {
         return 0;
     }
-    const int mode = data[0] % 3;
+    const int mode = data[0] % 4;
     if (mode == 0) {
         Bytes changed = snapshot;
         apply_patches(changed, data + 1, size - 1);
@@ -148,6 +207,21 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, std::size_t size) {
         apply_patches(state, data + 1, size - 1);
         restore_and_step(copy, state, true);
         i2d_world_destroy(copy);
+    } else if (mode == 3) {
+        static const Bytes recording = recorded_session(original);
+        Bytes changed = recording;
+        for (std::size_t k = 1; k + 4 <= size; k += 4) {
+            const std::size_t offset = (std::size_t(data[k]) << 16 | std::size_t(data[k + 1]) << 8 | data[k + 2]) %
+                                       (changed.size() - i2d::recording_header_size);
+            changed[i2d::recording_header_size + offset] = data[k + 3];
+        }
+        fix_records(changed);
+        const i2d_replay_id replay = i2d_replay_open(changed.data(), changed.size(), nullptr);
+        if (replay.bits != 0) {
+            i2d_replay_step(replay, 100);
+            i2d_replay_seek(replay, 2);
+            i2d_replay_close(replay);
+        }
     } else if (size - 1 >= i2d::snapshot_header_size) {
         Bytes raw(data + 1, data + size);
         std::memcpy(raw.data(), snapshot.data(), 16);  // the magic, version and kind of a snapshot
