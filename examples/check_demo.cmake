@@ -30,6 +30,13 @@ if(share LESS 95 OR share GREATER 105)
   message(FATAL_ERROR "the car rolls at ${share} % of its motors' w r (expected 95 to 105)")
 endif()
 
+# The world saved halfway, restored after the run and run to the end again, ends with the same
+# state hash (the demo prints DIFFERS, and exits 1, when it does not).
+if(NOT report MATCHES "snapshot: restored at step ([0-9]+) \\([0-9]+ bytes\\), hash after ([0-9]+) more steps matches \\(([0-9a-f]+)\\)")
+  message(FATAL_ERROR "the demo's report has no snapshot line saying the hashes match")
+endif()
+message(STATUS "snapshot restored at step ${CMAKE_MATCH_1}: the same hash ${CMAKE_MATCH_3} after ${CMAKE_MATCH_2} steps")
+
 if(NOT EXISTS ${SVG})
   message(FATAL_ERROR "the demo exited 0 but wrote no ${SVG}")
 endif()

@@ -28,7 +28,9 @@
  *   sliding and rolling over its hills (no seam catches them);
  * - a bullet fired at 300 m/s at a 2 cm wall: continuous collision stops it, where the same
  *   shot in a world without it (stepped beside, not drawn) passes through.
- * Each part prints what happened beside what closed-form physics predicts. */
+ * Each part prints what happened beside what closed-form physics predicts. Halfway through, the
+ * world is saved as a snapshot; after the run it is restored from it and run to the end again,
+ * and the state hash must come out the same. */
 
 /* clock_gettime and CLOCK_MONOTONIC are POSIX, not C99. */
 #define _POSIX_C_SOURCE 199309L
@@ -37,6 +39,7 @@
 
 #include "ragdoll.h" /* bench/ragdoll.c: the benchmark's ragdoll */
 
+#include <inttypes.h>
 #include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
@@ -49,6 +52,7 @@
 #define TIME_STEP (1.0f / 60.0f)
 #define SUBSTEPS 4
 #define STEP_COUNT 240 /* 4 s */
+#define SNAPSHOT_STEP (STEP_COUNT / 2) /* the step after which the world is saved */
 #define GRAVITY 10.0f  /* the default world's |g|, m/s^2 */
 #define PI 3.14159265f
 #define DEG (180.0f / PI)
@@ -197,6 +201,10 @@ typedef struct demo {
     float chain_box_max_vy;       /* the chain box's fastest vertical speed while on flat ground */
     float chain_box_start_x;
     double step_seconds;          /* wall time spent in i2d_world_step */
+    /* The snapshot saved after step SNAPSHOT_STEP, and the state hash at the end of the run. */
+    void* snapshot;
+    size_t snapshot_size;
+    uint64_t end_hash;
 } demo;
 
 /* ---- Checked calls ------------------------------------------------------------------ */
@@ -771,6 +779,18 @@ static void watch_joints(demo* d) {
     }
 }
 
+/* Saves the world as it is into d->snapshot (i2d_world_save_snapshot: everything it simulates). */
+static void save_snapshot(demo* d) {
+    d->snapshot_size = i2d_world_get_snapshot_size(d->world);
+    check_last("i2d_world_get_snapshot_size");
+    d->snapshot = malloc(d->snapshot_size);
+    if (d->snapshot == NULL) {
+        fprintf(stderr, "impulse2d_demo: out of memory for a %zu-byte snapshot\n", d->snapshot_size);
+        exit(EXIT_FAILURE);
+    }
+    check(i2d_world_save_snapshot(d->world, d->snapshot, d->snapshot_size, NULL), "i2d_world_save_snapshot");
+}
+
 static void run(demo* d) {
     int step, i;
     follow_rim(d);
@@ -789,8 +809,36 @@ static void run(demo* d) {
         watch_turning(d, step);
         watch_joints(d);
         d->bullet_max_x = fmaxf(d->bullet_max_x, position(d->bullet).x);
+        if (step == SNAPSHOT_STEP) {
+            save_snapshot(d);
+        }
     }
+    d->end_hash = i2d_world_get_state_hash(d->world);
+    check_last("i2d_world_get_state_hash");
     run_control_shot(d);
+}
+
+/* Brings the world back to the snapshot saved halfway and runs the second half again: a
+ * deterministic engine ends in the same state, bit for bit. Returns whether it did. */
+static int rerun_from_snapshot(demo* d) {
+    int step;
+    uint64_t hash;
+    check(i2d_world_restore_snapshot(d->world, d->snapshot, d->snapshot_size), "i2d_world_restore_snapshot");
+    for (step = SNAPSHOT_STEP + 1; step <= STEP_COUNT; ++step) {
+        check(i2d_world_step(d->world, TIME_STEP, SUBSTEPS), "i2d_world_step");
+    }
+    hash = i2d_world_get_state_hash(d->world);
+    check_last("i2d_world_get_state_hash");
+    free(d->snapshot);
+    d->snapshot = NULL;
+    if (hash != d->end_hash) {
+        printf("snapshot: restored at step %d, hash after %d more steps DIFFERS (%016" PRIx64 ", first run %016" PRIx64
+               ")\n", SNAPSHOT_STEP, STEP_COUNT - SNAPSHOT_STEP, hash, d->end_hash);
+        return 0;
+    }
+    printf("snapshot: restored at step %d (%zu bytes), hash after %d more steps matches (%016" PRIx64 ")\n",
+           SNAPSHOT_STEP, d->snapshot_size, STEP_COUNT - SNAPSHOT_STEP, hash);
+    return 1;
 }
 
 /* ---- Reporting -------------------------------------------------------------------------- */
@@ -1244,6 +1292,7 @@ static void write_svg(const demo* d, const char* path) {
 int main(int argc, char** argv) {
     /* Large (path arrays), so static rather than on the stack. */
     static demo d;
+    int same;
     const char* svg_path = argc > 1 ? argv[1] : "impulse2d_demo.svg";
     if (i2d_version() != (uint32_t)I2D_VERSION) {
         fprintf(stderr, "impulse2d_demo: built against impulse2d %d.%d.%d but loaded a different version\n",
@@ -1254,7 +1303,8 @@ int main(int argc, char** argv) {
     run(&d);
     report(&d);
     write_svg(&d, svg_path);
+    same = rerun_from_snapshot(&d);
     check(i2d_world_destroy(d.world), "i2d_world_destroy");
     printf("picture: %s\n", svg_path);
-    return EXIT_SUCCESS;
+    return same ? EXIT_SUCCESS : EXIT_FAILURE;
 }

@@ -18,12 +18,18 @@
  *  ball.set_linear_velocity({NAN, 0}, status);       // refused: status.message says why
  *  @endcode
  *
+ *  A World saves itself (snapshot.h): save_snapshot and World::from_snapshot or
+ *  restore_snapshot bring it back bit for bit, in any process; save_state and
+ *  restore_state roll it back within itself. Body::in, Shape::in and Joint::in find an
+ *  object of the saved world in the restored one.
+ *
  *  Nothing here is compiled into the library: the header uses only the C API, so it
  *  works with the shared and the static library alike. */
 #ifndef IMPULSE2D_HPP
 #define IMPULSE2D_HPP
 
 #include <cstddef>
+#include <cstdint>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -93,6 +99,7 @@ inline i2d_body_def body_def(i2d_body_type type, i2d_vec2 position = {0.0f, 0.0f
 }
 
 class Body;
+class World;
 
 /** A shape of a body: a value handle (copying copies the id). It does not own the shape. */
 class Shape {
@@ -107,6 +114,9 @@ public:
     void destroy() { i2d_shape_destroy(id_); detail::throw_if_failed(); }
     void destroy(Status& status) noexcept { i2d_shape_destroy(id_); detail::record(status); }
     inline Body body() const;
+    /** The shape of the same index and generation in world (one made from a snapshot that
+     *  held it); a null Shape when world has none. */
+    inline Shape in(const World& world) const;
     i2d_shape_type type() const { return checked(i2d_shape_get_type(id_)); }
     i2d_aabb aabb() const { return checked(i2d_shape_get_aabb(id_)); }
     float friction() const { return checked(i2d_shape_get_friction(id_)); }
@@ -143,6 +153,9 @@ public:
     /** Destroys the body and its shapes. */
     void destroy() { i2d_body_destroy(id_); detail::throw_if_failed(); }
     void destroy(Status& status) noexcept { i2d_body_destroy(id_); detail::record(status); }
+    /** The body of the same index and generation in world (one made from a snapshot that
+     *  held it, see i2d_body_in_world); a null Body when world has none. */
+    inline Body in(const World& world) const;
 
     i2d_body_type type() const { return checked(i2d_body_get_type(id_)); }
     i2d_vec2 position() const { return checked(i2d_body_get_position(id_)); }
@@ -257,6 +270,8 @@ public:
     /** Destroys the joint; its bodies wake and may collide again. */
     void destroy() { i2d_joint_destroy(id_); detail::throw_if_failed(); }
     void destroy(Status& status) noexcept { i2d_joint_destroy(id_); detail::record(status); }
+    /** As Body::in, for a joint. */
+    inline Joint in(const World& world) const;
 
     i2d_joint_type type() const { return get(i2d_joint_get_type); }
     Body body_a() const { return Body(get(i2d_joint_get_body_a)); }
@@ -340,6 +355,47 @@ public:
     i2d_world_counters counters() const { return checked(i2d_world_get_counters(id_)); }
     uint64_t state_hash() const { return checked(i2d_world_get_state_hash(id_)); }
 
+    /** The world as a portable snapshot (see snapshot.h): everything it simulates, not the
+     *  host's wiring (worker_count, task callbacks, simd_path, enable_profile). */
+    std::vector<std::uint8_t> save_snapshot() const {
+        return save(i2d_world_get_snapshot_size, i2d_world_save_snapshot);
+    }
+    /** A new world from a snapshot, with runtime's host wiring (its simulation fields are
+     *  checked, not used: the snapshot's are). Throws Error(I2D_ERR_INVALID_SNAPSHOT) for
+     *  bytes it refuses. */
+    static World from_snapshot(const std::vector<std::uint8_t>& snapshot,
+                               const i2d_world_def& runtime = i2d_default_world_def()) {
+        const i2d_world_id id = i2d_world_create_from_snapshot(snapshot.data(), snapshot.size(), &runtime);
+        detail::throw_if_failed();
+        return World(id, Adopt{});
+    }
+    /** The non-throwing form: a null World when refused. */
+    static World from_snapshot(const std::vector<std::uint8_t>& snapshot, const i2d_world_def& runtime,
+                               Status& status) noexcept {
+        const i2d_world_id id = i2d_world_create_from_snapshot(snapshot.data(), snapshot.size(), &runtime);
+        detail::record(status);
+        return World(id, Adopt{});
+    }
+    /** Replaces the world's state with a snapshot's; the world keeps its id and wiring, ids
+     *  made after the save become stale. A refused snapshot leaves the world as it was. */
+    void restore_snapshot(const std::vector<std::uint8_t>& snapshot) {
+        i2d_world_restore_snapshot(id_, snapshot.data(), snapshot.size()); detail::throw_if_failed();
+    }
+    void restore_snapshot(const std::vector<std::uint8_t>& snapshot, Status& status) noexcept {
+        i2d_world_restore_snapshot(id_, snapshot.data(), snapshot.size()); detail::record(status);
+    }
+    /** A rollback state: what a step changes, for restore_state into this world while its
+     *  bodies, shapes, joints and settings stay as they are. Not portable. */
+    std::vector<std::uint8_t> save_state() const { return save(i2d_world_get_state_size, i2d_world_save_state); }
+    /** Brings the world back to a state saved from it. Another world's state, or one saved
+     *  before a structural change, is refused (I2D_ERR_INVALID_SNAPSHOT), the world unchanged. */
+    void restore_state(const std::vector<std::uint8_t>& state) {
+        i2d_world_restore_state(id_, state.data(), state.size()); detail::throw_if_failed();
+    }
+    void restore_state(const std::vector<std::uint8_t>& state, Status& status) noexcept {
+        i2d_world_restore_state(id_, state.data(), state.size()); detail::record(status);
+    }
+
     Body create_body(const i2d_body_def& def = i2d_default_body_def()) {
         const i2d_body_id id = i2d_body_create(id_, &def);
         detail::throw_if_failed();
@@ -414,10 +470,23 @@ public:
     i2d_body_events body_events() const { return checked(i2d_world_get_body_events(id_)); }
 
 private:
+    struct Adopt {};
+    World(i2d_world_id id, Adopt) noexcept : id_(id) {}
     template <class T>
     static T checked(T value) {
         detail::throw_if_failed();
         return value;
+    }
+    // A snapshot or a rollback state, sized by the library.
+    std::vector<std::uint8_t> save(std::size_t (*size_of)(i2d_world_id),
+                                   i2d_status (*save_into)(i2d_world_id, void*, std::size_t, std::size_t*)) const {
+        std::vector<std::uint8_t> bytes(size_of(id_));
+        detail::throw_if_failed();
+        std::size_t written = 0;
+        save_into(id_, bytes.data(), bytes.size(), &written);
+        detail::throw_if_failed();
+        bytes.resize(written);
+        return bytes;
     }
     // One create per kind, chosen by the def's type.
     static i2d_joint_id create_joint_id(i2d_world_id w, const i2d_revolute_joint_def& d) noexcept {
@@ -460,6 +529,18 @@ private:
     }
     i2d_world_id id_{0};
 };
+
+inline Body Body::in(const World& world) const {
+    const i2d_body_id id = i2d_body_in_world(id_, world.id());
+    detail::throw_if_failed();
+    return Body(id);
+}
+inline Shape Shape::in(const World& world) const { return Shape(checked(i2d_shape_in_world(id_, world.id()))); }
+inline Joint Joint::in(const World& world) const {
+    const i2d_joint_id id = i2d_joint_in_world(id_, world.id());
+    detail::throw_if_failed();
+    return Joint(id);
+}
 
 }  // namespace impulse2d
 

@@ -15,9 +15,13 @@
 Objects: World (owns everything; a context manager), Body, Shape and Joint (value
 handles; World.create_joint joins two bodies).
 Errors come back as exceptions carrying the library's message: InvalidArgument,
-InvalidHandle, WorldLocked, CapacityError, OutOfMemory (all Impulse2DError).
+InvalidHandle, WorldLocked, CapacityError, OutOfMemory, InvalidSnapshot (all
+Impulse2DError).
 Bulk state (World.transforms, velocities, set_transforms, set_velocities) reads and
 writes many bodies per call through NumPy arrays.
+Snapshots (World.save_snapshot, from_snapshot, restore_snapshot) and rollback states
+(save_state, restore_state) bring a world back bit for bit; a World pickles and
+deep-copies through a snapshot.
 
 The native library is found through IMPULSE2D_LIBRARY, next to this package, in the
 source tree's build directories or where ``cmake --install`` put it; its struct layouts
@@ -32,6 +36,7 @@ from .errors import (
     Impulse2DError,
     InvalidArgument,
     InvalidHandle,
+    InvalidSnapshot,
     LayoutMismatch,
     LibraryError,
     OutOfMemory,
@@ -85,6 +90,7 @@ __all__ = [
     "WorldLocked",
     "CapacityError",
     "OutOfMemory",
+    "InvalidSnapshot",
     "LibraryError",
     "LayoutMismatch",
     "ENVIRONMENT_VARIABLE",

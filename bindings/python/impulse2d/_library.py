@@ -73,6 +73,18 @@ def signatures(S: _structs.Structs) -> Dict[str, Tuple[Any, List[Any]]]:
         "i2d_world_get_body_velocities": (_STATUS, [_ID, _PTR, C.c_int32, _PTR, _PTR]),
         "i2d_world_set_body_velocities": (_STATUS, [_ID, _PTR, C.c_int32, _PTR, _PTR]),
         "i2d_world_set_body_transforms": (_STATUS, [_ID, _PTR, C.c_int32, _PTR]),
+        "i2d_world_get_worker_count": (C.c_int32, [_ID]),
+        "i2d_simd_path_supported": (C.c_bool, [C.c_int32]),
+        # snapshots and rollback states (snapshot.h); buffers passed as addresses or bytes
+        "i2d_world_get_snapshot_size": (C.c_size_t, [_ID]),
+        "i2d_world_save_snapshot": (_STATUS, [_ID, _PTR, C.c_size_t, C.POINTER(C.c_size_t)]),
+        "i2d_world_restore_snapshot": (_STATUS, [_ID, _PTR, C.c_size_t]),
+        "i2d_world_create_from_snapshot": (_ID, [_PTR, C.c_size_t, C.POINTER(WorldDef)]),
+        "i2d_world_get_state_size": (C.c_size_t, [_ID]),
+        "i2d_world_save_state": (_STATUS, [_ID, _PTR, C.c_size_t, C.POINTER(C.c_size_t)]),
+        "i2d_world_restore_state": (_STATUS, [_ID, _PTR, C.c_size_t]),
+        "i2d_body_in_world": (_ID, [_ID, _ID]),
+        "i2d_shape_in_world": (_ID, [_ID, _ID]),
         # bodies
         "i2d_body_create": (_ID, [_ID, C.POINTER(BodyDef)]),
         "i2d_body_destroy": (_STATUS, [_ID]),

@@ -2,7 +2,7 @@
 """Body: a value handle for a rigid body."""
 
 import ctypes as C
-from typing import TYPE_CHECKING, Any, Dict, List, Optional, Sequence
+from typing import TYPE_CHECKING, Any, Dict, List, Optional, Sequence, Tuple
 
 from ._native import apply_settings, check, check_last, lib, pair, rot, vec2
 from ._structs import Circle, Rot, Vec2
@@ -42,6 +42,14 @@ class Body:
 
     def __repr__(self) -> str:
         return "Body(0x%016x)" % self._id
+
+    def __copy__(self) -> "Body":
+        return self
+
+    def __reduce__(self) -> Tuple[Any, ...]:
+        # pickle and copy.deepcopy copy the world (once, however many of its bodies come
+        # along) and give the body of the same index and generation in the copy.
+        return (_body_in, (self._world, self._id))
 
     @property
     def is_valid(self) -> bool:
@@ -269,3 +277,9 @@ class Body:
         ids = (C.c_uint64 * max(count, 1))()
         lib.i2d_body_get_shapes(self._id, C.addressof(ids), count)
         return [Shape(self._world, ids[i]) for i in range(count)]
+
+
+def _body_in(world: "World", body_id: int) -> Body:
+    """Body.__reduce__'s way back: the body in (a copy of) its world, or an invalid Body
+    (id 0) when that world has none."""
+    return Body(world, lib.i2d_body_in_world(body_id, world.id))

@@ -46,6 +46,14 @@ class OutOfMemory(Impulse2DError, MemoryError):
     status = 5
 
 
+class InvalidSnapshot(Impulse2DError, ValueError):
+    """I2D_ERR_INVALID_SNAPSHOT: bytes that are not a snapshot or rollback state this world
+    can take (truncated, corrupted, of a newer format, another world's state, or a state
+    saved before the world's bodies, shapes or joints changed). The world is unchanged."""
+
+    status = 7
+
+
 class LibraryError(ImportError):
     """The native library could not be found or loaded, or it does not describe its
     structs, or it does not match this package (LayoutMismatch)."""
@@ -59,7 +67,8 @@ class LayoutMismatch(LibraryError):
 
 
 STATUS_ERRORS: Dict[int, Type[Impulse2DError]] = {
-    cls.status: cls for cls in (InvalidArgument, InvalidHandle, WorldLocked, CapacityError, OutOfMemory)
+    cls.status: cls
+    for cls in (InvalidArgument, InvalidHandle, WorldLocked, CapacityError, OutOfMemory, InvalidSnapshot)
 }
 
 

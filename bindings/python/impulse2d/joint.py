@@ -38,6 +38,7 @@ def _declare() -> Dict[str, Dict[str, Any]]:
         "i2d_joint_wake_bodies": (_STATUS, [_ID]),
         "i2d_world_get_joint_events": (JointEvents, [_ID]),
         "i2d_world_get_joint_count": (C.c_int32, [_ID]),
+        "i2d_joint_in_world": (_ID, [_ID, _ID]),
     }
     for field in _BASE_SETTINGS:
         ctype = Vec2 if field.startswith("local_anchor") else C.c_bool if field == "collide_connected" else C.c_float
@@ -106,6 +107,13 @@ class Joint:
     def __repr__(self) -> str:
         return "Joint(0x%016x)" % self._id
 
+    def __copy__(self) -> "Joint":
+        return self
+
+    def __reduce__(self) -> Tuple[Any, ...]:
+        # As Body's: the joint of the same index and generation in the copied world.
+        return (_joint_in, (self._world, self._id))
+
     @property
     def is_valid(self) -> bool:
         """False once the joint, one of its bodies or its world was destroyed."""
@@ -171,6 +179,11 @@ class Joint:
         if fn.argtypes[1] is Vec2:
             value = vec2(value)
         check(fn(self._id, value))
+
+
+def _joint_in(world: "World", joint_id: int) -> Joint:
+    """Joint.__reduce__'s way back, as body._body_in."""
+    return Joint(world, lib.i2d_joint_in_world(joint_id, world.id))
 
 
 def joint_events(world: "World") -> Sequence[Joint]:

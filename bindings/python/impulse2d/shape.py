@@ -1,7 +1,7 @@
 # SPDX-License-Identifier: MIT
 """Shape: a value handle for a shape attached to a body."""
 
-from typing import TYPE_CHECKING, List, Tuple, Union
+from typing import TYPE_CHECKING, Any, List, Tuple, Union
 
 from ._native import check, check_last, lib, make_filter, pair
 from ._structs import Filter
@@ -41,6 +41,13 @@ class Shape:
 
     def __repr__(self) -> str:
         return "Shape(0x%016x)" % self._id
+
+    def __copy__(self) -> "Shape":
+        return self
+
+    def __reduce__(self) -> Tuple[Any, ...]:
+        # As Body's: the shape of the same index and generation in the copied world.
+        return (_shape_in, (self._world, self._id))
 
     @property
     def is_valid(self) -> bool:
@@ -133,3 +140,8 @@ class Shape:
         value = lib.i2d_shape_is_sensor(self._id)
         check_last()
         return bool(value)
+
+
+def _shape_in(world: "World", shape_id: int) -> Shape:
+    """Shape.__reduce__'s way back, as body._body_in."""
+    return Shape(world, lib.i2d_shape_in_world(shape_id, world.id))

@@ -9,6 +9,7 @@ from ._structs import AABB, QueryFilter
 from ._library import _OVERLAP_FN
 from . import joint as _joint
 from .body import Body
+from .errors import InvalidHandle
 from .joint import Joint
 from .shape import Shape
 from .types import (
@@ -44,6 +45,30 @@ def _query_filter(category_bits: int, mask_bits: int) -> QueryFilter:
 
 _ALL_BITS = 0xFFFFFFFFFFFFFFFF
 
+# The world def's fields that wire a world to its host rather than describe what it
+# simulates: a snapshot does not hold them, so a world made from one takes them anew.
+_RUNTIME_SETTINGS = ("worker_count", "simd_path", "enable_profile")
+
+Bytes = Union[bytes, bytearray, memoryview]
+
+
+def _as_bytes(data: Bytes, function: str, saved_by: str) -> bytes:
+    if isinstance(data, bytes):
+        return data
+    if isinstance(data, (bytearray, memoryview)):
+        return bytes(data)
+    raise TypeError("World.%s takes bytes (as World.%s returns), not %s" % (function, saved_by, type(data).__name__))
+
+
+def _unpickle(snapshot: bytes, runtime: Dict[str, Any]) -> "World":
+    """A World from World.__reduce__'s snapshot and host wiring. A SIMD path the saving
+    machine asked for and this one lacks is left to the library's choice: every path
+    computes the same bits."""
+    runtime = dict(runtime)
+    if "simd_path" in runtime and not lib.i2d_simd_path_supported(runtime["simd_path"]):
+        del runtime["simd_path"]
+    return World.from_snapshot(snapshot, **runtime)
+
 
 class World:
     """A simulated world. Use it as a context manager, or call destroy(); a World that
@@ -57,17 +82,23 @@ class World:
     Settings are the C world def's fields (include/impulse2d/types.h), e.g.
     contact_hertz, restitution_threshold, enable_sleep, time_to_sleep, and worker_count
     (threads that share each step; the results are the same bits for every count).
+
+    A world saves itself as bytes and comes back from them, bit for bit: save_snapshot,
+    from_snapshot and restore_snapshot (portable, between processes and machines), and
+    save_state and restore_state (rollback within this world). pickle and copy.deepcopy
+    go through a snapshot, so a world moves to another process with multiprocessing.
     """
 
     def __init__(self, gravity: Sequence[float] = (0.0, -10.0), **settings: Any) -> None:
         self._id = 0
+        self._user_data: Dict[int, Any] = {}
+        self._runtime = {name: settings[name] for name in _RUNTIME_SETTINGS if name in settings}
         world_def = lib.i2d_default_world_def()
         apply_settings(world_def, dict(settings, gravity=gravity), "world")
         world_id = lib.i2d_world_create(C.byref(world_def))
         if not world_id:
             check_last()
         self._id = world_id
-        self._user_data: Dict[int, Any] = {}
 
     # ---- Lifetime ----------------------------------------------------------------------
 
@@ -130,6 +161,115 @@ class World:
         h = lib.i2d_world_get_state_hash(self._id)
         check_last()
         return h
+
+    # ---- Snapshots and rollback states (include/impulse2d/snapshot.h) ---------------------
+
+    def _save(self, size_of: Any, save: Any) -> bytes:
+        size = size_of(self._id)
+        if not size:
+            check_last()
+        buffer = C.create_string_buffer(size)
+        written = C.c_size_t(0)
+        check(save(self._id, buffer, size, C.byref(written)))
+        return buffer.raw[: written.value]
+
+    def save_snapshot(self) -> bytes:
+        """The whole world as portable bytes: every body, shape, joint, contact and
+        setting, but not the host's wiring (worker_count, simd_path, enable_profile) nor
+        Python-side user data. A world restored from them steps on to the same bits as
+        this one, in this process or another, with any worker count."""
+        return self._save(lib.i2d_world_get_snapshot_size, lib.i2d_world_save_snapshot)
+
+    @classmethod
+    def from_snapshot(cls, data: Bytes, **runtime: Any) -> "World":
+        """A new world from save_snapshot's bytes. runtime is the host's wiring:
+        worker_count, simd_path, enable_profile (the defaults otherwise); what the world
+        simulates, gravity included, is the snapshot's. Ids keep their index and
+        generation: world.body(old_id) gives the body of an id saved with the snapshot.
+        Raises InvalidSnapshot, with the library's message, for bytes it refuses."""
+        unknown = sorted(set(runtime) - set(_RUNTIME_SETTINGS))
+        if unknown:
+            raise TypeError(
+                "World.from_snapshot takes the host's wiring only (%s), not %s: the snapshot holds "
+                "what the world simulates" % (", ".join(_RUNTIME_SETTINGS), ", ".join(unknown))
+            )
+        data = _as_bytes(data, "from_snapshot", "save_snapshot")
+        world_def = lib.i2d_default_world_def()
+        apply_settings(world_def, runtime, "world")
+        world_id = lib.i2d_world_create_from_snapshot(data, len(data), C.byref(world_def))
+        if not world_id:
+            check_last()
+        world = cls.__new__(cls)
+        world._id = world_id
+        world._user_data = {}
+        world._runtime = dict(runtime)
+        return world
+
+    def restore_snapshot(self, data: Bytes) -> None:
+        """Brings the world back to a snapshot (of this world or any other). The world keeps
+        its id and wiring; ids of what existed at the save are valid again, later ones are
+        stale (their user data is dropped). InvalidSnapshot, world unchanged, for bytes
+        the library refuses."""
+        data = _as_bytes(data, "restore_snapshot", "save_snapshot")
+        check(lib.i2d_world_restore_snapshot(self._id, data, len(data)))
+        self._user_data = {i: v for i, v in self._user_data.items() if lib.i2d_body_is_valid(i)}
+
+    def save_state(self) -> bytes:
+        """A rollback state: what a step changes (poses, velocities, contacts, sleep), for
+        restore_state into this world while its bodies, shapes, joints and settings stay
+        as they are. Smaller and faster than a snapshot; not portable."""
+        return self._save(lib.i2d_world_get_state_size, lib.i2d_world_save_state)
+
+    def restore_state(self, data: Bytes) -> None:
+        """Brings the world back to a state save_state took from it; stepping then gives
+        the same bits as stepping from the moment it was saved. InvalidSnapshot, world
+        unchanged, for another world's state, one saved before a body, shape, joint or
+        setting changed, or truncated or corrupted bytes."""
+        data = _as_bytes(data, "restore_state", "save_state")
+        check(lib.i2d_world_restore_state(self._id, data, len(data)))
+
+    def _runtime_of(self) -> Dict[str, Any]:
+        """The wiring a copy of this world gets: its worker count and what else it was
+        created with."""
+        workers = lib.i2d_world_get_worker_count(self._id)
+        if not workers:
+            check_last()
+        return dict(self._runtime, worker_count=workers)
+
+    def __reduce__(self) -> Tuple[Any, ...]:
+        # pickle and copy.deepcopy: a snapshot and the wiring, then the user data as state
+        # (after the world exists, so user data may hold the world's own bodies).
+        user_data = {i: v for i, v in self._user_data.items() if lib.i2d_body_is_valid(i)}
+        return (_unpickle, (self.save_snapshot(), self._runtime_of()), {"user_data": user_data})
+
+    def __setstate__(self, state: Dict[str, Any]) -> None:
+        for old_id, value in state.get("user_data", {}).items():
+            body_id = lib.i2d_body_in_world(old_id, self._id)
+            if body_id:
+                self._user_data[body_id] = value
+
+    def _in_world(self, function: Any, item: Any, cls: Any, kind: str) -> int:
+        old_id = item.id if isinstance(item, cls) else int(item)
+        new_id = function(old_id, self._id)
+        if not new_id:
+            check_last()
+            raise InvalidHandle("World.%s: %r has no %s with the index and generation of 0x%016x"
+                                % (kind, self, kind, old_id))
+        return new_id
+
+    def body(self, body: Union[Body, int]) -> Body:
+        """The Body of this world with the index and generation of body (a Body or an id),
+        for ids of the world a snapshot or pickle of this one came from
+        (i2d_body_in_world). InvalidHandle when this world has no such body."""
+        return Body(self, self._in_world(lib.i2d_body_in_world, body, Body, "body"))
+
+    def shape(self, shape: Union[Shape, int]) -> Shape:
+        """As body(), for a shape."""
+        return Shape(self, self._in_world(lib.i2d_shape_in_world, shape, Shape, "shape"))
+
+    def joint(self, joint: Union[Joint, int]) -> Joint:
+        """As body(), for a joint."""
+        return Joint(self, self._in_world(lib.i2d_joint_in_world, joint, Joint, "joint"))
 
     # ---- Bodies ----------------------------------------------------------------------------
 
