@@ -35,6 +35,313 @@ bool live(Call& call, bool is_live, const char* what) {
     return is_live || call.fail(I2D_ERR_INVALID_SNAPSHOT, "a record names a %s that does not exist", what);
 }
 
+// A record being applied: its arguments, and the replay's world with ids for its slots.
+struct Replayed {
+    Call& call;
+    World& world;
+    IdFields ids;
+    i2d_world_id world_id;
+    ByteReader& in;
+    LoadIo& io;
+
+    i2d_body_id body(int32_t i) const { return make_body_id(ids, i, generation_of(world.bodies(), i)); }
+    i2d_shape_id shape(int32_t i) const { return make_shape_id(ids, i, generation_of(world.shapes(), i)); }
+    i2d_joint_id joint(int32_t i) const { return make_joint_id(ids, i, generation_of(world.joints(), i)); }
+    i2d_chain_id chain(int32_t i) const { return make_chain_id(ids, i, generation_of(world.chains(), i)); }
+};
+
+// Bodies: made, destroyed, moved, pushed, woken and put to sleep.
+bool apply_body_call(const Replayed& r, RecordedOp op) {
+    Call& call = r.call;
+    World& world = r.world;
+    ByteReader& in = r.in;
+    LoadIo& io = r.io;
+    int32_t index = 0;
+    switch (op) {
+        case RecordedOp::create_body: {
+            BodyDef def;
+            body_def_fields(io, def);
+            if (!read_whole(in)) {
+                return malformed(call);
+            }
+            if (!valid_recorded_body_def(call, def)) {
+                return false;
+            }
+            return world.create_body(def) != null_index ||
+                   call.fail(I2D_ERR_CAPACITY, "the world holds the most bodies it can");
+        }
+        case RecordedOp::destroy_body:
+            io(index);
+            return read_whole(in) ? passed(i2d_body_destroy(r.body(index))) : malformed(call);
+        case RecordedOp::set_type: {
+            BodyType type = BodyType::static_body;
+            io(index), io(type);
+            return read_whole(in) ? passed(i2d_body_set_type(r.body(index), i2d_body_type(type))) : malformed(call);
+        }
+        case RecordedOp::set_transforms: {
+            const int32_t count = in.count(4 + 16, Pool<Body>::max_slots, "too many transforms");
+            std::vector<int32_t> bodies(std::size_t(count > 0 ? count : 0));
+            std::vector<Transform> transforms(bodies.size());
+            for (std::size_t k = 0; k < bodies.size(); ++k) {
+                io(bodies[k]), io(transforms[k]);
+            }
+            if (!read_whole(in)) {
+                return malformed(call);
+            }
+            for (std::size_t k = 0; k < bodies.size(); ++k) {
+                Rot unused;
+                if (!live(call, world.bodies().is_live(bodies[k]), "body") ||
+                    !call.coordinate(to_public(transforms[k].p), "transform") ||
+                    !normalized_rotation(call, to_public(transforms[k].q), "transform", unused)) {
+                    return false;
+                }
+            }
+            world.set_transforms(bodies.data(), transforms.data(), count);
+            return true;
+        }
+        case RecordedOp::set_linear_velocity:
+        case RecordedOp::apply_force_to_center: {
+            Vec2 v;
+            bool wake = false;
+            io(index), io(v);
+            if (op == RecordedOp::apply_force_to_center) {
+                io(wake);
+            }
+            if (!read_whole(in)) {
+                return malformed(call);
+            }
+            if (!live(call, world.bodies().is_live(index), "body")) {
+                return false;
+            }
+            if (op == RecordedOp::set_linear_velocity) {
+                world.set_linear_velocity(index, v);
+            } else {
+                world.apply_force_to_center(index, v, wake);
+            }
+            return true;
+        }
+        case RecordedOp::set_angular_velocity:
+        case RecordedOp::apply_torque:
+        case RecordedOp::apply_angular_impulse: {
+            float value = 0.0f;
+            bool wake = false;
+            io(index), io(value);
+            if (op != RecordedOp::set_angular_velocity) {
+                io(wake);
+            }
+            if (!read_whole(in)) {
+                return malformed(call);
+            }
+            if (!live(call, world.bodies().is_live(index), "body")) {
+                return false;
+            }
+            if (op == RecordedOp::set_angular_velocity) {
+                world.set_angular_velocity(index, value);
+            } else if (op == RecordedOp::apply_torque) {
+                world.apply_torque(index, value, wake);
+            } else {
+                world.apply_angular_impulse(index, value, wake);
+            }
+            return true;
+        }
+        case RecordedOp::apply_force:
+        case RecordedOp::apply_linear_impulse: {
+            Vec2 value, point;
+            bool wake = false;
+            io(index), io(value), io(point), io(wake);
+            if (!read_whole(in)) {
+                return malformed(call);
+            }
+            if (!live(call, world.bodies().is_live(index), "body") || !call.coordinate(to_public(point), "point")) {
+                return false;
+            }
+            if (op == RecordedOp::apply_force) {
+                world.apply_force(index, value, point, wake);
+            } else {
+                world.apply_linear_impulse(index, value, point, wake);
+            }
+            return true;
+        }
+        case RecordedOp::wake_body:
+        case RecordedOp::sleep_body:
+            io(index);
+            if (!read_whole(in)) {
+                return malformed(call);
+            }
+            if (!live(call, world.bodies().is_live(index), "body")) {
+                return false;
+            }
+            if (op == RecordedOp::wake_body) {
+                world.wake_body(index);
+            } else if (world.bodies()[index].type != BodyType::static_body) {
+                world.sleep_body(index);
+            } else {
+                return call.fail(I2D_ERR_INVALID_SNAPSHOT, "a record puts a static body to sleep");
+            }
+            return true;
+        case RecordedOp::wake_all:
+            if (!read_whole(in)) {
+                return malformed(call);
+            }
+            world.wake_all();
+            return true;
+        default:
+            return call.fail(I2D_ERR_INVALID_SNAPSHOT, "a record is of a kind this library does not know");
+    }
+}
+// Shapes and chains: made, destroyed, their materials and filters.
+bool apply_shape_call(const Replayed& r, RecordedOp op) {
+    Call& call = r.call;
+    World& world = r.world;
+    ByteReader& in = r.in;
+    LoadIo& io = r.io;
+    int32_t index = 0;
+    switch (op) {
+        case RecordedOp::create_shape: {
+            ShapeDef def;
+            Geometry geometry;
+            io(index);
+            shape_def_fields(io, def);
+            geometry_fields(io, geometry);
+            if (!read_whole(in)) {
+                return malformed(call);
+            }
+            if (!live(call, world.bodies().is_live(index), "body") || !valid_recorded_shape(call, def, geometry)) {
+                return false;
+            }
+            return world.create_shape(index, def, geometry) != null_index ||
+                   call.fail(I2D_ERR_CAPACITY, "the world holds the most shapes it can");
+        }
+        case RecordedOp::destroy_shape:
+            io(index);
+            return read_whole(in) ? passed(i2d_shape_destroy(r.shape(index))) : malformed(call);
+        case RecordedOp::set_friction:
+        case RecordedOp::set_restitution: {
+            float value = 0.0f;
+            io(index), io(value);
+            if (!read_whole(in)) {
+                return malformed(call);
+            }
+            return passed(op == RecordedOp::set_friction ? i2d_shape_set_friction(r.shape(index), value)
+                                                                : i2d_shape_set_restitution(r.shape(index), value));
+        }
+        case RecordedOp::set_filter: {
+            Filter filter;
+            io(index);
+            filter_fields(io, filter);
+            return read_whole(in) ? passed(i2d_shape_set_filter(r.shape(index), to_public(filter))) : malformed(call);
+        }
+        case RecordedOp::create_chain: {
+            RecordedChain recorded;
+            io(index);
+            load_chain_def(io, recorded, max_chain_points);
+            if (!read_whole(in)) {
+                return malformed(call);
+            }
+            std::vector<i2d_vec2> points(recorded.points.size());
+            for (std::size_t k = 0; k < points.size(); ++k) {
+                points[k] = to_public(recorded.points[k]);
+            }
+            std::vector<i2d_surface_material> materials(recorded.materials.size());
+            for (std::size_t k = 0; k < materials.size(); ++k) {
+                const SurfaceMaterial& m = recorded.materials[k];
+                materials[k] = {m.friction, m.restitution, m.rolling_resistance, m.tangent_speed};
+            }
+            i2d_chain_def def = i2d_default_chain_def();
+            def.points = points.data();
+            def.count = int32_t(points.size());
+            def.is_loop = recorded.def.is_loop;
+            def.materials = materials.data();
+            def.material_count = int32_t(materials.size());
+            def.filter = to_public(recorded.def.filter);
+            def.enable_sensor_events = recorded.def.enable_sensor_events;
+            def.user_data = recorded.def.user_data;
+            return !I2D_IS_NULL(i2d_chain_create(r.body(index), &def));
+        }
+        case RecordedOp::destroy_chain:
+            io(index);
+            return read_whole(in) ? passed(i2d_chain_destroy(r.chain(index))) : malformed(call);
+        default:
+            return call.fail(I2D_ERR_INVALID_SNAPSHOT, "a record is of a kind this library does not know");
+    }
+}
+// Joints: made, changed, destroyed.
+bool apply_joint_call(const Replayed& r, RecordedOp op) {
+    Call& call = r.call;
+    World& world = r.world;
+    ByteReader& in = r.in;
+    LoadIo& io = r.io;
+    int32_t index = 0;
+    switch (op) {
+        case RecordedOp::create_joint: {
+            JointDef def;
+            joint_def_fields(io, def);
+            if (!read_whole(in)) {
+                return malformed(call);
+            }
+            if (!valid_recorded_joint(call, world, def)) {
+                return false;
+            }
+            return world.create_joint(def) != null_index ||
+                   call.fail(I2D_ERR_CAPACITY, "the world holds the most joints it can");
+        }
+        case RecordedOp::destroy_joint:
+            io(index);
+            return read_whole(in) ? passed(i2d_joint_destroy(r.joint(index))) : malformed(call);
+        case RecordedOp::set_joint_def: {
+            JointDef def;
+            io(index);
+            joint_def_fields(io, def);
+            if (!read_whole(in)) {
+                return malformed(call);
+            }
+            if (!live(call, world.joints().is_live(index), "joint")) {
+                return false;
+            }
+            const JointDef& now = world.joints()[index].def;
+            if (def.type != now.type || def.body_a != now.body_a || def.body_b != now.body_b) {
+                return call.fail(I2D_ERR_INVALID_SNAPSHOT, "a record changes a joint's kind or bodies");
+            }
+            if (!valid_joint_values(call, def, index)) {
+                return false;
+            }
+            world.set_joint_def(index, def);
+            return true;
+        }
+        default:
+            return call.fail(I2D_ERR_INVALID_SNAPSHOT, "a record is of a kind this library does not know");
+    }
+}
+// User data of every kind, gravity, the static tree.
+bool apply_world_call(const Replayed& r, RecordedOp op) {
+    Call& call = r.call;
+    ByteReader& in = r.in;
+    LoadIo& io = r.io;
+    int32_t index = 0;
+    switch (op) {
+        case RecordedOp::set_body_user_data:
+        case RecordedOp::set_shape_user_data:
+        case RecordedOp::set_joint_user_data: {
+            void* user_data = nullptr;
+            io(index), io(user_data);
+            if (!read_whole(in)) {
+                return malformed(call);
+            }
+            return passed(op == RecordedOp::set_body_user_data    ? i2d_body_set_user_data(r.body(index), user_data)
+                          : op == RecordedOp::set_shape_user_data ? i2d_shape_set_user_data(r.shape(index), user_data)
+                                                                         : i2d_joint_set_user_data(r.joint(index), user_data));
+        }
+        case RecordedOp::set_gravity: {
+            Vec2 gravity;
+            io(gravity);
+            return read_whole(in) ? passed(i2d_world_set_gravity(r.world_id, to_public(gravity))) : malformed(call);
+        }
+        case RecordedOp::rebuild_static_tree:
+            return read_whole(in) ? passed(i2d_world_rebuild_static_tree(r.world_id)) : malformed(call);
+        default:
+            return call.fail(I2D_ERR_INVALID_SNAPSHOT, "a record is of a kind this library does not know");
+    }
+}
 }  // namespace
 
 std::unique_ptr<Replay> Replay::open(Call& call, const void* data, std::size_t size, const i2d_world_def* runtime) {
@@ -169,262 +476,30 @@ bool Replay::apply(Call& call, const Record& record) {
     if (!call.world(world_, w) || !call.unlocked(*w.world)) {
         return false;
     }
-    World& world = *w.world;
     ByteReader in(payload, record.payload_size);
     LoadIo io(in);
-    const auto body = [&](int32_t i) { return make_body_id(w.id, i, generation_of(world.bodies(), i)); };
-    const auto shape = [&](int32_t i) { return make_shape_id(w.id, i, generation_of(world.shapes(), i)); };
-    const auto joint = [&](int32_t i) { return make_joint_id(w.id, i, generation_of(world.joints(), i)); };
-    const auto chain = [&](int32_t i) { return make_chain_id(w.id, i, generation_of(world.chains(), i)); };
-    int32_t index = 0;
+    const Replayed r{call, *w.world, w.id, world_, in, io};
     switch (record.op) {
-        case RecordedOp::create_body: {
-            BodyDef def;
-            body_def_fields(io, def);
-            if (!read_whole(in)) {
-                return malformed(call);
-            }
-            if (!valid_recorded_body_def(call, def)) {
-                return false;
-            }
-            return world.create_body(def) != null_index ||
-                   call.fail(I2D_ERR_CAPACITY, "the world holds the most bodies it can");
-        }
-        case RecordedOp::destroy_body:
-            io(index);
-            return read_whole(in) ? passed(i2d_body_destroy(body(index))) : malformed(call);
-        case RecordedOp::set_type: {
-            BodyType type = BodyType::static_body;
-            io(index), io(type);
-            return read_whole(in) ? passed(i2d_body_set_type(body(index), i2d_body_type(type))) : malformed(call);
-        }
-        case RecordedOp::set_transforms: {
-            const int32_t count = in.count(4 + 16, Pool<Body>::max_slots, "too many transforms");
-            std::vector<int32_t> bodies(std::size_t(count > 0 ? count : 0));
-            std::vector<Transform> transforms(bodies.size());
-            for (std::size_t k = 0; k < bodies.size(); ++k) {
-                io(bodies[k]), io(transforms[k]);
-            }
-            if (!read_whole(in)) {
-                return malformed(call);
-            }
-            for (std::size_t k = 0; k < bodies.size(); ++k) {
-                Rot unused;
-                if (!live(call, world.bodies().is_live(bodies[k]), "body") ||
-                    !call.coordinate(to_public(transforms[k].p), "transform") ||
-                    !normalized_rotation(call, to_public(transforms[k].q), "transform", unused)) {
-                    return false;
-                }
-            }
-            world.set_transforms(bodies.data(), transforms.data(), count);
-            return true;
-        }
-        case RecordedOp::set_linear_velocity:
-        case RecordedOp::apply_force_to_center: {
-            Vec2 v;
-            bool wake = false;
-            io(index), io(v);
-            if (record.op == RecordedOp::apply_force_to_center) {
-                io(wake);
-            }
-            if (!read_whole(in)) {
-                return malformed(call);
-            }
-            if (!live(call, world.bodies().is_live(index), "body")) {
-                return false;
-            }
-            if (record.op == RecordedOp::set_linear_velocity) {
-                world.set_linear_velocity(index, v);
-            } else {
-                world.apply_force_to_center(index, v, wake);
-            }
-            return true;
-        }
-        case RecordedOp::set_angular_velocity:
-        case RecordedOp::apply_torque:
-        case RecordedOp::apply_angular_impulse: {
-            float value = 0.0f;
-            bool wake = false;
-            io(index), io(value);
-            if (record.op != RecordedOp::set_angular_velocity) {
-                io(wake);
-            }
-            if (!read_whole(in)) {
-                return malformed(call);
-            }
-            if (!live(call, world.bodies().is_live(index), "body")) {
-                return false;
-            }
-            if (record.op == RecordedOp::set_angular_velocity) {
-                world.set_angular_velocity(index, value);
-            } else if (record.op == RecordedOp::apply_torque) {
-                world.apply_torque(index, value, wake);
-            } else {
-                world.apply_angular_impulse(index, value, wake);
-            }
-            return true;
-        }
-        case RecordedOp::apply_force:
-        case RecordedOp::apply_linear_impulse: {
-            Vec2 value, point;
-            bool wake = false;
-            io(index), io(value), io(point), io(wake);
-            if (!read_whole(in)) {
-                return malformed(call);
-            }
-            if (!live(call, world.bodies().is_live(index), "body") || !call.coordinate(to_public(point), "point")) {
-                return false;
-            }
-            if (record.op == RecordedOp::apply_force) {
-                world.apply_force(index, value, point, wake);
-            } else {
-                world.apply_linear_impulse(index, value, point, wake);
-            }
-            return true;
-        }
+        case RecordedOp::create_shape:
+        case RecordedOp::destroy_shape:
+        case RecordedOp::set_friction:
+        case RecordedOp::set_restitution:
+        case RecordedOp::set_filter:
+        case RecordedOp::create_chain:
+        case RecordedOp::destroy_chain:
+            return apply_shape_call(r, record.op);
+        case RecordedOp::create_joint:
+        case RecordedOp::destroy_joint:
+        case RecordedOp::set_joint_def:
+            return apply_joint_call(r, record.op);
         case RecordedOp::set_body_user_data:
         case RecordedOp::set_shape_user_data:
-        case RecordedOp::set_joint_user_data: {
-            void* user_data = nullptr;
-            io(index), io(user_data);
-            if (!read_whole(in)) {
-                return malformed(call);
-            }
-            return passed(record.op == RecordedOp::set_body_user_data    ? i2d_body_set_user_data(body(index), user_data)
-                          : record.op == RecordedOp::set_shape_user_data ? i2d_shape_set_user_data(shape(index), user_data)
-                                                                         : i2d_joint_set_user_data(joint(index), user_data));
-        }
-        case RecordedOp::wake_body:
-        case RecordedOp::sleep_body:
-            io(index);
-            if (!read_whole(in)) {
-                return malformed(call);
-            }
-            if (!live(call, world.bodies().is_live(index), "body")) {
-                return false;
-            }
-            if (record.op == RecordedOp::wake_body) {
-                world.wake_body(index);
-            } else if (world.bodies()[index].type != BodyType::static_body) {
-                world.sleep_body(index);
-            } else {
-                return call.fail(I2D_ERR_INVALID_SNAPSHOT, "a record puts a static body to sleep");
-            }
-            return true;
-        case RecordedOp::wake_all:
-            if (!read_whole(in)) {
-                return malformed(call);
-            }
-            world.wake_all();
-            return true;
-        case RecordedOp::create_shape: {
-            ShapeDef def;
-            Geometry geometry;
-            io(index);
-            shape_def_fields(io, def);
-            geometry_fields(io, geometry);
-            if (!read_whole(in)) {
-                return malformed(call);
-            }
-            if (!live(call, world.bodies().is_live(index), "body") || !valid_recorded_shape(call, def, geometry)) {
-                return false;
-            }
-            return world.create_shape(index, def, geometry) != null_index ||
-                   call.fail(I2D_ERR_CAPACITY, "the world holds the most shapes it can");
-        }
-        case RecordedOp::destroy_shape:
-            io(index);
-            return read_whole(in) ? passed(i2d_shape_destroy(shape(index))) : malformed(call);
-        case RecordedOp::set_friction:
-        case RecordedOp::set_restitution: {
-            float value = 0.0f;
-            io(index), io(value);
-            if (!read_whole(in)) {
-                return malformed(call);
-            }
-            return passed(record.op == RecordedOp::set_friction ? i2d_shape_set_friction(shape(index), value)
-                                                                : i2d_shape_set_restitution(shape(index), value));
-        }
-        case RecordedOp::set_filter: {
-            Filter filter;
-            io(index);
-            filter_fields(io, filter);
-            return read_whole(in) ? passed(i2d_shape_set_filter(shape(index), to_public(filter))) : malformed(call);
-        }
-        case RecordedOp::create_chain: {
-            RecordedChain recorded;
-            io(index);
-            load_chain_def(io, recorded, max_chain_points);
-            if (!read_whole(in)) {
-                return malformed(call);
-            }
-            std::vector<i2d_vec2> points(recorded.points.size());
-            for (std::size_t k = 0; k < points.size(); ++k) {
-                points[k] = to_public(recorded.points[k]);
-            }
-            std::vector<i2d_surface_material> materials(recorded.materials.size());
-            for (std::size_t k = 0; k < materials.size(); ++k) {
-                const SurfaceMaterial& m = recorded.materials[k];
-                materials[k] = {m.friction, m.restitution, m.rolling_resistance, m.tangent_speed};
-            }
-            i2d_chain_def def = i2d_default_chain_def();
-            def.points = points.data();
-            def.count = int32_t(points.size());
-            def.is_loop = recorded.def.is_loop;
-            def.materials = materials.data();
-            def.material_count = int32_t(materials.size());
-            def.filter = to_public(recorded.def.filter);
-            def.enable_sensor_events = recorded.def.enable_sensor_events;
-            def.user_data = recorded.def.user_data;
-            return !I2D_IS_NULL(i2d_chain_create(body(index), &def));
-        }
-        case RecordedOp::destroy_chain:
-            io(index);
-            return read_whole(in) ? passed(i2d_chain_destroy(chain(index))) : malformed(call);
-        case RecordedOp::create_joint: {
-            JointDef def;
-            joint_def_fields(io, def);
-            if (!read_whole(in)) {
-                return malformed(call);
-            }
-            if (!valid_recorded_joint(call, world, def)) {
-                return false;
-            }
-            return world.create_joint(def) != null_index ||
-                   call.fail(I2D_ERR_CAPACITY, "the world holds the most joints it can");
-        }
-        case RecordedOp::destroy_joint:
-            io(index);
-            return read_whole(in) ? passed(i2d_joint_destroy(joint(index))) : malformed(call);
-        case RecordedOp::set_joint_def: {
-            JointDef def;
-            io(index);
-            joint_def_fields(io, def);
-            if (!read_whole(in)) {
-                return malformed(call);
-            }
-            if (!live(call, world.joints().is_live(index), "joint")) {
-                return false;
-            }
-            const JointDef& now = world.joints()[index].def;
-            if (def.type != now.type || def.body_a != now.body_a || def.body_b != now.body_b) {
-                return call.fail(I2D_ERR_INVALID_SNAPSHOT, "a record changes a joint's kind or bodies");
-            }
-            if (!valid_joint_values(call, def, index)) {
-                return false;
-            }
-            world.set_joint_def(index, def);
-            return true;
-        }
-        case RecordedOp::set_gravity: {
-            Vec2 gravity;
-            io(gravity);
-            return read_whole(in) ? passed(i2d_world_set_gravity(world_, to_public(gravity))) : malformed(call);
-        }
+        case RecordedOp::set_joint_user_data:
+        case RecordedOp::set_gravity:
         case RecordedOp::rebuild_static_tree:
-            return read_whole(in) ? passed(i2d_world_rebuild_static_tree(world_)) : malformed(call);
+            return apply_world_call(r, record.op);
         default:
-            return call.fail(I2D_ERR_INVALID_SNAPSHOT, "a record is of a kind this library does not know");
+            return apply_body_call(r, record.op);
     }
 }
 
