@@ -189,6 +189,7 @@ bool apply_body_call(const Replayed& r, RecordedOp op) {
             return call.fail(I2D_ERR_INVALID_SNAPSHOT, "a record is of a kind this library does not know");
     }
 }
+
 // Shapes and chains: made, destroyed, their materials and filters.
 bool apply_shape_call(const Replayed& r, RecordedOp op) {
     Call& call = r.call;
@@ -265,6 +266,7 @@ bool apply_shape_call(const Replayed& r, RecordedOp op) {
             return call.fail(I2D_ERR_INVALID_SNAPSHOT, "a record is of a kind this library does not know");
     }
 }
+
 // Joints: made, changed, destroyed.
 bool apply_joint_call(const Replayed& r, RecordedOp op) {
     Call& call = r.call;
@@ -312,6 +314,7 @@ bool apply_joint_call(const Replayed& r, RecordedOp op) {
             return call.fail(I2D_ERR_INVALID_SNAPSHOT, "a record is of a kind this library does not know");
     }
 }
+
 // User data of every kind, gravity, the static tree.
 bool apply_world_call(const Replayed& r, RecordedOp op) {
     Call& call = r.call;
