@@ -2,7 +2,8 @@
 // SPDX-License-Identifier: MIT
 // Opens the scene page in headless Chromium and checks it: every scene runs a few
 // seconds live, its state read back from the page (bodies moved, the pyramid standing,
-// nothing escaping), the buttons and pointer dragging work, no error reaches the
+// nothing escaping), the buttons and pointer dragging work, holding R or the rewind
+// button takes the world back to an earlier frame's state hash, no error reaches the
 // console, and a screenshot per scene is saved (its canvas checked not blank).
 // Drives Chromium through the DevTools protocol over a pipe: no packages needed.
 //   node examples/web/browser_test.mjs [output-dir]     (exit 77: skipped, says why)
@@ -190,6 +191,66 @@ try {
   expect(after.y - before.y > 2, `the dragged body rose ${(after.y - before.y).toFixed(2)} m toward the pointer`);
   expect(!(await evaluate('impulse2dPage.isHolding()')), 'releasing lets go');
   expect((await evaluate('impulse2dPage.state()')).jointCount === 0, 'releasing destroys the mouse joint');
+  // Letting go changed the world's structure: the rewind keeps only what came after, and
+  // holding R now goes back through that without a refusal (which would reach the console).
+  await page('Input.dispatchKeyEvent', { type: 'keyDown', key: 'r', code: 'KeyR', windowsVirtualKeyCode: 82 });
+  await wait(200);
+  await page('Input.dispatchKeyEvent', { type: 'keyUp', key: 'r', code: 'KeyR', windowsVirtualKeyCode: 82 });
+
+  // Rewind: the page keeps a rollback state per frame. Paused, 90 steps are run one at a
+  // time, each step's hash noted; holding R, then the rewind button, takes the world back
+  // to the very state (the same hash) of an earlier step; playing on from there goes
+  // through the same states again; running again resumes stepping.
+  await evaluate("impulse2dPage.loadScene('mixed')");
+  await evaluate("document.getElementById('pause').click()");
+  const hashAt = new Map();
+  const note = async () => {
+    const { steps } = await evaluate('impulse2dPage.state()');
+    hashAt.set(steps, await evaluate('impulse2dPage.hash()'));
+    return steps;
+  };
+  const first = await note();
+  for (let i = 0; i < 90; i++) {
+    await evaluate('impulse2dPage.runSteps(1)');
+    await note();
+  }
+  const last = first + 90;
+  // Holds until the page has gone back at least 10 frames from `from` (animation frames
+  // may come slowly on a loaded machine), at most 10 s.
+  const holdUntilBack = async (from) => {
+    const until = Date.now() + 10000;
+    while ((await evaluate('impulse2dPage.state()')).steps > from - 10 && Date.now() < until) await wait(30);
+  };
+  let rewind = await evaluate('impulse2dPage.state()');
+  expect(rewind.steps === last && rewind.rewindFrames >= 90 && rewind.rewindBytes > 0,
+         `rewind keeps a state per frame (${rewind.rewindFrames} frames, ${rewind.rewindBytes} bytes)`);
+  const readout = await evaluate('impulse2dPage.readout()');
+  expect(/rewind \d+\.\d s \(\d+ frames, \d+\.\d MiB\)/.test(readout), `the readout shows the buffer: ${readout}`);
+  await page('Input.dispatchKeyEvent', { type: 'keyDown', key: 'r', code: 'KeyR', windowsVirtualKeyCode: 82 });
+  expect((await evaluate('impulse2dPage.state()')).rewinding, 'holding R rewinds');
+  await holdUntilBack(last);
+  await page('Input.dispatchKeyEvent', { type: 'keyUp', key: 'r', code: 'KeyR', windowsVirtualKeyCode: 82 });
+  rewind = await evaluate('impulse2dPage.state()');
+  let hash = await evaluate('impulse2dPage.hash()');
+  expect(!rewind.rewinding && rewind.steps < last && rewind.steps >= first && hash === hashAt.get(rewind.steps),
+         `holding R went back ${last - rewind.steps} frames to step ${rewind.steps}, its hash ${hash}`);
+  const byKey = rewind.steps;
+  const button = await evaluate(`(() => { const r = document.getElementById('rewind').getBoundingClientRect();
+                                          return { x: r.left + r.width / 2, y: r.top + r.height / 2 }; })()`);
+  await mouse('mousePressed', button.x, button.y);
+  await holdUntilBack(byKey);
+  await mouse('mouseReleased', button.x, button.y);
+  rewind = await evaluate('impulse2dPage.state()');
+  hash = await evaluate('impulse2dPage.hash()');
+  expect(!rewind.rewinding && rewind.steps < byKey && rewind.steps >= first && hash === hashAt.get(rewind.steps),
+         `holding the button went back ${byKey - rewind.steps} more frames to step ${rewind.steps}, its hash ${hash}`);
+  await evaluate('impulse2dPage.runSteps(5)');
+  const replayed = await evaluate('impulse2dPage.state()');
+  expect(await evaluate('impulse2dPage.hash()') === hashAt.get(replayed.steps),
+         `playing on from there gives step ${replayed.steps}'s hash again`);
+  await evaluate("document.getElementById('pause').click()");
+  await wait(300);
+  expect((await evaluate('impulse2dPage.state()')).steps > replayed.steps, 'running again resumes stepping');
 
   expect(consoleErrors.length === 0, `no console errors${consoleErrors.length ? ': ' + consoleErrors.join('; ') : ''}`);
 } catch (error) {

@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: MIT
-// The scene page: runs a scene live, one world step per animation frame, and exposes
-// window.impulse2dPage for the browser test (scene choice, stepping, state read-back).
+// The scene page: runs a scene live, one world step per animation frame, rewinds while
+// the rewind button or R (or Backspace) is held, and exposes window.impulse2dPage for the
+// browser test (scene choice, stepping, state read-back).
 import { loadImpulse2d } from '../../bindings/js/src/index.js';
+import { Rewind } from './rewind.js';
 import { SCENES } from './scenes.js';
 import { Camera, draw } from './renderer.js';
 
@@ -16,6 +18,11 @@ const SUBSTEPS = 4;
 const DRAG_HERTZ = 5;
 const DRAG_DAMPING_RATIO = 0.7;
 const DRAG_MAX_ACCELERATION = 500;  // m/s^2: the joint's max force over the body's mass
+// Rewind keeps a rollback state per frame: 5 s at 60 Hz, within 96 MiB (a state of the
+// 900-box tumbler is about 0.9 MB, so it keeps under 2 s of it; the pyramid's and the
+// mixed scene's, about 0.2 MB, keep the 5 s).
+const REWIND_FRAMES = 5 * 60;
+const REWIND_BYTES = 96 * 1024 * 1024;
 
 const i2d = await loadImpulse2d();
 const canvas = document.getElementById('view');
@@ -24,10 +31,12 @@ const camera = new Camera(canvas);
 const picker = document.getElementById('scene');
 const readout = document.getElementById('readout');
 const pauseButton = document.getElementById('pause');
+const rewindButton = document.getElementById('rewind');
 
 const state = {
   name: null, world: null, scene: null, transforms: new Float32Array(0), starts: null,
   paused: false, steps: 0, stepMs: [], held: null, drag: null, dragAnchor: null,
+  rewind: new Rewind(REWIND_FRAMES, REWIND_BYTES), rewinding: false,
 };
 
 for (const [name, scene] of Object.entries(SCENES)) picker.add(new Option(scene.title, name));
@@ -49,6 +58,7 @@ function loadScene(name) {
   }
   Object.assign(state, { name, world, scene, transforms, starts: transforms.slice(), steps: 0, stepMs: [],
                          held: null, drag: null, dragAnchor });
+  state.rewind.restart(world);
   picker.value = name;
   camera.setView(scene.view);
 }
@@ -65,6 +75,15 @@ function readMoves() {
   }
 }
 
+/** Reads every body's pose after a restore (a restore reports no moves). */
+function readAllBodies() {
+  for (const body of state.world.bodies) {
+    const t = body.transform();
+    state.transforms.set([t.x, t.y, t.c, t.s], 4 * body.index);
+    if (body.userData.type !== 'static') body.userData.asleep = !body.awake;
+  }
+}
+
 function step() {
   const start = performance.now();
   state.world.step(TIME_STEP, SUBSTEPS);
@@ -72,6 +91,19 @@ function step() {
   if (state.stepMs.length > 60) state.stepMs.shift();
   state.steps++;
   readMoves();
+  state.rewind.save(state.world);
+}
+
+/** One frame back, while a body is not held (holding one changes the world's structure). */
+function stepBack() {
+  if (state.drag || !state.rewind.back(state.world)) return;
+  state.steps--;
+  readAllBodies();
+}
+
+/** The world's structure changed: states saved before cannot be restored into it. */
+function structureChanged() {
+  state.rewind.restart(state.world);
 }
 
 function msPerStep() {
@@ -83,12 +115,16 @@ function render() {
   const drag = state.drag && { from: state.held.getWorldPoint(state.drag.localAnchorB), to: state.drag.target };
   draw(ctx, camera, state.world.bodies, state.transforms, state.held, drag);
   const counters = state.world.counters();
+  const rewind = state.rewind;
   readout.textContent = `${msPerStep().toFixed(2)} ms/step (median of 60) · ${counters.bodyCount} bodies · ` +
-    `${counters.contactCount} contacts · step ${state.steps}${state.paused ? ' · paused' : ''}`;
+    `${counters.contactCount} contacts · step ${state.steps}${state.paused ? ' · paused' : ''} · ` +
+    `${state.rewinding ? 'rewinding, ' : ''}rewind ${(rewind.frames * TIME_STEP).toFixed(1)} s ` +
+    `(${rewind.frames} frames, ${(rewind.bytes / (1024 * 1024)).toFixed(1)} MiB)`;
 }
 
 function frame() {
-  if (!state.paused) step();
+  if (state.rewinding) stepBack();
+  else if (!state.paused) step();
   render();
   requestAnimationFrame(frame);
 }
@@ -112,14 +148,21 @@ canvas.addEventListener('pointerdown', (event) => {
     maxForce: DRAG_MAX_ACCELERATION * body.mass,
   });
   state.held = body;
+  structureChanged();
   canvas.setPointerCapture(event.pointerId);
 });
 // Creating the joint woke the held body; setting its target keeps it awake.
-canvas.addEventListener('pointermove', (event) => { if (state.drag) state.drag.target = pointerWorld(event); });
+canvas.addEventListener('pointermove', (event) => {
+  if (!state.drag) return;
+  state.drag.target = pointerWorld(event);
+  structureChanged();
+});
 const release = () => {
-  if (state.drag) state.drag.destroy();
+  if (!state.drag) return;
+  state.drag.destroy();
   state.held = null;
   state.drag = null;
+  structureChanged();
 };
 canvas.addEventListener('pointerup', release);
 canvas.addEventListener('pointercancel', release);
@@ -131,6 +174,26 @@ pauseButton.addEventListener('click', () => {
 });
 document.getElementById('step').addEventListener('click', () => { step(); render(); });
 document.getElementById('reset').addEventListener('click', () => loadScene(state.name));
+// Rewind while held: the button, or R or Backspace. Letting go resumes from there.
+const rewindKeys = new Set(['r', 'R', 'Backspace']);
+const setRewinding = (on) => {
+  state.rewinding = on;
+  rewindButton.classList.toggle('held', on);
+};
+rewindButton.addEventListener('pointerdown', (event) => {
+  rewindButton.setPointerCapture(event.pointerId);
+  setRewinding(true);
+});
+for (const type of ['pointerup', 'pointercancel', 'lostpointercapture']) {
+  rewindButton.addEventListener(type, () => setRewinding(false));
+}
+window.addEventListener('keydown', (event) => {
+  if (!rewindKeys.has(event.key) || event.ctrlKey || event.metaKey || event.altKey) return;
+  event.preventDefault();
+  setRewinding(true);
+});
+window.addEventListener('keyup', (event) => { if (rewindKeys.has(event.key)) setRewinding(false); });
+window.addEventListener('blur', () => setRewinding(false));
 
 // What the browser test reads back.
 window.impulse2dPage = {
@@ -154,7 +217,8 @@ window.impulse2dPage = {
       maxMove = Math.max(maxMove, d);
     }
     return { scene: state.name, steps: state.steps, msPerStep: msPerStep(), bodyCount: counters.bodyCount,
-             jointCount: state.world.jointCount(), moved, maxMove,
+             jointCount: state.world.jointCount(), moved, maxMove, paused: state.paused,
+             rewindFrames: state.rewind.frames, rewindBytes: state.rewind.bytes, rewinding: state.rewinding,
              ...SCENES[state.name].check(state.world, state.scene, seconds) };
   },
   /** A dynamic body near the middle of the scene: {index, x, y} in canvas pixels. */
@@ -168,6 +232,9 @@ window.impulse2dPage = {
     return { index: body.index, x: rect.left + px * rect.width / canvas.width, y: rect.top + py * rect.height / canvas.height };
   },
   bodyPosition(index) { return state.world.bodyByIndex[index].position; },
+  /** The world's state hash, 16 hex digits. */
+  hash() { return state.world.stateHash().toString(16).padStart(16, '0'); },
+  readout() { return readout.textContent; },
   isHolding() { return state.drag !== null && state.drag.isValid(); },
   /** Canvas pixels that differ from the background: a blank canvas has none. */
   paintedPixels() {

@@ -8,6 +8,8 @@ const STATUS_NAMES = [
   'I2D_ERR_WORLD_LOCKED',
   'I2D_ERR_CAPACITY',
   'I2D_ERR_OUT_OF_MEMORY',
+  'I2D_ERR_INTERNAL',
+  'I2D_ERR_INVALID_SNAPSHOT',
 ];
 
 export class Impulse2dError extends Error {

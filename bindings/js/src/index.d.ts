@@ -12,7 +12,7 @@ export type ShapeType = 'circle' | 'capsule' | 'segment' | 'polygon';
 export type JointType = 'distance' | 'filter' | 'motor' | 'mouse' | 'prismatic' | 'revolute' | 'weld' | 'wheel';
 export type StatusName =
   | 'I2D_ERR_INVALID_ARGUMENT' | 'I2D_ERR_INVALID_HANDLE' | 'I2D_ERR_WORLD_LOCKED'
-  | 'I2D_ERR_CAPACITY' | 'I2D_ERR_OUT_OF_MEMORY';
+  | 'I2D_ERR_CAPACITY' | 'I2D_ERR_OUT_OF_MEMORY' | 'I2D_ERR_INTERNAL' | 'I2D_ERR_INVALID_SNAPSHOT';
 
 /** Thrown for every call the library refuses; message is i2d_last_error_message(). */
 export class Impulse2dError extends Error {
@@ -358,7 +358,20 @@ export class BodyMoves {
   fellAsleep(i: number): boolean;
 }
 
+/** Snapshot or rollback-state bytes; a Node Buffer is a Uint8Array. */
+export type SnapshotBytes = Uint8Array | ArrayBuffer;
+
 export class World {
+  /**
+   * A new world from a snapshot's bytes: it steps on bit for bit as the saved world would,
+   * whichever build saved it (x86-64, AArch64, WebAssembly). For bytes takeSnapshot returned
+   * it gets new Body, Shape and Joint objects for what the saved world held (same indices,
+   * userData copied); for other bytes (a file, a copy, another process) it has none, since
+   * the C API cannot list a world's bodies: step it, hash it, snapshot it. Throws
+   * Impulse2dError I2D_ERR_INVALID_SNAPSHOT for a refused buffer. WebAssembly has no host
+   * wiring to choose (one thread, scalar kernels), so there are no options.
+   */
+  static fromSnapshot(impulse2d: Impulse2d, bytes: SnapshotBytes): World;
   readonly id: bigint;
   /** Live bodies by index (slot 0 is never used). */
   readonly bodyByIndex: (Body | undefined)[];
@@ -391,6 +404,21 @@ export class World {
   contactEvents(): { begin: [Shape, Shape][]; end: [Shape | bigint, Shape | bigint][] };
   overlapAABB(minX: number, minY: number, maxX: number, maxY: number): Shape[];
   castRayClosest(origin: Vec2Like, translation: Vec2Like): RayHit | null;
+  /** The whole world as portable bytes (include/impulse2d/snapshot.h), for restoreSnapshot,
+   *  World.fromSnapshot, a file or another machine. */
+  takeSnapshot(): Uint8Array;
+  /** Replaces the world's state with a snapshot's; the world keeps its id. What existed at
+   *  the save exists again (the same objects, for bytes this world's takeSnapshot returned),
+   *  what was made since is gone. A refused buffer throws I2D_ERR_INVALID_SNAPSHOT and
+   *  changes nothing. */
+  restoreSnapshot(bytes: SnapshotBytes): void;
+  /** A rollback state: what a step changes, for restoreState in this world only, while its
+   *  bodies, shapes, joints, joint settings and gravity stay as they are. */
+  saveState(): Uint8Array;
+  /** Back to a state saveState took from this world; stepping on gives the bits stepping
+   *  from then gave. Another world's state, one from before a structural change, and
+   *  truncated or corrupted bytes throw I2D_ERR_INVALID_SNAPSHOT and change nothing. */
+  restoreState(bytes: SnapshotBytes): void;
   destroy(): void;
 }
 
@@ -398,6 +426,8 @@ export class Impulse2d {
   /** (major << 16) | (minor << 8) | patch */
   readonly version: number;
   createWorld(options?: WorldOptions): World;
+  /** World.fromSnapshot(this, bytes). */
+  worldFromSnapshot(bytes: SnapshotBytes): World;
 }
 
 export function loadImpulse2d(options?: { wasmBinary?: ArrayBuffer | Uint8Array; wasmUrl?: string | URL }): Promise<Impulse2d>;

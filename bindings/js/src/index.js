@@ -41,5 +41,8 @@ export class Impulse2d {
   /** The library's version packed as (major << 16) | (minor << 8) | patch. */
   get version() { return this.rt.m._i2d_version(); }
 
-  createWorld(options) { return new World(this.rt, options); }
+  createWorld(options) { return World.create(this.rt, options); }
+
+  /** A new world from a snapshot's bytes: World.fromSnapshot(this, bytes). */
+  worldFromSnapshot(bytes) { return World.fromSnapshot(this, bytes); }
 }

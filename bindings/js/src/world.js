@@ -1,27 +1,90 @@
 // SPDX-License-Identifier: MIT
-// A world: stepping, bodies, joints, queries and events over an i2d_world_id.
+// A world: stepping, bodies, joints, queries, events and snapshots over an i2d_world_id.
 import { Body, BODY_TYPES } from './body.js';
 import { BodyMoves } from './body_moves.js';
 import { createJoint } from './joint.js';
+import { Shape } from './shape.js';
+import { rememberStructure, saveBytes, structureOf, withBytesInModule } from './snapshot.js';
 import { vx, vy } from './vectors.js';
 
 export class World {
-  /** @internal Made by Impulse2d.createWorld. */
-  constructor(rt, options = {}) {
+  /** @internal Made by Impulse2d.createWorld and World.fromSnapshot. */
+  constructor(rt, id) {
     this.rt = rt;
-    const def = rt.defBlock('world');
-    try {
-      writeWorldDef(rt, def, options);
-      this.id = rt.checkId(rt.m._i2d_world_create(def));
-    } finally {
-      rt.m._free(def);
-    }
+    this.id = id;
     /** Live bodies by index (the user data their move events carry); slot 0 unused. */
     this.bodyByIndex = [undefined];
     this.freeIndices = [];
     this.shapeById = new Map();
     /** Live joints by id, in creation order: what joint events are mapped back through. */
     this.jointById = new Map();
+  }
+
+  /** @internal A new world with the given options (Impulse2d.createWorld). */
+  static create(rt, options = {}) {
+    const def = rt.defBlock('world');
+    try {
+      writeWorldDef(rt, def, options);
+      return new World(rt, rt.checkId(rt.m._i2d_world_create(def)));
+    } finally {
+      rt.m._free(def);
+    }
+  }
+
+  /**
+   * A new world from a snapshot's bytes (i2d_world_create_from_snapshot): it steps on
+   * bit for bit as the saved world would. Bytes that takeSnapshot returned bring new
+   * Body, Shape and Joint objects for what the saved world held (same indices, userData
+   * copied); other bytes (a file, another process) leave the world without objects.
+   * WebAssembly has no host wiring to choose (one thread, scalar kernels), so there are
+   * no options. A refused buffer throws I2D_ERR_INVALID_SNAPSHOT with the library's message.
+   */
+  static fromSnapshot(impulse2d, bytes) {
+    const rt = impulse2d.rt;
+    const id = withBytesInModule(rt, bytes, (at, length) => rt.m._i2d_world_create_from_snapshot(at, length, 0));
+    const world = new World(rt, rt.checkId(id));
+    const structure = structureOf(bytes, rt);
+    if (structure !== undefined) world.adoptStructure(structure);
+    return world;
+  }
+
+  /** The world saved to portable bytes (i2d_world_save_snapshot), for restoreSnapshot,
+   *  World.fromSnapshot, a file or another machine. */
+  takeSnapshot() {
+    const bytes = saveBytes(this.rt, this.id, '_i2d_world_get_snapshot_size', '_i2d_world_save_snapshot');
+    rememberStructure(bytes, this);
+    return bytes;
+  }
+
+  /**
+   * Replaces the world's state with a snapshot's (i2d_world_restore_snapshot). The world
+   * keeps its id; what existed at the save exists again (the same objects, for bytes this
+   * world's takeSnapshot returned), what was made since is gone. A refused buffer throws
+   * I2D_ERR_INVALID_SNAPSHOT and leaves the world, and its objects, as they were.
+   */
+  restoreSnapshot(bytes) {
+    const rt = this.rt;
+    rt.check(withBytesInModule(rt, bytes, (at, length) => rt.m._i2d_world_restore_snapshot(this.id, at, length)));
+    const structure = structureOf(bytes, rt);
+    if (structure !== undefined) this.adoptStructure(structure);
+    else this.forgetStale();
+  }
+
+  /** A rollback state (i2d_world_save_state): what a step changes, for restoreState in
+   *  this world while its bodies, shapes and joints stay as they are. */
+  saveState() {
+    return saveBytes(this.rt, this.id, '_i2d_world_get_state_size', '_i2d_world_save_state');
+  }
+
+  /**
+   * Brings the world back to a state saveState took from it; stepping on gives the same
+   * bits as stepping from that moment did. Another world's state, one saved before a body,
+   * shape, joint (or joint setting) or gravity changed, or bytes that are truncated or
+   * corrupted, throw I2D_ERR_INVALID_SNAPSHOT and leave the world as it was.
+   */
+  restoreState(bytes) {
+    const rt = this.rt;
+    rt.check(withBytesInModule(rt, bytes, (at, length) => rt.m._i2d_world_restore_state(this.id, at, length)));
   }
 
   isValid() { return this.rt.m._i2d_world_is_valid(this.id) !== 0; }
@@ -231,6 +294,65 @@ export class World {
     const list = shape.body.shapes;
     list.splice(list.indexOf(shape), 1);
   }
+  /**
+   * @internal After a restore: the objects the world had when `structure` was recorded,
+   * this world's own or, for another world's record, new ones over the translated ids.
+   */
+  adoptStructure(structure) {
+    const rt = this.rt;
+    const own = structure.world === this;
+    // An id of the recorded world as an id of this one, if it names something here.
+    const translate = (kind, id) => {
+      const there = own ? id : rt.m[`_i2d_${kind}_in_world`](id, this.id);
+      return rt.m[`_i2d_${kind}_is_valid`](there) !== 0 ? there : undefined;
+    };
+    const bodyFor = new Map();
+    this.bodyByIndex = [undefined];
+    this.shapeById.clear();
+    this.jointById.clear();
+    for (const [old, shapes] of structure.bodies) {
+      const id = translate('body', old.id);
+      if (id === undefined) continue;
+      const body = own ? old : Object.assign(new Body(this, id, old.index), { userData: old.userData });
+      body.shapes.length = 0;
+      body.joints.length = 0;
+      for (const oldShape of shapes) {
+        const shapeId = translate('shape', oldShape.id);
+        if (shapeId === undefined) continue;
+        const shape = own ? oldShape : Object.assign(new Shape(body, shapeId), { userData: oldShape.userData });
+        body.shapes.push(shape);
+        this.shapeById.set(shape.id, shape);
+      }
+      this.bodyByIndex[body.index] = body;
+      bodyFor.set(old, body);
+    }
+    for (const old of structure.joints) {
+      const id = translate('joint', old.id);
+      const bodyA = bodyFor.get(old.bodyA), bodyB = bodyFor.get(old.bodyB);
+      if (id === undefined || bodyA === undefined || bodyB === undefined) continue;
+      const joint = own ? old : Object.assign(new old.constructor(this, id, bodyA, bodyB), { userData: old.userData });
+      this.jointById.set(joint.id, joint);
+      bodyA.joints.push(joint);
+      bodyB.joints.push(joint);
+    }
+    this.freeIndices = [];
+    for (let index = this.bodyByIndex.length - 1; index > 0; index--) {
+      if (this.bodyByIndex[index] === undefined) this.freeIndices.push(index);
+    }
+  }
+
+  /** @internal After a restore of bytes without a record: drops the objects made since the save. */
+  forgetStale() {
+    for (const joint of this.joints) if (!joint.isValid()) this.forgetJoint(joint);
+    for (const body of this.bodies) {
+      if (!body.isValid()) {
+        this.forgetBody(body);
+        continue;
+      }
+      for (const shape of [...body.shapes]) if (!shape.isValid()) this.forgetShape(shape);
+    }
+  }
+
   /** @internal The library destroyed the body's joints with it. */
   forgetBody(body) {
     for (const joint of [...body.joints]) this.forgetJoint(joint);
