@@ -110,28 +110,29 @@ bool mass_from_shapes(Call& call, const World& world, const Body& body, int32_t 
 
 bool valid_loaded_body(Call& call, const World& world, int32_t index) {
     const Body& b = world.bodies()[index];
-    Rot unused;
-    if (!call.coordinate(to_public(b.transform.p), FieldName("body", index, "position")) ||
-        !normalized_rotation(call, to_public(b.transform.q), FieldName("body", index, "rotation"), unused) ||
-        !call.coordinate(to_public(b.center), FieldName("body", index, "center")) ||
-        !call.coordinate(to_public(b.center0), FieldName("body", index, "center0")) ||
-        !normalized_rotation(call, to_public(b.rotation0), FieldName("body", index, "rotation0"), unused) ||
-        !call.in_range(b.linear_damping, 0.0f, FLT_MAX, FieldName("body", index, "linear_damping")) ||
-        !call.in_range(b.angular_damping, 0.0f, FLT_MAX, FieldName("body", index, "angular_damping")) ||
-        !call.in_range(b.sleep_time, 0.0f, FLT_MAX, FieldName("body", index, "sleep_time")) ||
-        !call.in_range(b.angular_velocity, -max_angular_speed, max_angular_speed,
-                       FieldName("body", index, "angular_velocity"))) {
-        return false;
-    }
-    const double speed = std::hypot(double(b.linear_velocity.x), double(b.linear_velocity.y));
-    if (!(speed <= double(world.settings().maximum_linear_speed) * (1.0 + loaded_speed_tolerance))) {
-        return call.fail(I2D_ERR_INVALID_ARGUMENT, "body %d: its speed %g m/s is above the world's maximum %g",
-                         static_cast<int>(index), speed, double(world.settings().maximum_linear_speed));
-    }
-    if (b.type == BodyType::static_body && !(b.linear_velocity == Vec2{} && b.angular_velocity == 0.0f)) {
-        return call.fail(I2D_ERR_INVALID_ARGUMENT, "body %d: it is static and moves", static_cast<int>(index));
-    }
-    return mass_from_shapes(call, world, b, index);
+    return checked_with_names("body", index, [&](auto name) {
+        Rot unused;
+        if (!call.coordinate(to_public(b.transform.p), name("position")) ||
+            !normalized_rotation(call, to_public(b.transform.q), name("rotation"), unused) ||
+            !call.coordinate(to_public(b.center), name("center")) ||
+            !call.coordinate(to_public(b.center0), name("center0")) ||
+            !normalized_rotation(call, to_public(b.rotation0), name("rotation0"), unused) ||
+            !call.in_range(b.linear_damping, 0.0f, FLT_MAX, name("linear_damping")) ||
+            !call.in_range(b.angular_damping, 0.0f, FLT_MAX, name("angular_damping")) ||
+            !call.in_range(b.sleep_time, 0.0f, FLT_MAX, name("sleep_time")) ||
+            !call.in_range(b.angular_velocity, -max_angular_speed, max_angular_speed, name("angular_velocity"))) {
+            return false;
+        }
+        const double speed = std::hypot(double(b.linear_velocity.x), double(b.linear_velocity.y));
+        if (!(speed <= double(world.settings().maximum_linear_speed) * (1.0 + loaded_speed_tolerance))) {
+            return call.fail(I2D_ERR_INVALID_ARGUMENT, "body %d: its speed %g m/s is above the world's maximum %g",
+                             static_cast<int>(index), speed, double(world.settings().maximum_linear_speed));
+        }
+        if (b.type == BodyType::static_body && !(b.linear_velocity == Vec2{} && b.angular_velocity == 0.0f)) {
+            return call.fail(I2D_ERR_INVALID_ARGUMENT, "body %d: it is static and moves", static_cast<int>(index));
+        }
+        return mass_from_shapes(call, world, b, index);
+    });
 }
 
 // As validate_body_def; velocities are finite as read, and the world limits them.

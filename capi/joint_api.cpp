@@ -108,7 +108,7 @@ I2D_JOINT_DEF_CHECK(filter, I2D_FILTER_FIELDS)
 // A loaded joint's settings: each field as its def's rule checks it and in the form the
 // rule stores it, then the cross-field checks.
 #define I2D_CHECK_LOADED_FIELD(kind, field, Rule)                                                          \
-    &&(joint_rules::Rule::check(call, joint_rules::Rule::out(core.kind.field), FieldName("joint", index, #field)) && \
+    &&(joint_rules::Rule::check(call, joint_rules::Rule::out(core.kind.field), name(#field)) &&              \
        (joint_rules::stored_form<joint_rules::Rule>(core.kind.field) ||                                    \
         call.fail(I2D_ERR_INVALID_ARGUMENT, "joint %d: " #field " is not as a joint stores it", int(index))))
 #define I2D_LOADED_SETTINGS_CHECK(kind, FIELDS)                                        \
@@ -118,7 +118,8 @@ I2D_JOINT_DEF_CHECK(filter, I2D_FILTER_FIELDS)
         }                                                                              \
         break;
 
-bool valid_loaded_settings(Call& call, const JointDef& core, int32_t index) {
+template <class Name>
+bool valid_loaded_settings(Call& call, const JointDef& core, int32_t index, Name name) {
     switch (core.type) {
         I2D_LOADED_SETTINGS_CHECK(revolute, I2D_REVOLUTE_FIELDS)
         I2D_LOADED_SETTINGS_CHECK(prismatic, I2D_PRISMATIC_FIELDS)
@@ -132,7 +133,7 @@ bool valid_loaded_settings(Call& call, const JointDef& core, int32_t index) {
         default:
             return call.fail(I2D_ERR_INVALID_ARGUMENT, "joint %d: its kind is unknown", int(index));
     }
-    return ordered_bounds(call, core, FieldName("joint", index, ""));
+    return ordered_bounds(call, core, name(""));
 }
 
 #undef I2D_LOADED_SETTINGS_CHECK
@@ -214,11 +215,13 @@ bool valid_joint_values(Call& call, const JointDef& core, int32_t index) {
     if (!angles_wound(core)) {
         return call.fail(I2D_ERR_INVALID_ARGUMENT, "joint %d: an angle is not wound into (-pi, pi]", int(index));
     }
-    return call.local_point(to_public(core.local_anchor_a), FieldName("joint", index, "local_anchor_a")) &&
-           call.local_point(to_public(core.local_anchor_b), FieldName("joint", index, "local_anchor_b")) &&
-           NonNegative::check(call, core.force_threshold, FieldName("joint", index, "force_threshold")) &&
-           NonNegative::check(call, core.torque_threshold, FieldName("joint", index, "torque_threshold")) &&
-           valid_loaded_settings(call, core, index);
+    return checked_with_names("joint", index, [&](auto name) {
+        return call.local_point(to_public(core.local_anchor_a), name("local_anchor_a")) &&
+               call.local_point(to_public(core.local_anchor_b), name("local_anchor_b")) &&
+               NonNegative::check(call, core.force_threshold, name("force_threshold")) &&
+               NonNegative::check(call, core.torque_threshold, name("torque_threshold")) &&
+               valid_loaded_settings(call, core, index, name);
+    });
 }
 
 }  // namespace i2d::capi

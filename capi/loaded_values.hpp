@@ -37,6 +37,16 @@ struct FieldName {
     operator const char*() const { return text; }
 };
 
+/// Runs check(name), where name(field) spells a field for the messages, with plain field
+/// names, then, only when it fails, once more with names that carry the object and its
+/// index, for the message: formatting a name for every field of every object cost more
+/// than the checks themselves.
+template <class Check>
+bool checked_with_names(const char* object, int32_t index, Check&& check) {
+    return check([](const char* field) { return field; }) ||
+           check([object, index](const char* field) { return FieldName(object, index, field); });
+}
+
 bool valid_loaded_body(Call& call, const World& world, int32_t body);
 bool valid_loaded_shape(Call& call, const World& world, int32_t shape);
 bool valid_loaded_joint(Call& call, const World& world, int32_t joint);

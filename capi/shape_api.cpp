@@ -21,20 +21,23 @@ struct Material {
     float density, friction, restitution, rolling_resistance, tangent_speed;
 };
 
-// `object` and `index` name the owner in messages (index < 0: none).
-bool valid_material(Call& call, const Material& m, const char* object, int32_t index) {
-    return call.in_range(m.density, 0.0f, max_density, FieldName(object, index, "density")) &&
-           call.in_range(m.friction, 0.0f, FLT_MAX, FieldName(object, index, "friction")) &&
-           call.in_range(m.restitution, 0.0f, max_restitution, FieldName(object, index, "restitution")) &&
-           call.in_range(m.rolling_resistance, 0.0f, max_setting, FieldName(object, index, "rolling_resistance")) &&
-           call.in_range(m.tangent_speed, -max_speed_limit, max_speed_limit, FieldName(object, index, "tangent_speed"));
+// name(field) spells each field in messages (loaded_values.hpp).
+template <class Name>
+bool valid_material(Call& call, const Material& m, Name name) {
+    return call.in_range(m.density, 0.0f, max_density, name("density")) &&
+           call.in_range(m.friction, 0.0f, FLT_MAX, name("friction")) &&
+           call.in_range(m.restitution, 0.0f, max_restitution, name("restitution")) &&
+           call.in_range(m.rolling_resistance, 0.0f, max_setting, name("rolling_resistance")) &&
+           call.in_range(m.tangent_speed, -max_speed_limit, max_speed_limit, name("tangent_speed"));
 }
+
+FieldName shape_def_field(const char* field) { return FieldName("shape def", -1, field); }
 
 bool validate_shape_def(Call& call, const i2d_shape_def* def) {
     return call.not_null(def, "shape def") && call.cookie(def->internal_cookie, "shape_def") &&
            valid_material(call,
                           {def->density, def->friction, def->restitution, def->rolling_resistance, def->tangent_speed},
-                          "shape def", -1);
+                          shape_def_field);
 }
 
 ShapeDef to_core(const i2d_shape_def& def) {
@@ -72,10 +75,10 @@ namespace {
 
 // A chain's points lie anywhere in the world (its body is static or kinematic), and each
 // of its edges, ghost edges included, is longer than the slop, measured as a chain def is.
-bool valid_chain_segment(Call& call, const ChainSegment& c, int32_t index) {
+bool valid_chain_segment(Call& call, const ChainSegment& c, int32_t index, const char* name) {
     const Vec2 points[4] = {c.ghost1, c.point1, c.point2, c.ghost2};
     for (int32_t i = 0; i < 4; ++i) {
-        if (!call.coordinate(to_public(points[i]), FieldName("shape", index, "chain segment"))) {
+        if (!call.coordinate(to_public(points[i]), name)) {
             return false;
         }
     }
@@ -90,8 +93,7 @@ bool valid_chain_segment(Call& call, const ChainSegment& c, int32_t index) {
 }
 
 // The geometry a create call would have taken, each kind under its own call's rules.
-bool valid_geometry(Call& call, const Geometry& g, int32_t index) {
-    const FieldName name("shape", index, "geometry");
+bool valid_geometry(Call& call, const Geometry& g, int32_t index, const char* name) {
     switch (g.type) {
         case ShapeType::circle:
             return call.local_point(to_public(g.circle.center), name) && call.extent(g.circle.radius, name);
@@ -117,7 +119,7 @@ bool valid_geometry(Call& call, const Geometry& g, int32_t index) {
             return true;
         }
         case ShapeType::chain_segment:
-            return valid_chain_segment(call, g.chain_segment, index);
+            return valid_chain_segment(call, g.chain_segment, index, name);
         default:
             return call.fail(I2D_ERR_INVALID_ARGUMENT, "shape %d: its kind is unknown", static_cast<int>(index));
     }
@@ -134,8 +136,10 @@ bool valid_loaded_shape(Call& call, const World& world, int32_t index) {
                          "shape %d: a chain segment outside a chain or on a dynamic body, or a chain of other shapes",
                          static_cast<int>(index));
     }
-    return valid_material(call, material, "shape", index) && valid_geometry(call, s.geometry, index) &&
-           call.in_range(s.aabb_margin, 0.0f, max_aabb_margin, FieldName("shape", index, "aabb_margin"));
+    return checked_with_names("shape", index, [&](auto name) {
+        return valid_material(call, material, name) && valid_geometry(call, s.geometry, index, name("geometry")) &&
+               call.in_range(s.aabb_margin, 0.0f, max_aabb_margin, name("aabb_margin"));
+    });
 }
 
 bool valid_recorded_shape(Call& call, const ShapeDef& def, const Geometry& geometry) {
@@ -143,7 +147,8 @@ bool valid_recorded_shape(Call& call, const ShapeDef& def, const Geometry& geome
         return call.fail(I2D_ERR_INVALID_ARGUMENT, "shape: a chain segment made alone; chains are made whole");
     }
     const Material material{def.density, def.friction, def.restitution, def.rolling_resistance, def.tangent_speed};
-    return valid_material(call, material, "shape def", -1) && valid_geometry(call, geometry, -1);
+    return valid_material(call, material, shape_def_field) &&
+           valid_geometry(call, geometry, -1, shape_def_field("geometry"));
 }
 
 }  // namespace i2d::capi

@@ -10,6 +10,7 @@
 #include <memory>
 
 #include "boundary.hpp"
+#include "dynamics/snapshot/snapshot_format.hpp"
 #include "loaded_values.hpp"
 #include "world_def.hpp"
 
@@ -114,8 +115,13 @@ i2d_status save_into(Call& call, i2d_world_id world, void* buffer, size_t capaci
     if (!call.world(world, w)) {
         return last_status();
     }
-    const std::size_t needed = (w.world->*size_of)();
-    if (buffer == nullptr || capacity < needed) {
+    // One pass: the size is counted (a second pass) only when the buffer proves too small.
+    const std::size_t size = buffer != nullptr ? (w.world->*save)(buffer, capacity) : 0;
+    if (size == 0) {
+        const std::size_t needed = (w.world->*size_of)();
+        if (buffer != nullptr && capacity >= snapshot_header_size) {
+            std::memset(buffer, 0, snapshot_header_size);  // what was written is no snapshot
+        }
         if (written != nullptr) {
             *written = needed;
         }
@@ -123,7 +129,6 @@ i2d_status save_into(Call& call, i2d_world_id world, void* buffer, size_t capaci
                   buffer == nullptr ? size_t(0) : capacity, what, needed, buffer == nullptr ? "; buffer is NULL" : "");
         return last_status();
     }
-    const std::size_t size = (w.world->*save)(buffer, capacity);
     if (written != nullptr) {
         *written = size;
     }

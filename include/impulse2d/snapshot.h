@@ -37,8 +37,9 @@ extern "C" {
 I2D_API size_t i2d_world_get_snapshot_size(i2d_world_id world);
 
 /** Saves a snapshot into buffer. `written` (may be NULL) receives its size; when
- *  capacity is less than i2d_world_get_snapshot_size, nothing is saved,
- *  I2D_ERR_INVALID_ARGUMENT is returned and `written` receives the size needed. Reading
+ *  capacity is less than i2d_world_get_snapshot_size, I2D_ERR_INVALID_ARGUMENT is
+ *  returned, `written` receives the size needed and the buffer holds no snapshot (its
+ *  header is zeroed; the rest may have been written). Reading
  *  only: allowed inside query callbacks, refused inside a step's job callbacks. */
 I2D_API i2d_status i2d_world_save_snapshot(i2d_world_id world, void* buffer, size_t capacity, size_t* written);
 

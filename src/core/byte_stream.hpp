@@ -18,6 +18,22 @@
 
 namespace i2d {
 
+/// An unsigned integer's bytes in little-endian order, as the host holds them: unchanged
+/// on a little-endian host, swapped on a big-endian one (the swap is its own inverse).
+template <class U>
+U to_little_endian(U v) {
+#if defined(__BYTE_ORDER__) && __BYTE_ORDER__ == __ORDER_BIG_ENDIAN__
+    U swapped = 0;
+    for (std::size_t i = 0; i < sizeof v; ++i) {
+        swapped = U(swapped << 8) | U(v & 0xff);
+        v = U(v >> 8);
+    }
+    return swapped;
+#else
+    return v;
+#endif
+}
+
 class ByteWriter {
 public:
     /// Counts the bytes only.
@@ -29,18 +45,9 @@ public:
     explicit ByteWriter(std::vector<unsigned char>& grow) : grow_(&grow) {}
 
     void u8(uint8_t v) { put(&v, 1); }
-    void u16(uint16_t v) {
-        const unsigned char b[2] = {uint8_t(v), uint8_t(v >> 8)};
-        put(b, 2);
-    }
-    void u32(uint32_t v) {
-        const unsigned char b[4] = {uint8_t(v), uint8_t(v >> 8), uint8_t(v >> 16), uint8_t(v >> 24)};
-        put(b, 4);
-    }
-    void u64(uint64_t v) {
-        u32(uint32_t(v));
-        u32(uint32_t(v >> 32));
-    }
+    void u16(uint16_t v) { put_little_endian(v); }
+    void u32(uint32_t v) { put_little_endian(v); }
+    void u64(uint64_t v) { put_little_endian(v); }
     void i32(int32_t v) { u32(uint32_t(v)); }
     void f32(float v) {
         uint32_t bits;
@@ -62,12 +69,18 @@ public:
     }
 
 private:
+    template <class U>
+    void put_little_endian(U v) {
+        v = to_little_endian(v);
+        put(&v, sizeof v);
+    }
+
     void put(const void* data, std::size_t size) {
-        if (grow_ != nullptr) {
+        if (out_ != nullptr && size_ + size <= capacity_) {
+            std::memcpy(out_ + size_, data, size);
+        } else if (grow_ != nullptr) {
             const auto* bytes = static_cast<const unsigned char*>(data);
             grow_->insert(grow_->end(), bytes, bytes + size);
-        } else if (out_ != nullptr && size_ + size <= capacity_) {
-            std::memcpy(out_ + size_, data, size);
         }
         size_ += size;
     }
@@ -87,20 +100,9 @@ public:
         take(b, 1);
         return b[0];
     }
-    uint16_t u16() {
-        unsigned char b[2] = {};
-        take(b, 2);
-        return uint16_t(b[0] | b[1] << 8);
-    }
-    uint32_t u32() {
-        unsigned char b[4] = {};
-        take(b, 4);
-        return uint32_t(b[0]) | uint32_t(b[1]) << 8 | uint32_t(b[2]) << 16 | uint32_t(b[3]) << 24;
-    }
-    uint64_t u64() {
-        const uint64_t lo = u32();
-        return lo | uint64_t(u32()) << 32;
-    }
+    uint16_t u16() { return take_little_endian<uint16_t>(); }
+    uint32_t u32() { return take_little_endian<uint32_t>(); }
+    uint64_t u64() { return take_little_endian<uint64_t>(); }
     int32_t i32() { return int32_t(u32()); }
     float f32() {
         const uint32_t bits = u32();
@@ -132,6 +134,13 @@ public:
     std::size_t remaining() const { return size_ - position_; }
 
 private:
+    template <class U>
+    U take_little_endian() {
+        U v = 0;
+        take(&v, sizeof v);
+        return to_little_endian(v);
+    }
+
     void take(void* out, std::size_t size) {
         if (failed() || size > remaining()) {
             check(false, "the data ends early (truncated)");

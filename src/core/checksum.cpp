@@ -17,12 +17,14 @@ constexpr uint64_t k4 = 0xa54ff53a5f1d36f1ull;
 
 uint64_t rotl(uint64_t x, int r) { return (x << r) | (x >> (64 - r)); }
 
-// A word as little-endian bytes, whatever the host.
+// A word as little-endian bytes, whatever the host: one load where the host is
+// little-endian (every platform built today), a byte swap elsewhere.
 uint64_t load_word(const unsigned char* p) {
     uint64_t v = 0;
-    for (int i = 7; i >= 0; --i) {
-        v = (v << 8) | p[i];
-    }
+    std::memcpy(&v, p, sizeof v);
+#if defined(__BYTE_ORDER__) && __BYTE_ORDER__ == __ORDER_BIG_ENDIAN__
+    v = __builtin_bswap64(v);
+#endif
     return v;
 }
 

@@ -74,6 +74,17 @@ std::size_t World::state_size() const {
 }
 
 std::size_t World::save_state(void* buffer, std::size_t capacity) const {
+    uint64_t checksum = 0;
+    const std::size_t size = save_state_quietly(buffer, capacity, &checksum);
+    if (size != 0) {
+        saved_states_[next_saved_state_] = {checksum, size, structure_version_};
+        next_saved_state_ = (next_saved_state_ + 1) % saved_state_marks;
+    }
+    return size;
+}
+
+// save_state without noting the state as one the caller holds.
+std::size_t World::save_state_quietly(void* buffer, std::size_t capacity, uint64_t* checksum) const {
     unsigned char* out = static_cast<unsigned char*>(buffer);
     if (capacity < snapshot_header_size) {
         return 0;
@@ -92,7 +103,38 @@ std::size_t World::save_state(void* buffer, std::size_t capacity) const {
     header.world_serial = serial_;
     header.structure_version = structure_version_;
     write_snapshot_header(out, header);
+    if (checksum != nullptr) {
+        *checksum = header.checksum;
+    }
     return snapshot_header_size + writer.size();
+}
+
+// Whether the state is one this world saved at its present structure: its checksum
+// (which the header check verified against the bytes) and size match a save's. Such bytes
+// were a world this one stood as; a change to any byte would have changed the checksum.
+bool World::saved_here(const SnapshotHeader& header, std::size_t size) const {
+    for (const SavedStateMark& mark : saved_states_) {
+        if (mark.size == size && mark.checksum == header.checksum && mark.structure_version == structure_version_) {
+            return true;
+        }
+    }
+    return false;
+}
+
+// This world's state now, for a restore that turns out wrong to go back to; the buffer
+// grows only when the state has.
+void World::save_backup() {
+    if (save_state_quietly(rollback_backup_.data(), rollback_backup_.size(), nullptr) == 0) {
+        rollback_backup_.resize(state_size());
+        save_state_quietly(rollback_backup_.data(), rollback_backup_.size(), nullptr);
+    }
+}
+
+// A state this world saved, loaded without the checks a stranger's needs.
+void World::load_state_unchecked(const void* data, std::size_t size) {
+    ByteReader reader(static_cast<const unsigned char*>(data) + snapshot_header_size, size - snapshot_header_size);
+    LoadIo io(reader);
+    transfer_state(io, *this);
 }
 
 // Loads a state whose header was checked into the world; returns what is wrong, or null.
@@ -118,13 +160,16 @@ const char* World::restore_state(const void* data, std::size_t size) {
         return "the world's structure changed since the rollback state was saved (a body, shape, joint or chain was "
                "made, destroyed or changed, or a setting was)";
     }
-    rollback_backup_.resize(state_size());
-    save_state(rollback_backup_.data(), rollback_backup_.size());
-    const char* problem = load_state(data, size);
-    if (problem != nullptr) {
-        load_state(rollback_backup_.data(), rollback_backup_.size());  // what was saved from this world loads
-        stages_->solver.forget_caches();
-        return problem;
+    if (saved_here(header, size)) {
+        load_state_unchecked(data, size);
+    } else {
+        save_backup();
+        const char* problem = load_state(data, size);
+        if (problem != nullptr) {
+            load_state(rollback_backup_.data(), rollback_backup_.size());  // what was saved from this world loads
+            stages_->solver.forget_caches();
+            return problem;
+        }
     }
     stages_->events.current.clear();
     stages_->solver.forget_caches();

@@ -33,6 +33,7 @@
 namespace i2d {
 
 class Recorder;
+struct SnapshotHeader;
 
 struct WorldStages;
 
@@ -285,6 +286,10 @@ private:
     template <class Io, class Self>
     static void transfer_state(Io& io, Self& world);
     const char* load_state(const void* data, std::size_t size);
+    std::size_t save_state_quietly(void* buffer, std::size_t capacity, uint64_t* checksum) const;
+    bool saved_here(const SnapshotHeader& header, std::size_t size) const;
+    void save_backup();
+    void load_state_unchecked(const void* data, std::size_t size);
     const char* load_snapshot(const void* data, std::size_t size);
     /// What is wrong with a world just loaded from a snapshot, or null: whatever the step
     /// follows (lists, links, indices) leads where it should.
@@ -302,6 +307,15 @@ private:
     uint64_t serial_ = 0;             // this world's, unique in the process: a state names it
     uint64_t structure_version_ = 0;  // see structure_version()
     std::vector<unsigned char> rollback_backup_;  // the state a refused restore goes back to
+    // The checksums and sizes of the last states this world saved: a state that matches
+    // one is this world's own bytes, restored without the checks and the backup a
+    // stranger's state needs (rollback_state.cpp).
+    struct SavedStateMark {
+        uint64_t checksum = 0, size = 0, structure_version = 0;
+    };
+    static constexpr int32_t saved_state_marks = 64;
+    mutable SavedStateMark saved_states_[saved_state_marks];
+    mutable int32_t next_saved_state_ = 0;
     std::unique_ptr<Recorder> recorder_;          // while recording: host wiring, kept by restores
     StepProfile profile_;
     mutable bool profiling_ = false;
