@@ -31,13 +31,13 @@ bool valid_material(Call& call, const Material& m, Name name) {
            call.in_range(m.tangent_speed, -max_speed_limit, max_speed_limit, name("tangent_speed"));
 }
 
-FieldName shape_def_field(const char* field) { return FieldName("shape def", -1, field); }
-
 bool validate_shape_def(Call& call, const i2d_shape_def* def) {
     return call.not_null(def, "shape def") && call.cookie(def->internal_cookie, "shape_def") &&
-           valid_material(call,
-                          {def->density, def->friction, def->restitution, def->rolling_resistance, def->tangent_speed},
-                          shape_def_field);
+           checked_with_names("shape def", -1, [&](auto name) {
+               return valid_material(
+                   call, {def->density, def->friction, def->restitution, def->rolling_resistance, def->tangent_speed},
+                   name);
+           });
 }
 
 ShapeDef to_core(const i2d_shape_def& def) {
@@ -147,8 +147,9 @@ bool valid_recorded_shape(Call& call, const ShapeDef& def, const Geometry& geome
         return call.fail(I2D_ERR_INVALID_ARGUMENT, "shape: a chain segment made alone; chains are made whole");
     }
     const Material material{def.density, def.friction, def.restitution, def.rolling_resistance, def.tangent_speed};
-    return valid_material(call, material, shape_def_field) &&
-           valid_geometry(call, geometry, -1, shape_def_field("geometry"));
+    return checked_with_names("shape def", -1, [&](auto name) {
+        return valid_material(call, material, name) && valid_geometry(call, geometry, -1, name("geometry"));
+    });
 }
 
 }  // namespace i2d::capi

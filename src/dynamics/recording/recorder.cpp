@@ -41,10 +41,11 @@ RecordScope::RecordScope(Recorder* recorder, RecordedOp op) : recorder_(recorder
     }
     active_ = true;
     recorder_->record_.clear();
-    out_ = ByteWriter(recorder_->record_);
-    out_.u32(0);  // checksum, filled in by emit
-    out_.u8(static_cast<uint8_t>(op));
-    out_.u32(0);  // payload size, likewise
+    ByteWriter& out = recorder_->out_;
+    out = ByteWriter(recorder_->record_);
+    out.u32(0);  // checksum, filled in by emit
+    out.u8(static_cast<uint8_t>(op));
+    out.u32(0);  // payload size, likewise
 }
 
 RecordScope::~RecordScope() {

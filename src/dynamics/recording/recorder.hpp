@@ -35,6 +35,7 @@ private:
     int32_t& lock_depth_;
     int32_t depth_ = 0;                  // recorded calls open, nested
     std::vector<unsigned char> record_;  // the record being written, reused
+    ByteWriter out_;                     // onto record_
 };
 
 /// One recorded call: active when the world records and no recorded call encloses it.
@@ -51,17 +52,17 @@ public:
     template <class... Args>
     void write(const Args&... args) {
         if (active_) {
-            SaveIo io(out_);
+            SaveIo io(recorder_->out_);
             (save_recorded(io, args), ...);
         }
     }
     /// Where bytes of the call's own making go; only while active.
-    ByteWriter& out() { return out_; }
+    ByteWriter& out() { return recorder_->out_; }
 
 private:
+    // Two words: a call that changes the world opens one whether or not it records.
     Recorder* recorder_;
     bool active_ = false;
-    ByteWriter out_;
 };
 
 }  // namespace i2d
