@@ -21,7 +21,8 @@ Bulk state (World.transforms, velocities, set_transforms, set_velocities) reads 
 writes many bodies per call through NumPy arrays.
 Snapshots (World.save_snapshot, from_snapshot, restore_snapshot) and rollback states
 (save_state, restore_state) bring a world back bit for bit; a World pickles and
-deep-copies through a snapshot.
+deep-copies through a snapshot. World.start_recording streams every change and step;
+Replay replays such a recording and names the first step whose hash differs.
 
 The native library is found through IMPULSE2D_LIBRARY, next to this package, in the
 source tree's build directories or where ``cmake --install`` put it; its struct layouts
@@ -57,6 +58,7 @@ from .types import (
     ShapeType,
 )
 from .world import World
+from .replay import Replay
 
 __version__ = "0.2.0"
 #: The version of the loaded native library, "major.minor.patch".
@@ -68,6 +70,7 @@ STATIC, KINEMATIC, DYNAMIC = BodyType.STATIC, BodyType.KINEMATIC, BodyType.DYNAM
 
 __all__ = [
     "World",
+    "Replay",
     "Body",
     "Shape",
     "Joint",

@@ -31,6 +31,7 @@ _ID = C.c_uint64
 _STATUS = C.c_int32
 _PTR = C.c_void_p  # arrays passed as addresses (NumPy's arr.ctypes.data)
 _OVERLAP_FN = C.CFUNCTYPE(C.c_bool, _ID, C.c_void_p)
+_WRITE_FN = C.CFUNCTYPE(None, C.c_void_p, C.c_size_t, C.c_void_p)
 
 
 def signatures(S: _structs.Structs) -> Dict[str, Tuple[Any, List[Any]]]:
@@ -84,6 +85,17 @@ def signatures(S: _structs.Structs) -> Dict[str, Tuple[Any, List[Any]]]:
         "i2d_world_save_state": (_STATUS, [_ID, _PTR, C.c_size_t, C.POINTER(C.c_size_t)]),
         "i2d_world_restore_state": (_STATUS, [_ID, _PTR, C.c_size_t]),
         "i2d_body_in_world": (_ID, [_ID, _ID]),
+        # recording and replay (snapshot.h)
+        "i2d_world_start_recording": (_STATUS, [_ID, _WRITE_FN, C.c_void_p]),
+        "i2d_world_stop_recording": (_STATUS, [_ID]),
+        "i2d_replay_open": (_ID, [_PTR, C.c_size_t, C.POINTER(WorldDef)]),
+        "i2d_replay_get_world": (_ID, [_ID]),
+        "i2d_replay_step": (C.c_int32, [_ID, C.c_int32]),
+        "i2d_replay_get_step": (C.c_int32, [_ID]),
+        "i2d_replay_get_step_count": (C.c_int32, [_ID]),
+        "i2d_replay_get_divergent_step": (C.c_int32, [_ID]),
+        "i2d_replay_seek": (_STATUS, [_ID, C.c_int32]),
+        "i2d_replay_close": (_STATUS, [_ID]),
         "i2d_shape_in_world": (_ID, [_ID, _ID]),
         # bodies
         "i2d_body_create": (_ID, [_ID, C.POINTER(BodyDef)]),

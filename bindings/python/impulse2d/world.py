@@ -6,10 +6,10 @@ from typing import Any, Callable, Dict, Iterable, List, Optional, Sequence, Tupl
 
 from ._native import apply_settings, check, check_last, lib, pair, rot, vec2
 from ._structs import AABB, QueryFilter
-from ._library import _OVERLAP_FN
+from ._library import _OVERLAP_FN, _WRITE_FN
 from . import joint as _joint
 from .body import Body
-from .errors import InvalidHandle
+from .errors import InvalidArgument, InvalidHandle
 from .joint import Joint
 from .shape import Shape
 from .types import (
@@ -109,17 +109,34 @@ class World:
         self.destroy()
 
     def __del__(self) -> None:
-        if getattr(self, "_id", 0) and lib is not None:
+        if getattr(self, "_id", 0) and not getattr(self, "_borrowed", False) and lib is not None:
             lib.i2d_world_destroy(self._id)
             self._id = 0
 
     def destroy(self) -> None:
         """Destroys the world and everything in it; their handles become invalid.
-        Destroying twice is harmless."""
+        Destroying twice is harmless. A world a Replay owns is the replay's to close."""
+        if getattr(self, "_borrowed", False):
+            raise InvalidArgument("World.destroy: this world belongs to a Replay; close the replay")
         if self._id:
             world_id, self._id = self._id, 0
             self._user_data.clear()
             check(lib.i2d_world_destroy(world_id))
+
+    @classmethod
+    def _borrow(cls, world_id: int) -> "World":
+        """A World for an id another object owns (a Replay's world): never destroyed here."""
+        world = cls.__new__(cls)
+        world._id = world_id
+        world._user_data = {}
+        world._runtime = {}
+        world._borrowed = True
+        return world
+
+    def _forget(self) -> None:
+        """Its owner destroyed it: the id is no longer this object's to use."""
+        self._id = 0
+        self._user_data.clear()
 
     @property
     def id(self) -> int:
@@ -227,6 +244,33 @@ class World:
         setting changed, or truncated or corrupted bytes."""
         data = _as_bytes(data, "restore_state", "save_state")
         check(lib.i2d_world_restore_state(self._id, data, len(data)))
+
+    def start_recording(self, write: Callable[[bytes], Any]) -> None:
+        """Streams a recording of this world to write (file.write, bytearray.extend or any
+        callable taking bytes): at once a header and a snapshot, then every change and
+        every step with the hash it produced, as they happen. impulse2d.Replay replays it
+        and names the first step whose hash differs. An exception write raises is kept
+        and raised by stop_recording (the library cannot take it mid-call)."""
+        self._recording_error: Optional[BaseException] = None
+
+        def on_bytes(data: int, size: int, _context: int) -> None:
+            if self._recording_error is None:
+                try:
+                    write(C.string_at(data, size))
+                except BaseException as error:  # kept for stop_recording
+                    self._recording_error = error
+
+        callback = _WRITE_FN(on_bytes)
+        check(lib.i2d_world_start_recording(self._id, callback, None))
+        self._recording_callback = callback  # the library calls it until stop_recording
+
+    def stop_recording(self) -> None:
+        """Stops recording; raises what write raised while recording, if anything."""
+        check(lib.i2d_world_stop_recording(self._id))
+        self._recording_callback = None
+        error, self._recording_error = getattr(self, "_recording_error", None), None
+        if error is not None:
+            raise error
 
     def _runtime_of(self) -> Dict[str, Any]:
         """The wiring a copy of this world gets: its worker count and what else it was
