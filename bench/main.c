@@ -17,6 +17,7 @@
 /* clock_gettime and CLOCK_MONOTONIC are POSIX, not C99. */
 #define _POSIX_C_SOURCE 199309L
 
+#include "arguments.h"
 #include "build_info.h"
 #include "scenes.h"
 
@@ -100,21 +101,6 @@ static void usage(FILE* f) {
             MAX_REPEATS);
 }
 
-/* Parses a whole decimal argument in [lo, hi]. */
-static bool parse_int(const char* text, int32_t lo, int32_t hi, int32_t* out) {
-    char* end;
-    long value;
-    if (!text) {
-        return false;
-    }
-    value = strtol(text, &end, 10);
-    if (end == text || *end != '\0' || value < lo || value > hi) {
-        return false;
-    }
-    *out = (int32_t)value;
-    return true;
-}
-
 /* Marks each scene of a comma-separated list. */
 static bool choose_scenes(const char* list, options* opt) {
     char name[128];
@@ -174,11 +160,11 @@ static bool parse_options(int argc, char** argv, options* opt) {
     for (i = 1; i < argc; ++i) {
         const char* arg = argv[i];
         const char* value = i + 1 < argc ? argv[i + 1] : NULL;
-        if (strcmp(arg, "--steps") == 0 && parse_int(value, 2, 1000000, &opt->steps)) {
+        if (strcmp(arg, "--steps") == 0 && bench_parse_int(value, 2, 1000000, &opt->steps)) {
             ++i;
-        } else if (strcmp(arg, "--repeat") == 0 && parse_int(value, 1, MAX_REPEATS, &opt->repeats)) {
+        } else if (strcmp(arg, "--repeat") == 0 && bench_parse_int(value, 1, MAX_REPEATS, &opt->repeats)) {
             ++i;
-        } else if (strcmp(arg, "--workers") == 0 && parse_int(value, 1, I2D_MAX_WORKERS, &opt->workers)) {
+        } else if (strcmp(arg, "--workers") == 0 && bench_parse_int(value, 1, I2D_MAX_WORKERS, &opt->workers)) {
             bench_worker_count = opt->workers;
             ++i;
         } else if (strcmp(arg, "--simd") == 0 && value) {

@@ -18,6 +18,7 @@
 /* clock_gettime and CLOCK_MONOTONIC are POSIX, not C99. */
 #define _POSIX_C_SOURCE 199309L
 
+#include "arguments.h"
 #include "build_info.h"
 #include "scenes.h"
 
@@ -82,20 +83,6 @@ static void usage(FILE* f) {
             MAX_REPS);
 }
 
-static bool parse_int(const char* text, int32_t lo, int32_t hi, int32_t* out) {
-    char* end;
-    long value;
-    if (!text) {
-        return false;
-    }
-    value = strtol(text, &end, 10);
-    if (end == text || *end != '\0' || value < lo || value > hi) {
-        return false;
-    }
-    *out = (int32_t)value;
-    return true;
-}
-
 static bool choose_scenes(const char* list, options* opt) {
     const char* p = list;
     while (*p) {
@@ -128,9 +115,9 @@ static bool parse_options(int argc, char** argv, options* opt) {
     for (i = 1; i < argc; ++i) {
         const char* arg = argv[i];
         const char* value = i + 1 < argc ? argv[i + 1] : NULL;
-        if (strcmp(arg, "--reps") == 0 && parse_int(value, 1, MAX_REPS, &opt->reps)) {
+        if (strcmp(arg, "--reps") == 0 && bench_parse_int(value, 1, MAX_REPS, &opt->reps)) {
             ++i;
-        } else if (strcmp(arg, "--steps") == 0 && parse_int(value, 1, 100000, &opt->steps)) {
+        } else if (strcmp(arg, "--steps") == 0 && bench_parse_int(value, 1, 100000, &opt->steps)) {
             ++i;
         } else if (strcmp(arg, "--scene") == 0 && value) {
             if (!choose_scenes(value, opt)) {

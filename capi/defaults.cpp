@@ -3,39 +3,15 @@
 #include "boundary.hpp"
 #include "convert.hpp"
 #include "joint_rules.hpp"
+#include "world_def.hpp"
 
 using namespace i2d;
 using namespace i2d::capi;
 
+// The core's defaults, as a world made from a snapshot reports its settings.
 I2D_API i2d_world_def i2d_default_world_def(void) {
     set_ok();
-    const WorldDef core;
-    i2d_world_def def{};
-    def.gravity = to_public(core.gravity);
-    def.contact_slop = core.contact_slop;
-    def.contact_hertz = core.contact_hertz;
-    def.contact_damping_ratio = core.contact_damping_ratio;
-    def.joint_hertz = core.joint_hertz;
-    def.joint_damping_ratio = core.joint_damping_ratio;
-    def.contact_push_max_speed = core.contact_push_max_speed;
-    def.restitution_threshold = core.restitution_threshold;
-    def.maximum_linear_speed = core.maximum_linear_speed;
-    def.friction_mixing = to_public(core.friction_mixing);
-    def.restitution_mixing = to_public(core.restitution_mixing);
-    def.enable_sleep = core.enable_sleep;
-    def.sleep_speed_threshold = core.sleep_speed_threshold;
-    def.time_to_sleep = core.time_to_sleep;
-    def.simd_path = I2D_SIMD_AUTOMATIC;
-    def.enable_contact_recycling = core.enable_contact_recycling;
-    def.enable_profile = core.enable_profile;
-    def.worker_count = core.worker_count;
-    def.enqueue_task = nullptr;
-    def.finish_task = nullptr;
-    def.user_task_context = nullptr;
-    def.enable_continuous = core.enable_continuous;
-    def.hit_event_threshold = core.hit_event_threshold;
-    def.internal_cookie = def_cookie;
-    return def;
+    return to_public(WorldDef{});
 }
 
 I2D_API i2d_body_def i2d_default_body_def(void) {

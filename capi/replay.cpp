@@ -36,6 +36,7 @@ bool live(Call& call, bool is_live, const char* what) {
 }
 
 // A record being applied: its arguments, and the replay's world with ids for its slots.
+// Each family of records has its own member.
 struct Replayed {
     Call& call;
     World& world;
@@ -48,14 +49,19 @@ struct Replayed {
     i2d_shape_id shape(int32_t i) const { return make_shape_id(ids, i, generation_of(world.shapes(), i)); }
     i2d_joint_id joint(int32_t i) const { return make_joint_id(ids, i, generation_of(world.joints(), i)); }
     i2d_chain_id chain(int32_t i) const { return make_chain_id(ids, i, generation_of(world.chains(), i)); }
+    // Every record kind is one family's; a kind no family takes is refused.
+    bool unknown() const {
+        return call.fail(I2D_ERR_INVALID_SNAPSHOT, "a record is of a kind this library does not know");
+    }
+
+    bool body_call(RecordedOp op) const;
+    bool shape_call(RecordedOp op) const;
+    bool joint_call(RecordedOp op) const;
+    bool world_call(RecordedOp op) const;
 };
 
 // Bodies: made, destroyed, moved, pushed, woken and put to sleep.
-bool apply_body_call(const Replayed& r, RecordedOp op) {
-    Call& call = r.call;
-    World& world = r.world;
-    ByteReader& in = r.in;
-    LoadIo& io = r.io;
+bool Replayed::body_call(RecordedOp op) const {
     int32_t index = 0;
     switch (op) {
         case RecordedOp::create_body: {
@@ -72,11 +78,11 @@ bool apply_body_call(const Replayed& r, RecordedOp op) {
         }
         case RecordedOp::destroy_body:
             io(index);
-            return read_whole(in) ? passed(i2d_body_destroy(r.body(index))) : malformed(call);
+            return read_whole(in) ? passed(i2d_body_destroy(body(index))) : malformed(call);
         case RecordedOp::set_type: {
             BodyType type = BodyType::static_body;
             io(index), io(type);
-            return read_whole(in) ? passed(i2d_body_set_type(r.body(index), i2d_body_type(type))) : malformed(call);
+            return read_whole(in) ? passed(i2d_body_set_type(body(index), i2d_body_type(type))) : malformed(call);
         }
         case RecordedOp::set_transforms: {
             const int32_t count = in.count(4 + 16, Pool<Body>::max_slots, "too many transforms");
@@ -186,16 +192,12 @@ bool apply_body_call(const Replayed& r, RecordedOp op) {
             world.wake_all();
             return true;
         default:
-            return call.fail(I2D_ERR_INVALID_SNAPSHOT, "a record is of a kind this library does not know");
+            return unknown();
     }
 }
 
 // Shapes and chains: made, destroyed, their materials and filters.
-bool apply_shape_call(const Replayed& r, RecordedOp op) {
-    Call& call = r.call;
-    World& world = r.world;
-    ByteReader& in = r.in;
-    LoadIo& io = r.io;
+bool Replayed::shape_call(RecordedOp op) const {
     int32_t index = 0;
     switch (op) {
         case RecordedOp::create_shape: {
@@ -215,7 +217,7 @@ bool apply_shape_call(const Replayed& r, RecordedOp op) {
         }
         case RecordedOp::destroy_shape:
             io(index);
-            return read_whole(in) ? passed(i2d_shape_destroy(r.shape(index))) : malformed(call);
+            return read_whole(in) ? passed(i2d_shape_destroy(shape(index))) : malformed(call);
         case RecordedOp::set_friction:
         case RecordedOp::set_restitution: {
             float value = 0.0f;
@@ -223,14 +225,14 @@ bool apply_shape_call(const Replayed& r, RecordedOp op) {
             if (!read_whole(in)) {
                 return malformed(call);
             }
-            return passed(op == RecordedOp::set_friction ? i2d_shape_set_friction(r.shape(index), value)
-                                                                : i2d_shape_set_restitution(r.shape(index), value));
+            return passed(op == RecordedOp::set_friction ? i2d_shape_set_friction(shape(index), value)
+                                                                : i2d_shape_set_restitution(shape(index), value));
         }
         case RecordedOp::set_filter: {
             Filter filter;
             io(index);
             filter_fields(io, filter);
-            return read_whole(in) ? passed(i2d_shape_set_filter(r.shape(index), to_public(filter))) : malformed(call);
+            return read_whole(in) ? passed(i2d_shape_set_filter(shape(index), to_public(filter))) : malformed(call);
         }
         case RecordedOp::create_chain: {
             RecordedChain recorded;
@@ -257,22 +259,18 @@ bool apply_shape_call(const Replayed& r, RecordedOp op) {
             def.filter = to_public(recorded.def.filter);
             def.enable_sensor_events = recorded.def.enable_sensor_events;
             def.user_data = recorded.def.user_data;
-            return !I2D_IS_NULL(i2d_chain_create(r.body(index), &def));
+            return !I2D_IS_NULL(i2d_chain_create(body(index), &def));
         }
         case RecordedOp::destroy_chain:
             io(index);
-            return read_whole(in) ? passed(i2d_chain_destroy(r.chain(index))) : malformed(call);
+            return read_whole(in) ? passed(i2d_chain_destroy(chain(index))) : malformed(call);
         default:
-            return call.fail(I2D_ERR_INVALID_SNAPSHOT, "a record is of a kind this library does not know");
+            return unknown();
     }
 }
 
 // Joints: made, changed, destroyed.
-bool apply_joint_call(const Replayed& r, RecordedOp op) {
-    Call& call = r.call;
-    World& world = r.world;
-    ByteReader& in = r.in;
-    LoadIo& io = r.io;
+bool Replayed::joint_call(RecordedOp op) const {
     int32_t index = 0;
     switch (op) {
         case RecordedOp::create_joint: {
@@ -289,7 +287,7 @@ bool apply_joint_call(const Replayed& r, RecordedOp op) {
         }
         case RecordedOp::destroy_joint:
             io(index);
-            return read_whole(in) ? passed(i2d_joint_destroy(r.joint(index))) : malformed(call);
+            return read_whole(in) ? passed(i2d_joint_destroy(joint(index))) : malformed(call);
         case RecordedOp::set_joint_def: {
             JointDef def;
             io(index);
@@ -311,15 +309,12 @@ bool apply_joint_call(const Replayed& r, RecordedOp op) {
             return true;
         }
         default:
-            return call.fail(I2D_ERR_INVALID_SNAPSHOT, "a record is of a kind this library does not know");
+            return unknown();
     }
 }
 
 // User data of every kind, gravity, the static tree.
-bool apply_world_call(const Replayed& r, RecordedOp op) {
-    Call& call = r.call;
-    ByteReader& in = r.in;
-    LoadIo& io = r.io;
+bool Replayed::world_call(RecordedOp op) const {
     int32_t index = 0;
     switch (op) {
         case RecordedOp::set_body_user_data:
@@ -330,19 +325,21 @@ bool apply_world_call(const Replayed& r, RecordedOp op) {
             if (!read_whole(in)) {
                 return malformed(call);
             }
-            return passed(op == RecordedOp::set_body_user_data    ? i2d_body_set_user_data(r.body(index), user_data)
-                          : op == RecordedOp::set_shape_user_data ? i2d_shape_set_user_data(r.shape(index), user_data)
-                                                                         : i2d_joint_set_user_data(r.joint(index), user_data));
+            if (op == RecordedOp::set_body_user_data) {
+                return passed(i2d_body_set_user_data(body(index), user_data));
+            }
+            return passed(op == RecordedOp::set_shape_user_data ? i2d_shape_set_user_data(shape(index), user_data)
+                                                                : i2d_joint_set_user_data(joint(index), user_data));
         }
         case RecordedOp::set_gravity: {
             Vec2 gravity;
             io(gravity);
-            return read_whole(in) ? passed(i2d_world_set_gravity(r.world_id, to_public(gravity))) : malformed(call);
+            return read_whole(in) ? passed(i2d_world_set_gravity(world_id, to_public(gravity))) : malformed(call);
         }
         case RecordedOp::rebuild_static_tree:
-            return read_whole(in) ? passed(i2d_world_rebuild_static_tree(r.world_id)) : malformed(call);
+            return read_whole(in) ? passed(i2d_world_rebuild_static_tree(world_id)) : malformed(call);
         default:
-            return call.fail(I2D_ERR_INVALID_SNAPSHOT, "a record is of a kind this library does not know");
+            return unknown();
     }
 }
 }  // namespace
@@ -360,7 +357,8 @@ std::unique_ptr<Replay> Replay::open(Call& call, const void* data, std::size_t s
         return nullptr;
     }
     const Record& first = replay->records_.front();
-    replay->world_ = i2d_world_create_from_snapshot(replay->bytes_.data() + first.payload_at, first.payload_size, runtime);
+    const unsigned char* snapshot = replay->bytes_.data() + first.payload_at;
+    replay->world_ = i2d_world_create_from_snapshot(snapshot, first.payload_size, runtime);
     if (I2D_IS_NULL(replay->world_)) {
         return nullptr;  // the status says why
     }
@@ -374,7 +372,8 @@ Replay::~Replay() {
 }
 
 const char* Replay::read_records() {
-    if (bytes_.size() < recording_header_size || std::memcmp(bytes_.data(), recording_magic, sizeof recording_magic) != 0) {
+    if (bytes_.size() < recording_header_size ||
+        std::memcmp(bytes_.data(), recording_magic, sizeof recording_magic) != 0) {
         return "it is not a recording (no recording header)";
     }
     ByteReader header(bytes_.data() + 8, 8);
@@ -490,19 +489,19 @@ bool Replay::apply(Call& call, const Record& record) {
         case RecordedOp::set_filter:
         case RecordedOp::create_chain:
         case RecordedOp::destroy_chain:
-            return apply_shape_call(r, record.op);
+            return r.shape_call(record.op);
         case RecordedOp::create_joint:
         case RecordedOp::destroy_joint:
         case RecordedOp::set_joint_def:
-            return apply_joint_call(r, record.op);
+            return r.joint_call(record.op);
         case RecordedOp::set_body_user_data:
         case RecordedOp::set_shape_user_data:
         case RecordedOp::set_joint_user_data:
         case RecordedOp::set_gravity:
         case RecordedOp::rebuild_static_tree:
-            return apply_world_call(r, record.op);
+            return r.world_call(record.op);
         default:
-            return apply_body_call(r, record.op);
+            return r.body_call(record.op);
     }
 }
 

@@ -131,7 +131,7 @@ WorldDef to_core(const i2d_world_def& def) {
 
 
 i2d_world_def to_public(const WorldDef& core) {
-    i2d_world_def def = i2d_default_world_def();
+    i2d_world_def def{};
     def.gravity = capi::to_public(core.gravity);
     def.contact_slop = core.contact_slop;
     def.contact_hertz = core.contact_hertz;
@@ -141,8 +141,8 @@ i2d_world_def to_public(const WorldDef& core) {
     def.contact_push_max_speed = core.contact_push_max_speed;
     def.restitution_threshold = core.restitution_threshold;
     def.maximum_linear_speed = core.maximum_linear_speed;
-    def.friction_mixing = static_cast<i2d_mixing_rule>(core.friction_mixing);
-    def.restitution_mixing = static_cast<i2d_mixing_rule>(core.restitution_mixing);
+    def.friction_mixing = capi::to_public(core.friction_mixing);
+    def.restitution_mixing = capi::to_public(core.restitution_mixing);
     def.enable_sleep = core.enable_sleep;
     def.sleep_speed_threshold = core.sleep_speed_threshold;
     def.time_to_sleep = core.time_to_sleep;
@@ -155,6 +155,7 @@ i2d_world_def to_public(const WorldDef& core) {
     def.user_task_context = core.tasks.user_context;
     def.enable_continuous = core.enable_continuous;
     def.hit_event_threshold = core.hit_event_threshold;
+    def.internal_cookie = def_cookie;
     return def;
 }
 

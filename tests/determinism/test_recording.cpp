@@ -48,7 +48,8 @@ const Session& session() {
         Bytes rollback;
         for (int k = 1; k <= session_steps; ++k) {
             if (k % 10 == 1) {  // a crate and a capsule dropped, pushed and spun
-                const i2d_body_id crate = det::add_body(world, I2D_BODY_DYNAMIC, i2d_vec2{-4.0f + 0.1f * float(k % 7), 20});
+                const i2d_vec2 at = {-4.0f + 0.1f * float(k % 7), 20};
+                const i2d_body_id crate = det::add_body(world, I2D_BODY_DYNAMIC, at);
                 det::add_mixed_shape(crate, k % 5, &plain);
                 i2d_body_apply_linear_impulse(crate, i2d_vec2{0.5f, 0}, i2d_vec2{-4, 20.1f}, true);
                 i2d_body_apply_torque(crate, 3.0f, true);
