@@ -81,11 +81,25 @@ typedef struct i2d_shape_proxy {
     float radius;   /**< m, >= 0 */
 } i2d_shape_proxy;
 
+/** The closest points of two shapes, and how far apart they are. */
+typedef struct i2d_distance_result {
+    i2d_vec2 point_a;  /**< on shape A's surface (its outline grown by its radius) */
+    i2d_vec2 point_b;  /**< on shape B's surface */
+    i2d_vec2 normal;   /**< unit, from A towards B; (0, 0) when the shapes overlap */
+    float distance;    /**< m between the surfaces; 0 when they touch or overlap */
+} i2d_distance_result;
+
 /** A proxy from 1..8 points (world space for the queries) and a radius in [0, 1e5] m:
  *  their convex hull, counter-clockwise; points along one line give a segment. NULL
  *  points, a count outside 1..8, NaN, infinite or out-of-range values give a proxy of
  *  count 0 (which every query refuses) and I2D_ERR_INVALID_ARGUMENT. */
 I2D_API i2d_shape_proxy i2d_make_proxy(const i2d_vec2* points, int32_t count, float radius);
+/** The distance between two proxies (each placed by its transform, which must be
+ *  normalised within 1e-3): the closest points of their rounded hulls. Overlapping shapes
+ *  give distance 0 and a zero normal. A proxy of count 0, NaN or a bad rotation gives a
+ *  zero result and I2D_ERR_INVALID_ARGUMENT (i2d_last_status). */
+I2D_API i2d_distance_result i2d_shape_distance(const i2d_shape_proxy* a, i2d_transform xa, const i2d_shape_proxy* b,
+                                               i2d_transform xb);
 
 /** Convex hull of 3..8 points, counter-clockwise, rounded by radius (m, >= 0). Points
  *  closer than 0.005 m are welded and points within 0.005 m of a hull edge's line are

@@ -40,6 +40,11 @@
 /* ---- Definitions ---------------------------------------------------------------- */
 
 I2D_API i2d_world_def i2d_default_world_def(void);
+/** The default world def for a world in other length units (length_units_per_meter in
+ *  [1e-3, 1e4]): every length-bearing default (slop, push speed, thresholds, maximum
+ *  speed, gravity) scaled from metres to them. Out of range: the metre defaults and
+ *  I2D_ERR_INVALID_ARGUMENT. */
+I2D_API i2d_world_def i2d_default_world_def_in_units(float length_units_per_meter);
 I2D_API i2d_body_def i2d_default_body_def(void);
 I2D_API i2d_shape_def i2d_default_shape_def(void);
 /** Every category and mask bit: a query filter that sees every shape (whose own
@@ -82,6 +87,27 @@ I2D_API uint64_t i2d_world_get_state_hash(i2d_world_id world);
 I2D_API i2d_simd_path i2d_world_get_simd_path(i2d_world_id world);
 /** The world def's worker_count; 0 for an invalid id. */
 I2D_API int32_t i2d_world_get_worker_count(i2d_world_id world);
+/** Any pointer, never read by the world; NULL by default. May be set inside callbacks. */
+I2D_API i2d_status i2d_world_set_user_data(i2d_world_id world, void* user_data);
+I2D_API void* i2d_world_get_user_data(i2d_world_id world);
+/** The world's settings as a def (the values the setters below last gave, the rest as
+ *  created), ready to create a world like it; a zero def for a bad id. */
+I2D_API i2d_world_def i2d_world_get_settings(i2d_world_id world);
+/* Settings after creation: each is checked as in i2d_world_def (refused with the world
+ * untouched), takes effect at the next step and wakes what it must. */
+/** Turning sleep off wakes every body. */
+I2D_API i2d_status i2d_world_enable_sleeping(i2d_world_id world, bool flag);
+I2D_API i2d_status i2d_world_enable_continuous(i2d_world_id world, bool flag);
+I2D_API i2d_status i2d_world_set_contact_tuning(i2d_world_id world, float hertz, float damping_ratio,
+                                                float push_max_speed);
+I2D_API i2d_status i2d_world_set_joint_tuning(i2d_world_id world, float hertz, float damping_ratio);
+I2D_API i2d_status i2d_world_set_restitution_threshold(i2d_world_id world, float speed);
+I2D_API i2d_status i2d_world_set_hit_event_threshold(i2d_world_id world, float speed);
+/** Moves the world's origin to new_origin (a coordinate as positions are): afterwards
+ *  every position, box and query is relative to it, so a world kilometres across keeps
+ *  its precision near the player. Every body, tree and contact shifts by -new_origin
+ *  and the simulation goes on as it would have, shifted. */
+I2D_API i2d_status i2d_world_shift_origin(i2d_world_id world, i2d_vec2 new_origin);
 /** Whether this library on this CPU can run the path (I2D_SIMD_AUTOMATIC always can). */
 I2D_API bool i2d_simd_path_supported(i2d_simd_path path);
 
@@ -169,6 +195,73 @@ I2D_API int32_t i2d_body_get_shape_count(i2d_body_id body);
 /** Fills out with up to capacity shape ids; returns how many the body has. */
 I2D_API int32_t i2d_body_get_shapes(i2d_body_id body, i2d_shape_id* out, int32_t capacity);
 
+/* ---- Changing a body at run time ------------------------------------------------- */
+/* Every setter refuses a stale id, a locked world and a bad value (NaN, infinite, out of
+ * range: I2D_ERR_INVALID_ARGUMENT) with the world untouched, and takes effect at the next
+ * step. Getters give a zero value for a bad id. */
+
+/** The body's mass, centre of mass (body frame) and rotational inertia about it. */
+I2D_API i2d_mass_data i2d_body_get_mass_data(i2d_body_id body);
+/** Overrides the mass its shapes give a dynamic body: mass > 0 kg, inertia >= 0 (0 turns
+ *  off rotation unless fixed_rotation says otherwise), center within 1e5 m of the body's
+ *  origin. Later shape changes keep the override until i2d_body_apply_mass_from_shapes.
+ *  Static and kinematic bodies are refused (they have no mass). Wakes the body. */
+I2D_API i2d_status i2d_body_set_mass_data(i2d_body_id body, i2d_mass_data data);
+/** Drops an override: the mass comes from the shapes' densities again. */
+I2D_API i2d_status i2d_body_apply_mass_from_shapes(i2d_body_id body);
+/** A disabled body is out of the world: its shapes leave the broadphase (no contacts, no
+ *  queries, no sensor visits), its joints are not solved, it does not move; it keeps its
+ *  shapes, joints, velocity and ids, and every getter and setter still works on it.
+ *  Enabling brings it back where it was, awake. Each is a no-op when already so. */
+I2D_API i2d_status i2d_body_disable(i2d_body_id body);
+I2D_API i2d_status i2d_body_enable(i2d_body_id body);
+I2D_API bool i2d_body_is_enabled(i2d_body_id body);
+/** Sets a kinematic body's velocities so that it reaches target (rotation normalised
+ *  within 1e-3) in time_step seconds (> 0): the way to move a scripted platform and have
+ *  what rides it follow. Static and dynamic bodies are refused. Wakes it if it moves. */
+I2D_API i2d_status i2d_body_set_target_transform(i2d_body_id body, i2d_transform target, float time_step);
+I2D_API i2d_status i2d_body_set_bullet(i2d_body_id body, bool flag);
+I2D_API bool i2d_body_is_bullet(i2d_body_id body);
+/** False keeps the body (and whatever touches it) awake, and wakes it now. */
+I2D_API i2d_status i2d_body_enable_sleep(i2d_body_id body, bool flag);
+I2D_API bool i2d_body_is_sleep_enabled(i2d_body_id body);
+/** The speed below which the body counts as resting, in the world's length units per
+ *  second; [0, 1e5]. A body starts with the world def's sleep_speed_threshold. */
+I2D_API i2d_status i2d_body_set_sleep_threshold(i2d_body_id body, float speed);
+I2D_API float i2d_body_get_sleep_threshold(i2d_body_id body);
+/** Finite, may be negative; wakes the body. */
+I2D_API i2d_status i2d_body_set_gravity_scale(i2d_body_id body, float scale);
+I2D_API float i2d_body_get_gravity_scale(i2d_body_id body);
+/** 1/s, >= 0 (as i2d_body_def). */
+I2D_API i2d_status i2d_body_set_linear_damping(i2d_body_id body, float damping);
+I2D_API float i2d_body_get_linear_damping(i2d_body_id body);
+I2D_API i2d_status i2d_body_set_angular_damping(i2d_body_id body, float damping);
+I2D_API float i2d_body_get_angular_damping(i2d_body_id body);
+/** A fixed-rotation body never turns; setting it stops its spin. Wakes the body. */
+I2D_API i2d_status i2d_body_set_fixed_rotation(i2d_body_id body, bool flag);
+I2D_API bool i2d_body_is_fixed_rotation(i2d_body_id body);
+
+/* ---- Contact data: what touches what now ------------------------------------------ */
+
+/** A touching contact: its shapes, its manifold (as the last step left it: world points,
+ *  normal from A to B) and the impulses the last step applied at each point. */
+typedef struct i2d_contact_data {
+    i2d_shape_id shape_a, shape_b;
+    i2d_manifold manifold;
+    float normal_impulses[2];  /**< N s, per manifold point */
+    float tangent_impulses[2]; /**< N s, per manifold point */
+} i2d_contact_data;
+
+/** Fills out with up to capacity touching contacts of the body (sensors excluded) and
+ *  returns how many it has; 0 for a bad id, or out NULL with capacity > 0. */
+I2D_API int32_t i2d_body_get_contact_data(i2d_body_id body, i2d_contact_data* out, int32_t capacity);
+/** The same for one shape. */
+I2D_API int32_t i2d_shape_get_contact_data(i2d_shape_id shape, i2d_contact_data* out, int32_t capacity);
+/** Fills out with up to capacity shapes overlapping the sensor shape (as of the last step:
+ *  the visitors whose begin event came and whose end event has not) and returns how many
+ *  there are. A shape that is not a sensor is refused (I2D_ERR_INVALID_ARGUMENT). */
+I2D_API int32_t i2d_shape_get_sensor_overlaps(i2d_shape_id sensor, i2d_shape_id* out, int32_t capacity);
+
 /* ---- Bulk state: many bodies per call ------------------------------------------- */
 /* For bindings and tools that read or write thousands of bodies per frame: one call
  * instead of one per body. Every call takes `count` body ids of `world` and arrays of at
@@ -255,6 +348,38 @@ I2D_API i2d_status i2d_shape_set_filter(i2d_shape_id shape, i2d_filter filter);
 I2D_API bool i2d_shape_is_sensor(i2d_shape_id shape);
 I2D_API void* i2d_shape_get_user_data(i2d_shape_id shape);
 I2D_API i2d_status i2d_shape_set_user_data(i2d_shape_id shape, void* user_data);
+
+/* ---- Changing a shape at run time ------------------------------------------------- */
+/* As the body setters: refused with the world untouched on a bad id, a locked world or a
+ * bad value; in effect at the next step. */
+
+/** New geometry, checked as at creation; the shape's kind may change (a chain's segments
+ *  are refused). The body's mass is made again from its shapes (unless
+ *  i2d_body_set_mass_data overrode it), its contacts are made afresh at the next step,
+ *  and it wakes. */
+I2D_API i2d_status i2d_shape_set_circle(i2d_shape_id shape, const i2d_circle* circle);
+I2D_API i2d_status i2d_shape_set_capsule(i2d_shape_id shape, const i2d_capsule* capsule);
+I2D_API i2d_status i2d_shape_set_segment(i2d_shape_id shape, const i2d_segment* segment);
+I2D_API i2d_status i2d_shape_set_polygon(i2d_shape_id shape, const i2d_polygon* polygon);
+/** kg/m^2 in [0, 1e10]; update_body_mass false leaves the body's mass until the next
+ *  shape change or i2d_body_apply_mass_from_shapes. */
+I2D_API i2d_status i2d_shape_set_density(i2d_shape_id shape, float density, bool update_body_mass);
+/** Friction, restitution, rolling resistance and tangent speed at once (ranges as in
+ *  i2d_shape_def); touching contacts take the new values at the next step. */
+I2D_API i2d_status i2d_shape_set_material(i2d_shape_id shape, i2d_surface_material material);
+I2D_API i2d_surface_material i2d_shape_get_material(i2d_shape_id shape);
+/** As the shape def's flags of the same names; sensor events apply to visits that begin
+ *  after the call. */
+I2D_API i2d_status i2d_shape_enable_sensor_events(i2d_shape_id shape, bool flag);
+I2D_API bool i2d_shape_are_sensor_events_enabled(i2d_shape_id shape);
+I2D_API i2d_status i2d_shape_enable_contact_events(i2d_shape_id shape, bool flag);
+I2D_API bool i2d_shape_are_contact_events_enabled(i2d_shape_id shape);
+I2D_API i2d_status i2d_shape_enable_hit_events(i2d_shape_id shape, bool flag);
+I2D_API bool i2d_shape_are_hit_events_enabled(i2d_shape_id shape);
+/** The point of the shape (its surface grown by its radius, or inside it) closest to
+ *  target, in world coordinates: target itself when it is inside. (0, 0) for a bad id or a
+ *  non-finite target. */
+I2D_API i2d_vec2 i2d_shape_get_closest_point(i2d_shape_id shape, i2d_vec2 target);
 
 /* ---- Chains --------------------------------------------------------------------- */
 

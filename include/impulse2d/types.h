@@ -161,6 +161,17 @@ typedef struct i2d_world_def {
     /** Contact hit events are reported for impacts faster than this, m/s; default 1.
      *  Range [0, 1e5]. */
     float hit_event_threshold;
+    /** The world's length unit: how many of them make a metre; default 1. Range
+     *  [1e-3, 1e4]. A game in pixels at 50 per metre sets 50 and gives every length, speed
+     *  and acceleration of every def and call in pixels; the engine's own tolerances
+     *  (the speculative distance, the boxes' margins, the manifold-keeping distances) scale
+     *  with it, so the scene moves as the same scene in metres, scaled. The length-bearing
+     *  fields of this def (contact_slop, contact_push_max_speed, restitution_threshold,
+     *  maximum_linear_speed, sleep_speed_threshold, hit_event_threshold) are taken as
+     *  given, in these units: start from i2d_default_world_def_in_units(50), which scales
+     *  their defaults, not from i2d_default_world_def() with this field changed. Each
+     *  world has its own (unlike Box2D's one setting for the whole process). */
+    float length_units_per_meter;
     /** Set by i2d_default_world_def(); do not set. */
     uint32_t internal_cookie;
 } i2d_world_def;
