@@ -14,6 +14,28 @@ I2D_API i2d_world_def i2d_default_world_def(void) {
     return to_public(WorldDef{});
 }
 
+// Every length-bearing default scaled from metres: gravity and the speeds by the unit,
+// the slop too; the rest (stiffness, times, ratios) has no length in it.
+I2D_API i2d_world_def i2d_default_world_def_in_units(float length_units_per_meter) {
+    return guarded("i2d_default_world_def_in_units", to_public(WorldDef{}), [&](Call& call) {
+        WorldDef core;
+        if (!call.in_range(length_units_per_meter, min_length_units_per_meter, max_length_units_per_meter,
+                           "length_units_per_meter")) {
+            return to_public(core);
+        }
+        const float units = length_units_per_meter;
+        core.length_units_per_meter = units;
+        core.gravity = units * core.gravity;
+        core.contact_slop *= units;
+        core.contact_push_max_speed *= units;
+        core.restitution_threshold *= units;
+        core.maximum_linear_speed *= units;
+        core.sleep_speed_threshold *= units;
+        core.hit_event_threshold *= units;
+        return to_public(core);
+    });
+}
+
 I2D_API i2d_body_def i2d_default_body_def(void) {
     set_ok();
     const BodyDef core;

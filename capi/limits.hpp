@@ -54,6 +54,11 @@ constexpr int32_t max_substeps = 1000;
 /// resistance, sleep time): far beyond any useful value, small enough to stay finite in
 /// products with speeds and steps.
 constexpr float max_setting = 1.0e5f;
+/// A world's length unit, per metre (i2d_world_def.length_units_per_meter), and the
+/// largest touching tolerance, m.
+constexpr float min_length_units_per_meter = 1.0e-3f;
+constexpr float max_length_units_per_meter = 1.0e4f;
+constexpr float max_contact_slop = 1.0f;
 
 /// Most points a chain may have: a million segments is a large level; more is more
 /// likely a bad count than a level.

@@ -67,21 +67,28 @@ bool valid_workers(Call& call, const i2d_world_def& def) {
 }  // namespace
 
 bool validate_world_def(Call& call, const i2d_world_def* def) {
-    return call.not_null(def, "world def") && call.cookie(def->internal_cookie, "world_def") &&
-           call.finite(def->gravity, "world def: gravity") &&
-           call.in_range(def->contact_slop, 0.0f, 1.0f, "world def: contact_slop") &&
+    if (!call.not_null(def, "world def") || !call.cookie(def->internal_cookie, "world_def") ||
+        !call.in_range(def->length_units_per_meter, min_length_units_per_meter, max_length_units_per_meter,
+                       "world def: length_units_per_meter")) {
+        return false;
+    }
+    // Lengths and speeds are in the world's units: their limits scale with them.
+    const float units = def->length_units_per_meter;
+    const float speed_limit = units * max_speed_limit;
+    return call.finite(def->gravity, "world def: gravity") &&
+           call.in_range(def->contact_slop, 0.0f, units * max_contact_slop, "world def: contact_slop") &&
            call.in_range(def->contact_hertz, min_contact_hertz, max_setting, "world def: contact_hertz") &&
            call.in_range(def->contact_damping_ratio, 0.0f, max_setting, "world def: contact_damping_ratio") &&
            call.in_range(def->joint_hertz, min_contact_hertz, max_setting, "world def: joint_hertz") &&
            call.in_range(def->joint_damping_ratio, 0.0f, max_setting, "world def: joint_damping_ratio") &&
-           call.in_range(def->contact_push_max_speed, 0.0f, max_speed_limit, "world def: contact_push_max_speed") &&
-           call.in_range(def->restitution_threshold, 0.0f, max_speed_limit, "world def: restitution_threshold") &&
-           call.in_range(def->maximum_linear_speed, 1.0e-6f, max_speed_limit, "world def: maximum_linear_speed") &&
+           call.in_range(def->contact_push_max_speed, 0.0f, speed_limit, "world def: contact_push_max_speed") &&
+           call.in_range(def->restitution_threshold, 0.0f, speed_limit, "world def: restitution_threshold") &&
+           call.in_range(def->maximum_linear_speed, 1.0e-6f, speed_limit, "world def: maximum_linear_speed") &&
            valid_mixing_rule(call, &def->friction_mixing, "world def: friction_mixing") &&
            valid_mixing_rule(call, &def->restitution_mixing, "world def: restitution_mixing") &&
-           call.in_range(def->sleep_speed_threshold, 0.0f, max_speed_limit, "world def: sleep_speed_threshold") &&
+           call.in_range(def->sleep_speed_threshold, 0.0f, speed_limit, "world def: sleep_speed_threshold") &&
            call.in_range(def->time_to_sleep, 0.0f, max_setting, "world def: time_to_sleep") &&
-           call.in_range(def->hit_event_threshold, 0.0f, max_speed_limit, "world def: hit_event_threshold") &&
+           call.in_range(def->hit_event_threshold, 0.0f, speed_limit, "world def: hit_event_threshold") &&
            valid_simd_path(call, &def->simd_path) && valid_workers(call, *def);
 }
 
@@ -126,6 +133,7 @@ WorldDef to_core(const i2d_world_def& def) {
     core.tasks.user_context = def.user_task_context;
     core.enable_continuous = def.enable_continuous;
     core.hit_event_threshold = def.hit_event_threshold;
+    core.length_units_per_meter = def.length_units_per_meter;
     return core;
 }
 
@@ -155,6 +163,7 @@ i2d_world_def to_public(const WorldDef& core) {
     def.user_task_context = core.tasks.user_context;
     def.enable_continuous = core.enable_continuous;
     def.hit_event_threshold = core.hit_event_threshold;
+    def.length_units_per_meter = core.length_units_per_meter;
     def.internal_cookie = def_cookie;
     return def;
 }

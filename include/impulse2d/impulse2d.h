@@ -243,15 +243,6 @@ I2D_API bool i2d_body_is_fixed_rotation(i2d_body_id body);
 
 /* ---- Contact data: what touches what now ------------------------------------------ */
 
-/** A touching contact: its shapes, its manifold (as the last step left it: world points,
- *  normal from A to B) and the impulses the last step applied at each point. */
-typedef struct i2d_contact_data {
-    i2d_shape_id shape_a, shape_b;
-    i2d_manifold manifold;
-    float normal_impulses[2];  /**< N s, per manifold point */
-    float tangent_impulses[2]; /**< N s, per manifold point */
-} i2d_contact_data;
-
 /** Fills out with up to capacity touching contacts of the body (sensors excluded) and
  *  returns how many it has; 0 for a bad id, or out NULL with capacity > 0. */
 I2D_API int32_t i2d_body_get_contact_data(i2d_body_id body, i2d_contact_data* out, int32_t capacity);

@@ -318,6 +318,15 @@ typedef struct i2d_manifold {
     i2d_manifold_point points[2];
 } i2d_manifold;
 
+/** A touching contact: its shapes, its manifold (as the last step left it: world points,
+ *  normal from A to B) and the impulses the last step applied at each point. */
+typedef struct i2d_contact_data {
+    i2d_shape_id shape_a, shape_b;
+    i2d_manifold manifold;
+    float normal_impulses[2];  /**< N s, per manifold point */
+    float tangent_impulses[2]; /**< N s, per manifold point */
+} i2d_contact_data;
+
 /* ---- Events: arrays owned by the world, valid until the next step or world change ---- */
 
 /** Two shapes started touching during the last step (both enable contact events), with

@@ -24,6 +24,9 @@ public:
     static constexpr bool loading = false;
     explicit SaveIo(ByteWriter& out) : out_(out) {}
 
+    /// Whether the bytes have the fields a format version added: a save writes the newest.
+    bool has_version(uint32_t) const { return true; }
+
     void operator()(const float& v) { out_.f32(v); }
     void operator()(const int32_t& v) { out_.i32(v); }
     void operator()(const uint32_t& v) { out_.u32(v); }
@@ -67,7 +70,11 @@ private:
 class LoadIo {
 public:
     static constexpr bool loading = true;
-    explicit LoadIo(ByteReader& in) : in_(in) {}
+    /// `version`: the format version of the bytes, for formats that grew fields.
+    explicit LoadIo(ByteReader& in, uint32_t version = UINT32_MAX) : in_(in), version_(version) {}
+
+    /// Whether the bytes have the fields a format version added.
+    bool has_version(uint32_t version) const { return version_ >= version; }
 
     void operator()(float& v) {
         v = in_.f32();
@@ -118,6 +125,7 @@ public:
 
 private:
     ByteReader& in_;
+    uint32_t version_;
 };
 
 /// A list of indices or small values: its length, then each.

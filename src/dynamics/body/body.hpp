@@ -71,6 +71,10 @@ struct alignas(64) Body {
     Vec2 center0;
     Rot rotation0;
     float min_extent = 0.0f;
+    float sleep_threshold = 0.05f;  // resting below this speed, length units per second
+    bool enabled = true;            // false: out of the broadphase, contacts, islands and solver
+    bool mass_overridden = false;   // mass, local_center and override_inertia set by the caller
+    float override_inertia = 0.0f;  // about the centre of mass, kept while fixed_rotation zeroes inertia
 };
 
 }  // namespace i2d

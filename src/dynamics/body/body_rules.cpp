@@ -11,28 +11,45 @@
 
 namespace i2d {
 
+namespace {
+
 // Inertia is summed about the body origin, then moved to the centre of mass by the
 // parallel axis theorem.
+void sum_shape_masses(Body& b, const Pool<Shape>& shapes) {
+    float mass = 0.0f, inertia_about_origin = 0.0f;
+    Vec2 moment;
+    for (int32_t s = b.head_shape; s != null_index; s = shapes[s].next_in_body) {
+        const MassData md = compute_mass(shapes[s].geometry, shapes[s].density);
+        mass += md.mass;
+        moment += md.mass * md.center;
+        inertia_about_origin += md.rotational_inertia + md.mass * length_squared(md.center);
+    }
+    // Below FLT_MIN the inverse would overflow; such a body counts as massless.
+    if (mass >= FLT_MIN) {
+        b.mass = mass;
+        b.local_center = (1.0f / mass) * moment;
+        b.inertia = inertia_about_origin - mass * length_squared(b.local_center);
+    } else {
+        b.mass = 1.0f;
+    }
+}
+
+}  // namespace
+
+// A mass the caller set (mass_overridden) stays; the extents always follow the shapes.
 void update_mass_from_shapes(Body& b, const Pool<Shape>& shapes) {
-    b.mass = b.inv_mass = b.inertia = b.inv_inertia = 0.0f;
+    const bool overridden = b.mass_overridden && b.type == BodyType::dynamic;
+    if (!overridden) {
+        b.mass = 0.0f;
+        b.local_center = {};
+    }
+    b.inv_mass = b.inertia = b.inv_inertia = 0.0f;
     b.max_extent = 0.0f;
-    b.local_center = {};
     if (b.type == BodyType::dynamic) {
-        float mass = 0.0f, inertia_about_origin = 0.0f;
-        Vec2 moment;
-        for (int32_t s = b.head_shape; s != null_index; s = shapes[s].next_in_body) {
-            const MassData md = compute_mass(shapes[s].geometry, shapes[s].density);
-            mass += md.mass;
-            moment += md.mass * md.center;
-            inertia_about_origin += md.rotational_inertia + md.mass * length_squared(md.center);
-        }
-        // Below FLT_MIN the inverse would overflow; such a body counts as massless.
-        if (mass >= FLT_MIN) {
-            b.mass = mass;
-            b.local_center = (1.0f / mass) * moment;
-            b.inertia = inertia_about_origin - mass * length_squared(b.local_center);
+        if (overridden) {
+            b.inertia = b.override_inertia;
         } else {
-            b.mass = 1.0f;
+            sum_shape_masses(b, shapes);
         }
         b.inv_mass = 1.0f / b.mass;
         if (b.fixed_rotation) {
@@ -86,6 +103,7 @@ void change_type(Body& b, BodyType type) {
     if (type != BodyType::dynamic) {
         b.force = {};
         b.torque = 0.0f;
+        b.mass_overridden = false;  // only a dynamic body has a mass to set
     }
 }
 

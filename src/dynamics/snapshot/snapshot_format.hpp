@@ -42,7 +42,9 @@ struct SnapshotHeader {
     uint64_t structure_version = 0;
 };
 
-constexpr uint32_t snapshot_format_version = 1;
+// 2 added the world's length unit and each body's sleep threshold, enabled flag and mass
+// override; a version 1 snapshot loads with the values a world then had.
+constexpr uint32_t snapshot_format_version = 2;
 constexpr std::size_t snapshot_header_size = 48;
 
 /// Writes the header into the first snapshot_header_size bytes of `out`.

@@ -48,6 +48,11 @@ void settings_fields(Io& io, Def& s) {
     io(s.enable_contact_recycling);
     io(s.enable_continuous);
     io(s.hit_event_threshold);
+    if (io.has_version(2)) {
+        io(s.length_units_per_meter);
+    } else if constexpr (Io::loading) {
+        s.length_units_per_meter = 1.0f;
+    }
 }
 
 template <class Io, class B>
@@ -91,6 +96,15 @@ void body_fields(Io& io, B& b, SnapshotPart part) {
     io(b.head_joint_key);
     io(b.joint_count);
     io(b.user_data);
+    if (io.has_version(2)) {
+        io(b.sleep_threshold);
+        io(b.enabled);
+        io(b.mass_overridden);
+        io(b.override_inertia);
+    } else if constexpr (Io::loading) {
+        b.enabled = true;  // the sleep threshold is the world's (World::transfer)
+        b.mass_overridden = false;
+    }
 }
 
 template <class Io, class G>

@@ -25,7 +25,11 @@ void World::transfer(Io& io, Self& world) {
     {
         SectionOf<Io> s(bytes, bodies_section);
         if constexpr (Io::loading) {
-            world.bodies_.load(io, [](LoadIo& in, Body& b) {
+            const float world_sleep_threshold = world.settings_.sleep_speed_threshold;
+            world.bodies_.load(io, [world_sleep_threshold](LoadIo& in, Body& b) {
+                if (!in.has_version(2)) {
+                    b.sleep_threshold = world_sleep_threshold;  // before version 2 every body had the world's
+                }
                 body_fields(in, b, SnapshotPart::whole);
                 b.move_event = null_index;  // not saved: each step numbers its own events
             });
@@ -132,7 +136,7 @@ const char* World::load_snapshot(const void* data, std::size_t size) {
         return problem;
     }
     ByteReader reader(static_cast<const unsigned char*>(data) + snapshot_header_size, std::size_t(header.payload_size));
-    LoadIo io(reader);
+    LoadIo io(reader, header.version);
     transfer(io, *this);
     if (!reader.failed() && reader.remaining() != 0) {
         reader.check(false, "the snapshot holds more than its sections");

@@ -156,8 +156,7 @@ void BodyPass::integrate_positions(const StepContext& step, BodyPass& pass, cons
 void BodyPass::finalize(const StepContext& step, BodyPass& pass, const NoStageArg&, int32_t begin, int32_t end,
                         int32_t) {
     const WorldDef& settings = step.settings;
-    const FinalTerms terms{step.time_step, settings.sleep_speed_threshold, settings.enable_sleep,
-                           settings.enable_continuous};
+    const FinalTerms terms{step.time_step, settings.enable_sleep, settings.enable_continuous};
     for (int32_t k = begin; k < end; ++k) {
         pass.finalize_body(terms, k);
     }
@@ -195,7 +194,7 @@ void BodyPass::finalize_body(const FinalTerms& terms, int32_t k) {
 
     if (terms.enable_sleep) {
         // A body rests while its fastest point (spin x extent) and its centre stay slow.
-        const float threshold = terms.sleep_speed_threshold;
+        const float threshold = b.sleep_threshold;
         const bool resting = b.enable_sleep && length(b.linear_velocity) <= threshold &&
                              std::fabs(b.angular_velocity) * b.max_extent <= threshold;
         b.sleep_time = resting ? b.sleep_time + time_step : 0.0f;

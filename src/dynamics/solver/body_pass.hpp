@@ -89,7 +89,6 @@ private:
     // context, each body's stores would make the compiler read them again.
     struct FinalTerms {
         float time_step;  // s
-        float sleep_speed_threshold;  // m/s
         bool enable_sleep, enable_continuous;
     };
     void finalize_body(const FinalTerms& terms, int32_t k);

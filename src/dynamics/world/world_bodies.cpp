@@ -30,6 +30,7 @@ int32_t World::create_body(const BodyDef& def) {
     b.gravity_scale = def.gravity_scale;
     b.fixed_rotation = def.fixed_rotation;
     b.enable_sleep = def.enable_sleep;
+    b.sleep_threshold = settings_.sleep_speed_threshold;
     b.is_bullet = def.is_bullet;
     b.user_data = def.user_data;
     update_mass(index);

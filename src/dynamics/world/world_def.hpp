@@ -31,6 +31,7 @@ struct WorldDef {
     TaskCallbacks tasks;                       // both null: the built-in pool
     bool enable_continuous = true;             // sweep fast bodies (continuous.hpp)
     float hit_event_threshold = 1.0f;          // m/s: slower impacts report no hit event
+    float length_units_per_meter = 1.0f;       // the world's length unit (tolerances scale with it)
 };
 
 }  // namespace i2d
