@@ -58,6 +58,18 @@ enum class RecordedOp : uint8_t {
     set_joint_user_data,
     set_gravity,
     rebuild_static_tree,
+    // Added with the runtime API (issue 40): new kinds go last, so that older recordings
+    // keep their numbers.
+    set_mass_data,
+    set_body_enabled,
+    set_body_setting,   // a body's float setting (BodySetting) and its value
+    set_body_flag,      // a body's flag (BodyFlag) and its value
+    set_shape_geometry,
+    set_shape_density,
+    set_shape_material,
+    set_shape_flag,     // a shape's event flag (ShapeFlag) and its value
+    set_world_settings, // the simulation's settings whole
+    shift_origin,
     count
 };
 
