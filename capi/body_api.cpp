@@ -75,8 +75,6 @@ BodyDef to_core(const i2d_body_def& def) {
     return core;
 }
 
-// The common prologue of calls that change a body: a live id and an unlocked world.
-bool mutable_body(Call& call, i2d_body_id id, BodyRef& b) { return call.body(id, b) && call.unlocked(*b.world); }
 
 }  // namespace
 
@@ -84,8 +82,19 @@ namespace i2d::capi {
 
 namespace {
 
-// The mass, inertia, centre and extents the body's shapes give it, bit for bit: no call
-// sets them any other way.
+// A mass i2d_body_set_mass_data could have set.
+template <class Name>
+bool valid_mass_override(Call& call, const Body& b, Name name) {
+    if (b.type != BodyType::dynamic) {
+        return call.fail(I2D_ERR_INVALID_ARGUMENT, "%s: a mass set on a body that is not dynamic", name("mass"));
+    }
+    return call.in_range(b.mass, FLT_MIN, max_mass, name("mass")) &&
+           call.in_range(b.override_inertia, 0.0f, max_inertia, name("override_inertia")) &&
+           call.local_point(to_public(b.local_center), name("local_center"));
+}
+
+// The mass, inertia, centre and extents the body's shapes (or the mass it was set) give
+// it, bit for bit: no call sets them any other way.
 bool mass_from_shapes(Call& call, const World& world, const Body& body, int32_t index) {
     Body expected = body;
     update_mass_from_shapes(expected, world.shapes());
@@ -120,6 +129,9 @@ bool valid_loaded_body(Call& call, const World& world, int32_t index) {
             !call.in_range(b.linear_damping, 0.0f, FLT_MAX, name("linear_damping")) ||
             !call.in_range(b.angular_damping, 0.0f, FLT_MAX, name("angular_damping")) ||
             !call.in_range(b.sleep_time, 0.0f, FLT_MAX, name("sleep_time")) ||
+            !call.in_range(b.sleep_threshold, 0.0f, max_speed_limit * world.settings().length_units_per_meter,
+                           name("sleep_threshold")) ||
+            (b.mass_overridden && !valid_mass_override(call, b, name)) ||
             !call.in_range(b.angular_velocity, -max_angular_speed, max_angular_speed, name("angular_velocity"))) {
             return false;
         }

@@ -115,6 +115,15 @@ R guarded(const char* function, R on_failure, F&& body) {
     return on_failure;
 }
 
+/// The prologue of calls that change something: a live id and an unlocked world.
+inline bool mutable_body(Call& call, i2d_body_id id, BodyRef& b) { return call.body(id, b) && call.unlocked(*b.world); }
+inline bool mutable_shape(Call& call, i2d_shape_id id, ShapeRef& s) {
+    return call.shape(id, s) && call.unlocked(*s.world);
+}
+inline bool mutable_world(Call& call, i2d_world_id id, WorldRef& w) {
+    return call.world(id, w) && call.unlocked(*w.world);
+}
+
 /// Public id of a core object.
 i2d_world_id make_world_id(const IdFields& world);
 i2d_body_id make_body_id(const IdFields& world, int32_t index, uint16_t generation);

@@ -33,6 +33,12 @@ constexpr float rotation_normalization_tolerance = 1.0e-3f;
 /// Largest shape density, kg/m^2: keeps mass x offset finite for the largest shapes.
 constexpr float max_density = 1.0e10f;
 
+/// Largest mass (kg) and rotational inertia (kg m^2) a caller may set on a body: what
+/// the densest largest shape could give it, so that mass x speed and inertia x spin stay
+/// finite as they do for shapes' masses.
+constexpr float max_mass = 1.0e20f;
+constexpr float max_inertia = 1.0e30f;
+
 /// Largest restitution and speed limit a world accepts: restitution x speed must stay
 /// a finite impulse target.
 constexpr float max_restitution = 100.0f;

@@ -9,27 +9,13 @@
 #include "convert.hpp"
 #include "limits.hpp"
 #include "loaded_values.hpp"
+#include "shape_rules.hpp"
 #include "dynamics/constants.hpp"
 
 using namespace i2d;
 using namespace i2d::capi;
 
 namespace {
-
-// What a shape is made of, as a def gives it and a shape keeps it.
-struct Material {
-    float density, friction, restitution, rolling_resistance, tangent_speed;
-};
-
-// name(field) spells each field in messages (loaded_values.hpp).
-template <class Name>
-bool valid_material(Call& call, const Material& m, Name name) {
-    return call.in_range(m.density, 0.0f, max_density, name("density")) &&
-           call.in_range(m.friction, 0.0f, FLT_MAX, name("friction")) &&
-           call.in_range(m.restitution, 0.0f, max_restitution, name("restitution")) &&
-           call.in_range(m.rolling_resistance, 0.0f, max_setting, name("rolling_resistance")) &&
-           call.in_range(m.tangent_speed, -max_speed_limit, max_speed_limit, name("tangent_speed"));
-}
 
 bool validate_shape_def(Call& call, const i2d_shape_def* def) {
     return call.not_null(def, "shape def") && call.cookie(def->internal_cookie, "shape_def") &&
@@ -65,7 +51,6 @@ i2d_shape_id create_shape(Call& call, const BodyRef& b, const i2d_shape_def* def
     return make_shape_id(b.id, index, b.world->shapes().generation(index));
 }
 
-bool mutable_shape(Call& call, i2d_shape_id id, ShapeRef& s) { return call.shape(id, s) && call.unlocked(*s.world); }
 
 }  // namespace
 
@@ -91,6 +76,8 @@ bool valid_chain_segment(Call& call, const ChainSegment& c, int32_t index, const
     }
     return true;
 }
+
+}  // namespace
 
 // The geometry a create call would have taken, each kind under its own call's rules.
 bool valid_geometry(Call& call, const Geometry& g, int32_t index, const char* name) {
@@ -124,8 +111,6 @@ bool valid_geometry(Call& call, const Geometry& g, int32_t index, const char* na
             return call.fail(I2D_ERR_INVALID_ARGUMENT, "shape %d: its kind is unknown", static_cast<int>(index));
     }
 }
-
-}  // namespace
 
 bool valid_loaded_shape(Call& call, const World& world, int32_t index) {
     const Shape& s = world.shapes()[index];
@@ -260,24 +245,37 @@ I2D_API i2d_shape_id i2d_shape_create_polygon_from(i2d_body_id body, const i2d_s
                                                    const i2d_polygon* polygon) {
     return guarded("i2d_shape_create_polygon_from", I2D_NULL_SHAPE_ID, [&](Call& call) -> i2d_shape_id {
         BodyRef b;
-        Hull hull;
+        Geometry g;
         if (!call.body(body, b) || !call.unlocked(*b.world) || !validate_shape_def(call, def) ||
-            !valid_convex_polygon(call, polygon, "polygon") ||
-            !call.in_range(polygon->radius, 0.0f, max_shape_extent, "polygon radius")) {
+            !polygon_geometry_of(call, polygon, g)) {
             return I2D_NULL_SHAPE_ID;
         }
-        for (int32_t i = 0; i < polygon->count; ++i) {
-            if (!call.local_point(polygon->vertices[i], "polygon vertex")) {
-                return I2D_NULL_SHAPE_ID;
-            }
-        }
-        const Polygon given = to_core(*polygon);
-        if (!hull_of(call, given.vertices, given.count, hull)) {
-            return I2D_NULL_SHAPE_ID;
-        }
-        return create_shape(call, b, def, polygon_geometry(make_polygon(hull, given.radius)));
+        return create_shape(call, b, def, g);
     });
 }
+
+namespace i2d::capi {
+
+bool polygon_geometry_of(Call& call, const i2d_polygon* polygon, Geometry& out) {
+    if (!valid_convex_polygon(call, polygon, "polygon") ||
+        !call.in_range(polygon->radius, 0.0f, max_shape_extent, "polygon radius")) {
+        return false;
+    }
+    for (int32_t i = 0; i < polygon->count; ++i) {
+        if (!call.local_point(polygon->vertices[i], "polygon vertex")) {
+            return false;
+        }
+    }
+    const Polygon given = to_core(*polygon);
+    Hull hull;
+    if (!hull_of(call, given.vertices, given.count, hull)) {
+        return false;
+    }
+    out = polygon_geometry(make_polygon(hull, given.radius));
+    return true;
+}
+
+}  // namespace i2d::capi
 
 I2D_API i2d_shape_id i2d_shape_create_capsule(i2d_body_id body, const i2d_shape_def* def, i2d_vec2 center1,
                                               i2d_vec2 center2, float radius) {

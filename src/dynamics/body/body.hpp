@@ -34,6 +34,19 @@ struct BodyDef {
 
 // The fields every step reads of every awake body (the narrowphase, gathering states,
 // the final pass) come first, in the first cache line; the lists and settings follow.
+/// A body's float settings that can change after creation.
+enum class BodySetting : uint8_t { gravity_scale, linear_damping, angular_damping, sleep_threshold, count };
+/// A body's flags that can change after creation.
+enum class BodyFlag : uint8_t { bullet, enable_sleep, fixed_rotation, count };
+
+/// A mass the caller sets in place of the shapes' (overridden), or none (the shapes' again).
+struct MassOverride {
+    bool overridden = false;
+    float mass = 0.0f;   // kg, > 0
+    Vec2 local_center;   // body frame
+    float inertia = 0.0f;  // about local_center, kg m^2, >= 0
+};
+
 struct alignas(64) Body {
     Transform transform;  // body origin and rotation
     Vec2 center;          // centre of mass in the world

@@ -38,6 +38,9 @@ struct ShapeDef {
 // in one cache line (body, proxy, boxes, flags); the material, read when a contact is
 // made, and the geometry, hundreds of bytes for a polygon, follow. The proxy's boxes are
 // kept here too so that neither step walks the tree to read them.
+/// A shape's event flags that can change after creation.
+enum class ShapeFlag : uint8_t { contact_events, sensor_events, hit_events, count };
+
 struct Shape {
     int32_t body = null_index;
     int32_t proxy_key = null_index;  // in the broadphase

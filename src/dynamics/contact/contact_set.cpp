@@ -137,12 +137,21 @@ void ContactSet::destroy_contacts_between(int32_t body_a, int32_t body_b, WakeBo
     }
 }
 
-void ContactSet::mix_materials_of_shape(int32_t shape) {
+// A shape's material, outline (its rounding radius) or hit-event flag changed: its
+// contacts take the new values. Contact and sensor event flags stay as the contact was
+// made, so that every begin event reported keeps its end.
+void ContactSet::refresh_contacts_of_shape(int32_t shape) {
     ++layout_version_;  // the colouring notes whether any contact is elastic
     visit_contacts(shapes_[shape].body, [&](int32_t contact, int32_t) {
         Contact& c = pool_[contact];
         if (c.shape_a == shape || c.shape_b == shape) {
-            mix_material(c, shapes_[c.shape_a], shapes_[c.shape_b]);
+            const Shape& a = shapes_[c.shape_a];
+            const Shape& b = shapes_[c.shape_b];
+            mix_material(c, a, b);
+            if ((c.flags & contact_sensor) == 0) {
+                const bool hits = a.enable_hit_events || b.enable_hit_events;
+                c.flags = hits ? c.flags | contact_hit_events : c.flags & ~uint32_t(contact_hit_events);
+            }
         }
     });
 }

@@ -98,8 +98,9 @@ public:
     /// The body's centre of mass moved within it (its shapes changed): its manifolds'
     /// anchors are stale and must be made afresh.
     void forget_manifolds(int32_t body);
-    /// The shape's friction or restitution changed: its contacts mix them again.
-    void mix_materials_of_shape(int32_t shape);
+    /// The shape's material, geometry or hit-event flag changed: its contacts mix the
+    /// materials again and take the flag.
+    void refresh_contacts_of_shape(int32_t shape);
     /// A body woke: its contacts join the awake list, with its new solver state.
     void body_woke(int32_t body);
     /// A body fell asleep: its contacts with nothing awake leave the awake list.

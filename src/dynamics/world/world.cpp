@@ -86,6 +86,24 @@ void World::set_gravity(Vec2 gravity) {
     wake_all();
 }
 
+// Turning sleep off wakes every body: none may stay asleep in a world without sleep.
+void World::set_settings(const WorldDef& settings) {
+    RecordScope record(recorder_.get(), RecordedOp::set_world_settings);
+    record.write(settings);
+    ++structure_version_;
+    WorldDef next = settings;
+    next.worker_count = settings_.worker_count;
+    next.tasks = settings_.tasks;
+    next.simd_path = settings_.simd_path;
+    next.enable_profile = settings_.enable_profile;
+    next.length_units_per_meter = settings_.length_units_per_meter;
+    const bool wake = settings_.enable_sleep && !next.enable_sleep;
+    settings_ = next;
+    if (wake) {
+        wake_all();
+    }
+}
+
 void World::set_id_encoder(const IdEncoder& ids) { stages_->events.ids = ids; }
 
 int32_t World::worker_count() const { return stages_->tasks.worker_count(); }

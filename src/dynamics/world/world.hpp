@@ -117,6 +117,9 @@ public:
     bool apply_linear_impulse(int32_t body, Vec2 impulse, Vec2 point, bool wake);
     bool apply_angular_impulse(int32_t body, float impulse, bool wake);
     void set_user_data(int32_t body, void* user_data);
+    void set_mass_data(int32_t body, const MassOverride& mass);
+    void set_body_setting(int32_t body, BodySetting setting, float value);
+    void set_body_flag(int32_t body, BodyFlag flag, bool value);
 
     bool is_awake(int32_t body) const { return bodies_[body].awake_index != null_index; }
     bool is_quarantined(int32_t body) const { return bodies_[body].quarantined; }
@@ -141,6 +144,10 @@ public:
     void set_restitution(int32_t shape, float restitution);
     /// Changes a shape's filter; its contacts are rebuilt at the next step.
     void set_filter(int32_t shape, const Filter& filter);
+    void set_geometry(int32_t shape, const Geometry& geometry);
+    void set_density(int32_t shape, float density, bool update_body_mass);
+    void set_material(int32_t shape, const SurfaceMaterial& material);
+    void set_shape_flag(int32_t shape, ShapeFlag flag, bool value);
     void set_shape_user_data(int32_t shape, void* user_data);
 
     // Joints (world_joints.cpp). The def must be valid (two live, different bodies,
@@ -161,6 +168,11 @@ public:
 
     // The world (world.cpp, world_step.cpp).
     void set_gravity(Vec2 gravity);
+    /// The simulation's settings (not the host's wiring: workers, tasks, SIMD path,
+    /// profiling; nor the length unit, which the world's tolerances were made for).
+    void set_settings(const WorldDef& settings);
+    void set_user_data(void* user_data) { user_data_ = user_data; }
+    void* user_data() const { return user_data_; }
     void step(float time_step, int32_t substep_count);
     /// Installs the C boundary's id encoding for the ids inside events.
     void set_id_encoder(const IdEncoder& ids);
@@ -318,6 +330,7 @@ private:
     mutable int32_t next_saved_state_ = 0;
     std::unique_ptr<Recorder> recorder_;          // while recording: host wiring, kept by restores
     StepProfile profile_;
+    void* user_data_ = nullptr;  // the host's, never read; not in snapshots
     mutable bool profiling_ = false;
     mutable int32_t lock_depth_ = 0;
     bool stepping_ = false;

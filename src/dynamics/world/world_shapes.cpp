@@ -158,7 +158,7 @@ void World::set_friction(int32_t shape, float friction) {
     record.write(shape, friction);
     ++structure_version_;
     shapes_[shape].friction = friction;
-    stages_->contacts.mix_materials_of_shape(shape);
+    stages_->contacts.refresh_contacts_of_shape(shape);
 }
 
 void World::set_restitution(int32_t shape, float restitution) {
@@ -166,7 +166,7 @@ void World::set_restitution(int32_t shape, float restitution) {
     record.write(shape, restitution);
     ++structure_version_;
     shapes_[shape].restitution = restitution;
-    stages_->contacts.mix_materials_of_shape(shape);
+    stages_->contacts.refresh_contacts_of_shape(shape);
 }
 
 // The proxy is re-created because the trees keep category bits for query masks; its
