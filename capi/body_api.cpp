@@ -86,7 +86,8 @@ namespace {
 template <class Name>
 bool valid_mass_override(Call& call, const Body& b, Name name) {
     if (b.type != BodyType::dynamic) {
-        return call.fail(I2D_ERR_INVALID_ARGUMENT, "%s: a mass set on a body that is not dynamic", name("mass"));
+        return call.fail(I2D_ERR_INVALID_ARGUMENT, "%s: a mass set on a body that is not dynamic",
+                         static_cast<const char*>(name("mass")));
     }
     return call.in_range(b.mass, FLT_MIN, max_mass, name("mass")) &&
            call.in_range(b.override_inertia, 0.0f, max_inertia, name("override_inertia")) &&

@@ -218,7 +218,10 @@ I2D_API i2d_status i2d_body_enable(i2d_body_id body);
 I2D_API bool i2d_body_is_enabled(i2d_body_id body);
 /** Sets a kinematic body's velocities so that it reaches target (rotation normalised
  *  within 1e-3) in time_step seconds (> 0): the way to move a scripted platform and have
- *  what rides it follow. Static and dynamic bodies are refused. Wakes it if it moves. */
+ *  what rides it follow. Its centre of mass arrives exactly; its angle as the step's
+ *  integrator turns it, short of a turn theta by about theta^3 / (3 n^2) for n substeps
+ *  (under 1e-5 rad for 0.05 rad in 4 substeps). The turn is the short way round. Static
+ *  and dynamic bodies are refused. Wakes it if it moves. */
 I2D_API i2d_status i2d_body_set_target_transform(i2d_body_id body, i2d_transform target, float time_step);
 I2D_API i2d_status i2d_body_set_bullet(i2d_body_id body, bool flag);
 I2D_API bool i2d_body_is_bullet(i2d_body_id body);

@@ -212,6 +212,17 @@ static void snap_body(snapshot* s, const fixture* f, int i) {
               i2d_body_get_local_center_of_mass(b));
     snap_put(s, i, "body.is_awake", i2d_body_is_awake(b));
     snap_pointer(s, i, "body.user_data", i2d_body_get_user_data(b));
+    i2d_mass_data mass = i2d_body_get_mass_data(b);
+    snap_float(s, i, "body.mass_data.mass", mass.mass);
+    snap_vec2(s, i, "body.mass_data.center.x", "body.mass_data.center.y", mass.center);
+    snap_float(s, i, "body.mass_data.rotational_inertia", mass.rotational_inertia);
+    snap_float(s, i, "body.gravity_scale", i2d_body_get_gravity_scale(b));
+    snap_float(s, i, "body.linear_damping", i2d_body_get_linear_damping(b));
+    snap_float(s, i, "body.angular_damping", i2d_body_get_angular_damping(b));
+    snap_float(s, i, "body.sleep_threshold", i2d_body_get_sleep_threshold(b));
+    snap_put(s, i, "body.is_bullet", i2d_body_is_bullet(b));
+    snap_put(s, i, "body.is_sleep_enabled", i2d_body_is_sleep_enabled(b));
+    snap_put(s, i, "body.is_fixed_rotation", i2d_body_is_fixed_rotation(b));
     snap_put(s, i, "body.shape_count", (uint64_t)(int64_t)i2d_body_get_shape_count(b));
 
     /* The shape list, as indices into the fixture (ids differ between twins). */
@@ -282,6 +293,12 @@ static void snap_shape(snapshot* s, const fixture* f, int j) {
     snap_put(s, object, "shape.filter.mask_bits", filter.mask_bits);
     snap_put(s, object, "shape.filter.group_index", (uint64_t)(int64_t)filter.group_index);
     snap_put(s, object, "shape.is_sensor", i2d_shape_is_sensor(sh));
+    i2d_surface_material material = i2d_shape_get_material(sh);
+    snap_float(s, object, "shape.material.rolling_resistance", material.rolling_resistance);
+    snap_float(s, object, "shape.material.tangent_speed", material.tangent_speed);
+    snap_put(s, object, "shape.sensor_events", i2d_shape_are_sensor_events_enabled(sh));
+    snap_put(s, object, "shape.contact_events", i2d_shape_are_contact_events_enabled(sh));
+    snap_put(s, object, "shape.hit_events", i2d_shape_are_hit_events_enabled(sh));
     snap_pointer(s, object, "shape.user_data", i2d_shape_get_user_data(sh));
 }
 
@@ -293,6 +310,18 @@ void snapshot_take(const fixture* f, snapshot* s) {
     snap_put(s, -1, "world.shape_count", (uint64_t)(int64_t)counters.shape_count);
     snap_put(s, -1, "world.contact_count", (uint64_t)(int64_t)counters.contact_count);
     snap_put(s, -1, "world.pair_count", (uint64_t)(int64_t)counters.pair_count);
+    snap_put(s, -1, "world.state_hash", i2d_world_get_state_hash(f->world));
+    i2d_world_def settings = i2d_world_get_settings(f->world);
+    snap_put(s, -1, "world.enable_sleep", settings.enable_sleep);
+    snap_put(s, -1, "world.enable_continuous", settings.enable_continuous);
+    snap_float(s, -1, "world.contact_hertz", settings.contact_hertz);
+    snap_float(s, -1, "world.contact_damping_ratio", settings.contact_damping_ratio);
+    snap_float(s, -1, "world.contact_push_max_speed", settings.contact_push_max_speed);
+    snap_float(s, -1, "world.joint_hertz", settings.joint_hertz);
+    snap_float(s, -1, "world.joint_damping_ratio", settings.joint_damping_ratio);
+    snap_float(s, -1, "world.restitution_threshold", settings.restitution_threshold);
+    snap_float(s, -1, "world.hit_event_threshold", settings.hit_event_threshold);
+    snap_pointer(s, -1, "world.user_data", i2d_world_get_user_data(f->world));
     for (int i = 0; i < FIX_BODIES; ++i) {
         snap_body(s, f, i);
     }

@@ -33,6 +33,36 @@ struct Session {
 
 void step(i2d_world_id world) { i2d_world_step(world, det::time_step, det::substeps); }
 
+// The runtime API's calls (issue 40): a body's, a shape's and the world's settings.
+void record_runtime_settings(i2d_world_id world, const std::vector<i2d_body_id>& made) {
+    const i2d_body_id crate = made[5];
+    I2D_CHECK_STATUS(i2d_body_set_mass_data(crate, i2d_mass_data{3.0f, i2d_vec2{0.1f, 0}, 0.4f}), I2D_OK);
+    I2D_CHECK_STATUS(i2d_body_set_gravity_scale(crate, 0.5f), I2D_OK);
+    I2D_CHECK_STATUS(i2d_body_set_linear_damping(crate, 0.2f), I2D_OK);
+    I2D_CHECK_STATUS(i2d_body_set_angular_damping(crate, 0.3f), I2D_OK);
+    I2D_CHECK_STATUS(i2d_body_set_sleep_threshold(crate, 0.1f), I2D_OK);
+    I2D_CHECK_STATUS(i2d_body_set_bullet(crate, true), I2D_OK);
+    I2D_CHECK_STATUS(i2d_body_enable_sleep(crate, false), I2D_OK);
+    I2D_CHECK_STATUS(i2d_body_set_fixed_rotation(crate, true), I2D_OK);
+    const i2d_transform ahead{i2d_vec2{10.5f, 10}, i2d_make_rot(0.1f)};
+    I2D_CHECK_STATUS(i2d_body_set_target_transform(made[4], ahead, det::time_step), I2D_OK);
+    i2d_shape_id shapes[1];
+    i2d_body_get_shapes(made[3], shapes, 1);
+    const i2d_circle grown{i2d_vec2{0, 0}, 0.4f};
+    I2D_CHECK_STATUS(i2d_shape_set_circle(shapes[0], &grown), I2D_OK);
+    I2D_CHECK_STATUS(i2d_shape_set_density(shapes[0], 2.0f, true), I2D_OK);
+    I2D_CHECK_STATUS(i2d_shape_set_material(shapes[0], i2d_surface_material{0.4f, 0.2f, 0.1f, 0.5f}), I2D_OK);
+    I2D_CHECK_STATUS(i2d_shape_enable_hit_events(shapes[0], true), I2D_OK);
+    I2D_CHECK_STATUS(i2d_shape_enable_contact_events(shapes[0], false), I2D_OK);
+    I2D_CHECK_STATUS(i2d_shape_enable_sensor_events(shapes[0], false), I2D_OK);
+    I2D_CHECK_STATUS(i2d_world_enable_sleeping(world, false), I2D_OK);
+    I2D_CHECK_STATUS(i2d_world_enable_continuous(world, false), I2D_OK);
+    I2D_CHECK_STATUS(i2d_world_set_contact_tuning(world, 40.0f, 8.0f, 2.0f), I2D_OK);
+    I2D_CHECK_STATUS(i2d_world_set_joint_tuning(world, 50.0f, 1.0f), I2D_OK);
+    I2D_CHECK_STATUS(i2d_world_set_restitution_threshold(world, 0.5f), I2D_OK);
+    I2D_CHECK_STATUS(i2d_world_set_hit_event_threshold(world, 2.0f), I2D_OK);
+}
+
 // The snapshot scene, recorded through a session that touches every recorded call kind.
 const Session& session() {
     static const Session recorded = [] {
@@ -112,6 +142,17 @@ const Session& session() {
             if (k == 55) {  // five steps undone and run again with other inputs
                 i2d_world_restore_state(world, rollback.data(), rollback.size());
                 i2d_body_apply_linear_impulse(made[2], i2d_vec2{0, 2}, i2d_vec2{3, 15}, true);
+            }
+            if (k == 70) {
+                record_runtime_settings(world, made);
+            }
+            if (k == 80) {  // the shapes' mass again, and a polygon in place of the circle
+                I2D_CHECK_STATUS(i2d_body_apply_mass_from_shapes(made[5]), I2D_OK);
+                i2d_shape_id shapes[1];
+                i2d_body_get_shapes(made[3], shapes, 1);
+                const i2d_polygon box = i2d_make_box(0.3f, 0.2f);
+                I2D_CHECK_STATUS(i2d_shape_set_polygon(shapes[0], &box), I2D_OK);
+                I2D_CHECK_STATUS(i2d_world_enable_sleeping(world, true), I2D_OK);
             }
             step(world);
             if (k == 60) {
