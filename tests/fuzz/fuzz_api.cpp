@@ -1094,6 +1094,11 @@ void run_pure_call(FuzzInput& in, uint8_t op) {
 // and up; 13 calls), so that earlier programs keep their meaning but for those opcodes.
 constexpr uint8_t joint_sub_first = 30;
 
+#include "fuzz_runtime_calls.inl"
+
+// Shape instructions from this sub-opcode on are runtime API calls.
+constexpr uint8_t runtime_sub_first = 26;
+
 void run_program(FuzzInput& in) {
     int steps_left = 64;  // bounds the run time of one input
     while (!in.empty()) {
@@ -1114,6 +1119,8 @@ void run_program(FuzzInput& in) {
             run_joint_call(in, static_cast<uint8_t>(sub - joint_sub_first));
         } else if (group == 1 || group == 2) {
             run_body_call(in, sub % 15);
+        } else if (group == 3 && sub >= runtime_sub_first) {
+            run_runtime_call(in, sub);
         } else if (group == 3) {
             run_shape_call(in, sub % 13);
         } else if (group == 4) {
