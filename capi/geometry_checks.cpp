@@ -147,4 +147,32 @@ bool valid_convex_polygon(Call& call, const i2d_polygon* p, const char* what, fl
     return true;
 }
 
+bool valid_proxy_input(Call& call, const i2d_vec2* points, int32_t count, float radius, const char* what) {
+    if (!call.not_null(points, what)) {
+        return false;
+    }
+    if (count < 1 || count > max_polygon_vertices) {
+        return call.fail(I2D_ERR_INVALID_ARGUMENT, "%s: count is %d; it must be in [1, %d]", what, int(count),
+                         int(max_polygon_vertices));
+    }
+    for (int32_t i = 0; i < count; ++i) {
+        if (!call.coordinate(points[i], what)) {
+            return false;
+        }
+    }
+    return call.in_range(radius, 0.0f, max_shape_extent, what);
+}
+
+bool core_proxy(Call& call, const i2d_shape_proxy* proxy, ShapeProxy& out, const char* what) {
+    if (!call.not_null(proxy, what) || !valid_proxy_input(call, proxy->points, proxy->count, proxy->radius, what)) {
+        return false;
+    }
+    Vec2 points[max_polygon_vertices];
+    for (int32_t i = 0; i < proxy->count; ++i) {
+        points[i] = to_core(proxy->points[i]);
+    }
+    out = make_query_proxy(points, proxy->count, proxy->radius);
+    return true;
+}
+
 }  // namespace i2d::capi

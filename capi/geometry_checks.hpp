@@ -6,6 +6,7 @@
 
 #include "boundary.hpp"
 #include "collision/collision_constants.hpp"
+#include "collision/shape_proxy.hpp"
 
 namespace i2d::capi {
 
@@ -25,5 +26,9 @@ bool valid_polygon(Call& call, const i2d_polygon* p, const char* what);
 /// `min_edge`: a caller's polygon has edges of at least the slop; one a world already holds
 /// may be a box of the smallest half extents (min_box_edge).
 bool valid_convex_polygon(Call& call, const i2d_polygon* p, const char* what, float min_edge = linear_slop);
+/// 1..8 points within the coordinate range and a radius in [0, max_shape_extent].
+bool valid_proxy_input(Call& call, const i2d_vec2* points, int32_t count, float radius, const char* what);
+/// The caller's proxy, checked and made convex again (a hand-built proxy need not be).
+bool core_proxy(Call& call, const i2d_shape_proxy* proxy, ShapeProxy& out, const char* what = "proxy");
 
 }  // namespace i2d::capi

@@ -14,36 +14,6 @@ using namespace i2d::capi;
 
 namespace {
 
-// 1..8 points within the coordinate range and a radius in [0, max_shape_extent].
-bool valid_proxy_input(Call& call, const i2d_vec2* points, int32_t count, float radius, const char* what) {
-    if (!call.not_null(points, what)) {
-        return false;
-    }
-    if (count < 1 || count > max_polygon_vertices) {
-        return call.fail(I2D_ERR_INVALID_ARGUMENT, "%s: count is %d; it must be in [1, %d]", what, int(count),
-                         int(max_polygon_vertices));
-    }
-    for (int32_t i = 0; i < count; ++i) {
-        if (!call.coordinate(points[i], what)) {
-            return false;
-        }
-    }
-    return call.in_range(radius, 0.0f, max_shape_extent, what);
-}
-
-// The caller's proxy, checked and made convex again (a hand-built proxy need not be).
-bool core_proxy(Call& call, const i2d_shape_proxy* proxy, ShapeProxy& out) {
-    if (!call.not_null(proxy, "proxy") || !valid_proxy_input(call, proxy->points, proxy->count, proxy->radius, "proxy")) {
-        return false;
-    }
-    Vec2 points[max_polygon_vertices];
-    for (int32_t i = 0; i < proxy->count; ++i) {
-        points[i] = to_core(proxy->points[i]);
-    }
-    out = make_query_proxy(points, proxy->count, proxy->radius);
-    return true;
-}
-
 // A sweep must go somewhere (a zero one is an overlap query) and stay in range.
 bool valid_translation(Call& call, i2d_vec2 translation) {
     if (!call.cast_translation(translation, "translation")) {

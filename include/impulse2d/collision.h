@@ -94,10 +94,13 @@ typedef struct i2d_distance_result {
  *  points, a count outside 1..8, NaN, infinite or out-of-range values give a proxy of
  *  count 0 (which every query refuses) and I2D_ERR_INVALID_ARGUMENT. */
 I2D_API i2d_shape_proxy i2d_make_proxy(const i2d_vec2* points, int32_t count, float radius);
-/** The distance between two proxies (each placed by its transform, which must be
- *  normalised within 1e-3): the closest points of their rounded hulls. Overlapping shapes
- *  give distance 0 and a zero normal. A proxy of count 0, NaN or a bad rotation gives a
- *  zero result and I2D_ERR_INVALID_ARGUMENT (i2d_last_status). */
+/** The distance between two proxies (each placed by its transform, whose rotation must be
+ *  normalised within 1e-3): the closest points of their rounded hulls. Touching shapes give
+ *  distance 0 with their normal. Overlapping shapes give distance 0, a zero normal and
+ *  point_a = point_b: a point both hold while their cores (the hulls before rounding)
+ *  are apart, else a point of A's core. A NULL proxy, one of count 0 or over 8, NaN or
+ *  values out of range, or a bad rotation gives a zero result and
+ *  I2D_ERR_INVALID_ARGUMENT (i2d_last_status). */
 I2D_API i2d_distance_result i2d_shape_distance(const i2d_shape_proxy* a, i2d_transform xa, const i2d_shape_proxy* b,
                                                i2d_transform xb);
 

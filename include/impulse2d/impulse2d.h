@@ -246,14 +246,23 @@ I2D_API bool i2d_body_is_fixed_rotation(i2d_body_id body);
 
 /* ---- Contact data: what touches what now ------------------------------------------ */
 
-/** Fills out with up to capacity touching contacts of the body (sensors excluded) and
- *  returns how many it has; 0 for a bad id, or out NULL with capacity > 0. */
+/* Getters: they read what the last step left (a contact destroyed between steps, with a
+ * shape, a body or a filter change, is gone at once; new ones come with the next step)
+ * and work inside query callbacks. Each fills out with up to capacity entries and returns how many there
+ * are, so that a call with capacity 0 (out may be NULL) sizes the array. A bad id gives
+ * 0 and I2D_ERR_INVALID_HANDLE; out NULL with capacity > 0, or capacity < 0, gives 0 and
+ * I2D_ERR_INVALID_ARGUMENT. */
+
+/** The body's touching contacts (within the contact slop when the last step ended;
+ *  sensors' visits excluded), in no documented order but the same for the same world. */
 I2D_API int32_t i2d_body_get_contact_data(i2d_body_id body, i2d_contact_data* out, int32_t capacity);
-/** The same for one shape. */
+/** The same for one shape: the body's contacts that involve it. */
 I2D_API int32_t i2d_shape_get_contact_data(i2d_shape_id shape, i2d_contact_data* out, int32_t capacity);
-/** Fills out with up to capacity shapes overlapping the sensor shape (as of the last step:
- *  the visitors whose begin event came and whose end event has not) and returns how many
- *  there are. A shape that is not a sensor is refused (I2D_ERR_INVALID_ARGUMENT). */
+/** The shapes visiting the sensor shape as of the last step: the visitors whose sensor
+ *  begin event came and whose end event has not, so only visitors with sensor events
+ *  enabled. A sensor on any body type sees the non-sensor shapes of dynamic and kinematic
+ *  bodies, and of static ones unless it is static itself. A shape that is not a sensor is
+ *  refused (I2D_ERR_INVALID_ARGUMENT). */
 I2D_API int32_t i2d_shape_get_sensor_overlaps(i2d_shape_id sensor, i2d_shape_id* out, int32_t capacity);
 
 /* ---- Bulk state: many bodies per call ------------------------------------------- */
@@ -370,9 +379,10 @@ I2D_API i2d_status i2d_shape_enable_contact_events(i2d_shape_id shape, bool flag
 I2D_API bool i2d_shape_are_contact_events_enabled(i2d_shape_id shape);
 I2D_API i2d_status i2d_shape_enable_hit_events(i2d_shape_id shape, bool flag);
 I2D_API bool i2d_shape_are_hit_events_enabled(i2d_shape_id shape);
-/** The point of the shape (its surface grown by its radius, or inside it) closest to
- *  target, in world coordinates: target itself when it is inside. (0, 0) for a bad id or a
- *  non-finite target. */
+/** The point of the shape (its outline grown by its radius, inside included) closest to
+ *  target, in world coordinates, where its body is now: target itself when the shape holds
+ *  it. A getter (works inside query callbacks). (0, 0) for a bad id (I2D_ERR_INVALID_HANDLE)
+ *  or a target that is not finite or beyond 1e9 m (I2D_ERR_INVALID_ARGUMENT). */
 I2D_API i2d_vec2 i2d_shape_get_closest_point(i2d_shape_id shape, i2d_vec2 target);
 
 /* ---- Chains --------------------------------------------------------------------- */

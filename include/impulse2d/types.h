@@ -318,13 +318,21 @@ typedef struct i2d_manifold {
     i2d_manifold_point points[2];
 } i2d_manifold;
 
-/** A touching contact: its shapes, its manifold (as the last step left it: world points,
- *  normal from A to B) and the impulses the last step applied at each point. */
+/** A touching contact: its shapes, its manifold as the last step left it (as a contact
+ *  begin event shows one: world points where they are now, penetrations as the step's
+ *  narrowphase measured them, normal from A to B) and the solver's impulses at each
+ *  point. The impulses are those of the step's last substep (what the next step warm
+ *  starts from, as Box2D's normalImpulse): divided by the substep, time_step /
+ *  substep_count, they are the contact's force; times substep_count, the impulse of the
+ *  whole step for a contact at rest (a box of mass m resting alone on the ground:
+ *  normal impulses summing to m g time_step / substep_count). */
 typedef struct i2d_contact_data {
-    i2d_shape_id shape_a, shape_b;
+    i2d_shape_id shape_a, shape_b; /**< in the order contact events name them */
     i2d_manifold manifold;
-    float normal_impulses[2];  /**< N s, per manifold point */
-    float tangent_impulses[2]; /**< N s, per manifold point */
+    /** N s per manifold point (0 past point_count), >= 0: on B along the normal, on A against it */
+    float normal_impulses[2];
+    /** N s per manifold point: on B along the normal turned 90 degrees counter-clockwise */
+    float tangent_impulses[2];
 } i2d_contact_data;
 
 /* ---- Events: arrays owned by the world, valid until the next step or world change ---- */

@@ -3,16 +3,18 @@
 //
 // Design note: static shapes sit in their own tree and are never re-inserted, so a large
 // static level costs nothing per step; only proxies whose tight box left their fat box
-// (the move buffer) are queried, against the trees they can collide with (a moved
-// dynamic proxy against all three trees, a moved kinematic or static one against the
-// dynamic tree). When most dynamic proxies moved, one search of the dynamic tree against
-// itself replaces their queries of it: each overlapping pair is met once, not once from
-// each side, and neighbouring leaves share the tests of their ancestors. A dynamic
-// proxy has a second box, stretched along its coming motion (shape_bounds.hpp), which
-// it meets the static and kinematic trees with; two dynamic proxies meet by their fat
-// boxes. Pairs come out in the storage order of the moved
-// proxies (below) and, per proxy, in tree order, after those of the self search in its
-// order: the same inputs give the same pairs in the same order.
+// (the move buffer) are queried, against the trees they can pair with: every pair but
+// static against static (a moved dynamic or kinematic proxy against all three trees, a
+// moved static one against the dynamic and kinematic trees). Pairs without a dynamic
+// proxy are few, as kinematic proxies are, and only sensors keep them (the caller's
+// test): a world without kinematic bodies pays nothing for them. When most dynamic
+// proxies moved, one search of the dynamic tree against itself replaces their queries
+// of it: each overlapping pair is met once, not once from each side, and neighbouring
+// leaves share the tests of their ancestors. A dynamic proxy has a second box, stretched
+// along its coming motion (shape_bounds.hpp), which it meets the static and kinematic
+// trees with; two dynamic proxies meet by their fat boxes. Pairs come out in the storage
+// order of the moved proxies (below) and, per proxy, in tree order, after those of the
+// self search in its order: the same inputs give the same pairs in the same order.
 // Existing pairs are skipped through a caller's test (the world keeps the set of shape
 // pairs that have a contact).
 #pragma once

@@ -83,22 +83,22 @@ void BroadPhase::query_pairs(int32_t begin, int32_t end, Accept&& accept, std::v
         const AABB box = own.fat_aabb_at(int32_t(entry.order));
         const AABB box_ahead = kind == ProxyKind::dynamic_proxy ? ahead_[std::size_t(proxy_id(key))] : box;
         const int32_t shape = own.user_value_at(int32_t(entry.order));
-        // Static and kinematic proxies only pair with dynamic ones.
+        // Static proxies never pair among themselves.
         for (int32_t t = 0; t < int32_t(ProxyKind::count); ++t) {
             const ProxyKind other_kind = ProxyKind(t);
-            if ((kind != ProxyKind::dynamic_proxy && other_kind != ProxyKind::dynamic_proxy) ||
+            if ((kind == ProxyKind::static_proxy && other_kind == ProxyKind::static_proxy) ||
                 (kind == ProxyKind::dynamic_proxy && other_kind == kind && dynamic_pairs_by_self_search_)) {
                 continue;
             }
             const AABB& query_box = other_kind == ProxyKind::dynamic_proxy ? box : box_ahead;
             tree(other_kind).query(query_box, [&](int32_t proxy, int32_t other_shape) {
                 const int32_t other_key = make_proxy_key(proxy, other_kind);
-                // Itself, or a pair both of whose proxies moved: between two dynamic ones
-                // the lower key reports it, else the dynamic one, whose box ahead finds
-                // all the other's fat box would.
+                // Itself, or a pair both of whose proxies moved: between two of one kind
+                // the lower key reports it, else the one of the later kind (dynamic before
+                // kinematic before static), so that a dynamic proxy's box ahead finds all
+                // the other's fat box would.
                 if (other_key == key ||
-                    (move_set_.contains(other_key) && (kind == other_kind ? other_key < key
-                                                                          : kind != ProxyKind::dynamic_proxy))) {
+                    (move_set_.contains(other_key) && (kind == other_kind ? other_key < key : kind < other_kind))) {
                     return true;
                 }
                 batch.add(shape, other_shape);

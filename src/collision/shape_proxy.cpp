@@ -165,4 +165,38 @@ ProxyDistance core_distance(const ShapeProxy& a, const ShapeProxy& b) {
     return out;
 }
 
+// Apart (or just touching), each core point moves out by its radius along the normal.
+// Overlapping, no normal is meaningful and both points are one: where the cores are
+// apart, the middle of the stretch of the line between them that both shapes hold
+// (non-empty, since the radii cover the gap); where the cores overlap too, the point
+// core_distance gives, which lies in A's core.
+SurfaceDistance surface_distance(const ShapeProxy& a, const Transform& xa, const ShapeProxy& b, const Transform& xb) {
+    const ProxyDistance core = core_distance(transformed(a, xa), transformed(b, xb));
+    SurfaceDistance out;
+    const float reach = a.radius + b.radius;
+    if (core.distance > 0.0f && core.distance >= reach) {
+        out.normal = core.normal;
+        out.point_a = core.point_a + a.radius * core.normal;
+        out.point_b = core.point_b - b.radius * core.normal;
+        out.distance = core.distance - reach;
+        return out;
+    }
+    float along = 0.0f;  // from A's core point towards B's
+    if (core.distance > 0.0f) {
+        along = 0.5f * (max_of(0.0f, core.distance - b.radius) + min_of(core.distance, a.radius));
+    }
+    out.point_a = out.point_b = core.point_a + along * core.normal;
+    return out;
+}
+
+// The target is a proxy of one point and no radius: its distance to the shape's surface
+// is 0 exactly when the shape holds it.
+Vec2 closest_point(const ShapeProxy& proxy, const Transform& xf, Vec2 target) {
+    ShapeProxy point;
+    point.points[0] = target;
+    point.count = 1;
+    const SurfaceDistance d = surface_distance(proxy, xf, point, Transform{});
+    return d.distance > 0.0f ? d.point_a : target;
+}
+
 }  // namespace i2d

@@ -41,4 +41,17 @@ struct ProxyDistance {
 /// converge (a GJK would be faster on large counts, which 8 vertices never reach).
 ProxyDistance core_distance(const ShapeProxy& a, const ShapeProxy& b);
 
+/// Closest points of two proxies' surfaces (cores grown by their radii), each placed by
+/// its transform (Box2D's b2ShapeDistance with radii).
+struct SurfaceDistance {
+    Vec2 point_a, point_b;  // world; the same point when the shapes overlap (see the .cpp)
+    Vec2 normal;            // unit, from A towards B; zero when the shapes overlap
+    float distance = 0.0f;  // between the surfaces, m; 0 when they touch or overlap
+};
+SurfaceDistance surface_distance(const ShapeProxy& a, const Transform& xa, const ShapeProxy& b, const Transform& xb);
+
+/// The point of the proxy (placed by xf, radius included) closest to target: target
+/// itself when the proxy holds it.
+Vec2 closest_point(const ShapeProxy& proxy, const Transform& xf, Vec2 target);
+
 }  // namespace i2d

@@ -124,6 +124,7 @@ def signatures(S: _structs.Structs) -> Dict[str, Tuple[Any, List[Any]]]:
         "i2d_body_set_awake": (_STATUS, [_ID, C.c_bool]),
         "i2d_body_get_shape_count": (C.c_int32, [_ID]),
         "i2d_body_get_shapes": (C.c_int32, [_ID, _PTR, C.c_int32]),
+        "i2d_body_get_contact_data": (C.c_int32, [_ID, _PTR, C.c_int32]),
         # shapes
         "i2d_shape_create_circle": (_ID, [_ID, C.POINTER(ShapeDef), C.POINTER(Circle)]),
         "i2d_shape_create_box": (_ID, [_ID, C.POINTER(ShapeDef), C.c_float, C.c_float]),
@@ -148,6 +149,9 @@ def signatures(S: _structs.Structs) -> Dict[str, Tuple[Any, List[Any]]]:
         "i2d_shape_get_filter": (Filter, [_ID]),
         "i2d_shape_set_filter": (_STATUS, [_ID, Filter]),
         "i2d_shape_is_sensor": (C.c_bool, [_ID]),
+        "i2d_shape_get_contact_data": (C.c_int32, [_ID, _PTR, C.c_int32]),
+        "i2d_shape_get_sensor_overlaps": (C.c_int32, [_ID, _PTR, C.c_int32]),
+        "i2d_shape_get_closest_point": (Vec2, [_ID, Vec2]),
     }
 
 

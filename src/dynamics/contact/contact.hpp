@@ -95,6 +95,15 @@ struct alignas(64) Contact {
 static_assert(offsetof(Contact, points) + sizeof(ContactPoint[2]) <= 128, "solver data in two cache lines");
 static_assert(offsetof(Contact, hit_point) + sizeof(int32_t) <= 64, "the end of the step reads one line");
 
+/// A touching contact as a caller reads it between steps (contact_data.cpp): what the
+/// C API's i2d_contact_data holds, with shapes as pool indices.
+struct ContactData {
+    int32_t shape_a = null_index, shape_b = null_index;  // shape_a < shape_b
+    Manifold manifold;  // world points, normal from A to B, as a begin event shows it
+    float normal_impulses[2] = {};   // accumulated in the last substep, N s
+    float tangent_impulses[2] = {};
+};
+
 /// A contact between solid shapes: no sensor among them.
 inline bool is_solid(const Contact& c) { return (c.flags & contact_sensor) == 0; }
 

@@ -9,7 +9,10 @@
 namespace i2d {
 
 // Most candidates are pairs that have a contact already: the pair set answers that
-// with one lookup, before the shapes and bodies are read.
+// with one lookup, before the shapes and bodies are read. Solid shapes need a dynamic
+// body between them to push; a sensor reports whatever enters it, whatever moves either
+// (box2d#739): a trigger zone on a static body sees a kinematic platform. Static against
+// static never reaches here (the broadphase never pairs it).
 bool ContactSet::may_pair(int32_t shape_a, int32_t shape_b) const {
     if (pair_set_.contains(pair_key(shape_a, shape_b))) {
         return false;
@@ -19,7 +22,8 @@ bool ContactSet::may_pair(int32_t shape_a, int32_t shape_b) const {
     if (a.body == b.body || (a.is_sensor && b.is_sensor)) {
         return false;
     }
-    if (bodies_[a.body].type != BodyType::dynamic && bodies_[b.body].type != BodyType::dynamic) {
+    if (bodies_[a.body].type != BodyType::dynamic && bodies_[b.body].type != BodyType::dynamic &&
+        !a.is_sensor && !b.is_sensor) {
         return false;
     }
     return should_collide(a.filter, b.filter) && !joints_.keeps_apart(a.body, b.body);

@@ -13,9 +13,10 @@
 // events, describes where the step left the bodies: the solver reports it per contact at
 // the end of the step, and end_step turns changes into begin and end events.
 //
-// The work is in four files: contact_set.cpp (creation, destruction, the awake list),
+// The work is in five files: contact_set.cpp (creation, destruction, the awake list),
 // contact_pairs.cpp (new pairs from the broadphase), narrowphase.cpp (manifolds and
-// links) and contact_events.cpp (the end of the step: events and parted pairs).
+// links), contact_events.cpp (the end of the step: events and parted pairs) and
+// contact_data.cpp (what touches what, read between steps).
 //
 // Threads: the narrowphase and the pair queries are shared by the world's workers. A
 // contact's update writes only the contact; what the islands must hear it leaves in a
@@ -128,6 +129,13 @@ public:
 
     /// Touching contacts (sensors excluded) after the last step.
     int32_t touching_count() const;
+    /// Calls visit for each touching contact between solid shapes of the body, or only
+    /// those of its shape `shape` unless that is null_index, in the body's contact list
+    /// order (contact_data.cpp). Reads only: callers may be inside a query's callback.
+    void visit_touching(int32_t body, int32_t shape, FunctionRef<void(const ContactData&)> visit) const;
+    /// Calls visit(visitor shape) for each visit of the sensor shape that began and has
+    /// not ended as of the last step, in its body's contact list order.
+    void visit_sensor_visitors(int32_t sensor, FunctionRef<void(int32_t visitor)> visit) const;
     void validate() const;
 
     // Snapshots (snapshot/stage_snapshots.cpp): the contacts and the awake list saved,

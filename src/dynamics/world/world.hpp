@@ -25,6 +25,7 @@
 #include "dynamics/body/body.hpp"
 #include "dynamics/body/chain.hpp"
 #include "dynamics/body/shape.hpp"
+#include "dynamics/contact/contact.hpp"
 #include "dynamics/joint/joint.hpp"
 #include "dynamics/recording/recording_format.hpp"
 #include "dynamics/world/events.hpp"
@@ -212,6 +213,12 @@ public:
     /// Every shape the proxy (world space) overlaps or touches.
     void overlap_shape(const ShapeProxy& proxy, const QueryFilter& filter, ShapeVisitor visit, void* context) const;
     void rebuild_static_tree();
+    /// The touching contacts of the body (of one of its shapes, unless shape is
+    /// null_index) and the shapes visiting a sensor shape, as the last step left them
+    /// (ContactSet::visit_touching, visit_sensor_visitors). They read only: allowed while
+    /// the world is locked.
+    void visit_touching_contacts(int32_t body, int32_t shape, FunctionRef<void(const ContactData&)> visit) const;
+    void visit_sensor_overlaps(int32_t sensor, FunctionRef<void(int32_t visitor)> visit) const;
 
     // Snapshots (snapshot/world_snapshot.cpp, snapshot_format.hpp).
     /// The bytes a full snapshot of the world takes now, its header included.

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
-// World queries through the broadphase trees, with exact geometry on the leaves.
+// World queries through the broadphase trees, with exact geometry on the leaves, and
+// the contact set's record of what touches what.
 //
 // Trees are walked static, kinematic, dynamic, each in its traversal order: a fixed
 // order for the same world. Fat boxes only narrow the search; every reported shape
@@ -149,6 +150,17 @@ void World::overlap_shape(const ShapeProxy& proxy, const QueryFilter& filter, Sh
             return go_on;
         });
     }
+}
+
+// Contact and sensor data come from the contact set, not the trees: what the last step
+// found, not a fresh test. Unlike the queries they take no lock: their visitors (the C
+// boundary's copying loops) run no user code.
+void World::visit_touching_contacts(int32_t body, int32_t shape, FunctionRef<void(const ContactData&)> visit) const {
+    stages_->contacts.visit_touching(body, shape, visit);
+}
+
+void World::visit_sensor_overlaps(int32_t sensor, FunctionRef<void(int32_t visitor)> visit) const {
+    stages_->contacts.visit_sensor_visitors(sensor, visit);
 }
 
 void World::rebuild_static_tree() {
