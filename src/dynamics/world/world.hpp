@@ -27,6 +27,7 @@
 #include "dynamics/body/shape.hpp"
 #include "dynamics/joint/joint.hpp"
 #include "dynamics/recording/recording_format.hpp"
+#include "dynamics/tolerances.hpp"
 #include "dynamics/world/events.hpp"
 #include "dynamics/world/world_def.hpp"
 
@@ -81,6 +82,8 @@ public:
 
     // What callers read. Indices come from the create functions; a pool says which are live.
     const WorldDef& settings() const { return settings_; }
+    /// The step's length tolerances in the world's unit (its def's length_units_per_meter).
+    Tolerances tolerances() const { return Tolerances(settings_.length_units_per_meter); }
     const Pool<Body>& bodies() const { return bodies_; }
     const Pool<Shape>& shapes() const { return shapes_; }
     const Pool<Joint>& joints() const;
