@@ -3,6 +3,9 @@
  *
  * A short manual
  * - Units are metres, kilograms, seconds and radians; y points up. Scalars are float.
+ *   A world may count lengths in other units (i2d_world_def.length_units_per_meter,
+ *   pixels say): then every length and speed given to or read from that world is in
+ *   them, and its tolerances follow; the pure functions of collision.h stay in metres.
  * - The world and everything in it are named by 8-byte value ids (id.h). The null id
  *   has bits == 0. A destroyed object's id, or an id of a destroyed world, stays
  *   detectably stale: calls answer I2D_ERR_INVALID_HANDLE.
@@ -447,8 +450,8 @@ I2D_API int32_t i2d_world_overlap_point_ids(i2d_world_id world, i2d_vec2 point, 
 
 /** Sweeps the proxy (world space, see i2d_make_proxy) along translation and reports each
  *  shape it would touch to fn: the fraction of the translation at which they first touch
- *  (to within 1.25 mm), the point on that shape's surface and its outward normal there;
- *  fn's return value works as for rays. A shape the proxy overlaps at the start is hit at
+ *  (to within 1.25 mm, times the world's length_units_per_meter), the point on that
+ *  shape's surface and its outward normal there; fn's return value works as for rays. A shape the proxy overlaps at the start is hit at
  *  fraction 0, whatever the translation, with a point inside both and the unit normal
  *  along which the proxy leaves the shape soonest (the shape's outward side; back along
  *  the translation when a circle proxy's centre is the circle shape's). Refused
