@@ -63,12 +63,16 @@ public:
     }
 
     const std::vector<i2d_body_id>& dynamic_bodies() const { return dynamic_; }
+    i2d_world_id world() const { return scene_.world; }
 
 private:
+public:
     static i2d_world_def world_def(float units) {
         // gravity, slop and the speed thresholds in the world's unit
         return units == 1.0f ? i2d_default_world_def() : i2d_default_world_def_in_units(units);
     }
+
+private:
 
     i2d_vec2 scaled(i2d_vec2 v) const { return i2d_vec2{units_ * v.x, units_ * v.y}; }
     float density() const { return 1.0f / (units_ * units_); }
@@ -137,4 +141,27 @@ I2D_TEST(phys_units_pixel_scene_moves_as_metre_scene) {
                pm[i].y, pp[i].x, pp[i].y, asleep_m[i], asleep_p[i]);
     }
     printf("    largest relative difference: %.3g\n", worst);
+}
+
+// A snapshot of a world in pixels loads (its shapes' margins and bodies' extents are
+// checked against its own unit's tolerances) and steps on as the world it was taken of.
+I2D_TEST(phys_units_pixel_world_snapshot_continues) {
+    ScaledScene pixels(pixels_per_meter);
+    I2D_REQUIRE(pixels.build());
+    constexpr int before = 40, after = 60;
+    for (int s = 0; s < before; ++s) {
+        I2D_REQUIRE(pixels.step());
+    }
+    std::vector<unsigned char> bytes(i2d_world_get_snapshot_size(pixels.world()));
+    size_t written = 0;
+    I2D_CHECK_STATUS(i2d_world_save_snapshot(pixels.world(), bytes.data(), bytes.size(), &written), I2D_OK);
+    const i2d_world_def runtime = ScaledScene::world_def(pixels_per_meter);
+    Scene copy(runtime);
+    i2d_world_destroy(copy.world);
+    copy.world = i2d_world_create_from_snapshot(bytes.data(), written, &runtime);
+    I2D_REQUIRE(!I2D_IS_NULL(copy.world));
+    for (int s = 0; s < after; ++s) {
+        I2D_REQUIRE(pixels.step() && copy.step());
+    }
+    I2D_CHECK(i2d_world_get_state_hash(copy.world) == i2d_world_get_state_hash(pixels.world()));
 }
