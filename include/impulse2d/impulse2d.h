@@ -106,10 +106,18 @@ I2D_API i2d_status i2d_world_set_contact_tuning(i2d_world_id world, float hertz,
 I2D_API i2d_status i2d_world_set_joint_tuning(i2d_world_id world, float hertz, float damping_ratio);
 I2D_API i2d_status i2d_world_set_restitution_threshold(i2d_world_id world, float speed);
 I2D_API i2d_status i2d_world_set_hit_event_threshold(i2d_world_id world, float speed);
-/** Moves the world's origin to new_origin (a coordinate as positions are): afterwards
- *  every position, box and query is relative to it, so a world kilometres across keeps
- *  its precision near the player. Every body, tree and contact shifts by -new_origin
- *  and the simulation goes on as it would have, shifted. */
+/** Moves the world's origin to new_origin (a point in the world's present coordinates):
+ *  afterwards every position the world keeps or reports is relative to it (bodies, the
+ *  shapes' boxes and the trees, mouse joint targets, the last step's events), each its
+ *  old value less new_origin as float subtraction rounds it, so that a world kilometres
+ *  across keeps its precision near the player. Nothing wakes and no contact is lost: the
+ *  simulation goes on as it would have, shifted, to within the rounding of positions
+ *  (coarser the farther from the origin). A rollback state saved before is refused after
+ *  it (its positions are of the old origin); a recording replays it. Refused, the world
+ *  untouched: a bad id (I2D_ERR_INVALID_HANDLE), inside a callback
+ *  (I2D_ERR_WORLD_LOCKED), a new_origin that is not finite or lies beyond 1e9 m of the
+ *  origin, or one that would put a body or a mouse joint's target beyond 1e9 m of itself
+ *  (I2D_ERR_INVALID_ARGUMENT). */
 I2D_API i2d_status i2d_world_shift_origin(i2d_world_id world, i2d_vec2 new_origin);
 /** Whether this library on this CPU can run the path (I2D_SIMD_AUTOMATIC always can). */
 I2D_API bool i2d_simd_path_supported(i2d_simd_path path);
