@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // Recording and replay: a recorded session (creations, destructions, forces, setters,
-// bulk writes, a rollback) replays with every step's hash as recorded, forwards and after
+// bulk writes, a rollback, an origin shift) replays with every step's hash as recorded, forwards and after
 // seeking back; a replay whose world is nudged reports the step where it diverges; a
 // recording changed in any record, of another format or not a recording at all is
 // refused, and one cut short mid-record replays the whole records it holds.
@@ -112,6 +112,9 @@ const Session& session() {
             if (k == 55) {  // five steps undone and run again with other inputs
                 i2d_world_restore_state(world, rollback.data(), rollback.size());
                 i2d_body_apply_linear_impulse(made[2], i2d_vec2{0, 2}, i2d_vec2{3, 15}, true);
+            }
+            if (k == 70) {  // the origin moved: replayed through i2d_world_shift_origin
+                I2D_CHECK(i2d_world_shift_origin(world, i2d_vec2{300.0f, -120.0f}) == I2D_OK);
             }
             step(world);
             if (k == 60) {
