@@ -98,7 +98,7 @@ bool valid_mass_override(Call& call, const Body& b, Name name) {
 // it, bit for bit: no call sets them any other way.
 bool mass_from_shapes(Call& call, const World& world, const Body& body, int32_t index) {
     Body expected = body;
-    update_mass_from_shapes(expected, world.shapes());
+    update_mass_from_shapes(expected, world.shapes(), world.tolerances().linear_slop);
     const bool same = expected.mass == body.mass && expected.inv_mass == body.inv_mass &&
                       expected.inertia == body.inertia && expected.inv_inertia == body.inv_inertia &&
                       expected.local_center == body.local_center && expected.max_extent == body.max_extent &&

@@ -2,6 +2,7 @@
 // i2d_collide_*, i2d_make_*, i2d_compute_*_mass, i2d_ray_cast_*: the pure collision
 // functions, checked and handed to the core.
 #include <cmath>
+#include <type_traits>
 
 #include "boundary.hpp"
 #include "geometry_checks.hpp"
@@ -186,7 +187,8 @@ I2D_API i2d_cast_output i2d_ray_cast_polygon(const i2d_polygon* shape, i2d_trans
 namespace {
 
 // Shared body of the typed entry points: check both shapes and transforms, then collide
-// in the core.
+// in the core. These functions know no world: they work in metres, with the default
+// speculative distance and (for the pairs whose tie-breaks need one) linear slop.
 template <class A, class B, class ValidA, class ValidB, class Collide>
 i2d_manifold collide_checked(const char* name, const A* a, i2d_transform xfa, const B* b, i2d_transform xfb,
                              ValidA valid_a, ValidB valid_b, Collide collide) {
@@ -195,7 +197,14 @@ i2d_manifold collide_checked(const char* name, const A* a, i2d_transform xfa, co
             !valid_transform(call, xfb, "xfb")) {
             return i2d_manifold{};
         }
-        return to_public(collide(to_core(*a), to_core(xfa), to_core(*b), to_core(xfb), speculative_distance));
+        const auto ca = to_core(*a);
+        const auto cb = to_core(*b);
+        const Transform ta = to_core(xfa), tb = to_core(xfb);
+        if constexpr (std::is_invocable_v<Collide, decltype(ca), Transform, decltype(cb), Transform, float, float>) {
+            return to_public(collide(ca, ta, cb, tb, speculative_distance, linear_slop));
+        } else {
+            return to_public(collide(ca, ta, cb, tb, speculative_distance));
+        }
     });
 }
 

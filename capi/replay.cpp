@@ -267,7 +267,7 @@ bool Replayed::joint_call(RecordedOp op) const {
     }
 }
 
-// User data of every kind, gravity, the static tree.
+// User data of every kind, gravity, the static tree, the origin.
 bool Replayed::world_call(RecordedOp op) const {
     int32_t index = 0;
     switch (op) {
@@ -292,6 +292,11 @@ bool Replayed::world_call(RecordedOp op) const {
         }
         case RecordedOp::rebuild_static_tree:
             return read_whole(in) ? passed(i2d_world_rebuild_static_tree(world_id)) : malformed(call);
+        case RecordedOp::shift_origin: {
+            Vec2 new_origin;
+            io(new_origin);
+            return read_whole(in) ? passed(i2d_world_shift_origin(world_id, to_public(new_origin))) : malformed(call);
+        }
         default:
             return unknown();
     }
@@ -452,6 +457,7 @@ bool Replay::apply(Call& call, const Record& record) {
         case RecordedOp::set_joint_user_data:
         case RecordedOp::set_gravity:
         case RecordedOp::rebuild_static_tree:
+        case RecordedOp::shift_origin:
             return r.world_call(record.op);
         case RecordedOp::set_mass_data:
         case RecordedOp::set_body_setting:

@@ -123,7 +123,7 @@ bool valid_loaded_shape(Call& call, const World& world, int32_t index) {
     }
     return checked_with_names("shape", index, [&](auto name) {
         return valid_material(call, material, name) && valid_geometry(call, s.geometry, index, name("geometry")) &&
-               call.in_range(s.aabb_margin, 0.0f, max_aabb_margin, name("aabb_margin"));
+               call.in_range(s.aabb_margin, 0.0f, world.tolerances().max_aabb_margin, name("aabb_margin"));
     });
 }
 

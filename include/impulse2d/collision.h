@@ -1,5 +1,11 @@
 /* SPDX-License-Identifier: MIT */
-/* Shape primitives and the pure, world-free collision functions. */
+/* Shape primitives and the pure, world-free collision functions. They know no world, so
+ * they work in metres whatever a world's length unit (i2d_world_def.length_units_per_meter):
+ * their tolerances (the 0.005 m welding of i2d_make_polygon and i2d_make_proxy, the 0.02 m
+ * speculative distance and 0.005 m slop of the manifolds) are those of a world in metres,
+ * taken as numbers in whatever unit the input is in: a polygon made for a world in pixels
+ * is welded at 0.005 pixels, and a manifold of shapes in pixels keeps points 0.02 pixels
+ * apart. */
 #ifndef IMPULSE2D_COLLISION_H
 #define IMPULSE2D_COLLISION_H
 
@@ -135,7 +141,7 @@ I2D_API i2d_cast_output i2d_ray_cast_polygon(const i2d_polygon* shape, i2d_trans
 
 /* Manifolds of shapes given in their own frame and placed by transforms (rotations
  * normalised within 1e-3). Points whose separation is within the speculative distance
- * (0.02 m) are included with a negative penetration, so point_count > 0 does not by
+ * (0.02 m, in any world's unit: see the top of this file) are included with a negative penetration, so point_count > 0 does not by
  * itself mean touching. Invalid input (NULL, NaN, inf, negative radius, a polygon count
  * outside 3..8, a capsule shorter than 0.005 m) reports point_count 0 and sets
  * I2D_ERR_INVALID_ARGUMENT. Two segments never collide (there is no function for them).

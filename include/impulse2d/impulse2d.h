@@ -3,6 +3,9 @@
  *
  * A short manual
  * - Units are metres, kilograms, seconds and radians; y points up. Scalars are float.
+ *   A world may count lengths in other units (i2d_world_def.length_units_per_meter,
+ *   pixels say): then every length and speed given to or read from that world is in
+ *   them, and its tolerances follow; the pure functions of collision.h stay in metres.
  * - The world and everything in it are named by 8-byte value ids (id.h). The null id
  *   has bits == 0. A destroyed object's id, or an id of a destroyed world, stays
  *   detectably stale: calls answer I2D_ERR_INVALID_HANDLE.
@@ -103,10 +106,18 @@ I2D_API i2d_status i2d_world_set_contact_tuning(i2d_world_id world, float hertz,
 I2D_API i2d_status i2d_world_set_joint_tuning(i2d_world_id world, float hertz, float damping_ratio);
 I2D_API i2d_status i2d_world_set_restitution_threshold(i2d_world_id world, float speed);
 I2D_API i2d_status i2d_world_set_hit_event_threshold(i2d_world_id world, float speed);
-/** Moves the world's origin to new_origin (a coordinate as positions are): afterwards
- *  every position, box and query is relative to it, so a world kilometres across keeps
- *  its precision near the player. Every body, tree and contact shifts by -new_origin
- *  and the simulation goes on as it would have, shifted. */
+/** Moves the world's origin to new_origin (a point in the world's present coordinates):
+ *  afterwards every position the world keeps or reports is relative to it (bodies, the
+ *  shapes' boxes and the trees, mouse joint targets, the last step's events), each its
+ *  old value less new_origin as float subtraction rounds it, so that a world kilometres
+ *  across keeps its precision near the player. Nothing wakes and no contact is lost: the
+ *  simulation goes on as it would have, shifted, to within the rounding of positions
+ *  (coarser the farther from the origin). A rollback state saved before is refused after
+ *  it (its positions are of the old origin); a recording replays it. Refused, the world
+ *  untouched: a bad id (I2D_ERR_INVALID_HANDLE), inside a callback
+ *  (I2D_ERR_WORLD_LOCKED), a new_origin that is not finite or lies beyond 1e9 m of the
+ *  origin, or one that would put a body or a mouse joint's target beyond 1e9 m of itself
+ *  (I2D_ERR_INVALID_ARGUMENT). */
 I2D_API i2d_status i2d_world_shift_origin(i2d_world_id world, i2d_vec2 new_origin);
 /** Whether this library on this CPU can run the path (I2D_SIMD_AUTOMATIC always can). */
 I2D_API bool i2d_simd_path_supported(i2d_simd_path path);
@@ -460,8 +471,8 @@ I2D_API int32_t i2d_world_overlap_point_ids(i2d_world_id world, i2d_vec2 point, 
 
 /** Sweeps the proxy (world space, see i2d_make_proxy) along translation and reports each
  *  shape it would touch to fn: the fraction of the translation at which they first touch
- *  (to within 1.25 mm), the point on that shape's surface and its outward normal there;
- *  fn's return value works as for rays. A shape the proxy overlaps at the start is hit at
+ *  (to within 1.25 mm, times the world's length_units_per_meter), the point on that
+ *  shape's surface and its outward normal there; fn's return value works as for rays. A shape the proxy overlaps at the start is hit at
  *  fraction 0, whatever the translation, with a point inside both and the unit normal
  *  along which the proxy leaves the shape soonest (the shape's outward side; back along
  *  the translation when a circle proxy's centre is the circle shape's). Refused

@@ -352,6 +352,8 @@ public:
     }
     i2d_vec2 gravity() const { return checked(i2d_world_get_gravity(id_)); }
     void set_gravity(i2d_vec2 gravity) { i2d_world_set_gravity(id_, gravity); detail::throw_if_failed(); }
+    /** Every position from now on relative to new_origin (i2d_world_shift_origin). */
+    void shift_origin(i2d_vec2 new_origin) { i2d_world_shift_origin(id_, new_origin); detail::throw_if_failed(); }
     i2d_world_counters counters() const { return checked(i2d_world_get_counters(id_)); }
     uint64_t state_hash() const { return checked(i2d_world_get_state_hash(id_)); }
 

@@ -122,8 +122,9 @@ typedef struct i2d_world_def {
     float time_to_sleep;
     /** Default I2D_SIMD_AUTOMATIC. A path the CPU does not support is refused. */
     i2d_simd_path simd_path;
-    /** Default true. A contact whose two bodies moved less than 5 mm (2 mm if apart; and
-     *  turned less than 2 degrees) relative to each other since its manifold was made
+    /** Default true. A contact whose two bodies moved less than 5 mm (2 mm if apart, both
+     *  times length_units_per_meter; and turned less than 2 degrees) relative to each
+     *  other since its manifold was made
      *  keeps that manifold, its points riding the bodies, instead of running the
      *  narrowphase again: resting stacks cost far less. False makes every contact's
      *  manifold afresh at every step. */
@@ -163,14 +164,23 @@ typedef struct i2d_world_def {
     float hit_event_threshold;
     /** The world's length unit: how many of them make a metre; default 1. Range
      *  [1e-3, 1e4]. A game in pixels at 50 per metre sets 50 and gives every length, speed
-     *  and acceleration of every def and call in pixels; the engine's own tolerances
-     *  (the speculative distance, the boxes' margins, the manifold-keeping distances) scale
-     *  with it, so the scene moves as the same scene in metres, scaled. The length-bearing
-     *  fields of this def (contact_slop, contact_push_max_speed, restitution_threshold,
+     *  and acceleration of every def and call on this world in pixels (densities per
+     *  square pixel: divide them by 50^2 to keep the masses the metres would give). The
+     *  engine's own tolerances scale with it: the linear slop (0.005 m: the manifolds'
+     *  tie-breaks, the thinnest a shape counts for continuous collision, where a swept
+     *  body stops, the tolerance of the world's shape casts), the speculative distance,
+     *  the boxes' margins and the manifold-keeping distances of enable_contact_recycling.
+     *  So the scene moves as the same scene in metres, scaled, within float rounding; at 1
+     *  every result is the same bits as before there was a unit. The length-bearing fields
+     *  of this def (contact_slop, contact_push_max_speed, restitution_threshold,
      *  maximum_linear_speed, sleep_speed_threshold, hit_event_threshold) are taken as
-     *  given, in these units: start from i2d_default_world_def_in_units(50), which scales
-     *  their defaults, not from i2d_default_world_def() with this field changed. Each
-     *  world has its own (unlike Box2D's one setting for the whole process). */
+     *  given, in these units, and their ranges scale with it: start from
+     *  i2d_default_world_def_in_units(50), which scales their defaults, not from
+     *  i2d_default_world_def() with this field changed. Not scaled: the other defs'
+     *  defaults (joints, shapes), the input limits of impulse2d.h's manual (shape sizes,
+     *  core and edge lengths, positions: the same numbers in any unit) and the pure
+     *  functions of collision.h, which know no world and work in metres. Each world has
+     *  its own unit (Box2D has one setting for the whole process). */
     float length_units_per_meter;
     /** Set by i2d_default_world_def(); do not set. */
     uint32_t internal_cookie;

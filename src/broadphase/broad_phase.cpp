@@ -35,6 +35,18 @@ void BroadPhase::destroy_proxy(int32_t key) {
     tree(proxy_kind(key)).destroy_proxy(proxy_id(key));
 }
 
+void BroadPhase::shift_origin(Vec2 new_origin) {
+    for (DynamicTree& tree : trees_) {
+        tree.shift_origin(new_origin);
+    }
+    for (AABB& ahead : ahead_) {
+        ahead = relative_to(ahead, new_origin);
+    }
+    for (MoveEntry& move : pending_moves_) {
+        move.box = relative_to(move.box, new_origin);
+    }
+}
+
 int32_t& BroadPhase::pending_slot(int32_t key) {
     if (key >= int32_t(pending_slot_.size())) {
         pending_slot_.resize(size_t(key) + 1, null_index);

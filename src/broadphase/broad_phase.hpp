@@ -64,6 +64,9 @@ public:
     /// Queues the proxy for pair finding where it is: a pair it was refused may now be
     /// wanted (a joint that kept two bodies apart went).
     void requery_proxy(int32_t key) { buffer_move(key); }
+    /// Every box seen from `new_origin`: the trees', the boxes ahead and those of the
+    /// moves waiting for the commit. Trees, orders and queued proxies stay as they were.
+    void shift_origin(Vec2 new_origin);
 
     /// Finds new candidate pairs of the queued proxies and clears the queue. Appends each
     /// pair once to `out` (shape_a < shape_b) if `accept(shape_a, shape_b)` says so; the

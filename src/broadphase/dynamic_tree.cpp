@@ -285,6 +285,14 @@ bool DynamicTree::rotate(int32_t a) {
     return true;
 }
 
+void DynamicTree::shift_origin(Vec2 new_origin) {
+    for (TreeNode& node : nodes_) {
+        if (node.height >= 0) {  // a free node's box means nothing
+            node.aabb = relative_to(node.aabb, new_origin);
+        }
+    }
+}
+
 float DynamicTree::total_perimeter() const {
     float total = 0.0f;
     for (const TreeNode& node : nodes_) {

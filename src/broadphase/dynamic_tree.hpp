@@ -93,6 +93,9 @@ public:
     /// Rebuilds every node marked by move_proxy_in_place_at, keeping the unmarked subtrees
     /// below them as they are; returns how many internal nodes it made.
     int32_t rebuild_grown();
+    /// Every box seen from `new_origin` (relative_to): the same tree, each internal box
+    /// still exactly the union of its children.
+    void shift_origin(Vec2 new_origin);
 
     const AABB& fat_aabb(int32_t proxy) const { return nodes_[proxy_nodes_[proxy]].aabb; }
     int32_t user_value(int32_t proxy) const { return nodes_[proxy_nodes_[proxy]].user_value(); }

@@ -1,5 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Tolerances of the collision code, with their units, in one place (Box2D constants.h).
+// In metres: the pure functions use them as they are; a world passes its own, scaled to
+// its length unit (dynamics/tolerances.hpp).
 #pragma once
 
 #include <cstdint>

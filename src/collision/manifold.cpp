@@ -195,7 +195,7 @@ bool outside_slab(const CoreSegment& ref, const CoreSegment& other) {
 }
 
 Manifold clip_capsules(const CoreSegment& a, float ra, const CoreSegment& b, float rb, float distance,
-                       float speculative) {
+                       float speculative, float slop) {
     Manifold m;
     if (outside_slab(a, b) || outside_slab(b, a)) {
         return m;
@@ -204,7 +204,7 @@ Manifold clip_capsules(const CoreSegment& a, float ra, const CoreSegment& b, flo
     const float sep_a = side_separation(a, b, normal_a);
     const float sep_b = side_separation(b, a, normal_b);
     // Prefer A unless B is clearly better, so the reference does not flicker on ties.
-    const bool flip = sep_b > sep_a + 0.1f * linear_slop;
+    const bool flip = sep_b > sep_a + 0.1f * slop;
     const CoreSegment& ref = flip ? b : a;
     const CoreSegment& inc = flip ? a : b;
     const Vec2 ref_normal = flip ? normal_b : normal_a;  // from the reference toward the other
@@ -214,9 +214,9 @@ Manifold clip_capsules(const CoreSegment& a, float ra, const CoreSegment& b, flo
     const float sp = dot(cp - ref.p, ref_normal), sq = dot(cq - ref.p, ref_normal);
     // The deepest clipped end must be as close as the closest points: otherwise the
     // closest point of the reference core is an end cap and one point is right. Box2D
-    // allows a whole linear_slop here; the tight tolerance keeps the reported depth exact
-    // at the cost of switching to one point a little earlier.
-    if (min_of(sp, sq) > distance + 0.01f * linear_slop) {
+    // allows a whole slop here; the tight tolerance keeps the reported depth exact at the
+    // cost of switching to one point a little earlier.
+    if (min_of(sp, sq) > distance + 0.01f * slop) {
         return m;
     }
     m.normal = flip ? -ref_normal : ref_normal;
@@ -249,7 +249,7 @@ CoreSegment core_segment(Vec2 p, Vec2 q) {
 // Closest points of the two cores (Ericson 5.1.9, in distance.cpp), then the two-point
 // clip when the cores lie along each other, else one point between the closest points.
 Manifold collide_capsules(const Capsule& a, const Transform& xf_a, const Capsule& b, const Transform& xf_b,
-                          float speculative) {
+                          float speculative, float slop) {
     // A's frame shifted to its first centre keeps precision for capsules far from their body.
     const Vec2 origin = a.center1;
     const Transform frame{transform_point(xf_a, origin), xf_a.q};
@@ -263,8 +263,8 @@ Manifold collide_capsules(const Capsule& a, const Transform& xf_a, const Capsule
     }
     const float distance = std::sqrt(sd.distance_squared);
     Manifold m;
-    if (core_a.length > linear_slop && core_b.length > linear_slop) {
-        m = clip_capsules(core_a, a.radius, core_b, b.radius, distance, speculative);
+    if (core_a.length > slop && core_b.length > slop) {
+        m = clip_capsules(core_a, a.radius, core_b, b.radius, distance, speculative, slop);
     }
     if (m.point_count == 0) {
         Vec2 normal = distance > 0.0f ? (1.0f / distance) * (sd.closest2 - sd.closest1) : left_perp(core_a.u);
@@ -275,66 +275,81 @@ Manifold collide_capsules(const Capsule& a, const Transform& xf_a, const Capsule
 }
 
 Manifold collide_segment_capsule(const Segment& a, const Transform& xf_a, const Capsule& b, const Transform& xf_b,
-                                 float speculative) {
-    return collide_capsules(Capsule{a.point1, a.point2, 0.0f}, xf_a, b, xf_b, speculative);
+                                 float speculative, float slop) {
+    return collide_capsules(Capsule{a.point1, a.point2, 0.0f}, xf_a, b, xf_b, speculative, slop);
 }
 
 Manifold collide_polygon_capsule(const Polygon& a, const Transform& xf_a, const Capsule& b, const Transform& xf_b,
-                                 float speculative) {
-    return collide_polygons(a, xf_a, make_capsule_polygon(b.center1, b.center2, b.radius), xf_b, speculative);
+                                 float speculative, float slop) {
+    return collide_polygons(a, xf_a, make_capsule_polygon(b.center1, b.center2, b.radius), xf_b, speculative, slop);
 }
 
 Manifold collide_segment_polygon(const Segment& a, const Transform& xf_a, const Polygon& b, const Transform& xf_b,
-                                 float speculative) {
-    return collide_polygons(make_capsule_polygon(a.point1, a.point2, 0.0f), xf_a, b, xf_b, speculative);
+                                 float speculative, float slop) {
+    return collide_polygons(make_capsule_polygon(a.point1, a.point2, 0.0f), xf_a, b, xf_b, speculative, slop);
 }
 
 // ---- The pair table (Box2D contact.c's s_registers, Jolt's CollisionDispatch) --------
 
 namespace {
 
-using CollideFn = Manifold (*)(const Geometry&, const Transform&, const Geometry&, const Transform&, float);
+using CollideFn = Manifold (*)(const Geometry&, const Transform&, const Geometry&, const Transform&, float, float);
 
 // Adapters from the tagged Geometry to the typed functions, one per primary pair; `spec`
-// is the speculative margin, passed through.
-Manifold circle_circle(const Geometry& a, const Transform& xa, const Geometry& b, const Transform& xb, float spec) {
+// is the speculative margin and `slop` the tie-break length, passed through to the
+// functions that take them.
+Manifold circle_circle(const Geometry& a, const Transform& xa, const Geometry& b, const Transform& xb, float spec,
+                       float) {
     return collide_circles(a.circle, xa, b.circle, xb, spec);
 }
-Manifold capsule_circle(const Geometry& a, const Transform& xa, const Geometry& b, const Transform& xb, float spec) {
+Manifold capsule_circle(const Geometry& a, const Transform& xa, const Geometry& b, const Transform& xb, float spec,
+                        float) {
     return collide_capsule_circle(a.capsule, xa, b.circle, xb, spec);
 }
-Manifold segment_circle(const Geometry& a, const Transform& xa, const Geometry& b, const Transform& xb, float spec) {
+Manifold segment_circle(const Geometry& a, const Transform& xa, const Geometry& b, const Transform& xb, float spec,
+                        float) {
     return collide_segment_circle(a.segment, xa, b.circle, xb, spec);
 }
-Manifold polygon_circle(const Geometry& a, const Transform& xa, const Geometry& b, const Transform& xb, float spec) {
+Manifold polygon_circle(const Geometry& a, const Transform& xa, const Geometry& b, const Transform& xb, float spec,
+                        float) {
     return collide_polygon_circle(a.polygon, xa, b.circle, xb, spec);
 }
-Manifold capsule_capsule(const Geometry& a, const Transform& xa, const Geometry& b, const Transform& xb, float spec) {
-    return collide_capsules(a.capsule, xa, b.capsule, xb, spec);
+Manifold capsule_capsule(const Geometry& a, const Transform& xa, const Geometry& b, const Transform& xb, float spec,
+                         float slop) {
+    return collide_capsules(a.capsule, xa, b.capsule, xb, spec, slop);
 }
-Manifold segment_capsule(const Geometry& a, const Transform& xa, const Geometry& b, const Transform& xb, float spec) {
-    return collide_segment_capsule(a.segment, xa, b.capsule, xb, spec);
+Manifold segment_capsule(const Geometry& a, const Transform& xa, const Geometry& b, const Transform& xb, float spec,
+                         float slop) {
+    return collide_segment_capsule(a.segment, xa, b.capsule, xb, spec, slop);
 }
-Manifold polygon_capsule(const Geometry& a, const Transform& xa, const Geometry& b, const Transform& xb, float spec) {
-    return collide_polygon_capsule(a.polygon, xa, b.capsule, xb, spec);
+Manifold polygon_capsule(const Geometry& a, const Transform& xa, const Geometry& b, const Transform& xb, float spec,
+                         float slop) {
+    return collide_polygon_capsule(a.polygon, xa, b.capsule, xb, spec, slop);
 }
-Manifold segment_polygon(const Geometry& a, const Transform& xa, const Geometry& b, const Transform& xb, float spec) {
-    return collide_segment_polygon(a.segment, xa, b.polygon, xb, spec);
+Manifold segment_polygon(const Geometry& a, const Transform& xa, const Geometry& b, const Transform& xb, float spec,
+                         float slop) {
+    return collide_segment_polygon(a.segment, xa, b.polygon, xb, spec, slop);
 }
-Manifold polygon_polygon(const Geometry& a, const Transform& xa, const Geometry& b, const Transform& xb, float spec) {
-    return collide_polygons(a.polygon, xa, b.polygon, xb, spec);
+Manifold polygon_polygon(const Geometry& a, const Transform& xa, const Geometry& b, const Transform& xb, float spec,
+                         float slop) {
+    return collide_polygons(a.polygon, xa, b.polygon, xb, spec, slop);
 }
-Manifold chain_circle(const Geometry& a, const Transform& xa, const Geometry& b, const Transform& xb, float spec) {
+Manifold chain_circle(const Geometry& a, const Transform& xa, const Geometry& b, const Transform& xb, float spec,
+                      float) {
     return collide_chain_segment_circle(a.chain_segment, xa, b.circle, xb, spec);
 }
-Manifold chain_capsule(const Geometry& a, const Transform& xa, const Geometry& b, const Transform& xb, float spec) {
-    return collide_chain_segment_capsule(a.chain_segment, xa, b.capsule, xb, spec);
+Manifold chain_capsule(const Geometry& a, const Transform& xa, const Geometry& b, const Transform& xb, float spec,
+                       float slop) {
+    return collide_chain_segment_capsule(a.chain_segment, xa, b.capsule, xb, spec, false, slop);
 }
-Manifold chain_polygon(const Geometry& a, const Transform& xa, const Geometry& b, const Transform& xb, float spec) {
-    return collide_chain_segment_polygon(a.chain_segment, xa, b.polygon, xb, spec);
+Manifold chain_polygon(const Geometry& a, const Transform& xa, const Geometry& b, const Transform& xb, float spec,
+                       float slop) {
+    return collide_chain_segment_polygon(a.chain_segment, xa, b.polygon, xb, spec, false, slop);
 }
 // Segments and chains are static geometry: two of them never need a contact.
-Manifold segment_segment(const Geometry&, const Transform&, const Geometry&, const Transform&, float) { return {}; }
+Manifold segment_segment(const Geometry&, const Transform&, const Geometry&, const Transform&, float, float) {
+    return {};
+}
 
 struct PairEntry {
     CollideFn fn;
@@ -361,12 +376,12 @@ constexpr PairEntry pair_table[kind_count][kind_count] = {
 }  // namespace
 
 Manifold collide_shapes(const Geometry& a, const Transform& xf_a, const Geometry& b, const Transform& xf_b,
-                        float speculative) {
+                        float speculative, float slop) {
     const PairEntry& entry = pair_table[static_cast<int32_t>(a.type)][static_cast<int32_t>(b.type)];
     if (!entry.swapped) {
-        return entry.fn(a, xf_a, b, xf_b, speculative);
+        return entry.fn(a, xf_a, b, xf_b, speculative, slop);
     }
-    Manifold m = entry.fn(b, xf_b, a, xf_a, speculative);
+    Manifold m = entry.fn(b, xf_b, a, xf_a, speculative, slop);
     m.normal = -m.normal;
     return m;
 }

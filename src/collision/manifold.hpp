@@ -10,7 +10,11 @@
 // adds farther points (the far end of a tilted incident edge) and leaves the normal, the
 // reference face and the other points bit for bit, except within 0.01 slop of the
 // margin's edge, where a clip whose points were all too far gives way to one closest
-// point. Segment against segment never collides.
+// point. Segment against segment never collides. The functions of shapes with corners
+// or cores also take `slop`, the length their tie-breaks are measured in (which face is
+// the reference, when a clip is as close as the closest points), m, by default
+// linear_slop: a world passes its own, scaled to its length unit with the margin, so
+// that a scene in other units gets the same manifolds, scaled.
 #pragma once
 
 #include "collision/shapes.hpp"
@@ -33,16 +37,16 @@ Manifold collide_segment_circle(const Segment& a, const Transform& xf_a, const C
 Manifold collide_polygon_circle(const Polygon& a, const Transform& xf_a, const Circle& b, const Transform& xf_b,
                                 float speculative = speculative_distance);
 Manifold collide_capsules(const Capsule& a, const Transform& xf_a, const Capsule& b, const Transform& xf_b,
-                          float speculative = speculative_distance);
+                          float speculative = speculative_distance, float slop = linear_slop);
 Manifold collide_segment_capsule(const Segment& a, const Transform& xf_a, const Capsule& b, const Transform& xf_b,
-                                 float speculative = speculative_distance);
+                                 float speculative = speculative_distance, float slop = linear_slop);
 Manifold collide_polygon_capsule(const Polygon& a, const Transform& xf_a, const Capsule& b, const Transform& xf_b,
-                                 float speculative = speculative_distance);
+                                 float speculative = speculative_distance, float slop = linear_slop);
 Manifold collide_segment_polygon(const Segment& a, const Transform& xf_a, const Polygon& b, const Transform& xf_b,
-                                 float speculative = speculative_distance);
+                                 float speculative = speculative_distance, float slop = linear_slop);
 /// Polygons with 2 to 8 vertices (a 2-gon is a capsule's or segment's core).
 Manifold collide_polygons(const Polygon& a, const Transform& xf_a, const Polygon& b, const Transform& xf_b,
-                          float speculative = speculative_distance);
+                          float speculative = speculative_distance, float slop = linear_slop);
 
 /// Chain segments (manifold_chain.cpp): one-sided, and no contact at a seam with a normal
 /// that the neighbouring segment's face covers. `held`: the shape touched the free side
@@ -53,19 +57,19 @@ Manifold collide_chain_segment_circle(const ChainSegment& a, const Transform& xf
                                       bool held = false);
 Manifold collide_chain_segment_capsule(const ChainSegment& a, const Transform& xf_a, const Capsule& b,
                                        const Transform& xf_b, float speculative = speculative_distance,
-                                       bool held = false);
+                                       bool held = false, float slop = linear_slop);
 Manifold collide_chain_segment_polygon(const ChainSegment& a, const Transform& xf_a, const Polygon& b,
                                        const Transform& xf_b, float speculative = speculative_distance,
-                                       bool held = false);
+                                       bool held = false, float slop = linear_slop);
 /// A chain segment (either side, A or B) and a shape it holds, as collide_shapes orders
 /// them: the normal from A to B.
 Manifold collide_held_by_chain(const Geometry& a, const Transform& xf_a, const Geometry& b, const Transform& xf_b,
-                               float speculative = speculative_distance);
+                               float speculative = speculative_distance, float slop = linear_slop);
 
 /// A pair of shapes of any kinds, through the pair table; the reversed order of a
 /// primary pair is computed as (B, A) with the normal flipped.
 Manifold collide_shapes(const Geometry& a, const Transform& xf_a, const Geometry& b, const Transform& xf_b,
-                        float speculative = speculative_distance);
+                        float speculative = speculative_distance, float slop = linear_slop);
 
 // ---- Shared by the manifold sources -------------------------------------------------
 

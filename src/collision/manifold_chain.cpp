@@ -146,23 +146,23 @@ Manifold collide_chain_segment_circle(const ChainSegment& a, const Transform& xf
 }
 
 Manifold collide_chain_segment_polygon(const ChainSegment& a, const Transform& xf_a, const Polygon& b,
-                                       const Transform& xf_b, float speculative, bool held) {
+                                       const Transform& xf_b, float speculative, bool held, float slop) {
     const WorldChainSegment s = to_world(a, xf_a);
     if (behind(s, transform_point(xf_b, b.centroid))) {
         return held ? face_contact(s, b, xf_b, speculative) : Manifold{};
     }
-    const Manifold m = collide_segment_polygon(Segment{a.point1, a.point2}, xf_a, b, xf_b, speculative);
+    const Manifold m = collide_segment_polygon(Segment{a.point1, a.point2}, xf_a, b, xf_b, speculative, slop);
     return m.point_count == 0 || admissible(s, m.normal) ? m : face_contact(s, b, xf_b, speculative);
 }
 
 Manifold collide_chain_segment_capsule(const ChainSegment& a, const Transform& xf_a, const Capsule& b,
-                                       const Transform& xf_b, float speculative, bool held) {
+                                       const Transform& xf_b, float speculative, bool held, float slop) {
     return collide_chain_segment_polygon(a, xf_a, make_capsule_polygon(b.center1, b.center2, b.radius), xf_b,
-                                         speculative, held);
+                                         speculative, held, slop);
 }
 
 Manifold collide_held_by_chain(const Geometry& a, const Transform& xf_a, const Geometry& b, const Transform& xf_b,
-                               float speculative) {
+                               float speculative, float slop) {
     const bool chain_first = a.type == ShapeType::chain_segment;
     const Geometry& chain = chain_first ? a : b;
     const Geometry& other = chain_first ? b : a;
@@ -175,11 +175,11 @@ Manifold collide_held_by_chain(const Geometry& a, const Transform& xf_a, const G
             break;
         case ShapeType::capsule:
             m = collide_chain_segment_capsule(chain.chain_segment, xf_chain, other.capsule, xf_other, speculative,
-                                              true);
+                                              true, slop);
             break;
         case ShapeType::polygon:
             m = collide_chain_segment_polygon(chain.chain_segment, xf_chain, other.polygon, xf_other, speculative,
-                                              true);
+                                              true, slop);
             break;
         default: return {};  // segments and chains never collide
     }

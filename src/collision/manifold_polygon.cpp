@@ -153,7 +153,7 @@ float deepest_penetration(const Manifold& m) {
 // win when one of them is as close as those vertices (edges lying along each other):
 // they then carry the true depth and a second point.
 Manifold apart_contact(const LocalPolygon& ref, int32_t i11, const LocalPolygon& inc, int32_t i21, bool flip,
-                       float speculative) {
+                       float speculative, float slop) {
     const int32_t i12 = ref.next(i11), i22 = inc.next(i21);
     const SegmentDistance sd = segment_distance(ref.v(i11), ref.v(i12), inc.v(i21), inc.v(i22));
     const bool ref_vertex = sd.fraction1 == 0.0f || sd.fraction1 == 1.0f;
@@ -166,7 +166,7 @@ Manifold apart_contact(const LocalPolygon& ref, int32_t i11, const LocalPolygon&
     const float distance = std::sqrt(sd.distance_squared);
     // Clipped points inside the slab are never closer than the edges' distance; one that
     // is closer lies outside it (the edges do not overlap along the face) and is wrong.
-    if (clipped.point_count > 0 && std::fabs(radius - deepest_penetration(clipped) - distance) <= 0.01f * linear_slop) {
+    if (clipped.point_count > 0 && std::fabs(radius - deepest_penetration(clipped) - distance) <= 0.01f * slop) {
         return clipped;
     }
     if (distance - radius > speculative) {
@@ -186,7 +186,7 @@ Manifold apart_contact(const LocalPolygon& ref, int32_t i11, const LocalPolygon&
 // SAT; Ericson 5.1.9 for the closest points of the vertex case). Radii are handled by
 // subtracting them from the core separations.
 Manifold collide_polygons(const Polygon& a, const Transform& xf_a, const Polygon& b, const Transform& xf_b,
-                          float speculative) {
+                          float speculative, float slop) {
     const Vec2 origin = a.vertices[0];
     const Transform frame{transform_point(xf_a, origin), xf_a.q};
     LocalPolygon pa, pb;
@@ -204,7 +204,7 @@ Manifold collide_polygons(const Polygon& a, const Transform& xf_a, const Polygon
     }
     // Prefer A's face unless B's is clearly better: with nearly equal separations the
     // reference face would otherwise flicker between steps and the ids with it.
-    const bool flip = qb.separation > qa.separation + 0.1f * linear_slop;
+    const bool flip = qb.separation > qa.separation + 0.1f * slop;
     const LocalPolygon& ref = flip ? pb : pa;
     const LocalPolygon& inc = flip ? pa : pb;
     const int32_t ref_edge = flip ? qb.edge : qa.edge;
@@ -213,8 +213,8 @@ Manifold collide_polygons(const Polygon& a, const Transform& xf_a, const Polygon
 
     // Overlapping or nearly touching cores: the face normal is right. The tenth of the
     // slop also keeps the vertex-vertex direction long enough to normalise.
-    Manifold m = separation <= 0.1f * linear_slop ? clip_edges(ref, ref_edge, inc, inc_edge, flip, true, speculative)
-                                                  : apart_contact(ref, ref_edge, inc, inc_edge, flip, speculative);
+    Manifold m = separation <= 0.1f * slop ? clip_edges(ref, ref_edge, inc, inc_edge, flip, true, speculative)
+                                           : apart_contact(ref, ref_edge, inc, inc_edge, flip, speculative, slop);
     if (m.point_count == 0) {
         return {};
     }

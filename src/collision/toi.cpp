@@ -89,12 +89,12 @@ ToiResult time_of_impact(const ShapeProxy& a, const Sweep& sweep_a, const ShapeP
 }
 
 CastHit shape_cast(const ShapeProxy& shape, const Transform& xf, const ShapeProxy& moving, Vec2 translation,
-                   float max_fraction) {
+                   float max_fraction, float slop) {
     const ShapeProxy placed = transformed(shape, xf);
     const Sweep fixed{Vec2{}, Vec2{}, Vec2{}, Rot{}, Rot{}};
     const Sweep moved{Vec2{}, Vec2{}, translation, Rot{}, Rot{}};
     const float target = placed.radius + moving.radius;
-    const ToiResult r = time_of_impact(placed, fixed, moving, moved, max_fraction, target, 0.25f * linear_slop);
+    const ToiResult r = time_of_impact(placed, fixed, moving, moved, max_fraction, target, 0.25f * slop);
     CastHit hit;
     if (r.state == ToiState::separated) {
         return hit;

@@ -46,7 +46,8 @@ ToiResult time_of_impact(const ShapeProxy& a, const Sweep& sweep_a, const ShapeP
                          float max_fraction, float target, float tolerance);
 
 /// A proxy (world space) translated by `translation` against a shape placed by xf: the
-/// first fraction at which their surfaces touch (within a quarter of the linear slop),
+/// first fraction at which their surfaces touch (within a quarter of `slop`, m: the
+/// linear slop, or a world's, scaled to its length unit),
 /// with the point on the shape's surface and the shape's outward normal there. Overlap
 /// at the start is a hit at fraction 0 with a point inside both and the unit normal
 /// along which the proxy leaves the shape soonest (overlap_exit.hpp; back along the
@@ -58,6 +59,6 @@ struct CastHit {
     bool hit = false;
 };
 CastHit shape_cast(const ShapeProxy& shape, const Transform& xf, const ShapeProxy& moving, Vec2 translation,
-                   float max_fraction);
+                   float max_fraction, float slop = linear_slop);
 
 }  // namespace i2d

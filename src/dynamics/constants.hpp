@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 // Tuning numbers of the step, each with its unit and what changing it risks. The limits
-// the C boundary holds input to are in capi/limits.hpp.
+// the C boundary holds input to are in capi/limits.hpp. Lengths are given in metres; the
+// step reads those it uses through Tolerances (tolerances.hpp), scaled to the world's
+// length unit.
 #pragma once
 
 #include <cstdint>

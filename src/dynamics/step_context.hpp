@@ -14,6 +14,7 @@
 #include "dynamics/constants.hpp"
 #include "dynamics/joint/joint_constraint.hpp"
 #include "dynamics/solver/softness.hpp"
+#include "dynamics/tolerances.hpp"
 #include "dynamics/world/world_def.hpp"
 #include "math/math.hpp"
 
@@ -31,6 +32,7 @@ struct StepContext {
     Softness fixed_contact_softness;
     JointStep joint_step;  // what the joints' rows read
     int32_t worker_count;
+    Tolerances tolerances;  // the slop, margins and distances in the world's length unit
 
     StepContext(const WorldDef& world_settings, float step, int32_t substeps, int32_t workers)
         : settings(world_settings),
@@ -44,7 +46,8 @@ struct StepContext {
                      make_softness(min_of(world_settings.joint_hertz, stiffness_limit()),
                                    world_settings.joint_damping_ratio, substep),
                      world_settings.maximum_linear_speed, max_rotation_per_substep / substep),
-          worker_count(workers) {}
+          worker_count(workers),
+          tolerances(world_settings.length_units_per_meter) {}
 
     /// Stiffness is capped at a quarter of the substep rate, beyond which the implicit
     /// spring stops being accurate, Hz.

@@ -123,5 +123,8 @@ inline bool contains_point(const AABB& a, Vec2 p) {
 inline Vec2 center(const AABB& a) { return 0.5f * (a.lower + a.upper); }
 inline Vec2 extents(const AABB& a) { return 0.5f * (a.upper - a.lower); }
 inline Vec2 clamp_to(const AABB& a, Vec2 p) { return max(a.lower, min(a.upper, p)); }
+/// The box seen from another origin: each bound less `origin`. Subtraction rounds
+/// monotonically, so boxes that held one another, or were the union of others, still are.
+inline AABB relative_to(const AABB& a, Vec2 origin) { return {a.lower - origin, a.upper - origin}; }
 
 }  // namespace i2d

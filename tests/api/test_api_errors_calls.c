@@ -25,6 +25,8 @@ static i2d_vec2 ball_position(const fixture* f) { return i2d_body_get_position(f
 
 static i2d_status call_gravity_x(const fixture* f, float v) { return i2d_world_set_gravity(f->world, v2(v, -10.0f)); }
 static i2d_status call_gravity_y(const fixture* f, float v) { return i2d_world_set_gravity(f->world, v2(0.0f, v)); }
+static i2d_status call_shift_x(const fixture* f, float v) { return i2d_world_shift_origin(f->world, v2(v, 1.0f)); }
+static i2d_status call_shift_y(const fixture* f, float v) { return i2d_world_shift_origin(f->world, v2(1.0f, v)); }
 static i2d_status call_transform_px(const fixture* f, float v) {
     return i2d_body_set_transform(f->body[FIX_BALL], v2(v, 1.0f), rot(1.0f, 0.0f));
 }
@@ -133,6 +135,8 @@ static i2d_status call_step_time(const fixture* f, float v) { return i2d_world_s
 static const float_call_row k_float_calls[] = {
     {"i2d_world_set_gravity gravity.x", call_gravity_x},
     {"i2d_world_set_gravity gravity.y", call_gravity_y},
+    {"i2d_world_shift_origin new_origin.x", call_shift_x},
+    {"i2d_world_shift_origin new_origin.y", call_shift_y},
     {"i2d_body_set_transform position.x", call_transform_px},
     {"i2d_body_set_transform position.y", call_transform_py},
     {"i2d_body_set_transform rotation.c", call_transform_qc},
@@ -179,6 +183,8 @@ typedef struct float_call_value {
 /* Finite values outside the documented ranges. (Any finite angular velocity, torque and
  * angular impulse is in range.) */
 static const float_call_value k_out_of_range_calls[] = {
+    {"i2d_world_shift_origin new_origin.x", call_shift_x, 2e9f},
+    {"i2d_world_shift_origin new_origin.y", call_shift_y, -1.5e9f},
     {"i2d_body_set_transform position.x", call_transform_px, 2e9f},
     {"i2d_body_set_transform position.y", call_transform_py, -2e9f},
     {"i2d_body_set_transform rotation.c (c = 1.01, s = 0)", call_transform_qc, 1.01f},
@@ -783,6 +789,7 @@ static void try_changes_while_locked(const fixture* f, const snapshot* before) {
     CHECK_LOCKED(f, before, i2d_body_set_type(ball, I2D_BODY_STATIC));
     CHECK_LOCKED(f, before, i2d_body_set_type(f->body[FIX_GROUND], I2D_BODY_DYNAMIC));
     CHECK_LOCKED(f, before, i2d_world_set_gravity(f->world, v2(0.0f, 10.0f)));
+    CHECK_LOCKED(f, before, i2d_world_shift_origin(f->world, v2(100.0f, -50.0f)));
     CHECK_LOCKED(f, before, i2d_shape_set_friction(f->shape[FIX_BALL_CIRCLE], 0.1f));
     CHECK_LOCKED(f, before, i2d_shape_set_restitution(f->shape[FIX_BALL_CIRCLE], 0.9f));
     CHECK_LOCKED(f, before, i2d_shape_set_filter(f->shape[FIX_BALL_CIRCLE], i2d_default_filter()));
@@ -936,6 +943,7 @@ static bool probe_check_order(i2d_shape_id shape, void* context) {
     CHECK_LOCKED(f, probe->before, i2d_body_apply_force_to_center(ball, v2(0.0f, NAN), true));
     CHECK_LOCKED(f, probe->before, i2d_world_step(f->world, NAN, 0));
     CHECK_LOCKED(f, probe->before, i2d_world_set_gravity(f->world, v2(INFINITY, 0.0f)));
+    CHECK_LOCKED(f, probe->before, i2d_world_shift_origin(f->world, v2(NAN, 0.0f)));
     CHECK_LOCKED(f, probe->before, i2d_shape_set_friction(f->shape[FIX_BALL_BOX], -1.0f));
     CHECK_LOCKED_CREATE(f, probe->before, i2d_body_create(f->world, NULL));
     CHECK_LOCKED_CREATE(f, probe->before, i2d_shape_create_circle(ball, NULL, NULL));

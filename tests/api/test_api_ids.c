@@ -59,6 +59,7 @@ static void check_world_id_refused(i2d_world_id w, const char* ctx) {
     CHECK_LAST_HANDLE_REFUSED(ctx, "i2d_world_is_valid");
     CHECK_HANDLE_REFUSED(ctx, i2d_world_step(w, 1.0f / 60.0f, 4));
     CHECK_HANDLE_REFUSED(ctx, i2d_world_set_gravity(w, v2(1.0f, 2.0f)));
+    CHECK_HANDLE_REFUSED(ctx, i2d_world_shift_origin(w, v2(1.0f, 2.0f)));
     i2d_vec2 g = i2d_world_get_gravity(w);
     CHECK_LAST_HANDLE_REFUSED(ctx, "i2d_world_get_gravity");
     CHECK_IN(ctx, is_zero_vec(g));

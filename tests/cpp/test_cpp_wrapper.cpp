@@ -83,6 +83,8 @@ I2D_TEST(cpp_handles_match_the_c_calls) {
     world.set_transforms(bodies, xf);
     world.set_velocities(bodies, {{0.0f, 0.0f}, {1.0f, 0.0f}}, {0.0f, 2.0f});
     I2D_CHECK(ball.position().y == 3.0f && ball.linear_velocity().x == 1.0f && ball.angular_velocity() == 2.0f);
+    world.shift_origin({100.0f, -20.0f});
+    I2D_CHECK(ball.position().x == xf[1].p.x - 100.0f && ball.position().y == 23.0f);
 }
 
 I2D_TEST(cpp_errors_throw_by_default) {

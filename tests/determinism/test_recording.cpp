@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // Recording and replay: a recorded session (creations, destructions, forces, setters,
-// bulk writes, a rollback) replays with every step's hash as recorded, forwards and after
+// bulk writes, a rollback, an origin shift) replays with every step's hash as recorded, forwards and after
 // seeking back; a replay whose world is nudged reports the step where it diverges; a
 // recording changed in any record, of another format or not a recording at all is
 // refused, and one cut short mid-record replays the whole records it holds.
@@ -153,6 +153,9 @@ const Session& session() {
                 const i2d_polygon box = i2d_make_box(0.3f, 0.2f);
                 I2D_CHECK_STATUS(i2d_shape_set_polygon(shapes[0], &box), I2D_OK);
                 I2D_CHECK_STATUS(i2d_world_enable_sleeping(world, true), I2D_OK);
+            }
+            if (k == 90) {  // the origin moved: replayed through i2d_world_shift_origin
+                I2D_CHECK(i2d_world_shift_origin(world, i2d_vec2{300.0f, -120.0f}) == I2D_OK);
             }
             step(world);
             if (k == 60) {

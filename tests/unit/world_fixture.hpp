@@ -20,6 +20,7 @@ class WorldProbe {
 public:
     static Body& body(World& world, int32_t body) { return world.bodies_[body]; }
     static JointSet& joint_set(World& world) { return world.stages_->joints; }
+    static const BroadPhase& broad_phase(const World& world) { return world.stages_->broad_phase; }
 };
 
 }  // namespace i2d

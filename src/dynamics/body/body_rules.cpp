@@ -37,7 +37,7 @@ void sum_shape_masses(Body& b, const Pool<Shape>& shapes) {
 }  // namespace
 
 // A mass the caller set (mass_overridden) stays; the extents always follow the shapes.
-void update_mass_from_shapes(Body& b, const Pool<Shape>& shapes) {
+void update_mass_from_shapes(Body& b, const Pool<Shape>& shapes, float slop) {
     const bool overridden = b.mass_overridden && b.type == BodyType::dynamic;
     if (!overridden) {
         b.mass = 0.0f;
@@ -67,7 +67,7 @@ void update_mass_from_shapes(Body& b, const Pool<Shape>& shapes) {
     for (int32_t s = b.head_shape; s != null_index; s = shapes[s].next_in_body) {
         b.max_extent = max_of(b.max_extent, extent_from(shapes[s].geometry, b.local_center));
         if (!shapes[s].is_sensor) {
-            b.min_extent = min_of(b.min_extent, max_of(inner_radius(shapes[s].geometry), linear_slop));
+            b.min_extent = min_of(b.min_extent, max_of(inner_radius(shapes[s].geometry), slop));
         }
     }
     b.min_extent = b.min_extent == FLT_MAX ? 0.0f : b.min_extent;

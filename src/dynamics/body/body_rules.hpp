@@ -16,7 +16,9 @@ namespace i2d {
 /// centre in the world. Static and kinematic bodies have infinite mass and inertia
 /// (inverses 0); a dynamic body with no mass gets 1 kg at its origin so that it still
 /// responds, rather than an infinite mass that would make it static in disguise.
-void update_mass_from_shapes(Body& body, const Pool<Shape>& shapes);
+/// `slop`: the world's linear slop (Tolerances), the least thickness a shape counts with
+/// in min_extent.
+void update_mass_from_shapes(Body& body, const Pool<Shape>& shapes, float slop);
 
 /// v scaled down to max_speed, its direction kept. The length is taken in double so that
 /// no finite float input overflows on the way.

@@ -16,10 +16,10 @@ ProxyKind proxy_kind_of(BodyType type) {
     }
 }
 
-float aabb_margin_of(const Geometry& geometry) {
+float aabb_margin_of(const Geometry& geometry, float max_margin) {
     const AABB local = compute_aabb(geometry, Transform{});
     const float half_diagonal = 0.5f * length(local.upper - local.lower);
-    return min_of(max_aabb_margin, aabb_margin_fraction * half_diagonal);
+    return min_of(max_margin, aabb_margin_fraction * half_diagonal);
 }
 
 ProxyBoxes fatten(const Shape& shape, const Body& body, Vec2 displacement, float reach) {

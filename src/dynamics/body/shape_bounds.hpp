@@ -26,8 +26,9 @@ namespace i2d {
 
 ProxyKind proxy_kind_of(BodyType type);
 
-/// The margin of a shape of this geometry, m (aabb_margin_fraction).
-float aabb_margin_of(const Geometry& geometry);
+/// The margin of a shape of this geometry (aabb_margin_fraction of its size), at most
+/// `max_margin` (the world's max_aabb_margin, Tolerances), m.
+float aabb_margin_of(const Geometry& geometry, float max_margin);
 
 /// The proxy boxes of a shape.
 struct ProxyBoxes {

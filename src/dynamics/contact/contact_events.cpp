@@ -112,7 +112,8 @@ void ContactSet::end_range(const StepContext& step, ContactSet& self, const NoSt
                 const Shape& a = self.shapes_[c.shape_a];
                 const Shape& b = self.shapes_[c.shape_b];
                 const Manifold m = without_speculative_points(collide_shapes(
-                    a.geometry, self.bodies_[a.body].transform, b.geometry, self.bodies_[b.body].transform));
+                    a.geometry, self.bodies_[a.body].transform, b.geometry, self.bodies_[b.body].transform,
+                    step.tolerances.speculative_distance, step.tolerances.linear_slop));
                 c.flags |= m.point_count > 0 ? uint32_t(contact_touching) : 0u;
             }
             const bool at_start = (c.flags & contact_touching_at_start) != 0;

@@ -166,9 +166,9 @@ private:
     static void collide_range(const StepContext& step, ContactSet& set, const NoStageArg&, int32_t begin, int32_t end,
                               int32_t worker);
     void prefetch_for_collide(int32_t k, int32_t count) const;
-    uint8_t collide_one(int32_t k, float time_step);
-    bool recycle(Contact& contact, const Body& a, const Body& b) const;
-    void update_contact(Contact& contact, const Shape& a, const Shape& b, float time_step);
+    uint8_t collide_one(int32_t k, const StepContext& step);
+    bool recycle(Contact& contact, const Body& a, const Body& b, const Tolerances& tolerances) const;
+    void update_contact(Contact& contact, const Shape& a, const Shape& b, const StepContext& step);
     uint8_t point_change_flags(const Contact& contact, bool had_points) const;
     template <auto F>
     void run_over_awake(const StepContext& step);

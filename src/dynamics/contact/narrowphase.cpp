@@ -14,13 +14,13 @@ namespace i2d {
 
 namespace {
 
-// How far apart the two shapes may be and still meet within the step: the fixed
+// How far apart the two shapes may be and still meet within the step: the world's
 // speculative distance plus how far their surfaces can approach in one step (relative
 // speed, and spin times extent). Contacts within it get points the solver can stop at.
-float speculative_margin(const Body& a, const Body& b, float time_step) {
+float speculative_margin(const Body& a, const Body& b, const StepContext& step) {
     const float approach = length(b.linear_velocity - a.linear_velocity) +
                            std::fabs(a.angular_velocity) * a.max_extent + std::fabs(b.angular_velocity) * b.max_extent;
-    return speculative_distance + time_step * approach;
+    return step.tolerances.speculative_distance + step.time_step * approach;
 }
 
 bool is_moving(const Body& b) {
@@ -92,12 +92,12 @@ void ContactSet::collide_range(const StepContext& step, ContactSet& self, const 
     const int32_t count = int32_t(self.awake_.size());
     for (int32_t k = begin; k < end; ++k) {
         self.prefetch_for_collide(k, end < count ? end : count);
-        self.collide_flags_[std::size_t(k)] = self.collide_one(k, step.time_step);
+        self.collide_flags_[std::size_t(k)] = self.collide_one(k, step);
     }
 }
 
 // Updates the k-th awake contact, writing only to it; returns its CollideFlags.
-uint8_t ContactSet::collide_one(int32_t k, float time_step) {
+uint8_t ContactSet::collide_one(int32_t k, const StepContext& step) {
     Contact& c = pool_[awake_[std::size_t(k)]];
     const uint32_t at_start = (c.flags & contact_touching) ? uint32_t(contact_touching_at_start) : 0u;
     c.flags = (c.flags & ~uint32_t(contact_touching | contact_touching_at_start)) | at_start;
@@ -112,8 +112,8 @@ uint8_t ContactSet::collide_one(int32_t k, float time_step) {
         c.flags |= contact_disjoint;
         c.point_count = 0;
     } else if (is_solid(c)) {
-        if (!recycle(c, bodies_[a.body], bodies_[b.body])) {
-            update_contact(c, a, b, time_step);
+        if (!recycle(c, bodies_[a.body], bodies_[b.body], step.tolerances)) {
+            update_contact(c, a, b, step);
         }
     }
     uint8_t flags = is_solid(c) ? point_change_flags(c, had_points) : 0;
@@ -141,31 +141,33 @@ uint8_t ContactSet::point_change_flags(const Contact& c, bool had_points) const 
     return flags | (had_points != has_points ? points_changed : 0);
 }
 
-bool ContactSet::recycle(Contact& c, const Body& a, const Body& b) const {
+bool ContactSet::recycle(Contact& c, const Body& a, const Body& b, const Tolerances& tolerances) const {
     if (!settings_.enable_contact_recycling) {
         return false;
     }
     const float extent = max_of(a.type == BodyType::static_body ? 0.0f : a.max_extent,
                                 b.type == BodyType::static_body ? 0.0f : b.max_extent);
-    return recycle_manifold(c, a.transform, a.center, b.transform, b.center, extent,
-                            RecycleLimits{recycle_touching_distance, recycle_apart_distance, recycle_min_cos});
+    const RecycleLimits limits{tolerances.recycle_touching_distance, tolerances.recycle_apart_distance,
+                               recycle_min_cos};
+    return recycle_manifold(c, a.transform, a.center, b.transform, b.center, extent, limits);
 }
 
 // Shapes whose tight boxes are farther apart than the speculative margin along an axis
 // are at least that far apart: the narrowphase would give no points, and is skipped.
-void ContactSet::update_contact(Contact& c, const Shape& a, const Shape& b, float time_step) {
+void ContactSet::update_contact(Contact& c, const Shape& a, const Shape& b, const StepContext& step) {
     const Body& body_a = bodies_[a.body];
     const Body& body_b = bodies_[b.body];
-    const float margin = speculative_margin(body_a, body_b, time_step);
+    const float margin = speculative_margin(body_a, body_b, step);
+    const float slop = step.tolerances.linear_slop;
     const float gap = max_of(max_of(a.aabb.lower.x - b.aabb.upper.x, b.aabb.lower.x - a.aabb.upper.x),
                              max_of(a.aabb.lower.y - b.aabb.upper.y, b.aabb.lower.y - a.aabb.upper.y));
     const bool chain = a.geometry.type == ShapeType::chain_segment || b.geometry.type == ShapeType::chain_segment;
     const bool held = chain && (c.flags & contact_held_by_chain) != 0;
     Manifold fresh;
     if (held) {
-        fresh = collide_held_by_chain(a.geometry, body_a.transform, b.geometry, body_b.transform, margin);
+        fresh = collide_held_by_chain(a.geometry, body_a.transform, b.geometry, body_b.transform, margin, slop);
     } else if (gap <= margin) {
-        fresh = collide_shapes(a.geometry, body_a.transform, b.geometry, body_b.transform, margin);
+        fresh = collide_shapes(a.geometry, body_a.transform, b.geometry, body_b.transform, margin, slop);
     }
     if (chain) {
         c.flags = fresh.point_count > 0 ? c.flags | contact_held_by_chain : c.flags & ~uint32_t(contact_held_by_chain);

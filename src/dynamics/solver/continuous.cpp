@@ -11,18 +11,23 @@ namespace i2d {
 
 namespace {
 
+// The lengths below are shares of the world's linear slop (Tolerances), so that they
+// scale with its length unit.
+
 /// How close the time of impact must bring the cores, within a quarter slop: the
 /// shapes end up a slop inside each other's rounding, or a slop apart when neither is
 /// rounded (Box2D's target), so that the next step's contact has a point to push on.
-float impact_target(const ShapeProxy& a, const ShapeProxy& b) {
-    return max_of(linear_slop, a.radius + b.radius - linear_slop);
+float impact_target(const ShapeProxy& a, const ShapeProxy& b, float slop) {
+    return max_of(slop, a.radius + b.radius - slop);
 }
 
-constexpr float impact_tolerance = 0.25f * linear_slop;
+/// How far short of its target a time of impact may stop, in slops.
+constexpr float impact_tolerance_share = 0.25f;
 
 /// How close the shape's centre may come to what it touched at the start of the step,
-/// m: a centre that got this close is stopped there, so that it never passes through.
-constexpr float centre_target = 0.5f * linear_slop;
+/// in slops: a centre that got this close is stopped there, so that it never passes
+/// through.
+constexpr float centre_target_share = 0.5f;
 
 // The shape's centre: what must never pass through anything. A contact may let a shape
 // sink within a step (a paddle turning a third of a radian per step turns its contact
@@ -45,7 +50,7 @@ ShapeProxy centre_point(const Geometry& g) {
 // its start distance, so that sinking slows down step by step instead of crossing; one
 // inside the core already is left to the contact.
 ToiResult sweep_centre(const ShapeProxy& other, const Sweep& other_sweep, const ShapeProxy& centre,
-                       const Sweep& sweep, float max_fraction) {
+                       const Sweep& sweep, float max_fraction, float slop) {
     const float start = core_distance(transformed(other, sweep_transform(other_sweep, 0.0f)),
                                       transformed(centre, sweep_transform(sweep, 0.0f)))
                             .distance -
@@ -53,8 +58,8 @@ ToiResult sweep_centre(const ShapeProxy& other, const Sweep& other_sweep, const 
     if (!(start > 0.0f)) {
         return ToiResult{};
     }
-    const float target = min_of(centre_target, 0.5f * start);
-    const float tolerance = min_of(impact_tolerance, 0.25f * start);
+    const float target = min_of(centre_target_share * slop, 0.5f * start);
+    const float tolerance = min_of(impact_tolerance_share * slop, 0.25f * start);
     return time_of_impact(other, other_sweep, centre, sweep, max_fraction, other.radius + target, tolerance);
 }
 
@@ -86,7 +91,7 @@ void Continuous::run(const StepContext& step, const std::vector<int32_t>& fast_b
             if (bodies_[body].is_bullet == bullet_pass) {
                 std::vector<SensorCandidate>& found = found_[0];
                 found.clear();
-                const Impact first = sweep(body, bullet_pass, found);
+                const Impact first = sweep(body, bullet_pass, step.tolerances.linear_slop, found);
                 apply(step, body, first, found.data(), found.data() + found.size());
             }
         }
@@ -111,14 +116,14 @@ void Continuous::sweep_non_bullets(const StepContext& step) {
     }
 }
 
-void Continuous::sweep_range(const StepContext&, Continuous& self, const NoStageArg&, int32_t begin, int32_t end,
-                             int32_t worker) {
+void Continuous::sweep_range(const StepContext& step, Continuous& self, const NoStageArg&, int32_t begin,
+                             int32_t end, int32_t worker) {
     std::vector<SensorCandidate>& found = self.found_[std::size_t(worker)];
     for (int32_t k = begin; k < end; ++k) {
         SweepResult& r = self.results_[std::size_t(k)];
         r.worker = worker;
         r.candidates_begin = int32_t(found.size());
-        r.first = self.sweep(self.non_bullets_[std::size_t(k)], false, found);
+        r.first = self.sweep(self.non_bullets_[std::size_t(k)], false, step.tolerances.linear_slop, found);
         r.candidates_end = int32_t(found.size());
     }
 }
@@ -138,11 +143,12 @@ bool Continuous::swept_against(const Body& fast, const Body& other, bool bullet_
 }
 
 // The body's first impact along its sweep; the sensors it crosses go to `found`.
-Continuous::Impact Continuous::sweep(int32_t body, bool bullet_pass, std::vector<SensorCandidate>& found) {
+Continuous::Impact Continuous::sweep(int32_t body, bool bullet_pass, float slop, std::vector<SensorCandidate>& found) {
     const Body& b = bodies_[body];
     FastShape fast;
     fast.body = body;
     fast.bullet_pass = bullet_pass;
+    fast.slop = slop;
     fast.sweep = sweep_of(body);
     fast.start = Transform{fast.sweep.c1 - rotate(fast.sweep.q1, fast.sweep.local_center), fast.sweep.q1};
     const bool turned = !(fast.sweep.q1.c == fast.sweep.q2.c && fast.sweep.q1.s == fast.sweep.q2.s);
@@ -206,10 +212,11 @@ void Continuous::test_candidate(const FastShape& fast, int32_t other_index, Impa
         return;  // one-sided: a body coming from behind passes through
     }
     const ShapeProxy other_proxy = make_shape_proxy(other.geometry);
+    const float tolerance = impact_tolerance_share * fast.slop;
     if (other.is_sensor) {
         if (shape.enable_sensor_events) {
             const ToiResult r = time_of_impact(other_proxy, other_sweep, fast.proxy, fast.sweep, 1.0f,
-                                               other_proxy.radius + fast.proxy.radius, impact_tolerance);
+                                               other_proxy.radius + fast.proxy.radius, tolerance);
             if (r.state == ToiState::hit) {
                 found.push_back({{other_index, fast.shape}, r.fraction});
             }
@@ -217,12 +224,13 @@ void Continuous::test_candidate(const FastShape& fast, int32_t other_index, Impa
         return;
     }
     ToiResult r = time_of_impact(other_proxy, other_sweep, fast.proxy, fast.sweep, first.fraction,
-                                 impact_target(other_proxy, fast.proxy), impact_tolerance);
+                                 impact_target(other_proxy, fast.proxy, fast.slop), tolerance);
     // Touching at the start: the contact has the pair in hand, unless the step took the
     // shape's centre through (Box2D sweeps a small disc instead, which a sinking shape can
     // start inside of).
     if (r.state == ToiState::overlapped) {
-        r = sweep_centre(other_proxy, other_sweep, centre_point(shape.geometry), fast.sweep, first.fraction);
+        r = sweep_centre(other_proxy, other_sweep, centre_point(shape.geometry), fast.sweep, first.fraction,
+                         fast.slop);
     }
     if (r.state == ToiState::hit && r.fraction < first.fraction) {
         first.fraction = r.fraction;

@@ -63,6 +63,7 @@ private:
         Sweep sweep;
         Transform start;  // the body's pose at the start of the step
         ShapeProxy proxy;
+        float slop = 0.0f;  // the world's linear slop (Tolerances): impacts stop within it
     };
     // The earliest impact found so far.
     struct Impact {
@@ -83,7 +84,7 @@ private:
     static void sweep_range(const StepContext& step, Continuous& continuous, const NoStageArg&, int32_t begin,
                             int32_t end, int32_t worker);
     void sweep_non_bullets(const StepContext& step);
-    Impact sweep(int32_t body, bool bullet_pass, std::vector<SensorCandidate>& found);
+    Impact sweep(int32_t body, bool bullet_pass, float slop, std::vector<SensorCandidate>& found);
     void apply(const StepContext& step, int32_t body, const Impact& first, const SensorCandidate* found_begin,
                const SensorCandidate* found_end);
     void test_candidate(const FastShape& fast, int32_t other_shape, Impact& first,

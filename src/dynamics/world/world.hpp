@@ -10,7 +10,8 @@
 // (world_step.cpp). Callers read the pools; they change them only through the world, so
 // that a change is never half made. The work is split by what it changes:
 // world.cpp (creation and the wiring between stages), world_bodies.cpp, world_shapes.cpp,
-// world_joints.cpp, world_step.cpp, world_query.cpp and world_validate.cpp.
+// world_joints.cpp, world_step.cpp, world_query.cpp, world_origin.cpp and
+// world_validate.cpp.
 #pragma once
 
 #include <cstddef>
@@ -28,6 +29,7 @@
 #include "dynamics/contact/contact.hpp"
 #include "dynamics/joint/joint.hpp"
 #include "dynamics/recording/recording_format.hpp"
+#include "dynamics/tolerances.hpp"
 #include "dynamics/world/events.hpp"
 #include "dynamics/world/world_def.hpp"
 
@@ -82,6 +84,8 @@ public:
 
     // What callers read. Indices come from the create functions; a pool says which are live.
     const WorldDef& settings() const { return settings_; }
+    /// The step's length tolerances in the world's unit (its def's length_units_per_meter).
+    Tolerances tolerances() const { return Tolerances(settings_.length_units_per_meter); }
     const Pool<Body>& bodies() const { return bodies_; }
     const Pool<Shape>& shapes() const { return shapes_; }
     const Pool<Joint>& joints() const;
@@ -167,13 +171,18 @@ public:
     /// Joints whose reaction passed a threshold in the last step.
     const std::vector<JointEvent>& joint_events() const;
 
-    // The world (world.cpp, world_step.cpp).
+    // The world (world.cpp, world_step.cpp, world_origin.cpp).
     void set_gravity(Vec2 gravity);
     /// The simulation's settings (not the host's wiring: workers, tasks, SIMD path,
     /// profiling; nor the length unit, which the world's tolerances were made for).
     void set_settings(const WorldDef& settings);
     void set_user_data(void* user_data) { user_data_ = user_data; }
     void* user_data() const { return user_data_; }
+    /// Moves the world's origin to `new_origin`: every position and box the world keeps in
+    /// world coordinates (bodies, shapes, trees, mouse targets, the last step's events)
+    /// becomes itself less new_origin; nothing wakes, and the simulation goes on as it
+    /// would have, seen from there. A rollback state saved before is refused after it.
+    void shift_origin(Vec2 new_origin);
     void step(float time_step, int32_t substep_count);
     /// Installs the C boundary's id encoding for the ids inside events.
     void set_id_encoder(const IdEncoder& ids);

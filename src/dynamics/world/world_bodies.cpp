@@ -104,7 +104,7 @@ void World::set_type(int32_t body, BodyType type) {
 // centre of mass).
 void World::update_mass(int32_t body) {
     stages_->joints.touch();
-    update_mass_from_shapes(bodies_[body], shapes_);
+    update_mass_from_shapes(bodies_[body], shapes_, tolerances().linear_slop);
     stages_->contacts.forget_manifolds(body);
 }
 

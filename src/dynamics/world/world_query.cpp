@@ -102,6 +102,7 @@ void World::cast_shape(const ShapeProxy& proxy, Vec2 translation, const QueryFil
     QueryLock lock(*this);
     const AABB start = proxy_aabb(proxy);
     const AABB swept = union_of(start, {start.lower + translation, start.upper + translation});
+    const float slop = tolerances().linear_slop;  // the cast's tolerance is a quarter of it
     float max_fraction = 1.0f;
     bool stopped = false;
     for (int32_t k = 0; k < int32_t(ProxyKind::count) && !stopped; ++k) {
@@ -111,7 +112,8 @@ void World::cast_shape(const ShapeProxy& proxy, Vec2 translation, const QueryFil
                 return true;
             }
             const CastHit hit =
-                shape_cast(make_shape_proxy(s.geometry), bodies_[s.body].transform, proxy, translation, max_fraction);
+                shape_cast(make_shape_proxy(s.geometry), bodies_[s.body].transform, proxy, translation, max_fraction,
+                           slop);
             if (!hit.hit) {
                 return true;
             }

@@ -28,7 +28,7 @@ int32_t World::attach_shape(int32_t body, const ShapeDef& def, const Geometry& g
     Shape& s = shapes_[index];
     s.body = body;
     s.geometry = geometry;
-    s.aabb_margin = aabb_margin_of(geometry);
+    s.aabb_margin = aabb_margin_of(geometry, tolerances().max_aabb_margin);
     s.density = def.density;
     s.friction = def.friction;
     s.restitution = def.restitution;
