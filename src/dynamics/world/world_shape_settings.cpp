@@ -24,7 +24,7 @@ void World::set_geometry(int32_t shape, const Geometry& geometry) {
     wake_body(body);
     Shape& s = shapes_[shape];
     s.geometry = geometry;
-    s.aabb_margin = aabb_margin_of(geometry);
+    s.aabb_margin = aabb_margin_of(geometry, tolerances().max_aabb_margin);
     s.aabb = compute_aabb(geometry, bodies_[body].transform);
     stages_->broad_phase.destroy_proxy(s.proxy_key);
     create_proxy(shape, true);
