@@ -78,9 +78,58 @@ void run_shape_setting_call(FuzzInput& in, uint8_t op) {
     check_body_finite(i2d_shape_get_body(s));
 }
 
+// Contact and sensor data into a buffer of any capacity, maybe NULL; every value read
+// back is finite.
+void run_contact_data_call(FuzzInput& in, uint8_t op) {
+    i2d_contact_data contacts[4];
+    i2d_shape_id visitors[4];
+    const int32_t capacity = in.flag() ? in.count(4) : static_cast<int32_t>(in.u32());
+    const bool null_out = in.byte() > 230;
+    const int32_t room = capacity > 4 && !null_out ? 4 : capacity;
+    int32_t filled = 0;
+    switch (op % 3) {
+        case 0: filled = i2d_body_get_contact_data(pick_body(in), null_out ? nullptr : contacts, room); break;
+        case 1: filled = i2d_shape_get_contact_data(pick_shape(in), null_out ? nullptr : contacts, room); break;
+        default: i2d_shape_get_sensor_overlaps(pick_shape(in), null_out ? nullptr : visitors, room); return;
+    }
+    for (int32_t k = 0; k < filled && k < room && k < 4 && !null_out; ++k) {
+        const i2d_manifold& m = contacts[k].manifold;
+        for (int32_t p = 0; p < m.point_count && p < 2; ++p) {
+            if (!finite2(m.points[p].point) || !std::isfinite(contacts[k].normal_impulses[p])) {
+                fail("non-finite contact data", m.points[p].point.x, contacts[k].normal_impulses[p]);
+            }
+        }
+    }
+}
+
+void run_distance_call(FuzzInput& in, uint8_t op) {
+    if (op % 2 == 0) {
+        const i2d_vec2 p = i2d_shape_get_closest_point(pick_shape(in), in.vec2());
+        if (!finite2(p)) {
+            fail("non-finite closest point", p.x, p.y);
+        }
+        return;
+    }
+    i2d_vec2 points[2][8];
+    for (auto& list : points) {
+        for (auto& p : list) {
+            p = in.small_vec2();
+        }
+    }
+    const i2d_shape_proxy a = i2d_make_proxy(points[0], 1 + in.byte() % 8, in.small_real());
+    const i2d_shape_proxy b = i2d_make_proxy(points[1], 1 + in.byte() % 8, in.small_real());
+    const i2d_rot qa = in.flag() ? i2d_make_rot(in.real()) : i2d_rot{in.real(), in.real()};
+    const i2d_distance_result d = i2d_shape_distance(in.byte() > 245 ? nullptr : &a, i2d_transform{in.vec2(), qa},
+                                                     &b, i2d_transform{in.small_vec2(), i2d_make_rot(in.real())});
+    if (!(std::isfinite(d.distance) && d.distance >= 0.0f)) {
+        fail("distance not finite and non-negative", d.distance, 0);
+    }
+}
+
 void run_world_setting_call(FuzzInput& in, uint8_t op) {
     const i2d_world_id w = pick_world(in);
-    switch (op % 8) {
+    switch (op % 9) {
+        case 8: i2d_world_shift_origin(w, in.flag() ? in.small_vec2() : in.vec2()); break;
         case 0: i2d_world_enable_sleeping(w, in.flag()); break;
         case 1: i2d_world_enable_continuous(w, in.flag()); break;
         case 2: i2d_world_set_contact_tuning(w, in.real(), in.real(), in.real()); break;
@@ -100,9 +149,11 @@ void run_world_setting_call(FuzzInput& in, uint8_t op) {
 }
 
 void run_runtime_call(FuzzInput& in, uint8_t op) {
-    switch (op % 3) {
+    switch (op % 5) {
         case 0: run_body_setting_call(in, in.byte()); break;
         case 1: run_shape_setting_call(in, in.byte()); break;
-        default: run_world_setting_call(in, in.byte()); break;
+        case 2: run_world_setting_call(in, in.byte()); break;
+        case 3: run_contact_data_call(in, in.byte()); break;
+        default: run_distance_call(in, in.byte()); break;
     }
 }
