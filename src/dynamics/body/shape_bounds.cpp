@@ -68,6 +68,12 @@ void move_enlarged_proxies(const Body& body, Pool<Shape>& shapes, BroadPhase& br
     }
 }
 
+void update_tight_boxes(const Body& body, Pool<Shape>& shapes) {
+    for (int32_t s = body.head_shape; s != null_index; s = shapes[s].next_in_body) {
+        shapes[s].aabb = compute_aabb(shapes[s].geometry, body.transform);
+    }
+}
+
 void update_shape_bounds(const Body& body, Pool<Shape>& shapes, BroadPhase& broad_phase, Vec2 displacement,
                          bool ahead, float reach) {
     if (refit_shape_bounds(body, shapes, displacement, ahead, reach)) {

@@ -73,4 +73,8 @@ void update_shape_bounds(const Body& body, Pool<Shape>& shapes, BroadPhase& broa
 bool refit_shape_bounds(const Body& body, Pool<Shape>& shapes, Vec2 displacement, bool ahead, float reach = 0.0f);
 void move_enlarged_proxies(const Body& body, Pool<Shape>& shapes, BroadPhase& broad_phase);
 
+/// Only the tight boxes, from the body's transform: the shapes of a disabled body, which
+/// have no proxies (their fat boxes are made when it is enabled).
+void update_tight_boxes(const Body& body, Pool<Shape>& shapes);
+
 }  // namespace i2d

@@ -55,7 +55,8 @@ public:
 
     /// A new kinematic or dynamic body: an island of its own, awake.
     void add_body(int32_t body);
-    /// A body about to be freed, its contacts already destroyed (it is woken first).
+    /// A body about to be freed or disabled, its contacts already destroyed (it is woken
+    /// first).
     void remove_body(int32_t body);
     /// A contact began joining two awake dynamic bodies, or a joint two dynamic bodies.
     void link(int32_t body_a, int32_t body_b);

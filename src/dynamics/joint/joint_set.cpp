@@ -77,6 +77,7 @@ bool JointSet::keeps_apart(int32_t body_a, int32_t body_b) const {
 }
 
 // A joint is taken from the first of its bodies that is awake: body A if it is, else B.
+// An awake body is enabled; the other end may not be, and then the joint waits for it.
 void JointSet::gather_awake(const std::vector<int32_t>& awake_bodies, std::vector<int32_t>& out) const {
     out.clear();
     for (const int32_t body : awake_bodies) {
@@ -85,7 +86,8 @@ void JointSet::gather_awake(const std::vector<int32_t>& awake_bodies, std::vecto
             const int32_t side = key & 1;
             const bool a_awake = bodies_[j.edges[0].body].awake_index != null_index;
             const bool mine = side == 0 || !a_awake;
-            if (mine && j.def.type != JointType::filter) {
+            const bool other_enabled = bodies_[j.edges[side ^ 1].body].enabled;
+            if (mine && other_enabled && j.def.type != JointType::filter) {
                 out.push_back(key >> 1);
             }
             key = j.edges[side].next_key;
@@ -134,7 +136,8 @@ bool angles_wound(const JointDef& d) {
 }
 
 // Every body's list holds exactly its joints' edges, a joint links islands exactly when it
-// should (between two dynamic bodies, which then share an island), and its angles are wound.
+// should (between two enabled dynamic bodies, which then share an island), and its angles
+// are wound.
 void JointSet::validate() const {
 #if defined(I2D_VALIDATE)
     int32_t edges_seen = 0;
@@ -160,13 +163,10 @@ void JointSet::validate() const {
             continue;
         }
         const Joint& joint = pool_[j];
-        const Body& a = bodies_[joint.def.body_a];
-        const Body& b = bodies_[joint.def.body_b];
-        const bool should_link =
-            links_islands(joint) && a.type == BodyType::dynamic && b.type == BodyType::dynamic;
-        I2D_ASSERT(joint.island_link == should_link);
+        const bool links = should_link(joint);
+        I2D_ASSERT(joint.island_link == links);
         I2D_ASSERT(angles_wound(joint.def));
-        I2D_ASSERT(!should_link || a.island == b.island);
+        I2D_ASSERT(!links || bodies_[joint.def.body_a].island == bodies_[joint.def.body_b].island);
     }
 #endif
 }

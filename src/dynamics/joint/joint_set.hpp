@@ -61,9 +61,18 @@ public:
     bool keeps_apart(int32_t body_a, int32_t body_b) const;
     /// Whether this kind of joint joins its bodies' islands when both are dynamic.
     static bool links_islands(const Joint& joint) { return joint.def.type != JointType::filter; }
+    /// Whether the joint joins its bodies' islands now: a kind that does, between two
+    /// dynamic bodies, both enabled.
+    bool should_link(const Joint& joint) const {
+        const Body& a = bodies_[joint.def.body_a];
+        const Body& b = bodies_[joint.def.body_b];
+        return links_islands(joint) && a.type == BodyType::dynamic && b.type == BodyType::dynamic && a.enabled &&
+               b.enabled;
+    }
 
     /// The joints to solve this step: each once, gathered from the awake bodies in awake
-    /// order; filter joints and joints with no moving body are left out.
+    /// order; filter joints, joints with no moving body and joints to a disabled body
+    /// are left out.
     void gather_awake(const std::vector<int32_t>& awake_bodies, std::vector<int32_t>& out) const;
 
     JointMeasures measure(int32_t joint) const;

@@ -9,9 +9,9 @@
 // contact set the bodies the islands woke, and keeps the step short and top-down
 // (world_step.cpp). Callers read the pools; they change them only through the world, so
 // that a change is never half made. The work is split by what it changes:
-// world.cpp (creation and the wiring between stages), world_bodies.cpp, world_shapes.cpp,
-// world_joints.cpp, world_step.cpp, world_query.cpp, world_origin.cpp and
-// world_validate.cpp.
+// world.cpp (creation and the wiring between stages), world_bodies.cpp,
+// world_body_enable.cpp, world_shapes.cpp, world_joints.cpp, world_step.cpp,
+// world_query.cpp, world_origin.cpp and world_validate.cpp.
 #pragma once
 
 #include <cstddef>
@@ -102,7 +102,7 @@ public:
     /// Makes the body static, kinematic or dynamic between steps: its contacts go (the
     /// next step finds the pairs its new type may have), its shapes' proxies move to the
     /// new type's tree, its mass follows, a static body stops, and it wakes with what
-    /// touched it.
+    /// touched it. A disabled body joins the stages as its new type when enabled.
     void set_type(int32_t body, BodyType type);
     /// The same for many bodies, in list order, to the same result as set_transform
     /// called for each in turn.
@@ -114,8 +114,10 @@ public:
     float limited_angular_velocity(float w) const;
     // Forces and torques accumulate until the end of the next step; impulses change the
     // velocities at once. Only dynamic bodies respond, and one left asleep (wake false)
-    // ignores them (Box2D's rule: forces do not pile up while a body sleeps). Each
-    // returns false, changing nothing, when the result would overflow.
+    // ignores them (Box2D's rule: forces do not pile up while a body sleeps). A disabled
+    // body keeps them whatever `wake` says: impulses change the velocity it keeps, forces
+    // act in the first step after it is enabled. Each returns false, changing nothing,
+    // when the result would overflow.
     bool apply_force(int32_t body, Vec2 force, Vec2 point, bool wake);
     bool apply_force_to_center(int32_t body, Vec2 force, bool wake);
     bool apply_torque(int32_t body, float torque, bool wake);
@@ -125,6 +127,10 @@ public:
     void set_mass_data(int32_t body, const MassOverride& mass);
     void set_body_setting(int32_t body, BodySetting setting, float value);
     void set_body_flag(int32_t body, BodyFlag flag, bool value);
+    /// Takes the body out of the world or brings it back (world_body_enable.cpp); a no-op,
+    /// not recorded, when it is so already.
+    void set_body_enabled(int32_t body, bool enabled);
+    bool is_enabled(int32_t body) const { return bodies_[body].enabled; }
 
     bool is_awake(int32_t body) const { return bodies_[body].awake_index != null_index; }
     bool is_quarantined(int32_t body) const { return bodies_[body].quarantined; }
@@ -279,6 +285,11 @@ private:
     bool accumulate(int32_t body, Vec2 force, float torque, bool wake);
     bool change_velocity(int32_t body, Vec2 dv, float dw, bool wake);
     bool prepare_to_receive(int32_t body, bool wake);
+    // world_body_enable.cpp
+    void disable_body(int32_t body);
+    void enable_body(int32_t body);
+    void leave_stages(int32_t body);
+    void join_stages(int32_t body);
     // world_shapes.cpp
     int32_t attach_shape(int32_t body, const ShapeDef& def, const Geometry& geometry);
     void detach_shape(int32_t shape);

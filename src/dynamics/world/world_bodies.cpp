@@ -59,7 +59,7 @@ void World::destroy_body(int32_t body) {
             destroy_shape(shape);
         }
     }
-    if (bodies_[body].type != BodyType::static_body) {
+    if (bodies_[body].type != BodyType::static_body && bodies_[body].enabled) {
         stages_->islands.remove_body(body);
         follow_woken_bodies();
     }
@@ -74,29 +74,17 @@ void World::set_type(int32_t body, BodyType type) {
         bodies_[body].quarantined = false;  // a quarantined body kept static on purpose
         return;
     }
-    // What touched it loses a support or meets a new obstacle.
-    wake_body(body);
-    stages_->contacts.visit_contacts(body, [this](int32_t, int32_t other) { wake_body(other); });
-    for (int32_t s = bodies_[body].head_shape; s != null_index; s = shapes_[s].next_in_body) {
-        destroy_contacts_of_shape(s, false);
-        stages_->broad_phase.destroy_proxy(shapes_[s].proxy_key);
+    // The body leaves the stages as its old type and joins them as its new one
+    // (world_body_enable.cpp); a disabled body is in none, and joins them when enabled.
+    const bool enabled = bodies_[body].enabled;
+    if (enabled) {
+        leave_stages(body);
     }
-    unlink_joints(body);
-    if (bodies_[body].type != BodyType::static_body) {
-        stages_->islands.remove_body(body);
-        follow_woken_bodies();
-    }
-    Body& b = bodies_[body];
-    change_type(b, type);
-    for (int32_t s = b.head_shape; s != null_index; s = shapes_[s].next_in_body) {
-        create_proxy(s, true);
-    }
+    change_type(bodies_[body], type);
     update_mass(body);
-    if (type != BodyType::static_body) {
-        stages_->islands.add_body(body);
-        mark_for_cover(body);
+    if (enabled) {
+        join_stages(body);
     }
-    link_joints(body);
 }
 
 // Whatever read the old mass learns of the new: the joints' trees (a body that can no
@@ -136,9 +124,10 @@ void World::cover_step_ahead(float time_step) {
     stages_->broad_phase.commit_moves_in_place();
 }
 
+// A disabled body has no proxies to cover; enabling it marks it.
 void World::mark_for_cover(int32_t body) {
     Body& b = bodies_[body];
-    if (b.type != BodyType::static_body && !b.needs_cover) {
+    if (b.type != BodyType::static_body && b.enabled && !b.needs_cover) {
         b.needs_cover = true;
         to_cover_.push_back(body);
     }
@@ -175,6 +164,10 @@ void World::set_transforms(const int32_t* list, const Transform* transforms, int
         Body& b = bodies_[body];
         b.transform = transforms[i];
         b.center = transform_point(transforms[i], b.local_center);
+        if (!b.enabled) {
+            update_tight_boxes(b, shapes_);  // no proxies: enabling makes them where it stands
+            continue;
+        }
         // Proxies that must move are re-inserted before the next body moves, as when
         // set_transform is called for each body in turn: the trees, and so the pairs
         // and every later step, come out the same. (One commit at the end, in storage
@@ -224,10 +217,14 @@ void World::set_angular_velocity(int32_t body, float w) {
     }
 }
 
-// Wakes the body if asked; a body left asleep ignores what it is given.
+// Wakes the body if asked; a body left asleep ignores what it is given. A disabled body
+// neither sleeps nor wakes: it keeps what it is given for when it is enabled.
 bool World::prepare_to_receive(int32_t body, bool wake) {
     if (bodies_[body].type != BodyType::dynamic) {
         return false;
+    }
+    if (!bodies_[body].enabled) {
+        return true;
     }
     if (wake) {
         wake_body(body);

@@ -66,8 +66,12 @@ JointMeasures World::measure_joint(int32_t joint) const { return stages_->joints
 const std::vector<JointEvent>& World::joint_events() const { return stages_->events.current.joint_events; }
 
 // Overlapping proxies of the two bodies were skipped while the joint kept them apart;
-// queried again at the next step, they pair now.
+// queried again at the next step, they pair now. A disabled body has no proxies, and
+// enabling it queries them anyway.
 void World::let_bodies_meet(int32_t body_a, int32_t body_b) {
+    if (!bodies_[body_a].enabled || !bodies_[body_b].enabled) {
+        return;
+    }
     const int32_t body = bodies_[body_a].shape_count <= bodies_[body_b].shape_count ? body_a : body_b;
     for (int32_t s = bodies_[body].head_shape; s != null_index; s = shapes_[s].next_in_body) {
         stages_->broad_phase.requery_proxy(shapes_[s].proxy_key);
@@ -75,12 +79,11 @@ void World::let_bodies_meet(int32_t body_a, int32_t body_b) {
 }
 
 // Two dynamic bodies held by a joint share an island, so that they sleep and wake
-// together; static and kinematic bodies join no island.
+// together; static and kinematic bodies join no island, and a disabled body none at all
+// (its joints link again when it is enabled).
 void World::link_joint(int32_t joint) {
     Joint& j = stages_->joints.joint(joint);
-    const bool both_dynamic = bodies_[j.def.body_a].type == BodyType::dynamic &&
-                              bodies_[j.def.body_b].type == BodyType::dynamic;
-    if (!j.island_link && both_dynamic && JointSet::links_islands(j)) {
+    if (!j.island_link && stages_->joints.should_link(j)) {
         j.island_link = true;
         stages_->islands.link(j.def.body_a, j.def.body_b);
     }

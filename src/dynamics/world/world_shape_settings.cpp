@@ -15,7 +15,8 @@
 namespace i2d {
 
 // The proxy is made again: its box (and the tree it sits in) must fit the new outline,
-// and its new pairs are found at once (known pairs are skipped).
+// and its new pairs are found at once (known pairs are skipped). A disabled body's shape
+// has none until the body is enabled.
 void World::set_geometry(int32_t shape, const Geometry& geometry) {
     RecordScope record(recorder_.get(), RecordedOp::set_shape_geometry);
     record.write(shape, geometry);
@@ -26,8 +27,10 @@ void World::set_geometry(int32_t shape, const Geometry& geometry) {
     s.geometry = geometry;
     s.aabb_margin = aabb_margin_of(geometry, tolerances().max_aabb_margin);
     s.aabb = compute_aabb(geometry, bodies_[body].transform);
-    stages_->broad_phase.destroy_proxy(s.proxy_key);
-    create_proxy(shape, true);
+    if (bodies_[body].enabled) {
+        stages_->broad_phase.destroy_proxy(s.proxy_key);
+        create_proxy(shape, true);
+    }
     update_mass(body);  // also forgets the body's manifolds, anchored on the old outline
     stages_->contacts.refresh_contacts_of_shape(shape);  // rolling resistance reads the radius
 }

@@ -49,8 +49,11 @@ int32_t World::attach_shape(int32_t body, const ShapeDef& def, const Geometry& g
     b.head_shape = index;
     ++b.shape_count;
     s.aabb = compute_aabb(geometry, b.transform);
-    // A new static shape may land on resting bodies: let it look for pairs too.
-    create_proxy(index, true);
+    // A new static shape may land on resting bodies: let it look for pairs too. A disabled
+    // body's shape gets its proxy when the body is enabled.
+    if (b.enabled) {
+        create_proxy(index, true);
+    }
     return index;
 }
 
@@ -81,8 +84,10 @@ void World::detach_shape(int32_t shape) {
     wake_body(shapes_[shape].body);
     destroy_contacts_of_shape(shape, false);
     const Shape& s = shapes_[shape];
-    stages_->broad_phase.destroy_proxy(s.proxy_key);
     Body& b = bodies_[s.body];
+    if (b.enabled) {
+        stages_->broad_phase.destroy_proxy(s.proxy_key);
+    }
     if (s.prev_in_body != null_index) {
         shapes_[s.prev_in_body].next_in_body = s.next_in_body;
     } else {
@@ -170,7 +175,8 @@ void World::set_restitution(int32_t shape, float restitution) {
 }
 
 // The proxy is re-created because the trees keep category bits for query masks; its
-// new pairs are found at the next step (known pairs are skipped).
+// new pairs are found at the next step (known pairs are skipped). A disabled body's
+// shape has none: it gets one, with the new bits, when the body is enabled.
 void World::set_filter(int32_t shape, const Filter& filter) {
     RecordScope record(recorder_.get(), RecordedOp::set_filter);
     record.write(shape, filter);
@@ -178,8 +184,10 @@ void World::set_filter(int32_t shape, const Filter& filter) {
     wake_body(shapes_[shape].body);
     shapes_[shape].filter = filter;
     destroy_contacts_of_shape(shape, true);
-    stages_->broad_phase.destroy_proxy(shapes_[shape].proxy_key);
-    create_proxy(shape, true);
+    if (bodies_[shapes_[shape].body].enabled) {
+        stages_->broad_phase.destroy_proxy(shapes_[shape].proxy_key);
+        create_proxy(shape, true);
+    }
 }
 
 void World::set_shape_user_data(int32_t shape, void* user_data) {

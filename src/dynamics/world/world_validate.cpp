@@ -57,6 +57,10 @@ void World::validate() const {
         const Shape& s = shapes_[i];
         I2D_ASSERT(is_finite(s.aabb.lower) && is_finite(s.aabb.upper));
         I2D_ASSERT(s.aabb.lower.x <= s.aabb.upper.x && s.aabb.lower.y <= s.aabb.upper.y);
+        if (!bodies_[s.body].enabled) {
+            I2D_ASSERT(s.proxy_key == null_index && !s.enlarged);  // out of the broadphase
+            continue;
+        }
         const AABB& fat = stages_->broad_phase.fat_aabb(s.proxy_key);
         I2D_ASSERT(fat.lower == s.fat_aabb.lower && fat.upper == s.fat_aabb.upper);
         const AABB& ahead = stages_->broad_phase.ahead_aabb(s.proxy_key);
@@ -76,10 +80,16 @@ void World::validate() const {
 }
 
 // A moving body belongs to an island, and one asleep does not move; a static body is
-// in no island and never awake.
+// in no island and never awake. A disabled body is in no stage: no island, no awake list,
+// no contacts, nothing to cover; it may keep a velocity.
 void World::validate_body(int32_t body) const {
 #if defined(I2D_VALIDATE)
     const Body& b = bodies_[body];
+    if (!b.enabled) {
+        I2D_ASSERT(b.awake_index == null_index && b.island == null_index);
+        I2D_ASSERT(b.contact_count == 0 && !b.needs_cover);
+        return;
+    }
     if (b.type == BodyType::static_body) {
         I2D_ASSERT(b.awake_index == null_index && b.island == null_index);
         return;
