@@ -25,7 +25,8 @@ using Bytes = std::vector<unsigned char>;
 constexpr float time_step = 1.0f / 60.0f;
 
 // A small world with one of most things: shapes of every kind, a chain, joints, a
-// sensor, contacts, a sleeping body.
+// sensor, contacts, a sleeping body, disabled bodies (a moving one with a joint, a static
+// one), whose shapes have no proxies.
 i2d_world_id small_world() {
     const i2d_world_def wd = i2d_default_world_def();
     const i2d_world_id world = i2d_world_create(&wd);
@@ -63,7 +64,22 @@ i2d_world_id small_world() {
     dd.base.body_b = bodies[4];
     dd.length = 2.0f;
     i2d_joint_create_distance(world, &dd);
+    bd.position = i2d_vec2{6, 4};
+    bd.linear_velocity = i2d_vec2{1, 0};
+    const i2d_body_id away = i2d_body_create(world, &bd);
+    i2d_shape_create_box(away, &sd, 0.3f, 0.3f);
+    rd.base.body_a = bodies[2];
+    rd.base.body_b = away;
+    i2d_joint_create_revolute(world, &rd);
+    bd = i2d_default_body_def();
+    bd.position = i2d_vec2{-2, 4};
+    const i2d_body_id away_static = i2d_body_create(world, &bd);
+    i2d_shape_create_box(away_static, &sd, 1.0f, 0.2f);
     for (int s = 0; s < 40; ++s) {
+        if (s == 20) {
+            i2d_body_disable(away);
+            i2d_body_disable(away_static);
+        }
         i2d_world_step(world, time_step, 4);
     }
     i2d_body_set_awake(bodies[5], false);

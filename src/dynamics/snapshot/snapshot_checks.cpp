@@ -55,9 +55,13 @@ const char* World::check_loaded() const {
         if (b.type == BodyType::dynamic ? !(b.mass > 0.0f) : b.inv_mass != 0.0f) {
             return "a body's mass does not suit its type";
         }
-        if (b.type != BodyType::static_body && b.awake_index == null_index &&
+        // A disabled body is neither awake nor asleep, and keeps its velocity.
+        if (b.type != BodyType::static_body && b.enabled && b.awake_index == null_index &&
             !(b.linear_velocity == Vec2{} && b.angular_velocity == 0.0f)) {
             return "a sleeping body moves";
+        }
+        if (!b.enabled && (b.contact_count != 0 || b.needs_cover)) {
+            return "a disabled body has contacts or boxes to cover";
         }
         int32_t count = 0;
         for (int32_t s = b.head_shape, prev = null_index; s != null_index; prev = s, s = shapes_[s].next_in_body) {
@@ -77,9 +81,9 @@ const char* World::check_loaded() const {
         }
         contact_edges += body_contacts;
         joint_edges += body_joints;
-        const bool moves = b.type != BodyType::static_body;
+        const bool moves = b.type != BodyType::static_body && b.enabled;
         if (moves != (b.island != null_index) || (!moves && b.awake_index != null_index)) {
-            return "a body's island does not suit its type";
+            return "a body's island does not suit its type or its being disabled";
         }
         island_members += moves ? 1 : 0;
         if (b.awake_index != null_index &&
@@ -111,10 +115,9 @@ const char* World::check_loaded() const {
         if (d.body_a == d.body_b || d.body_a != joint.edges[0].body || d.body_b != joint.edges[1].body) {
             return "a joint's bodies and its links disagree";
         }
-        const Body& a = bodies_[d.body_a];
-        const Body& b = bodies_[d.body_b];
-        const bool links = JointSet::links_islands(joint) && a.type == BodyType::dynamic && b.type == BodyType::dynamic;
-        if (joint.island_link != links || (links && a.island != b.island) || !angles_wound(d)) {
+        const bool links = stages.joints.should_link(joint);
+        if (joint.island_link != links || (links && bodies_[d.body_a].island != bodies_[d.body_b].island) ||
+            !angles_wound(d)) {
             return "a joint's island link or its angles are wrong";
         }
     }
@@ -165,23 +168,36 @@ const char* World::check_loaded_islands(int32_t island_members) const {
     return members == island_members ? nullptr : "a moving body is in no island's list";
 }
 
-// Every shape's proxy names it back, every proxy belongs to a shape, every chain's
-// segments name their chain.
+// Every shape of an enabled body has a proxy that names it back, every proxy belongs to
+// such a shape, a disabled body's shapes have none, every chain's segments name their
+// chain.
 const char* World::check_loaded_shapes() const {
     const BroadPhase& broad_phase = stages_->broad_phase;
     int32_t proxies = 0;
     for (int32_t k = 0; k < int32_t(ProxyKind::count); ++k) {
         proxies += broad_phase.tree(ProxyKind(k)).proxy_count();
     }
-    if (proxies != shapes_.count()) {
-        return "the broadphase and the shapes disagree";
-    }
+    int32_t shapes_with_proxies = 0;
     std::vector<int32_t> segments(std::size_t(chains_.capacity()), 0);  // per chain, the shapes naming it
     for (int32_t s = 0; s < shapes_.capacity(); ++s) {
         if (!shapes_.is_live(s)) {
             continue;
         }
         const Shape& shape = shapes_[s];
+        if (shape.chain != null_index) {
+            if (!chains_.is_live(shape.chain) || chains_[shape.chain].body != shape.body) {
+                return "a chain segment's chain is wrong";
+            }
+            ++segments[std::size_t(shape.chain)];
+        }
+        if (!bodies_[shape.body].enabled) {
+            if (shape.proxy_key != null_index || shape.enlarged ||
+                !(shape.aabb.lower.x <= shape.aabb.upper.x && shape.aabb.lower.y <= shape.aabb.upper.y)) {
+                return "a disabled body's shape is in the broadphase, or its box is wrong";
+            }
+            continue;
+        }
+        ++shapes_with_proxies;
         const int32_t key = shape.proxy_key;
         if (key < 0 || (key & 3) >= int32_t(ProxyKind::count)) {
             return "a shape's proxy is out of range";
@@ -200,12 +216,9 @@ const char* World::check_loaded_shapes() const {
             !contains(shape.ahead_aabb, shape.fat_aabb) || !contains(shape.fat_aabb, shape.aabb)) {
             return "a shape's boxes and its proxy's disagree";
         }
-        if (shape.chain != null_index) {
-            if (!chains_.is_live(shape.chain) || chains_[shape.chain].body != shape.body) {
-                return "a chain segment's chain is wrong";
-            }
-            ++segments[std::size_t(shape.chain)];
-        }
+    }
+    if (proxies != shapes_with_proxies) {
+        return "the broadphase and the shapes disagree";
     }
     for (int32_t c = 0; c < chains_.capacity(); ++c) {
         if (!chains_.is_live(c)) {
