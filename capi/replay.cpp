@@ -14,7 +14,7 @@
 
 namespace i2d::capi {
 
-// Bodies: made, destroyed, moved, pushed, woken and put to sleep.
+// Bodies: made, destroyed, moved, pushed, woken and put to sleep, disabled and enabled.
 bool Replayed::body_call(RecordedOp op) const {
     int32_t index = 0;
     switch (op) {
@@ -145,6 +145,14 @@ bool Replayed::body_call(RecordedOp op) const {
             }
             world.wake_all();
             return true;
+        case RecordedOp::set_body_enabled: {
+            bool enabled = false;
+            io(index), io(enabled);
+            if (!read_whole(in)) {
+                return malformed(call);
+            }
+            return passed(enabled ? i2d_body_enable(body(index)) : i2d_body_disable(body(index)));
+        }
         default:
             return unknown();
     }

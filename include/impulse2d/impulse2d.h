@@ -221,9 +221,20 @@ I2D_API i2d_status i2d_body_set_mass_data(i2d_body_id body, i2d_mass_data data);
 /** Drops an override: the mass comes from the shapes' densities again. */
 I2D_API i2d_status i2d_body_apply_mass_from_shapes(i2d_body_id body);
 /** A disabled body is out of the world: its shapes leave the broadphase (no contacts, no
- *  queries, no sensor visits), its joints are not solved, it does not move; it keeps its
- *  shapes, joints, velocity and ids, and every getter and setter still works on it.
- *  Enabling brings it back where it was, awake. Each is a no-op when already so. */
+ *  queries, no sensor visits), its contacts end (with end events, as when a shape is
+ *  destroyed, and what touched it wakes), its joints are not solved and do not hold
+ *  islands together, it does not move and neither sleeps nor wakes (i2d_body_is_awake
+ *  gives false, i2d_body_set_awake does nothing to it). It keeps its shapes, joints,
+ *  velocity, forces, user data and ids, and every getter and setter still works on it:
+ *  a pose set moves it at once (without waking anything), shapes and joints can be made
+ *  on it, and what it is given waits for it to come back: a velocity set or an impulse
+ *  applied changes the velocity it keeps, a force or torque acts in its first step back
+ *  (whatever `wake` says). Static bodies can be disabled too. Enabling brings it back where
+ *  it stands, awake: its pairs are found at the next step and its joints solved again.
+ *  Each is a no-op when already so (not a change for rollback states); otherwise each is
+ *  a structural change (rollback states saved before are refused). I2D_ERR_INVALID_HANDLE
+ *  for a bad id, I2D_ERR_WORLD_LOCKED inside a callback; i2d_body_is_enabled gives false
+ *  for a bad id. */
 I2D_API i2d_status i2d_body_disable(i2d_body_id body);
 I2D_API i2d_status i2d_body_enable(i2d_body_id body);
 I2D_API bool i2d_body_is_enabled(i2d_body_id body);
