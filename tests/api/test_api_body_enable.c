@@ -295,8 +295,9 @@ I2D_TEST(api_body_enable_refuses_bad_ids_and_a_locked_world_untouched) {
 }
 
 /* Enabling an enabled body and disabling a disabled one change nothing: not the hash, not
- * the counters, and a rollback state saved before still restores. A real change is a
- * structural one: a state saved before it is refused. */
+ * the counters, and a rollback state saved before still restores (nor do waking and
+ * sleeping a disabled body). A real change is a structural one: a state saved before it
+ * is refused. */
 static void no_ops_when_already_so(i2d_world_id world) {
     const i2d_body_id ground = add_box(world, I2D_BODY_STATIC, 0.0f, -0.5f, 0.5f);
     const i2d_body_id crate = add_box(world, I2D_BODY_DYNAMIC, 0.0f, 0.5f, 0.5f);
@@ -327,6 +328,9 @@ static void no_ops_when_already_so(i2d_world_id world) {
     counters = i2d_world_get_counters(world);
     I2D_CHECK(i2d_body_disable(crate) == I2D_OK);
     I2D_CHECK(!i2d_body_is_enabled(crate));
+    /* Waking or putting to sleep a disabled body does nothing to it either. */
+    I2D_CHECK(i2d_body_set_awake(crate, true) == I2D_OK && !i2d_body_is_awake(crate));
+    I2D_CHECK(i2d_body_set_awake(crate, false) == I2D_OK && !i2d_body_is_awake(crate));
     I2D_CHECK(i2d_world_get_state_hash(world) == hash);
     I2D_CHECK(i2d_world_get_counters(world).pair_count == counters.pair_count);
     I2D_CHECK(i2d_world_restore_state(world, state, written) == I2D_OK);
