@@ -157,6 +157,16 @@ const Session& session() {
             if (k == 90) {  // the origin moved: replayed through i2d_world_shift_origin
                 I2D_CHECK(i2d_world_shift_origin(world, i2d_vec2{300.0f, -120.0f}) == I2D_OK);
             }
+            if (k == 95) {  // a crate and the kinematic ledge out of the world for ten steps
+                I2D_CHECK_STATUS(i2d_body_disable(made[2]), I2D_OK);
+                I2D_CHECK_STATUS(i2d_body_disable(made[4]), I2D_OK);
+                const i2d_vec2 center = i2d_body_get_world_center_of_mass(made[2]);
+                I2D_CHECK_STATUS(i2d_body_apply_linear_impulse(made[2], i2d_vec2{1, 0}, center, false), I2D_OK);
+            }
+            if (k == 105) {
+                I2D_CHECK_STATUS(i2d_body_enable(made[2]), I2D_OK);
+                I2D_CHECK_STATUS(i2d_body_enable(made[4]), I2D_OK);
+            }
             step(world);
             if (k == 60) {
                 s.hash_at_step_60 = i2d_world_get_state_hash(world);
