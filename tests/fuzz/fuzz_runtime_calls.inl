@@ -17,7 +17,7 @@ i2d_polygon fuzz_polygon(FuzzInput& in) {
 
 void run_body_setting_call(FuzzInput& in, uint8_t op) {
     const i2d_body_id b = pick_body(in);
-    switch (op % 10) {
+    switch (op % 11) {
         case 0: i2d_body_set_mass_data(b, i2d_mass_data{in.real(), in.vec2(), in.real()}); break;
         case 1: i2d_body_apply_mass_from_shapes(b); break;
         case 2: {
@@ -31,7 +31,17 @@ void run_body_setting_call(FuzzInput& in, uint8_t op) {
         case 6: i2d_body_set_gravity_scale(b, in.real()); break;
         case 7: i2d_body_set_linear_damping(b, in.real()); break;
         case 8: i2d_body_set_angular_damping(b, in.real()); break;
-        default: i2d_body_set_fixed_rotation(b, in.flag()); break;
+        case 9: i2d_body_set_fixed_rotation(b, in.flag()); break;
+        default: {
+            // Out of the world and back, whatever the program does to it meanwhile: a
+            // change or, as often, the no-op of asking for what it is.
+            const bool enable = in.flag() != i2d_body_is_enabled(b);
+            const i2d_status status = enable ? i2d_body_enable(b) : i2d_body_disable(b);
+            if (status == I2D_OK && (i2d_body_is_enabled(b) != enable || (!enable && i2d_body_is_awake(b)))) {
+                fail("a body is not as enabling or disabling left it", double(enable), 0);
+            }
+            break;
+        }
     }
     const i2d_mass_data m = i2d_body_get_mass_data(b);
     if (!(std::isfinite(m.mass) && std::isfinite(m.rotational_inertia) && std::isfinite(m.center.x) &&
