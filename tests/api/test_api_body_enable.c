@@ -170,6 +170,28 @@ I2D_TEST(api_body_enable_sensor_visits_end_and_come_back) { run_in_world(0.0f, s
 
 /* ---- Changes made while a body is away ------------------------------------------------- */
 
+/* An origin shift moves a disabled body with the rest: enabled, it is found where the
+ * shift put it. */
+static void origin_shift_moves_a_disabled_body(i2d_world_id world) {
+    const i2d_body_id crate = add_box(world, I2D_BODY_DYNAMIC, 100.0f, 50.0f, 0.5f);
+    I2D_REQUIRE(!I2D_IS_NULL(crate));
+    I2D_REQUIRE(i2d_body_disable(crate) == I2D_OK);
+    I2D_REQUIRE(i2d_world_shift_origin(world, v2(100.0f, 50.0f)) == I2D_OK);
+    const i2d_vec2 at = i2d_body_get_position(crate);
+    I2D_CHECK(at.x == 0.0f && at.y == 0.0f);
+    I2D_CHECK(i2d_shape_get_aabb(first_shape(crate)).min.x == -0.5f);
+    I2D_CHECK(shapes_at(world, v2(0.0f, 0.0f)) == 0);
+    I2D_REQUIRE(step_ok(world));
+    I2D_REQUIRE(i2d_body_enable(crate) == I2D_OK);
+    I2D_CHECK(shapes_at(world, v2(0.0f, 0.0f)) == 1);
+    I2D_CHECK(shapes_in(world, box(99.0f, 49.0f, 101.0f, 51.0f)) == 0);
+    I2D_CHECK(step_ok(world));
+}
+
+I2D_TEST(api_body_enable_origin_shift_moves_a_disabled_body) {
+    run_in_world(0.0f, origin_shift_moves_a_disabled_body);
+}
+
 /* A body disabled keeps taking changes: a joint made to it, a shape, a type change, a
  * filter, a geometry, its destruction. None of it reaches the stages until it is enabled
  * (the hinge to it holds nothing, so its partner falls), and the world keeps stepping. */

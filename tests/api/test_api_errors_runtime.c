@@ -316,6 +316,8 @@ I2D_TEST(api_errors_runtime_stale_ids) {
     CHECK_REFUSED("set_linear_damping", i2d_body_set_linear_damping(body, 1.0f), stale);
     CHECK_REFUSED("set_angular_damping", i2d_body_set_angular_damping(body, 1.0f), stale);
     CHECK_REFUSED("set_fixed_rotation", i2d_body_set_fixed_rotation(body, true), stale);
+    CHECK_REFUSED("disable", i2d_body_disable(body), stale);
+    CHECK_REFUSED("enable", i2d_body_enable(body), stale);
     CHECK_REFUSED("set_circle", i2d_shape_set_circle(shape, &circle), stale);
     CHECK_REFUSED("set_density", i2d_shape_set_density(shape, 2.0f, true), stale);
     CHECK_REFUSED("set_material", i2d_shape_set_material(shape, good_material()), stale);
@@ -323,6 +325,7 @@ I2D_TEST(api_errors_runtime_stale_ids) {
     /* Getters give zero values and the same status. */
     I2D_CHECK(i2d_body_get_gravity_scale(body) == 0.0f && i2d_last_status() == stale);
     I2D_CHECK(i2d_body_get_mass_data(body).mass == 0.0f && i2d_last_status() == stale);
+    I2D_CHECK(!i2d_body_is_enabled(body) && i2d_last_status() == stale);
     I2D_CHECK(!i2d_shape_are_contact_events_enabled(shape) && i2d_last_status() == stale);
     I2D_REQUIRE(i2d_world_destroy(world) == I2D_OK);
     CHECK_REFUSED("enable_sleeping (destroyed world)", i2d_world_enable_sleeping(world, false), stale);
@@ -357,6 +360,8 @@ static void try_runtime_changes_while_locked(const fixture* f, const snapshot* b
     CHECK_RUNTIME_LOCKED(f, before, i2d_body_set_linear_damping(ball(f), 1.0f));
     CHECK_RUNTIME_LOCKED(f, before, i2d_body_set_angular_damping(ball(f), 1.0f));
     CHECK_RUNTIME_LOCKED(f, before, i2d_body_set_fixed_rotation(ball(f), true));
+    CHECK_RUNTIME_LOCKED(f, before, i2d_body_disable(ball(f)));
+    CHECK_RUNTIME_LOCKED(f, before, i2d_body_enable(ball(f)));  /* refused before it would be a no-op */
     CHECK_RUNTIME_LOCKED(f, before, i2d_shape_set_circle(ball_circle(f), &circle));
     CHECK_RUNTIME_LOCKED(f, before, i2d_shape_set_polygon(ball_circle(f), &square));
     CHECK_RUNTIME_LOCKED(f, before, i2d_shape_set_density(ball_circle(f), 3.0f, true));
