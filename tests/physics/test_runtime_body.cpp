@@ -29,6 +29,15 @@ bool push(Scene& scene, i2d_body_id body, i2d_vec2 force, int steps) {
     return true;
 }
 
+/** A unit box that has fallen asleep on the ground; null if the scene failed. */
+i2d_body_id box_asleep_on_the_ground(Scene& scene) {
+    const i2d_body_id box = scene.dynamic_box(i2d_vec2{0, 0.5f}, 0.5f, 0.5f);
+    if (I2D_IS_NULL(scene.ground()) || I2D_IS_NULL(box) || !scene.step(steps_for(2.0)) || i2d_body_is_awake(box)) {
+        return I2D_NULL_BODY_ID;
+    }
+    return box;
+}
+
 /** Tolerance of F = m a over a second of forces: float rounding of 240 substeps. */
 constexpr double newton_tolerance = 1e-3;
 
@@ -105,11 +114,8 @@ I2D_TEST(phys_runtime_target_transform_reached_in_one_step) {
 I2D_TEST(phys_runtime_gravity_scale_wakes_and_lifts) {
     // A box asleep on the ground, its gravity scale turned to -1: it wakes and rises at g.
     Scene scene;
-    I2D_REQUIRE(!I2D_IS_NULL(scene.ground()));
-    const i2d_body_id box = scene.dynamic_box(i2d_vec2{0, 0.5f}, 0.5f, 0.5f);
+    const i2d_body_id box = box_asleep_on_the_ground(scene);
     I2D_REQUIRE(!I2D_IS_NULL(box));
-    I2D_REQUIRE(scene.step(steps_for(2.0)));
-    I2D_REQUIRE(!i2d_body_is_awake(box));
     I2D_REQUIRE(i2d_body_set_gravity_scale(box, -1.0f) == I2D_OK);
     I2D_CHECK(i2d_body_is_awake(box));
     I2D_CHECK(i2d_body_get_gravity_scale(box) == -1.0f);
@@ -176,11 +182,8 @@ I2D_TEST(phys_runtime_sleep_threshold_decides_rest) {
 
 I2D_TEST(phys_runtime_sleep_disabled_wakes_and_stays_awake) {
     Scene scene;
-    I2D_REQUIRE(!I2D_IS_NULL(scene.ground()));
-    const i2d_body_id box = scene.dynamic_box(i2d_vec2{0, 0.5f}, 0.5f, 0.5f);
+    const i2d_body_id box = box_asleep_on_the_ground(scene);
     I2D_REQUIRE(!I2D_IS_NULL(box));
-    I2D_REQUIRE(scene.step(steps_for(2.0)));
-    I2D_REQUIRE(!i2d_body_is_awake(box));
     I2D_REQUIRE(i2d_body_enable_sleep(box, false) == I2D_OK);
     I2D_CHECK(!i2d_body_is_sleep_enabled(box));
     I2D_CHECK(i2d_body_is_awake(box));
