@@ -2,11 +2,13 @@
 """World: lifetime, stepping, settings, counters."""
 
 import gc
+import math
+import pickle
 
 import pytest
 
 import impulse2d
-from conftest import make_ground, make_pile
+from conftest import close, make_ground, make_pile
 
 
 def test_context_manager_destroys_the_world():
@@ -85,3 +87,89 @@ def test_repr_and_identity(world):
     same = impulse2d.Body(world, a.id)
     assert a == same and hash(a) == hash(same) and a != world.create_body()
     assert "Body(0x" in repr(a) and "World(0x" in repr(world)
+
+
+# ---- Settings after creation, origin shift, length units (issue 40) ----------------------
+
+
+def test_settings_after_creation_read_back(world):
+    settings = world.settings
+    assert settings["gravity"] == (0.0, -10.0) and settings["length_units_per_meter"] == 1.0
+    assert "internal_cookie" not in settings and "enqueue_task" not in settings
+    world.enable_sleeping(False)
+    world.enable_continuous(False)
+    world.set_contact_tuning(30.0, 5.0, 2.0)
+    world.set_joint_tuning(20.0, 1.5)
+    world.set_restitution_threshold(2.5)
+    world.set_hit_event_threshold(3.5)
+    s = world.settings
+    assert not s["enable_sleep"] and not s["enable_continuous"]
+    assert (s["contact_hertz"], s["contact_damping_ratio"], s["contact_push_max_speed"]) == (30.0, 5.0, 2.0)
+    assert (s["joint_hertz"], s["joint_damping_ratio"]) == (20.0, 1.5)
+    assert (s["restitution_threshold"], s["hit_event_threshold"]) == (2.5, 3.5)
+    with impulse2d.World(**s) as twin:
+        assert twin.settings == s
+    for call, args in ((world.set_contact_tuning, (-1.0, 5.0, 2.0)), (world.set_joint_tuning, (20.0, float("nan"))),
+                       (world.set_restitution_threshold, (-1.0,)), (world.set_hit_event_threshold, (float("inf"),))):
+        with pytest.raises(impulse2d.InvalidArgument):
+            call(*args)
+    assert world.settings == s  # refused: untouched
+
+
+def test_sleeping_off_wakes_every_body(world):
+    make_ground(world)
+    box = world.create_body(position=(0.0, 0.5))
+    box.create_box(0.5, 0.5)
+    for _ in range(120):
+        world.step()
+    assert not box.awake
+    world.enable_sleeping(False)
+    assert box.awake
+
+
+def test_shift_origin_moves_positions_by_minus_origin(world):
+    bodies = make_pile(world, count=10)
+    for _ in range(10):
+        world.step()
+    before = [b.position for b in bodies]
+    origin = (100.0, -50.0)
+    world.shift_origin(origin)
+    for (x, y), body in zip(before, bodies):
+        assert close(body.position, (x - origin[0], y - origin[1]), tol=1e-4)
+    world.step()
+    with pytest.raises(impulse2d.InvalidArgument):
+        world.shift_origin((float("nan"), 0.0))
+    with pytest.raises(impulse2d.InvalidArgument):
+        world.shift_origin((2e9, 0.0))
+
+
+def test_a_world_in_50_units_per_metre():
+    positions = []
+    for units in (1.0, 50.0):
+        with impulse2d.World(length_units_per_meter=units) as world:
+            assert world.gravity == (0.0, -10.0 * units) and world.settings["length_units_per_meter"] == units
+            ground = world.create_body(impulse2d.STATIC, position=(0.0, -units))
+            ground.create_box(50.0 * units, units)
+            box = world.create_body(position=(0.0, 3.0 * units))
+            box.create_box(0.5 * units, 0.5 * units, density=1.0 / units ** 2)
+            for _ in range(90):
+                world.step()
+            assert math.isclose(box.mass, 1.0, rel_tol=1e-5)
+            positions.append(box.position)
+    assert math.isclose(positions[1][1] / 50.0, positions[0][1], rel_tol=1e-3)
+    with impulse2d.World(length_units_per_meter=50.0, gravity=(0.0, -10.0)) as world:
+        assert world.gravity == (0.0, -10.0)  # given settings are taken as given
+    with pytest.raises(impulse2d.InvalidArgument, match="length_units_per_meter"):
+        impulse2d.World(length_units_per_meter=1e5)
+
+
+def test_world_user_data_is_a_python_reference(world):
+    assert world.user_data is None
+    marker = {"level": 3}
+    world.user_data = marker
+    assert world.user_data is marker
+    copy = pickle.loads(pickle.dumps(world))
+    try:
+        assert copy.user_data == marker
+    finally:
+        copy.destroy()

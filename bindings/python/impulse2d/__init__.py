@@ -13,7 +13,11 @@
         print(ball.position)
 
 Objects: World (owns everything; a context manager), Body, Shape and Joint (value
-handles; World.create_joint joins two bodies).
+handles; World.create_joint joins two bodies). Bodies and shapes change at run time
+through properties (Body.mass_data, gravity_scale, fixed_rotation, Shape.material, ...)
+and methods (Body.disable, Shape.set_circle, ...); Body.contact_data and
+Shape.contact_data give what touches them now. shape_distance measures two convex
+shapes without a world. World(length_units_per_meter=50) counts lengths in pixels.
 Errors come back as exceptions carrying the library's message: InvalidArgument,
 InvalidHandle, WorldLocked, CapacityError, OutOfMemory, InvalidSnapshot (all
 Impulse2DError).
@@ -44,18 +48,23 @@ from .errors import (
     WorldLocked,
 )
 from .joint import Joint
-from .shape import Shape
+from .shape import Shape, shape_distance
 from .types import (
     BodyMove,
     BodyQuarantine,
     BodyType,
     ContactBegin,
+    ContactData,
     ContactEnd,
     Counters,
+    DistanceResult,
+    ManifoldPoint,
+    MassData,
     RayHit,
     SensorBegin,
     SensorEnd,
     ShapeType,
+    SurfaceMaterial,
 )
 from .world import World
 from .replay import Replay
@@ -87,6 +96,12 @@ __all__ = [
     "BodyQuarantine",
     "RayHit",
     "Counters",
+    "MassData",
+    "SurfaceMaterial",
+    "ManifoldPoint",
+    "ContactData",
+    "DistanceResult",
+    "shape_distance",
     "Impulse2DError",
     "InvalidArgument",
     "InvalidHandle",

@@ -71,6 +71,17 @@ USES: Dict[str, Dict[str, str]] = {
     "i2d_body_quarantine_event": {"transform": "i2d_transform", "body": "i2d_body_id", "former_type": "int32"},
     "i2d_ray_result": {"shape": _ID, "point": _VEC2, "normal": _VEC2, "fraction": "float", "hit": "bool"},
     "i2d_joint_events": {"events": "i2d_joint_event*", "count": "int32"},
+    "i2d_mass_data": {"mass": "float", "center": _VEC2, "rotational_inertia": "float"},
+    "i2d_surface_material": {name: "float" for name in (
+        "friction", "restitution", "rolling_resistance", "tangent_speed")},
+    "i2d_manifold_point": {"point": _VEC2, "penetration": "float", "id": "uint32"},
+    "i2d_manifold": {"normal": _VEC2, "point_count": "int32", "points": "i2d_manifold_point[]"},
+    "i2d_contact_data": {
+        "shape_a": _ID, "shape_b": _ID, "manifold": "i2d_manifold",
+        "normal_impulses": "float[]", "tangent_impulses": "float[]",
+    },
+    "i2d_shape_proxy": {"points": _VEC2 + "[]", "count": "int32", "radius": "float"},
+    "i2d_distance_result": {"point_a": _VEC2, "point_b": _VEC2, "normal": _VEC2, "distance": "float"},
     "i2d_joint_event": {"joint": "i2d_joint_id"},
 }
 # Every joint def: its base (its own settings pass through by name, as with the other defs).

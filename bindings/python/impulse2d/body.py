@@ -5,9 +5,9 @@ import ctypes as C
 from typing import TYPE_CHECKING, Any, Dict, List, Optional, Sequence, Tuple
 
 from ._native import apply_settings, check, check_last, lib, pair, rot, vec2
-from ._structs import Circle, Rot, Vec2
-from .shape import Shape
-from .types import BodyType, Vec
+from ._structs import Circle, MassData as _MassData, Rot, Transform, Vec2
+from .shape import Shape, _contacts
+from .types import BodyType, ContactData, MassData, Vec
 
 if TYPE_CHECKING:  # pragma: no cover
     from .world import World
@@ -157,6 +157,27 @@ class Body:
         check_last()
         return (v.x, v.y)
 
+    @property
+    def mass_data(self) -> MassData:
+        """(mass kg, centre of mass in the body frame, rotational inertia kg m^2 about
+        it). Setting it (a MassData or any such tuple) overrides what the shapes give a
+        dynamic body: mass > 0, inertia >= 0 (0 stops rotation), centre within 1e5 of
+        the origin; it holds through later shape changes until apply_mass_from_shapes.
+        Static and kinematic bodies refuse it (InvalidArgument). Wakes the body."""
+        m = lib.i2d_body_get_mass_data(self._id)
+        if m.mass == 0.0:
+            check_last()
+        return MassData(m.mass, (m.center.x, m.center.y), m.rotational_inertia)
+
+    @mass_data.setter
+    def mass_data(self, value: Sequence[Any]) -> None:
+        mass, center, inertia = value
+        check(lib.i2d_body_set_mass_data(self._id, _MassData(mass=mass, center=vec2(center), rotational_inertia=inertia)))
+
+    def apply_mass_from_shapes(self) -> None:
+        """Drops a mass_data override: the mass comes from the shapes' densities again."""
+        check(lib.i2d_body_apply_mass_from_shapes(self._id))
+
     # ---- Forces and impulses -----------------------------------------------------------
 
     def apply_force(self, force: Sequence[float], point: Sequence[float] = None, wake: bool = True) -> None:
@@ -203,6 +224,131 @@ class Body:
         if not value:
             check_last()
         return bool(value)
+
+    @property
+    def sleep_enabled(self) -> bool:
+        """Default True (body def enable_sleep). False keeps the body, and whatever
+        touches it, awake, and wakes it now."""
+        value = lib.i2d_body_is_sleep_enabled(self._id)
+        if not value:
+            check_last()
+        return bool(value)
+
+    @sleep_enabled.setter
+    def sleep_enabled(self, value: bool) -> None:
+        check(lib.i2d_body_enable_sleep(self._id, value))
+
+    @property
+    def sleep_threshold(self) -> float:
+        """The speed below which the body counts as resting, length units per second, in
+        [0, 1e5]; it starts as the world's sleep_speed_threshold."""
+        value = lib.i2d_body_get_sleep_threshold(self._id)
+        if value == 0.0:
+            check_last()
+        return value
+
+    @sleep_threshold.setter
+    def sleep_threshold(self, value: float) -> None:
+        check(lib.i2d_body_set_sleep_threshold(self._id, value))
+
+    # ---- Enabling -------------------------------------------------------------------------
+
+    def disable(self) -> None:
+        """Takes the body out of the world: its shapes leave the broadphase (no contacts,
+        queries or sensor visits; its contacts end with end events and what touched it
+        wakes), its joints are not solved, it neither moves nor sleeps (awake is False).
+        It keeps its shapes, joints, velocity, forces and user data, and every getter and
+        setter still works on it. A no-op when already disabled."""
+        check(lib.i2d_body_disable(self._id))
+
+    def enable(self) -> None:
+        """Brings a disabled body back where it stands, awake. A no-op when enabled."""
+        check(lib.i2d_body_enable(self._id))
+
+    @property
+    def enabled(self) -> bool:
+        """False after disable(), until enable()."""
+        value = lib.i2d_body_is_enabled(self._id)
+        if not value:
+            check_last()
+        return bool(value)
+
+    # ---- Motion settings (as the body def's fields) ----------------------------------------
+
+    def set_target_transform(
+        self,
+        position: Sequence[float],
+        time_step: float,
+        angle: float = 0.0,
+        rotation: Optional[Sequence[float]] = None,
+    ) -> None:
+        """Sets a kinematic body's velocities so that it reaches position, turned by angle
+        (or rotation = (cosine, sine), normalised within 1e-3), in time_step seconds (> 0):
+        the way to move a scripted platform and have what rides it follow. Static and
+        dynamic bodies refuse it (InvalidArgument). Wakes the body if it moves."""
+        q = Rot(*rotation) if rotation is not None else rot(angle)
+        check(lib.i2d_body_set_target_transform(self._id, Transform(p=vec2(position), q=q), time_step))
+
+    @property
+    def bullet(self) -> bool:
+        """Continuous collision against dynamic bodies too (body def is_bullet)."""
+        value = lib.i2d_body_is_bullet(self._id)
+        if not value:
+            check_last()
+        return bool(value)
+
+    @bullet.setter
+    def bullet(self, value: bool) -> None:
+        check(lib.i2d_body_set_bullet(self._id, value))
+
+    @property
+    def gravity_scale(self) -> float:
+        """Multiplies the world's gravity for this body; finite, may be negative. Setting
+        it wakes the body."""
+        value = lib.i2d_body_get_gravity_scale(self._id)
+        if value == 0.0:
+            check_last()
+        return value
+
+    @gravity_scale.setter
+    def gravity_scale(self, value: float) -> None:
+        check(lib.i2d_body_set_gravity_scale(self._id, value))
+
+    @property
+    def linear_damping(self) -> float:
+        """1/s, >= 0."""
+        value = lib.i2d_body_get_linear_damping(self._id)
+        if value == 0.0:
+            check_last()
+        return value
+
+    @linear_damping.setter
+    def linear_damping(self, value: float) -> None:
+        check(lib.i2d_body_set_linear_damping(self._id, value))
+
+    @property
+    def angular_damping(self) -> float:
+        """1/s, >= 0."""
+        value = lib.i2d_body_get_angular_damping(self._id)
+        if value == 0.0:
+            check_last()
+        return value
+
+    @angular_damping.setter
+    def angular_damping(self, value: float) -> None:
+        check(lib.i2d_body_set_angular_damping(self._id, value))
+
+    @property
+    def fixed_rotation(self) -> bool:
+        """A fixed-rotation body never turns; setting True stops its spin. Wakes the body."""
+        value = lib.i2d_body_is_fixed_rotation(self._id)
+        if not value:
+            check_last()
+        return bool(value)
+
+    @fixed_rotation.setter
+    def fixed_rotation(self, value: bool) -> None:
+        check(lib.i2d_body_set_fixed_rotation(self._id, value))
 
     @property
     def user_data(self) -> Any:
@@ -277,6 +423,13 @@ class Body:
         ids = (C.c_uint64 * max(count, 1))()
         lib.i2d_body_get_shapes(self._id, C.addressof(ids), count)
         return [Shape(self._world, ids[i]) for i in range(count)]
+
+    def contact_data(self) -> List[ContactData]:
+        """The body's touching contacts as the last step left them (sensor visits
+        excluded): shapes, normal, manifold points and the last substep's impulses, in
+        no documented order but the same for the same world. Works inside query
+        callbacks."""
+        return _contacts(self._world, lib.i2d_body_get_contact_data, self._id)
 
 
 def _body_in(world: "World", body_id: int) -> Body:

@@ -1,11 +1,13 @@
 # SPDX-License-Identifier: MIT
 """Shape: a value handle for a shape attached to a body."""
 
-from typing import TYPE_CHECKING, Any, List, Tuple, Union
+import ctypes as C
+from typing import TYPE_CHECKING, Any, Callable, List, Sequence, Tuple, Union
 
-from ._native import check, check_last, lib, make_filter, pair
-from ._structs import Filter
-from .types import ShapeType, Vec
+from ._native import check, check_last, lib, make_filter, pair, rot, vec2
+from ._structs import Capsule, Circle, ContactData as _ContactData, Filter, Polygon, Segment
+from ._structs import SurfaceMaterial as _SurfaceMaterial, Transform, Vec2
+from .types import ContactData, DistanceResult, ManifoldPoint, ShapeType, SurfaceMaterial, Vec
 
 if TYPE_CHECKING:  # pragma: no cover
     from .body import Body
@@ -135,11 +137,186 @@ class Shape:
     def filter(self, value: Union[Tuple[int, int], Tuple[int, int, int], Filter]) -> None:
         check(lib.i2d_shape_set_filter(self._id, make_filter(value)))
 
+    def set_density(self, density: float, update_body_mass: bool = True) -> None:
+        """kg/m^2 in [0, 1e10]. update_body_mass False leaves the body's mass as it is
+        until the next shape change or Body.apply_mass_from_shapes."""
+        check(lib.i2d_shape_set_density(self._id, density, update_body_mass))
+
+    @property
+    def material(self) -> SurfaceMaterial:
+        """Friction, restitution, rolling resistance and tangent speed as one
+        SurfaceMaterial; set it with one or any 4-tuple in that order (ranges as in the
+        shape def). Touching contacts take the new values at the next step."""
+        m = lib.i2d_shape_get_material(self._id)
+        check_last()
+        return SurfaceMaterial(m.friction, m.restitution, m.rolling_resistance, m.tangent_speed)
+
+    @material.setter
+    def material(self, value: Sequence[float]) -> None:
+        friction, restitution, rolling_resistance, tangent_speed = value
+        m = _SurfaceMaterial(
+            friction=friction, restitution=restitution, rolling_resistance=rolling_resistance, tangent_speed=tangent_speed
+        )
+        check(lib.i2d_shape_set_material(self._id, m))
+
     @property
     def is_sensor(self) -> bool:
         value = lib.i2d_shape_is_sensor(self._id)
         check_last()
         return bool(value)
+
+    # ---- Event flags (as the shape def's fields of the same names) ----------------------
+
+    @property
+    def sensor_events_enabled(self) -> bool:
+        """Whether sensors see this shape (shape def enable_sensor_events); a change
+        applies to visits that begin after it."""
+        value = lib.i2d_shape_are_sensor_events_enabled(self._id)
+        if not value:
+            check_last()
+        return bool(value)
+
+    @sensor_events_enabled.setter
+    def sensor_events_enabled(self, value: bool) -> None:
+        check(lib.i2d_shape_enable_sensor_events(self._id, value))
+
+    @property
+    def contact_events_enabled(self) -> bool:
+        """Whether the shape's contacts give begin and end events (enable_contact_events)."""
+        value = lib.i2d_shape_are_contact_events_enabled(self._id)
+        if not value:
+            check_last()
+        return bool(value)
+
+    @contact_events_enabled.setter
+    def contact_events_enabled(self, value: bool) -> None:
+        check(lib.i2d_shape_enable_contact_events(self._id, value))
+
+    @property
+    def hit_events_enabled(self) -> bool:
+        """Whether the shape's contacts give hit events (enable_hit_events)."""
+        value = lib.i2d_shape_are_hit_events_enabled(self._id)
+        if not value:
+            check_last()
+        return bool(value)
+
+    @hit_events_enabled.setter
+    def hit_events_enabled(self, value: bool) -> None:
+        check(lib.i2d_shape_enable_hit_events(self._id, value))
+
+    # ---- New geometry --------------------------------------------------------------------
+    # Checked as at creation; the kind may change (a chain's segments are refused). The
+    # body's mass is made again from its shapes (unless Body.mass_data overrode it), its
+    # contacts are made afresh at the next step, and it wakes.
+
+    def set_circle(self, radius: float, center: Sequence[float] = (0.0, 0.0)) -> None:
+        """Makes the shape a circle centred at center (body frame)."""
+        check(lib.i2d_shape_set_circle(self._id, C.byref(Circle(center=vec2(center), radius=radius))))
+
+    def set_capsule(self, center1: Sequence[float], center2: Sequence[float], radius: float) -> None:
+        """Makes the shape a capsule: every point within radius of center1-center2."""
+        capsule = Capsule(center1=vec2(center1), center2=vec2(center2), radius=radius)
+        check(lib.i2d_shape_set_capsule(self._id, C.byref(capsule)))
+
+    def set_segment(self, point1: Sequence[float], point2: Sequence[float]) -> None:
+        """Makes the shape a two-sided segment."""
+        check(lib.i2d_shape_set_segment(self._id, C.byref(Segment(point1=vec2(point1), point2=vec2(point2)))))
+
+    def set_polygon(self, points: Sequence[Sequence[float]], radius: float = 0.0) -> None:
+        """Makes the shape the convex hull of 3 to 8 points (body frame), rounded by
+        radius (i2d_make_polygon, then i2d_shape_set_polygon)."""
+        polygon = Polygon()
+        check(lib.i2d_make_polygon(_points(points), len(points), radius, C.byref(polygon)))
+        check(lib.i2d_shape_set_polygon(self._id, C.byref(polygon)))
+
+    # ---- What touches it now ----------------------------------------------------------------
+
+    def contact_data(self) -> List[ContactData]:
+        """The body's touching contacts that involve this shape, as the last step left
+        them (Body.contact_data for the whole body). Works inside query callbacks."""
+        return _contacts(self._world, lib.i2d_shape_get_contact_data, self._id)
+
+    def sensor_overlaps(self) -> List["Shape"]:
+        """The shapes visiting this sensor as of the last step: those whose sensor begin
+        event came and whose end event has not. InvalidArgument if it is not a sensor."""
+        count = lib.i2d_shape_get_sensor_overlaps(self._id, None, 0)
+        while True:
+            if not count:
+                check_last()
+                return []
+            ids = (C.c_uint64 * count)()
+            total = lib.i2d_shape_get_sensor_overlaps(self._id, C.addressof(ids), count)
+            if total <= count:
+                return [Shape(self._world, ids[i]) for i in range(total)]
+            count = total
+
+    def closest_point(self, target: Sequence[float]) -> Vec:
+        """The point of the shape (its outline grown by its radius, inside included)
+        closest to target, in world coordinates: target itself when the shape holds it."""
+        v = lib.i2d_shape_get_closest_point(self._id, vec2(target))
+        if v.x == 0.0 and v.y == 0.0:
+            check_last()
+        return (v.x, v.y)
+
+
+def _points(points: Sequence[Sequence[float]]) -> Any:
+    """A Vec2 array of points (one element at least, so that ctypes has an address)."""
+    return (Vec2 * max(len(points), 1))(*[vec2(p) for p in points])
+
+
+def _contacts(world: "World", get: Callable[..., int], owner_id: int) -> List[ContactData]:
+    """A body's or shape's contact data: sized by a call of capacity 0, then filled."""
+    count = get(owner_id, None, 0)
+    while True:
+        if not count:
+            check_last()
+            return []
+        array = (_ContactData * count)()
+        total = get(owner_id, C.addressof(array), count)
+        if total <= count:
+            break
+        count = total
+    found = []
+    for c in array[:total]:
+        m = c.manifold
+        n = m.point_count
+        points = tuple(ManifoldPoint(pair(p.point), p.penetration, p.id) for p in m.points[:n])
+        found.append(
+            ContactData(
+                Shape(world, c.shape_a), Shape(world, c.shape_b), pair(m.normal), points,
+                tuple(c.normal_impulses[:n]), tuple(c.tangent_impulses[:n]),
+            )
+        )
+    return found
+
+
+def shape_distance(
+    points_a: Sequence[Sequence[float]],
+    points_b: Sequence[Sequence[float]],
+    radius_a: float = 0.0,
+    radius_b: float = 0.0,
+    position_a: Sequence[float] = (0.0, 0.0),
+    angle_a: float = 0.0,
+    position_b: Sequence[float] = (0.0, 0.0),
+    angle_b: float = 0.0,
+) -> DistanceResult:
+    """The closest points of two convex shapes, each the convex hull of 1 to 8 points
+    rounded by its radius (1 point: a circle; 2: a capsule) and placed at its position,
+    turned by its angle (i2d_make_proxy, i2d_shape_distance). A pure function, no world:
+    it works in metres (its tolerances are those of a world in metres). Overlapping
+    shapes give distance 0 and a zero normal. InvalidArgument for a count outside 1..8,
+    NaN, infinite or out-of-range values."""
+    proxies = []
+    for points, radius in ((points_a, radius_a), (points_b, radius_b)):
+        proxy = lib.i2d_make_proxy(_points(points), len(points), radius)
+        if not proxy.count:
+            check_last()
+        proxies.append(proxy)
+    xa = Transform(p=vec2(position_a), q=rot(angle_a))
+    xb = Transform(p=vec2(position_b), q=rot(angle_b))
+    r = lib.i2d_shape_distance(C.byref(proxies[0]), xa, C.byref(proxies[1]), xb)
+    check_last()
+    return DistanceResult(pair(r.point_a), pair(r.point_b), pair(r.normal), r.distance)
 
 
 def _shape_in(world: "World", shape_id: int) -> Shape:

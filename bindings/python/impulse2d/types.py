@@ -97,3 +97,54 @@ class Counters(NamedTuple):
     dynamic_tree_height: int
     awake_body_count: int
     sleeping_island_count: int
+
+
+class MassData(NamedTuple):
+    """A body's mass properties (i2d_mass_data). Body.mass_data gives one; setting it
+    takes one or any (mass, center, rotational_inertia) tuple."""
+
+    mass: float  #: kg
+    center: Vec  #: centre of mass in the body frame
+    rotational_inertia: float  #: kg m^2 about the centre of mass
+
+
+class SurfaceMaterial(NamedTuple):
+    """A shape's surface (i2d_surface_material), as Shape.material gives and takes it."""
+
+    friction: float  #: [0, inf)
+    restitution: float  #: [0, 100]
+    rolling_resistance: float  #: [0, 1e5]
+    tangent_speed: float  #: length units per second, |speed| <= 1e5
+
+
+class ManifoldPoint(NamedTuple):
+    """One point of a contact manifold (i2d_manifold_point)."""
+
+    point: Vec  #: world point midway between the two surfaces
+    penetration: float  #: > 0 overlapping, 0 touching, < 0 speculative
+    id: int  #: feature key, stable from step to step for the same features
+
+
+class ContactData(NamedTuple):
+    """A touching contact as the last step left it (i2d_contact_data): its shapes (in the
+    order contact events name them), the unit normal from A to B, its manifold points and
+    the last substep's impulses at each point (N s; divided by time_step / substeps, the
+    contact's force). points, normal_impulses and tangent_impulses have one entry per
+    manifold point."""
+
+    shape_a: "Shape"
+    shape_b: "Shape"
+    normal: Vec
+    points: Tuple[ManifoldPoint, ...]
+    normal_impulses: Tuple[float, ...]
+    tangent_impulses: Tuple[float, ...]
+
+
+class DistanceResult(NamedTuple):
+    """The closest points of two convex shapes (i2d_distance_result), from
+    impulse2d.shape_distance."""
+
+    point_a: Vec  #: on A's surface
+    point_b: Vec  #: on B's surface
+    normal: Vec  #: unit, from A towards B; (0, 0) when they overlap
+    distance: float  #: between the surfaces; 0 when they touch or overlap

@@ -82,6 +82,15 @@ class World:
     Settings are the C world def's fields (include/impulse2d/types.h), e.g.
     contact_hertz, restitution_threshold, enable_sleep, time_to_sleep, and worker_count
     (threads that share each step; the results are the same bits for every count).
+    gravity defaults to (0, -10) m/s^2.
+
+    length_units_per_meter (default 1, range [1e-3, 1e4]) makes a world count lengths in
+    other units, pixels say: World(length_units_per_meter=50) starts from
+    i2d_default_world_def_in_units(50), whose length-bearing defaults (gravity (0, -500),
+    slop, speeds, thresholds) are scaled, and every length, speed and acceleration given
+    to or read from it is in those units (densities per square unit). Other settings
+    given with it are taken as given, in those units. The pure function shape_distance
+    stays in metres.
 
     A world saves itself as bytes and comes back from them, bit for bit: save_snapshot,
     from_snapshot and restore_snapshot (portable, between processes and machines), and
@@ -89,12 +98,20 @@ class World:
     go through a snapshot, so a world moves to another process with multiprocessing.
     """
 
-    def __init__(self, gravity: Sequence[float] = (0.0, -10.0), **settings: Any) -> None:
+    def __init__(
+        self, gravity: Optional[Sequence[float]] = None, length_units_per_meter: float = 1.0, **settings: Any
+    ) -> None:
         self._id = 0
         self._user_data: Dict[int, Any] = {}
         self._runtime = {name: settings[name] for name in _RUNTIME_SETTINGS if name in settings}
-        world_def = lib.i2d_default_world_def()
-        apply_settings(world_def, dict(settings, gravity=gravity), "world")
+        if length_units_per_meter == 1.0:
+            world_def = lib.i2d_default_world_def()
+        else:
+            world_def = lib.i2d_default_world_def_in_units(length_units_per_meter)
+            check_last()
+        if gravity is not None:
+            settings["gravity"] = gravity
+        apply_settings(world_def, settings, "world")
         world_id = lib.i2d_world_create(C.byref(world_def))
         if not world_id:
             check_last()
@@ -178,6 +195,70 @@ class World:
         h = lib.i2d_world_get_state_hash(self._id)
         check_last()
         return h
+
+    @property
+    def settings(self) -> Dict[str, Any]:
+        """The world's settings as World's keyword arguments (the world def's fields
+        but the C-only wiring: gravity and vectors as tuples): the values the setters
+        below last gave, the rest as created. World(**world.settings) makes a world like
+        this one."""
+        world_def = lib.i2d_world_get_settings(self._id)
+        check_last()
+        hidden = ("internal_cookie", "user_data", "enqueue_task", "finish_task", "user_task_context")
+        values = {}
+        for name, _ctype in world_def._fields_:
+            if name not in hidden:
+                value = getattr(world_def, name)
+                values[name] = pair(value) if hasattr(value, "x") else value
+        return values
+
+    # Settings after creation: each is checked as in the world def (InvalidArgument, the
+    # world untouched), takes effect at the next step and wakes what it must. settings
+    # reads them back.
+
+    def enable_sleeping(self, flag: bool) -> None:
+        """Turns sleep on or off for the whole world (enable_sleep); off wakes every body."""
+        check(lib.i2d_world_enable_sleeping(self._id, flag))
+
+    def enable_continuous(self, flag: bool) -> None:
+        """Turns continuous collision on or off (enable_continuous)."""
+        check(lib.i2d_world_enable_continuous(self._id, flag))
+
+    def set_contact_tuning(self, hertz: float, damping_ratio: float, push_max_speed: float) -> None:
+        """Contact stiffness (contact_hertz), damping (contact_damping_ratio) and the
+        speed at which overlap is pushed out (contact_push_max_speed)."""
+        check(lib.i2d_world_set_contact_tuning(self._id, hertz, damping_ratio, push_max_speed))
+
+    def set_joint_tuning(self, hertz: float, damping_ratio: float) -> None:
+        """Joint stiffness (joint_hertz) and damping (joint_damping_ratio)."""
+        check(lib.i2d_world_set_joint_tuning(self._id, hertz, damping_ratio))
+
+    def set_restitution_threshold(self, speed: float) -> None:
+        """The approach speed below which contacts do not bounce (restitution_threshold)."""
+        check(lib.i2d_world_set_restitution_threshold(self._id, speed))
+
+    def set_hit_event_threshold(self, speed: float) -> None:
+        """The approach speed from which contacts give hit events (hit_event_threshold)."""
+        check(lib.i2d_world_set_hit_event_threshold(self._id, speed))
+
+    def shift_origin(self, new_origin: Sequence[float]) -> None:
+        """Moves the world's origin to new_origin (a point in the present coordinates):
+        every position the world keeps or reports becomes its old value less new_origin,
+        nothing wakes and no contact is lost, so a world kilometres across keeps its
+        precision near the player. A rollback state saved before is refused after it.
+        InvalidArgument for a new origin that is not finite or lies beyond 1e9, or one
+        that would put a body beyond 1e9; WorldLocked inside a query callback."""
+        check(lib.i2d_world_shift_origin(self._id, vec2(new_origin)))
+
+    @property
+    def user_data(self) -> Any:
+        """Any Python object, kept by this World object (the C world's user data pointer
+        is not used from Python); pickle and deepcopy carry it along."""
+        return getattr(self, "_world_user_data", None)
+
+    @user_data.setter
+    def user_data(self, value: Any) -> None:
+        self._world_user_data = value
 
     # ---- Snapshots and rollback states (include/impulse2d/snapshot.h) ---------------------
 
@@ -284,9 +365,11 @@ class World:
         # pickle and copy.deepcopy: a snapshot and the wiring, then the user data as state
         # (after the world exists, so user data may hold the world's own bodies).
         user_data = {i: v for i, v in self._user_data.items() if lib.i2d_body_is_valid(i)}
-        return (_unpickle, (self.save_snapshot(), self._runtime_of()), {"user_data": user_data})
+        state = {"user_data": user_data, "world_user_data": self.user_data}
+        return (_unpickle, (self.save_snapshot(), self._runtime_of()), state)
 
     def __setstate__(self, state: Dict[str, Any]) -> None:
+        self._world_user_data = state.get("world_user_data")
         for old_id, value in state.get("user_data", {}).items():
             body_id = lib.i2d_body_in_world(old_id, self._id)
             if body_id:
