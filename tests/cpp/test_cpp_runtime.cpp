@@ -12,6 +12,8 @@
 
 namespace {
 
+constexpr double kPi = 3.14159265358979323846;
+
 impulse2d::Shape make_ground(impulse2d::World& world) {
     impulse2d::Body ground = world.create_body(impulse2d::body_def(I2D_BODY_STATIC, {0.0f, -1.0f}));
     return ground.create_box(20.0f, 1.0f);
@@ -139,10 +141,10 @@ I2D_TEST(cpp_runtime_shape_settings) {
     circle.set_circle({{0.0f, 0.0f}, 1.0f});  // grown: pushed up to rest on its new radius
     step_seconds(world, 1.0f);
     I2D_CHECK_NEAR(ball.position().y, 1.0, 0.02);
-    I2D_CHECK_NEAR(ball.mass(), M_PI, 1e-4);
+    I2D_CHECK_NEAR(ball.mass(), kPi, 1e-4);
     circle.set_density(2.0f);
     I2D_CHECK(circle.density() == 2.0f);
-    I2D_CHECK_NEAR(ball.mass(), 2.0 * M_PI, 1e-4);
+    I2D_CHECK_NEAR(ball.mass(), 2.0 * kPi, 1e-4);
     circle.set_capsule({{-0.5f, 0.0f}, {0.5f, 0.0f}, 0.25f});
     I2D_CHECK(circle.type() == I2D_SHAPE_CAPSULE);
     circle.set_polygon(i2d_make_box(0.5f, 0.5f));
