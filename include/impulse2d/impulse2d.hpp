@@ -87,6 +87,22 @@ inline void record(Status& out) noexcept {
     }
 }
 
+/** Every entry of a C getter that fills up to capacity and returns how many there are
+ *  (i2d_body_get_contact_data and the like): sized by the library, then filled. */
+template <class Id, class T>
+std::vector<T> all_of(int32_t (*getter)(Id, T*, int32_t), Id id) {
+    std::vector<T> out;
+    for (;;) {
+        const int32_t total = getter(id, out.data(), static_cast<int32_t>(out.size()));
+        throw_if_failed();
+        const std::size_t had = out.size();
+        out.resize(static_cast<std::size_t>(total));
+        if (static_cast<std::size_t>(total) <= had) {
+            return out;
+        }
+    }
+}
+
 }  // namespace detail
 
 /** A body def from i2d_default_body_def() with the usual first choices set. */
@@ -96,6 +112,34 @@ inline i2d_body_def body_def(i2d_body_type type, i2d_vec2 position = {0.0f, 0.0f
     def.position = position;
     def.rotation = i2d_make_rot(angle);
     return def;
+}
+
+/** The default world def for a world counting lengths in other units
+ *  (i2d_default_world_def_in_units): its length-bearing defaults scaled. Throws for a
+ *  unit outside [1e-3, 1e4]. */
+inline i2d_world_def world_def_in_units(float length_units_per_meter) {
+    const i2d_world_def def = i2d_default_world_def_in_units(length_units_per_meter);
+    detail::throw_if_failed();
+    return def;
+}
+inline i2d_world_def world_def_in_units(float length_units_per_meter, Status& status) noexcept {
+    const i2d_world_def def = i2d_default_world_def_in_units(length_units_per_meter);
+    detail::record(status);
+    return def;
+}
+
+/** The closest points of two proxies placed by their transforms (i2d_shape_distance). */
+inline i2d_distance_result shape_distance(const i2d_shape_proxy& a, i2d_transform xa, const i2d_shape_proxy& b,
+                                          i2d_transform xb) {
+    const i2d_distance_result result = i2d_shape_distance(&a, xa, &b, xb);
+    detail::throw_if_failed();
+    return result;
+}
+inline i2d_distance_result shape_distance(const i2d_shape_proxy& a, i2d_transform xa, const i2d_shape_proxy& b,
+                                          i2d_transform xb, Status& status) noexcept {
+    const i2d_distance_result result = i2d_shape_distance(&a, xa, &b, xb);
+    detail::record(status);
+    return result;
 }
 
 class Body;
@@ -128,6 +172,65 @@ public:
     void set_restitution(float restitution) { i2d_shape_set_restitution(id_, restitution); detail::throw_if_failed(); }
     void set_restitution(float restitution, Status& status) noexcept {
         i2d_shape_set_restitution(id_, restitution); detail::record(status);
+    }
+
+    /** New geometry (the kind may change); the body's mass is made again and it wakes. */
+    void set_circle(const i2d_circle& circle) { i2d_shape_set_circle(id_, &circle); detail::throw_if_failed(); }
+    void set_circle(const i2d_circle& circle, Status& status) noexcept {
+        i2d_shape_set_circle(id_, &circle); detail::record(status);
+    }
+    void set_capsule(const i2d_capsule& capsule) { i2d_shape_set_capsule(id_, &capsule); detail::throw_if_failed(); }
+    void set_capsule(const i2d_capsule& capsule, Status& status) noexcept {
+        i2d_shape_set_capsule(id_, &capsule); detail::record(status);
+    }
+    void set_segment(const i2d_segment& segment) { i2d_shape_set_segment(id_, &segment); detail::throw_if_failed(); }
+    void set_segment(const i2d_segment& segment, Status& status) noexcept {
+        i2d_shape_set_segment(id_, &segment); detail::record(status);
+    }
+    void set_polygon(const i2d_polygon& polygon) { i2d_shape_set_polygon(id_, &polygon); detail::throw_if_failed(); }
+    void set_polygon(const i2d_polygon& polygon, Status& status) noexcept {
+        i2d_shape_set_polygon(id_, &polygon); detail::record(status);
+    }
+    float density() const { return checked(i2d_shape_get_density(id_)); }
+    /** kg/m^2; update_body_mass false leaves the body's mass until the next shape change. */
+    void set_density(float density, bool update_body_mass = true) {
+        i2d_shape_set_density(id_, density, update_body_mass); detail::throw_if_failed();
+    }
+    void set_density(float density, bool update_body_mass, Status& status) noexcept {
+        i2d_shape_set_density(id_, density, update_body_mass); detail::record(status);
+    }
+    i2d_surface_material material() const { return checked(i2d_shape_get_material(id_)); }
+    void set_material(const i2d_surface_material& material) {
+        i2d_shape_set_material(id_, material); detail::throw_if_failed();
+    }
+    void set_material(const i2d_surface_material& material, Status& status) noexcept {
+        i2d_shape_set_material(id_, material); detail::record(status);
+    }
+    bool sensor_events_enabled() const { return checked(i2d_shape_are_sensor_events_enabled(id_)); }
+    void enable_sensor_events(bool flag) { i2d_shape_enable_sensor_events(id_, flag); detail::throw_if_failed(); }
+    void enable_sensor_events(bool flag, Status& status) noexcept {
+        i2d_shape_enable_sensor_events(id_, flag); detail::record(status);
+    }
+    bool contact_events_enabled() const { return checked(i2d_shape_are_contact_events_enabled(id_)); }
+    void enable_contact_events(bool flag) { i2d_shape_enable_contact_events(id_, flag); detail::throw_if_failed(); }
+    void enable_contact_events(bool flag, Status& status) noexcept {
+        i2d_shape_enable_contact_events(id_, flag); detail::record(status);
+    }
+    bool hit_events_enabled() const { return checked(i2d_shape_are_hit_events_enabled(id_)); }
+    void enable_hit_events(bool flag) { i2d_shape_enable_hit_events(id_, flag); detail::throw_if_failed(); }
+    void enable_hit_events(bool flag, Status& status) noexcept {
+        i2d_shape_enable_hit_events(id_, flag); detail::record(status);
+    }
+    /** The point of the shape closest to target (world coordinates); target itself inside. */
+    i2d_vec2 closest_point(i2d_vec2 target) const { return checked(i2d_shape_get_closest_point(id_, target)); }
+    /** The shape's touching contacts as the last step left them. */
+    std::vector<i2d_contact_data> contact_data() const {
+        return detail::all_of(i2d_shape_get_contact_data, id_);
+    }
+    /** The shapes visiting this sensor as of the last step. */
+    std::vector<Shape> sensor_overlaps() const {
+        const std::vector<i2d_shape_id> ids = detail::all_of(i2d_shape_get_sensor_overlaps, id_);
+        return std::vector<Shape>(ids.begin(), ids.end());
     }
 
 private:
@@ -231,6 +334,63 @@ public:
         i2d_body_get_shapes(id_, ids.data(), count);
         return std::vector<Shape>(ids.begin(), ids.end());
     }
+
+    /** Mass (kg), centre of mass (body frame) and rotational inertia about it. */
+    i2d_mass_data mass_data() const { return checked(i2d_body_get_mass_data(id_)); }
+    /** Overrides the mass the shapes give a dynamic body, until apply_mass_from_shapes. */
+    void set_mass_data(const i2d_mass_data& data) { i2d_body_set_mass_data(id_, data); detail::throw_if_failed(); }
+    void set_mass_data(const i2d_mass_data& data, Status& status) noexcept {
+        i2d_body_set_mass_data(id_, data); detail::record(status);
+    }
+    void apply_mass_from_shapes() { i2d_body_apply_mass_from_shapes(id_); detail::throw_if_failed(); }
+    void apply_mass_from_shapes(Status& status) noexcept { i2d_body_apply_mass_from_shapes(id_); detail::record(status); }
+    /** Takes the body out of the world (i2d_body_disable) and brings it back. */
+    void disable() { i2d_body_disable(id_); detail::throw_if_failed(); }
+    void disable(Status& status) noexcept { i2d_body_disable(id_); detail::record(status); }
+    void enable() { i2d_body_enable(id_); detail::throw_if_failed(); }
+    void enable(Status& status) noexcept { i2d_body_enable(id_); detail::record(status); }
+    bool enabled() const { return checked(i2d_body_is_enabled(id_)); }
+    /** A kinematic body's velocities set to reach target in time_step seconds. */
+    void set_target_transform(i2d_transform target, float time_step) {
+        i2d_body_set_target_transform(id_, target, time_step); detail::throw_if_failed();
+    }
+    void set_target_transform(i2d_transform target, float time_step, Status& status) noexcept {
+        i2d_body_set_target_transform(id_, target, time_step); detail::record(status);
+    }
+    bool bullet() const { return checked(i2d_body_is_bullet(id_)); }
+    void set_bullet(bool flag) { i2d_body_set_bullet(id_, flag); detail::throw_if_failed(); }
+    void set_bullet(bool flag, Status& status) noexcept { i2d_body_set_bullet(id_, flag); detail::record(status); }
+    bool sleep_enabled() const { return checked(i2d_body_is_sleep_enabled(id_)); }
+    void enable_sleep(bool flag) { i2d_body_enable_sleep(id_, flag); detail::throw_if_failed(); }
+    void enable_sleep(bool flag, Status& status) noexcept { i2d_body_enable_sleep(id_, flag); detail::record(status); }
+    /** The speed (world length units per second) below which the body counts as resting. */
+    float sleep_threshold() const { return checked(i2d_body_get_sleep_threshold(id_)); }
+    void set_sleep_threshold(float speed) { i2d_body_set_sleep_threshold(id_, speed); detail::throw_if_failed(); }
+    void set_sleep_threshold(float speed, Status& status) noexcept {
+        i2d_body_set_sleep_threshold(id_, speed); detail::record(status);
+    }
+    float gravity_scale() const { return checked(i2d_body_get_gravity_scale(id_)); }
+    void set_gravity_scale(float scale) { i2d_body_set_gravity_scale(id_, scale); detail::throw_if_failed(); }
+    void set_gravity_scale(float scale, Status& status) noexcept {
+        i2d_body_set_gravity_scale(id_, scale); detail::record(status);
+    }
+    float linear_damping() const { return checked(i2d_body_get_linear_damping(id_)); }
+    void set_linear_damping(float damping) { i2d_body_set_linear_damping(id_, damping); detail::throw_if_failed(); }
+    void set_linear_damping(float damping, Status& status) noexcept {
+        i2d_body_set_linear_damping(id_, damping); detail::record(status);
+    }
+    float angular_damping() const { return checked(i2d_body_get_angular_damping(id_)); }
+    void set_angular_damping(float damping) { i2d_body_set_angular_damping(id_, damping); detail::throw_if_failed(); }
+    void set_angular_damping(float damping, Status& status) noexcept {
+        i2d_body_set_angular_damping(id_, damping); detail::record(status);
+    }
+    bool fixed_rotation() const { return checked(i2d_body_is_fixed_rotation(id_)); }
+    void set_fixed_rotation(bool flag) { i2d_body_set_fixed_rotation(id_, flag); detail::throw_if_failed(); }
+    void set_fixed_rotation(bool flag, Status& status) noexcept {
+        i2d_body_set_fixed_rotation(id_, flag); detail::record(status);
+    }
+    /** The body's touching contacts as the last step left them. */
+    std::vector<i2d_contact_data> contact_data() const { return detail::all_of(i2d_body_get_contact_data, id_); }
 
 private:
     template <class T>
@@ -354,6 +514,43 @@ public:
     void set_gravity(i2d_vec2 gravity) { i2d_world_set_gravity(id_, gravity); detail::throw_if_failed(); }
     /** Every position from now on relative to new_origin (i2d_world_shift_origin). */
     void shift_origin(i2d_vec2 new_origin) { i2d_world_shift_origin(id_, new_origin); detail::throw_if_failed(); }
+    void shift_origin(i2d_vec2 new_origin, Status& status) noexcept {
+        i2d_world_shift_origin(id_, new_origin); detail::record(status);
+    }
+    void* user_data() const { return checked(i2d_world_get_user_data(id_)); }
+    void set_user_data(void* user_data) { i2d_world_set_user_data(id_, user_data); detail::throw_if_failed(); }
+    /** The world's settings as a def, ready to create a world like it. */
+    i2d_world_def settings() const { return checked(i2d_world_get_settings(id_)); }
+    void enable_sleeping(bool flag) { i2d_world_enable_sleeping(id_, flag); detail::throw_if_failed(); }
+    void enable_sleeping(bool flag, Status& status) noexcept {
+        i2d_world_enable_sleeping(id_, flag); detail::record(status);
+    }
+    void enable_continuous(bool flag) { i2d_world_enable_continuous(id_, flag); detail::throw_if_failed(); }
+    void enable_continuous(bool flag, Status& status) noexcept {
+        i2d_world_enable_continuous(id_, flag); detail::record(status);
+    }
+    void set_contact_tuning(float hertz, float damping_ratio, float push_max_speed) {
+        i2d_world_set_contact_tuning(id_, hertz, damping_ratio, push_max_speed); detail::throw_if_failed();
+    }
+    void set_contact_tuning(float hertz, float damping_ratio, float push_max_speed, Status& status) noexcept {
+        i2d_world_set_contact_tuning(id_, hertz, damping_ratio, push_max_speed); detail::record(status);
+    }
+    void set_joint_tuning(float hertz, float damping_ratio) {
+        i2d_world_set_joint_tuning(id_, hertz, damping_ratio); detail::throw_if_failed();
+    }
+    void set_joint_tuning(float hertz, float damping_ratio, Status& status) noexcept {
+        i2d_world_set_joint_tuning(id_, hertz, damping_ratio); detail::record(status);
+    }
+    void set_restitution_threshold(float speed) {
+        i2d_world_set_restitution_threshold(id_, speed); detail::throw_if_failed();
+    }
+    void set_restitution_threshold(float speed, Status& status) noexcept {
+        i2d_world_set_restitution_threshold(id_, speed); detail::record(status);
+    }
+    void set_hit_event_threshold(float speed) { i2d_world_set_hit_event_threshold(id_, speed); detail::throw_if_failed(); }
+    void set_hit_event_threshold(float speed, Status& status) noexcept {
+        i2d_world_set_hit_event_threshold(id_, speed); detail::record(status);
+    }
     i2d_world_counters counters() const { return checked(i2d_world_get_counters(id_)); }
     uint64_t state_hash() const { return checked(i2d_world_get_state_hash(id_)); }
 

@@ -91,6 +91,64 @@ export class Body {
     rt.check(rt.m._i2d_body_apply_force_to_center(this.id, rt.vec2(0, vx(force), vy(force)), wake ? 1 : 0));
   }
 
+  /** {mass, center, rotationalInertia}: kg, the centre of mass in the body frame, kg m^2 about it. */
+  get massData() {
+    const rt = this.rt;
+    const at = rt.result();
+    rt.m._i2d_body_get_mass_data(at, this.id);
+    rt.checkLast();
+    return {
+      mass: rt.f32[(at + rt.field('i2d_mass_data.mass')) >> 2],
+      center: rt.readVec2(at + rt.field('i2d_mass_data.center')),
+      rotationalInertia: rt.f32[(at + rt.field('i2d_mass_data.rotational_inertia')) >> 2],
+    };
+  }
+  set massData(data) { this.setMassData(data); }
+  /** Overrides the mass the shapes give a dynamic body, until applyMassFromShapes. */
+  setMassData({ mass, center = [0, 0], rotationalInertia } = {}) {
+    const rt = this.rt;
+    const at = rt.arg(0);
+    rt.f32[(at + rt.field('i2d_mass_data.mass')) >> 2] = Number(mass);
+    rt.writeVec2(at + rt.field('i2d_mass_data.center'), vx(center), vy(center));
+    rt.f32[(at + rt.field('i2d_mass_data.rotational_inertia')) >> 2] = Number(rotationalInertia);
+    rt.check(rt.m._i2d_body_set_mass_data(this.id, at));
+  }
+  /** Drops a setMassData override: the mass comes from the shapes' densities again. */
+  applyMassFromShapes() { this.rt.check(this.rt.m._i2d_body_apply_mass_from_shapes(this.id)); }
+
+  /** Takes the body out of the world (i2d_body_disable): no contacts, queries or joints. */
+  disable() { this.rt.check(this.rt.m._i2d_body_disable(this.id)); }
+  /** Brings a disabled body back where it stands, awake. */
+  enable() { this.rt.check(this.rt.m._i2d_body_enable(this.id)); }
+  get enabled() { return this.getter('_i2d_body_is_enabled') !== 0; }
+  set enabled(flag) { if (flag) this.enable(); else this.disable(); }
+
+  /** Sets a kinematic body's velocities so that it reaches the pose in timeStep seconds. */
+  setTargetTransform(position, angle, timeStep) {
+    const rt = this.rt;
+    rt.check(rt.m._i2d_body_set_target_transform(this.id, rt.transform(0, position, angle), timeStep));
+  }
+
+  get bullet() { return this.getter('_i2d_body_is_bullet') !== 0; }
+  set bullet(flag) { this.rt.check(this.rt.m._i2d_body_set_bullet(this.id, flag ? 1 : 0)); }
+  /** False keeps the body (and what touches it) awake. */
+  get sleepEnabled() { return this.getter('_i2d_body_is_sleep_enabled') !== 0; }
+  set sleepEnabled(flag) { this.rt.check(this.rt.m._i2d_body_enable_sleep(this.id, flag ? 1 : 0)); }
+  /** The speed below which the body counts as resting, world length units per second. */
+  get sleepThreshold() { return this.getter('_i2d_body_get_sleep_threshold'); }
+  set sleepThreshold(speed) { this.rt.check(this.rt.m._i2d_body_set_sleep_threshold(this.id, speed)); }
+  get gravityScale() { return this.getter('_i2d_body_get_gravity_scale'); }
+  set gravityScale(scale) { this.rt.check(this.rt.m._i2d_body_set_gravity_scale(this.id, scale)); }
+  get linearDamping() { return this.getter('_i2d_body_get_linear_damping'); }
+  set linearDamping(damping) { this.rt.check(this.rt.m._i2d_body_set_linear_damping(this.id, damping)); }
+  get angularDamping() { return this.getter('_i2d_body_get_angular_damping'); }
+  set angularDamping(damping) { this.rt.check(this.rt.m._i2d_body_set_angular_damping(this.id, damping)); }
+  get fixedRotation() { return this.getter('_i2d_body_is_fixed_rotation') !== 0; }
+  set fixedRotation(flag) { this.rt.check(this.rt.m._i2d_body_set_fixed_rotation(this.id, flag ? 1 : 0)); }
+
+  /** The body's touching contacts as the last step left them (see World.readContactData). */
+  contactData() { return this.world.contactData('_i2d_body_get_contact_data', this.id); }
+
   /** A box centred on the body origin, axis-aligned in the body frame. */
   createBox(halfWidth, halfHeight, options) {
     return this.makeShape(options, (def) => this.rt.m._i2d_shape_create_box(this.id, def, halfWidth, halfHeight));

@@ -25,7 +25,55 @@ export interface WorldOptions {
   contactHertz?: number;           // default 60
   restitutionThreshold?: number;   // default 1 m/s
   enableSleep?: boolean;           // default true
+  /** The world's length unit, per metre ([1e-3, 1e4], default 1): lengths and speeds of
+   *  every call on the world are in it, and the other defaults are scaled to it
+   *  (i2d_default_world_def_in_units). */
+  lengthUnitsPerMeter?: number;
 }
+
+/** A world's settings (i2d_world_def), lengths in its units. */
+export interface WorldSettings {
+  gravity: Vec2;
+  contactSlop: number;
+  contactHertz: number;
+  contactDampingRatio: number;
+  contactPushMaxSpeed: number;
+  restitutionThreshold: number;
+  maximumLinearSpeed: number;
+  enableSleep: boolean;
+  sleepSpeedThreshold: number;
+  timeToSleep: number;
+  enableContactRecycling: boolean;
+  jointHertz: number;
+  jointDampingRatio: number;
+  enableContinuous: boolean;
+  hitEventThreshold: number;
+  lengthUnitsPerMeter: number;
+}
+
+/** kg, centre of mass in the body frame, kg m^2 about it. */
+export interface MassData { mass: number; center: Vec2; rotationalInertia: number; }
+export interface MassDataLike { mass: number; center?: Vec2Like; rotationalInertia: number; }
+
+export interface SurfaceMaterial {
+  friction: number;
+  restitution: number;
+  rollingResistance: number;
+  tangentSpeed: number;            // m/s
+}
+
+/** A touching contact as the last step left it (i2d_contact_data): normal from A to B,
+ *  impulses (N s) of the step's last substep at each point. */
+export interface ContactData {
+  shapeA: Shape | bigint;
+  shapeB: Shape | bigint;
+  normal: Vec2;
+  points: { point: Vec2; penetration: number; id: number; normalImpulse: number; tangentImpulse: number }[];
+}
+
+/** A convex shape for Impulse2d.shapeDistance: 1 to 8 points (its own frame), rounded by radius. */
+export interface DistanceShape { points: Vec2Like[]; radius?: number; position?: Vec2Like; angle?: number; }
+export interface DistanceResult { pointA: Vec2; pointB: Vec2; normal: Vec2; distance: number; }
 
 export interface BodyOptions {
   type?: BodyType;                 // default 'static'
@@ -154,8 +202,26 @@ export class Shape {
   aabb(): AABB;
   friction: number;
   restitution: number;
-  readonly density: number;
+  /** kg/m^2; setting it updates the body's mass. */
+  density: number;
+  setDensity(density: number, updateBodyMass?: boolean): void;
+  /** Set all four at once. */
+  material: SurfaceMaterial;
+  sensorEventsEnabled: boolean;
+  contactEventsEnabled: boolean;
+  hitEventsEnabled: boolean;
   geometry(): Geometry;
+  /** New geometry in the body frame (the kind may change); the body's mass is made again. */
+  setCircle(radius: number, center?: Vec2Like): void;
+  setCapsule(center1: Vec2Like, center2: Vec2Like, radius: number): void;
+  setSegment(point1: Vec2Like, point2: Vec2Like): void;
+  /** The convex hull of 3 to 8 points, rounded by radius. */
+  setPolygon(points: Vec2Like[], radius?: number): void;
+  /** The point of the shape closest to target (world coordinates). */
+  closestPoint(target: Vec2Like): Vec2;
+  contactData(): ContactData[];
+  /** The shapes visiting this sensor as of the last step; throws for a non-sensor. */
+  sensorOverlaps(): (Shape | bigint)[];
   destroy(): void;
 }
 
@@ -186,6 +252,26 @@ export class Body {
   awake: boolean;
   applyLinearImpulse(impulse: Vec2Like, point?: Vec2Like, wake?: boolean): void;
   applyForceToCenter(force: Vec2Like, wake?: boolean): void;
+  /** Setting it overrides the mass the shapes give a dynamic body. */
+  get massData(): MassData;
+  set massData(data: MassDataLike);
+  setMassData(data: MassDataLike): void;
+  applyMassFromShapes(): void;
+  /** A disabled body is out of the world (no contacts, queries or joints) until enabled. */
+  disable(): void;
+  enable(): void;
+  enabled: boolean;
+  /** A kinematic body's velocities set so that it reaches the pose in timeStep seconds. */
+  setTargetTransform(position: Vec2Like, angle: number, timeStep: number): void;
+  bullet: boolean;
+  sleepEnabled: boolean;
+  /** World length units per second. */
+  sleepThreshold: number;
+  gravityScale: number;
+  linearDamping: number;
+  angularDamping: number;
+  fixedRotation: boolean;
+  contactData(): ContactData[];
   createBox(halfWidth: number, halfHeight: number, options?: ShapeOptions): Shape;
   createOffsetBox(halfWidth: number, halfHeight: number, center: Vec2Like, angle?: number, options?: ShapeOptions): Shape;
   createCircle(radius: number, options?: ShapeOptions & { center?: Vec2Like }): Shape;
@@ -380,6 +466,16 @@ export class World {
   step(timeStep?: number, substeps?: number): void;
   get gravity(): Vec2;
   set gravity(g: Vec2Like);
+  settings(): WorldSettings;
+  /** Turning sleep off wakes every body. */
+  enableSleeping(flag: boolean): void;
+  enableContinuous(flag: boolean): void;
+  setContactTuning(hertz: number, dampingRatio: number, pushMaxSpeed: number): void;
+  setJointTuning(hertz: number, dampingRatio: number): void;
+  setRestitutionThreshold(speed: number): void;
+  setHitEventThreshold(speed: number): void;
+  /** Every position the world keeps or reports becomes relative to newOrigin. */
+  shiftOrigin(newOrigin: Vec2Like): void;
   createBody(options?: BodyOptions): Body;
   /** Joints between two bodies of this world, at least one dynamic. An option the kind
    *  does not have throws a TypeError; a value the library refuses, an Impulse2dError. */
@@ -428,6 +524,10 @@ export class Impulse2d {
   createWorld(options?: WorldOptions): World;
   /** World.fromSnapshot(this, bytes). */
   worldFromSnapshot(bytes: SnapshotBytes): World;
+  /** The default settings of a world in lengthUnitsPerMeter units (default 1). */
+  defaultWorldSettings(lengthUnitsPerMeter?: number): WorldSettings;
+  /** The closest points of two convex shapes, in metres. */
+  shapeDistance(a: DistanceShape, b: DistanceShape): DistanceResult;
 }
 
 export function loadImpulse2d(options?: { wasmBinary?: ArrayBuffer | Uint8Array; wasmUrl?: string | URL }): Promise<Impulse2d>;

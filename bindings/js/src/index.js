@@ -5,7 +5,8 @@
 //   const world = i2d.createWorld({ gravity: [0, -10] });
 import createImpulse2dModule from '../dist/impulse2d_wasm.mjs';
 import { Runtime } from './runtime.js';
-import { World } from './world.js';
+import { readWorldDef, World } from './world.js';
+import { vx, vy } from './vectors.js';
 
 export { Impulse2dError } from './errors.js';
 export { World } from './world.js';
@@ -45,4 +46,42 @@ export class Impulse2d {
 
   /** A new world from a snapshot's bytes: World.fromSnapshot(this, bytes). */
   worldFromSnapshot(bytes) { return World.fromSnapshot(this, bytes); }
+
+  /** The default world settings for a world in lengthUnitsPerMeter units per metre
+   *  (i2d_default_world_def_in_units; [1e-3, 1e4]), as World.settings gives them. */
+  defaultWorldSettings(lengthUnitsPerMeter = 1) {
+    const rt = this.rt;
+    rt.m._i2d_default_world_def_in_units(rt.result(), lengthUnitsPerMeter);
+    rt.checkLast();
+    return readWorldDef(rt, rt.result());
+  }
+
+  /**
+   * The closest points of two convex shapes, each {points (1 to 8, their own frame),
+   * radius = 0, position = [0, 0], angle = 0} (i2d_make_proxy, i2d_shape_distance):
+   * {pointA, pointB, normal, distance}. Works in metres, whatever a world's unit.
+   */
+  shapeDistance(a, b) {
+    const rt = this.rt;
+    const proxySize = rt.size('i2d_shape_proxy');
+    const proxies = rt.m._malloc(2 * proxySize);
+    try {
+      [a, b].forEach((shape, k) => {
+        const points = Array.isArray(shape?.points) ? shape.points : [];
+        const at = rt.arg(0);  // up to 8 points fill one 64-byte argument slot
+        if (points.length <= 8) points.forEach((p, i) => rt.writeVec2(at + 8 * i, vx(p), vy(p)));
+        rt.m._i2d_make_proxy(proxies + k * proxySize, at, points.length, shape?.radius ?? 0);
+        rt.checkLast();
+      });
+      const at = rt.result();
+      rt.m._i2d_shape_distance(at, proxies, rt.transform(0, a.position ?? [0, 0], a.angle ?? 0),
+                               proxies + proxySize, rt.transform(1, b.position ?? [0, 0], b.angle ?? 0));
+      rt.checkLast();
+      const field = (name) => at + rt.field(`i2d_distance_result.${name}`);
+      return { pointA: rt.readVec2(field('point_a')), pointB: rt.readVec2(field('point_b')),
+               normal: rt.readVec2(field('normal')), distance: rt.f32[field('distance') >> 2] };
+    } finally {
+      rt.m._free(proxies);
+    }
+  }
 }

@@ -5,6 +5,7 @@
 import { Impulse2dError } from './errors.js';
 import { JOINT_KIND_NAMES } from './joint_kinds.js';
 import { offsets, readDescription, usageProblems } from './layout.js';
+import { vx, vy } from './vectors.js';
 
 // Structs passed by value (i2d_vec2, i2d_rot, i2d_aabb, filters) cross the wasm C ABI
 // as pointers to a copy, and struct results come back through a pointer the caller
@@ -111,6 +112,34 @@ export class Runtime {
     if (this.m._i2d_last_status() !== 0) throw this.lastError();
   }
 
+  /** Writes an i2d_transform (position, angle in radians) at argument slot `index`. */
+  transform(index, position, angle) {
+    const at = this.arg(index);
+    this.writeVec2(at + this.field('i2d_transform.p'), vx(position), vy(position));
+    this.writeVec2(at + this.field('i2d_transform.q'), Math.cos(angle), Math.sin(angle));
+    return at;
+  }
+
+  /**
+   * For the C getters that fill up to capacity entries of `stride` bytes and return how
+   * many there are: fill(out, capacity) is the call, read(out, count) what the caller
+   * makes of the entries (before the block is freed). Throws what the library refused.
+   */
+  filled(stride, fill, read) {
+    let capacity = 16;
+    for (;;) {
+      const out = this.m._malloc(capacity * stride);
+      try {
+        const total = fill(out, capacity);
+        this.checkLast();
+        if (total <= capacity) return read(out, total);
+        capacity = total;
+      } finally {
+        this.m._free(out);
+      }
+    }
+  }
+
   /** Throws the library's error for a null id. */
   checkId(id) {
     if (id === 0n) throw this.lastError();
@@ -119,7 +148,8 @@ export class Runtime {
 }
 
 // Structs read into the result block or written into an argument slot must fit there.
-const BY_VALUE_ARGUMENTS = ['i2d_vec2', 'i2d_rot', 'i2d_aabb', 'i2d_circle'];
+const BY_VALUE_ARGUMENTS = ['i2d_vec2', 'i2d_rot', 'i2d_aabb', 'i2d_circle', 'i2d_capsule', 'i2d_segment',
+  'i2d_transform', 'i2d_mass_data', 'i2d_surface_material'];
 
 function scratchProblems(description) {
   const problems = [];

@@ -24,6 +24,11 @@ export class World {
   static create(rt, options = {}) {
     const def = rt.defBlock('world');
     try {
+      if (options.lengthUnitsPerMeter !== undefined) {
+        // The defaults of a world in those units (i2d_default_world_def_in_units).
+        rt.m._i2d_default_world_def_in_units(def, options.lengthUnitsPerMeter);
+        rt.checkLast();
+      }
       writeWorldDef(rt, def, options);
       return new World(rt, rt.checkId(rt.m._i2d_world_create(def)));
     } finally {
@@ -102,6 +107,37 @@ export class World {
   }
   set gravity(g) {
     this.rt.check(this.rt.m._i2d_world_set_gravity(this.id, this.rt.vec2(0, vx(g), vy(g))));
+  }
+
+  /**
+   * The world's settings as its def holds them (i2d_world_get_settings): what the
+   * setters below last gave, the rest as created. Lengths in the world's units.
+   */
+  settings() {
+    const rt = this.rt;
+    const at = rt.result();
+    rt.m._i2d_world_get_settings(at, this.id);
+    rt.checkLast();
+    return readWorldDef(rt, at);
+  }
+
+  /** Turning sleep off wakes every body. */
+  enableSleeping(flag) { this.rt.check(this.rt.m._i2d_world_enable_sleeping(this.id, flag ? 1 : 0)); }
+  enableContinuous(flag) { this.rt.check(this.rt.m._i2d_world_enable_continuous(this.id, flag ? 1 : 0)); }
+  setContactTuning(hertz, dampingRatio, pushMaxSpeed) {
+    this.rt.check(this.rt.m._i2d_world_set_contact_tuning(this.id, hertz, dampingRatio, pushMaxSpeed));
+  }
+  setJointTuning(hertz, dampingRatio) {
+    this.rt.check(this.rt.m._i2d_world_set_joint_tuning(this.id, hertz, dampingRatio));
+  }
+  setRestitutionThreshold(speed) { this.rt.check(this.rt.m._i2d_world_set_restitution_threshold(this.id, speed)); }
+  setHitEventThreshold(speed) { this.rt.check(this.rt.m._i2d_world_set_hit_event_threshold(this.id, speed)); }
+
+  /** Moves the origin to newOrigin (present coordinates): every position the world keeps
+   *  or reports is relative to it afterwards (i2d_world_shift_origin). */
+  shiftOrigin(newOrigin) {
+    const rt = this.rt;
+    rt.check(rt.m._i2d_world_shift_origin(this.id, rt.vec2(0, vx(newOrigin), vy(newOrigin))));
   }
 
   createBody(options = {}) {
@@ -273,6 +309,45 @@ export class World {
     this.jointById.clear();
   }
 
+  /**
+   * @internal The entries of i2d_body_get_contact_data or i2d_shape_get_contact_data:
+   * [{shapeA, shapeB, normal, points: [{point, penetration, id, normalImpulse, tangentImpulse}]}].
+   */
+  contactData(fn, id) {
+    const rt = this.rt;
+    const stride = rt.size('i2d_contact_data');
+    const field = (name) => rt.field(`i2d_contact_data.${name}`);
+    const manifold = field('manifold');
+    const pointStride = rt.size('i2d_manifold_point');
+    const read = (out, count) => {
+      const entries = [];
+      for (let i = 0; i < count; i++) {
+        const at = out + i * stride;
+        const shape = (name) => {
+          const shapeId = rt.u64[(at + field(name)) >> 3];
+          return this.shapeById.get(shapeId) ?? shapeId;
+        };
+        const m = at + manifold;
+        const pointCount = rt.i32[(m + rt.field('i2d_manifold.point_count')) >> 2];
+        const points = [];
+        for (let j = 0; j < pointCount; j++) {
+          const p = m + rt.field('i2d_manifold.points') + j * pointStride;
+          points.push({
+            point: rt.readVec2(p + rt.field('i2d_manifold_point.point')),
+            penetration: rt.f32[(p + rt.field('i2d_manifold_point.penetration')) >> 2],
+            id: rt.u32[(p + rt.field('i2d_manifold_point.id')) >> 2],
+            normalImpulse: rt.f32[((at + field('normal_impulses')) >> 2) + j],
+            tangentImpulse: rt.f32[((at + field('tangent_impulses')) >> 2) + j],
+          });
+        }
+        entries.push({ shapeA: shape('shape_a'), shapeB: shape('shape_b'),
+                       normal: rt.readVec2(m + rt.field('i2d_manifold.normal')), points });
+      }
+      return entries;
+    };
+    return rt.filled(stride, (out, capacity) => rt.m[fn](id, out, capacity), read);
+  }
+
   /** @internal */
   rememberShape(shape) { this.shapeById.set(shape.id, shape); }
   /** @internal */
@@ -373,6 +448,31 @@ function writeWorldDef(rt, def, options) {
     f[(def + rt.field('i2d_world_def.restitution_threshold')) >> 2] = options.restitutionThreshold;
   }
   if (options.enableSleep !== undefined) rt.u8[def + rt.field('i2d_world_def.enable_sleep')] = options.enableSleep ? 1 : 0;
+}
+
+/** @internal An i2d_world_def at `at` as the settings object World.settings gives. */
+export function readWorldDef(rt, at) {
+  const field = (name) => at + rt.field(`i2d_world_def.${name}`);
+  const float = (name) => rt.f32[field(name) >> 2];
+  const flag = (name) => rt.u8[field(name)] !== 0;
+  return {
+    gravity: rt.readVec2(field('gravity')),
+    contactSlop: float('contact_slop'),
+    contactHertz: float('contact_hertz'),
+    contactDampingRatio: float('contact_damping_ratio'),
+    contactPushMaxSpeed: float('contact_push_max_speed'),
+    restitutionThreshold: float('restitution_threshold'),
+    maximumLinearSpeed: float('maximum_linear_speed'),
+    enableSleep: flag('enable_sleep'),
+    sleepSpeedThreshold: float('sleep_speed_threshold'),
+    timeToSleep: float('time_to_sleep'),
+    enableContactRecycling: flag('enable_contact_recycling'),
+    jointHertz: float('joint_hertz'),
+    jointDampingRatio: float('joint_damping_ratio'),
+    enableContinuous: flag('enable_continuous'),
+    hitEventThreshold: float('hit_event_threshold'),
+    lengthUnitsPerMeter: float('length_units_per_meter'),
+  };
 }
 
 function writeBodyDef(rt, def, options, index) {
