@@ -2,7 +2,6 @@
 // i2d_body_*: a body's settings after creation: mass, target transform, bullet, sleep,
 // gravity scale, damping, fixed rotation; and their getters.
 #include <cfloat>
-#include <cmath>
 
 #include "boundary.hpp"
 #include "convert.hpp"
@@ -53,14 +52,13 @@ i2d_status set_body_flag(const char* function, i2d_body_id id, BodyFlag flag, bo
 }
 
 // The velocities that carry the body from where it is to target in time_step: the
-// rotation's change as the angle between the two rotations, the shortest way round.
+// rotation's change as the angle between the two rotations, the shortest way round, by
+// the engine's own atan2 (the same bits on every platform).
 void velocities_to(const Body& b, const Transform& target, float time_step, Vec2& v, float& w) {
     const float inv_step = 1.0f / time_step;
     const Vec2 target_center = transform_point(target, b.local_center);
     v = inv_step * (target_center - b.center);
-    const Rot q = b.transform.q;
-    const Rot turn{q.c * target.q.c + q.s * target.q.s, q.c * target.q.s - q.s * target.q.c};  // q^-1 * target
-    w = inv_step * std::atan2(turn.s, turn.c);
+    w = inv_step * get_angle(inv_mul_rot(b.transform.q, target.q));
 }
 
 }  // namespace
