@@ -38,6 +38,7 @@
 #include "id.h"
 #include "joint.h"
 #include "snapshot.h"
+#include "toolkit.h"
 #include "types.h"
 
 /* ---- Definitions ---------------------------------------------------------------- */

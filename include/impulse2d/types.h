@@ -247,6 +247,12 @@ typedef struct i2d_shape_def {
      *  this shape faster than the world's hit_event_threshold; either shape of a pair
      *  may enable them. */
     bool enable_hit_events;
+    /** Default false. Pairs with this shape reach the world's custom filter callback
+     *  (toolkit.h) when their bounds first overlap. */
+    bool enable_custom_filtering;
+    /** Default false. Touching pairs with this shape reach the world's pre-solve callback
+     *  (toolkit.h) every step. */
+    bool enable_pre_solve_events;
     i2d_filter filter; /**< default: category 1, collides with everything, group 0 */
     void* user_data;   /**< default NULL */
     /** Set by i2d_default_shape_def(); do not set. */

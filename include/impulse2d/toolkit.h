@@ -1,0 +1,250 @@
+/* SPDX-License-Identifier: MIT */
+/** @file toolkit.h
+ *  The game toolkit: a character mover, contact hooks, explosions and debug drawing.
+ *
+ *  - The character mover moves a capsule by game code rather than by the solver: it walks,
+ *    slides along walls, climbs slopes up to a limit and small steps, keeps to the ground
+ *    going down, rides moving platforms and pushes dynamic bodies. The low-level calls
+ *    (cast, collide, solve planes, clip) are here for movers of the caller's own design;
+ *    i2d_world_move_character does the whole move in one call.
+ *  - Contact hooks let game code decide, pair by pair, whether two shapes touch at all
+ *    (custom filter) or in this step (pre-solve): one-way platforms, ghosts.
+ *  - An explosion pushes every shape near it, by how much of its outline faces the blast.
+ *  - Debug drawing hands the world to the caller's callbacks (SDL, raylib, a canvas, an
+ *    editor): shapes coloured by their body's state, joints, bounds, contacts, islands. */
+#ifndef IMPULSE2D_TOOLKIT_H
+#define IMPULSE2D_TOOLKIT_H
+
+#include "base.h"
+#include "collision.h"
+#include "id.h"
+#include "types.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* ---- Character mover --------------------------------------------------------------- */
+
+/** The plane of points x with dot(normal, x) = offset; normal is unit. */
+typedef struct i2d_plane {
+    i2d_vec2 normal;
+    float offset;
+} i2d_plane;
+
+/** A plane the mover touches, as i2d_world_collide_mover reports it: the normal points
+ *  from the shape toward the mover, and offset is the mover's signed separation along it
+ *  (negative when overlapping). */
+typedef struct i2d_collision_plane {
+    i2d_plane plane;
+    /** How far the plane may push the mover; FLT_MAX for a rigid plane. */
+    float push_limit;
+    /** Output of i2d_solve_planes: how far the plane pushed. */
+    float push;
+    /** Whether i2d_clip_vector clips against this plane. */
+    bool clip_velocity;
+} i2d_collision_plane;
+
+/** What i2d_solve_planes found: the translation that keeps every rigid plane's
+ *  separation at least zero, and how many iterations it took. */
+typedef struct i2d_plane_result {
+    i2d_vec2 translation;
+    int32_t iteration_count;
+} i2d_plane_result;
+
+/** The fraction of translation, in [0, 1], that the capsule (world coordinates) can move
+ *  before it comes within the world's contact slop of a shape the filter sees (1: the
+ *  whole way). Shapes it already touches or overlaps stop it only when it moves deeper
+ *  into them. Sensors are not seen. Bad input: 0 and a status. */
+I2D_API float i2d_world_cast_mover(i2d_world_id world, const i2d_capsule* mover, i2d_vec2 translation,
+                                   i2d_query_filter filter);
+
+/** The planes of the shapes within the contact slop of the capsule (world coordinates):
+ *  touching, overlapping or slightly apart. Fills out with up to capacity planes (rigid,
+ *  clipping velocity) and returns how many there are (out may be NULL with capacity 0 to
+ *  count). Sensors are not seen. Bad input: 0 and a status. */
+I2D_API int32_t i2d_world_collide_mover(i2d_world_id world, const i2d_capsule* mover, i2d_query_filter filter,
+                                        i2d_collision_plane* out, int32_t capacity);
+
+/** Moves target_delta until every rigid plane's separation plus the move along its normal
+ *  is at least zero (soft planes push at most push_limit), filling each plane's push.
+ *  Pure: needs no world. NaN or infinite input gives a zero translation and a status. */
+I2D_API i2d_plane_result i2d_solve_planes(i2d_vec2 target_delta, i2d_collision_plane* planes, int32_t count);
+
+/** The vector with the part that runs into planes with clip_velocity set removed. Pure. */
+I2D_API i2d_vec2 i2d_clip_vector(i2d_vec2 vector, const i2d_collision_plane* planes, int32_t count);
+
+/** How i2d_world_move_character moves a character. Obtain with
+ *  i2d_default_character_def(), then edit. */
+typedef struct i2d_character_def {
+    /** Radians in [0, pi/2); default 0.7854 (45 degrees). Steeper ground is a wall. */
+    float max_slope_angle;
+    /** Default 0.25 (world length units). Ledges up to this high are stepped onto. */
+    float step_height;
+    /** Default 0.2. Keeps the feet on the ground going down slopes and steps. */
+    float snap_distance;
+    /** Default 0.01. The gap kept to every surface; greater than 0. */
+    float skin;
+    /** Default 5, in [1, 64]. Cast-and-slide rounds per move. */
+    int32_t max_iterations;
+    /** kg, default 80. The mass the character pushes dynamic bodies with; 0: it does not
+     *  push. */
+    float push_mass;
+    /** Which shapes the character meets; default every shape. */
+    i2d_query_filter filter;
+    /** Set by i2d_default_character_def(); do not set. */
+    uint32_t internal_cookie;
+} i2d_character_def;
+
+/** Where a move left the character. */
+typedef struct i2d_character_result {
+    /** Where the capsule's local origin ends. */
+    i2d_vec2 position;
+    /** The velocity asked for, clipped by what was hit. It does not include
+     *  ground_velocity: add that to ride a moving platform. */
+    i2d_vec2 velocity;
+    /** Whether a plane under the character has a normal within max_slope_angle of up
+     *  (up is opposite the world's gravity; +y in a world without gravity). */
+    bool on_ground;
+    /** The ground's normal; zero when not on the ground. */
+    i2d_vec2 ground_normal;
+    /** The shape stood on; null when not on the ground. */
+    i2d_shape_id ground_shape;
+    /** The velocity of the ground's body at the feet. */
+    i2d_vec2 ground_velocity;
+    /** How many shapes the move touched. */
+    int32_t hit_count;
+} i2d_character_result;
+
+I2D_API i2d_character_def i2d_default_character_def(void);
+
+/** Moves the capsule (given in the character's local frame) from position by velocity *
+ *  time_step: cast-and-slide against the shapes the filter sees, stepping onto ledges up
+ *  to step_height and snapping down to ground within snap_distance (only when it was on
+ *  the ground and is not moving up). It never passes through a shape however fast it
+ *  moves. Apart from the impulses it gives dynamic bodies it pushes (push_mass > 0), it
+ *  changes nothing in the world. Bad input (NaN, inf, a negative time step, a bad id, an
+ *  uninitialised def): a status, out zeroed and the world untouched. */
+I2D_API i2d_status i2d_world_move_character(i2d_world_id world, const i2d_character_def* def,
+                                            const i2d_capsule* capsule, i2d_vec2 position, i2d_vec2 velocity,
+                                            float time_step, i2d_character_result* out);
+
+/* ---- Contact hooks ----------------------------------------------------------------- */
+
+/** Whether the two shapes may ever touch; false: they pass through each other. Called when
+ *  their bounds first overlap, for pairs where either shape has enable_custom_filtering.
+ *  Runs inside the step, possibly on several worker threads at once: it must be
+ *  thread-safe, and every call on that world from inside it answers I2D_ERR_WORLD_LOCKED
+ *  (getters too). The results do not depend on the worker count as long as the answer
+ *  depends only on the arguments. */
+typedef bool i2d_custom_filter_fn(i2d_shape_id shape_a, i2d_shape_id shape_b, void* context);
+
+/** Whether the touching contact takes part in this step; false: it is off for this step
+ *  (no impulse, no begin event until it is on again). Called every step the pair touches,
+ *  after the narrowphase, with the manifold (normal from A to B), for pairs where either
+ *  shape has enable_pre_solve_events. Threads and locking as for i2d_custom_filter_fn. */
+typedef bool i2d_pre_solve_fn(i2d_shape_id shape_a, i2d_shape_id shape_b, const i2d_manifold* manifold,
+                              void* context);
+
+/** Sets (or with NULL clears) the world's custom filter. Pairs already in contact keep
+ *  their contact until their bounds part. */
+I2D_API i2d_status i2d_world_set_custom_filter_callback(i2d_world_id world, i2d_custom_filter_fn* fn,
+                                                        void* context);
+/** Sets (or with NULL clears) the world's pre-solve callback. */
+I2D_API i2d_status i2d_world_set_pre_solve_callback(i2d_world_id world, i2d_pre_solve_fn* fn, void* context);
+
+/* ---- Explosions -------------------------------------------------------------------- */
+
+/** A blast. Obtain with i2d_default_explosion_def(), then edit. */
+typedef struct i2d_explosion_def {
+    /** Shapes whose category_bits meet it are pushed; default every bit. */
+    uint64_t mask_bits;
+    i2d_vec2 position;
+    /** Full strength within it; default 1, >= 0. */
+    float radius;
+    /** Fading linearly to zero over this much beyond the radius; default 0, >= 0. */
+    float falloff;
+    /** N s per length unit of the shape's outline that faces the blast; default 1.
+     *  Negative pulls (an implosion). */
+    float impulse_per_length;
+} i2d_explosion_def;
+
+I2D_API i2d_explosion_def i2d_default_explosion_def(void);
+
+/** Pushes every dynamic body with a shape within radius + falloff of the blast (measured
+ *  to the shape's closest point), away from it, at that point; wakes what it pushes.
+ *  Sensors are not pushed. */
+I2D_API i2d_status i2d_world_explode(i2d_world_id world, const i2d_explosion_def* def);
+
+/* ---- Debug draw -------------------------------------------------------------------- */
+
+/** A colour, 0xRRGGBB. */
+typedef uint32_t i2d_color;
+
+/* A shape's colour says its body's state; these are the values i2d_world_draw gives. */
+#define I2D_COLOR_STATIC 0x80E680u      /**< a static body's shapes: pale green */
+#define I2D_COLOR_KINEMATIC 0x8080E6u   /**< kinematic: blue-violet */
+#define I2D_COLOR_AWAKE 0xE6B380u       /**< a dynamic body awake: tan */
+#define I2D_COLOR_ASLEEP 0x999999u      /**< a dynamic body asleep: grey */
+#define I2D_COLOR_BULLET 0xE6E64Du      /**< a bullet, awake: yellow */
+#define I2D_COLOR_SENSOR 0x33CCFFu      /**< a sensor shape, on any body: sky blue */
+#define I2D_COLOR_DISABLED 0x666666u    /**< a disabled body: dark grey */
+#define I2D_COLOR_QUARANTINED 0xFF3333u /**< a body the step quarantined (non-finite state): red */
+
+/* The drawing callbacks' types (context is i2d_debug_draw.context). */
+/** A closed polygon outline (bounds come here, four vertices). */
+typedef void i2d_draw_polygon_fn(const i2d_vec2* vertices, int32_t count, i2d_color color, void* context);
+/** A filled polygon: local vertices placed by transform, grown by radius. */
+typedef void i2d_draw_solid_polygon_fn(i2d_transform transform, const i2d_vec2* vertices, int32_t count,
+                                       float radius, i2d_color color, void* context);
+typedef void i2d_draw_circle_fn(i2d_vec2 center, float radius, i2d_color color, void* context);
+/** A filled circle; transform.p is its centre, transform.q its body's rotation. */
+typedef void i2d_draw_solid_circle_fn(i2d_transform transform, float radius, i2d_color color, void* context);
+typedef void i2d_draw_solid_capsule_fn(i2d_vec2 p1, i2d_vec2 p2, float radius, i2d_color color, void* context);
+typedef void i2d_draw_segment_fn(i2d_vec2 p1, i2d_vec2 p2, i2d_color color, void* context);
+typedef void i2d_draw_transform_fn(i2d_transform transform, void* context);
+typedef void i2d_draw_point_fn(i2d_vec2 p, float size, i2d_color color, void* context);
+typedef void i2d_draw_string_fn(i2d_vec2 p, const char* text, i2d_color color, void* context);
+
+/** The caller's drawing callbacks; any may be NULL (that kind is then not drawn). */
+typedef struct i2d_debug_draw {
+    i2d_draw_polygon_fn* draw_polygon;
+    i2d_draw_solid_polygon_fn* draw_solid_polygon;
+    i2d_draw_circle_fn* draw_circle;
+    i2d_draw_solid_circle_fn* draw_solid_circle;
+    i2d_draw_solid_capsule_fn* draw_solid_capsule;
+    i2d_draw_segment_fn* draw_segment;
+    i2d_draw_transform_fn* draw_transform;
+    i2d_draw_point_fn* draw_point;
+    i2d_draw_string_fn* draw_string;
+    /** Cull to this box when use_drawing_bounds is set. */
+    i2d_aabb drawing_bounds;
+    bool use_drawing_bounds;
+    bool draw_shapes;            /**< default true */
+    bool draw_joints;            /**< default true */
+    bool draw_joint_extras;      /**< limits, motors, springs */
+    bool draw_bounds;            /**< shapes' fattened bounds */
+    bool draw_mass;              /**< bodies' centres of mass */
+    bool draw_contacts;          /**< contact points */
+    bool draw_contact_normals;
+    bool draw_contact_impulses;
+    bool draw_friction_impulses;
+    bool draw_graph_colors;      /**< contact points in their constraint colour */
+    bool draw_islands;           /**< awake islands' bounds */
+    void* context;               /**< handed to every callback */
+    /** Set by i2d_default_debug_draw(); do not set. */
+    uint32_t internal_cookie;
+} i2d_debug_draw;
+
+/** No callbacks; draw_shapes and draw_joints on. */
+I2D_API i2d_debug_draw i2d_default_debug_draw(void);
+
+/** Draws the world through the callbacks. The world is locked while they run: calls that
+ *  change it answer I2D_ERR_WORLD_LOCKED; getters and queries work. */
+I2D_API i2d_status i2d_world_draw(i2d_world_id world, const i2d_debug_draw* draw);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif
