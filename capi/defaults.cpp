@@ -69,6 +69,8 @@ I2D_API i2d_shape_def i2d_default_shape_def(void) {
     def.enable_contact_events = core.enable_contact_events;
     def.enable_sensor_events = core.enable_sensor_events;
     def.enable_hit_events = core.enable_hit_events;
+    def.enable_custom_filtering = core.enable_custom_filtering;
+    def.enable_pre_solve_events = core.enable_pre_solve_events;
     def.filter = to_public(core.filter);
     def.user_data = nullptr;
     def.internal_cookie = def_cookie;

@@ -66,6 +66,13 @@ constexpr float min_length_units_per_meter = 1.0e-3f;
 constexpr float max_length_units_per_meter = 1.0e4f;
 constexpr float max_contact_slop = 1.0f;
 
+/// Largest reach of an explosion (radius and falloff each), m: the size of the largest
+/// level a query box spans with float precision to spare.
+constexpr float max_explosion_reach = 1.0e6f;
+/// Largest explosion impulse per length of outline, N s/m (either sign): with a shape's
+/// width (at most 2 x max_shape_extent) and the lightest body, still a finite velocity.
+constexpr float max_explosion_impulse_per_length = 1.0e6f;
+
 /// Most points a chain may have: a million segments is a large level; more is more
 /// likely a bad count than a level.
 constexpr int32_t max_chain_points = 1000000;

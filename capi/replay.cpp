@@ -343,20 +343,26 @@ const char* Replay::read_records() {
         return "it is not a recording (no recording header)";
     }
     ByteReader header(bytes_.data() + 8, 8);
-    if (header.u32() > recording_format_version) {
+    format_version_ = header.u32();
+    if (format_version_ > recording_format_version) {
         return "it is of a newer format than this library reads";
     }
+    const bool size_checked = format_version_ >= 2;
+    const std::size_t header_size = size_checked ? record_header_size : record_header_size_v1;
     std::size_t at = recording_header_size;
     // A record cut short at the end is one a writer did not finish: left out.
-    while (bytes_.size() - at >= record_header_size) {
-        ByteReader in(bytes_.data() + at, record_header_size);
+    while (bytes_.size() - at >= header_size) {
+        ByteReader in(bytes_.data() + at, header_size);
         const uint32_t sum = in.u32();
         const uint8_t op = in.u8();
         const uint32_t payload = in.u32();
-        if (payload > bytes_.size() - at - record_header_size) {
+        if (size_checked && in.u32() != record_size_check(bytes_.data() + at)) {
+            return "a record's size does not match its check (changed or corrupted)";
+        }
+        if (payload > bytes_.size() - at - header_size) {
             break;
         }
-        const std::size_t end = at + record_header_size + payload;
+        const std::size_t end = at + header_size + payload;
         if (uint32_t(checksum64(bytes_.data() + at + 4, end - at - 4)) != sum) {
             return "a record's checksum does not match (changed or corrupted)";
         }
@@ -369,7 +375,7 @@ const char* Replay::read_records() {
         if (RecordedOp(op) == RecordedOp::step) {
             step_records_.push_back(records_.size());
         }
-        records_.push_back(Record{RecordedOp(op), at + record_header_size, payload});
+        records_.push_back(Record{RecordedOp(op), at + header_size, payload});
         at = end;
     }
     return records_.empty() ? "it holds no whole record" : nullptr;
@@ -445,7 +451,7 @@ bool Replay::apply(Call& call, const Record& record) {
         return false;
     }
     ByteReader in(payload, record.payload_size);
-    LoadIo io(in);
+    LoadIo io(in, format_version_);
     const Replayed r{call, *w.world, w.id, world_, in, io};
     switch (record.op) {
         case RecordedOp::create_shape:

@@ -50,6 +50,7 @@ private:
     bool apply_step(Call& call, const Record& record);
 
     std::vector<unsigned char> bytes_;
+    uint32_t format_version_ = 0;  // of the recording: older ones lack fields newer ones have
     std::vector<Record> records_;
     std::vector<std::size_t> step_records_;  // index in records_ of each step's record
     std::size_t next_record_ = 1;            // record 0 is the first snapshot

@@ -40,6 +40,7 @@ i2d_status apply_shape_flag(i2d_shape_id shape, ShapeFlag flag, bool value) {
         case ShapeFlag::contact_events: return i2d_shape_enable_contact_events(shape, value);
         case ShapeFlag::sensor_events: return i2d_shape_enable_sensor_events(shape, value);
         case ShapeFlag::hit_events: return i2d_shape_enable_hit_events(shape, value);
+        case ShapeFlag::pre_solve_events: return i2d_shape_enable_pre_solve_events(shape, value);
         case ShapeFlag::count: break;
     }
     return I2D_ERR_INVALID_ARGUMENT;

@@ -37,6 +37,8 @@ ShapeDef to_core(const i2d_shape_def& def) {
     core.enable_contact_events = def.enable_contact_events;
     core.enable_sensor_events = def.enable_sensor_events;
     core.enable_hit_events = def.enable_hit_events;
+    core.enable_custom_filtering = def.enable_custom_filtering;
+    core.enable_pre_solve_events = def.enable_pre_solve_events;
     core.filter = capi::to_core(def.filter);
     core.user_data = def.user_data;
     return core;

@@ -159,3 +159,12 @@ I2D_API bool i2d_shape_are_hit_events_enabled(i2d_shape_id id) {
     return read_shape("i2d_shape_are_hit_events_enabled", id, false,
                       [](const Shape& s) { return s.enable_hit_events; });
 }
+
+I2D_API i2d_status i2d_shape_enable_pre_solve_events(i2d_shape_id id, bool flag) {
+    return set_shape_flag("i2d_shape_enable_pre_solve_events", id, ShapeFlag::pre_solve_events, flag);
+}
+
+I2D_API bool i2d_shape_are_pre_solve_events_enabled(i2d_shape_id id) {
+    return read_shape("i2d_shape_are_pre_solve_events_enabled", id, false,
+                      [](const Shape& s) { return s.enable_pre_solve_events; });
+}

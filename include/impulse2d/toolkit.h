@@ -153,6 +153,11 @@ I2D_API i2d_status i2d_world_set_custom_filter_callback(i2d_world_id world, i2d_
 /** Sets (or with NULL clears) the world's pre-solve callback. */
 I2D_API i2d_status i2d_world_set_pre_solve_callback(i2d_world_id world, i2d_pre_solve_fn* fn, void* context);
 
+/** Turns a shape's pre-solve opt-in (i2d_shape_def.enable_pre_solve_events) on or off;
+ *  its contacts follow from the next step. */
+I2D_API i2d_status i2d_shape_enable_pre_solve_events(i2d_shape_id shape, bool flag);
+I2D_API bool i2d_shape_are_pre_solve_events_enabled(i2d_shape_id shape);
+
 /* ---- Explosions -------------------------------------------------------------------- */
 
 /** A blast. Obtain with i2d_default_explosion_def(), then edit. */

@@ -35,6 +35,9 @@
 
 #include <cmath>
 #include <cstdint>
+#include <deque>
+#include <unordered_map>
+#include <unordered_set>
 
 #include "ragdoll.h"
 
@@ -457,6 +460,66 @@ inline i2d_world_id ragdoll_heap(const i2d_world_def& wd) {
             i2d_world_destroy(world);
             return I2D_NULL_WORLD_ID;
         }
+    }
+    return world;
+}
+
+// The contact hooks' table for one hooked_bin world: its shapes' ghost groups and its
+// one-way platforms, by id. The hooks read it and nothing else (every call on the world
+// is locked while they run), so their answers depend on their arguments alone.
+struct HookTable {
+    std::unordered_map<uint64_t, int> ghost_group;  // 0 or missing: meets every shape
+    std::unordered_set<uint64_t> platforms;
+};
+
+// Shapes of two different ghost groups pass through each other.
+inline bool ghosts_apart(i2d_shape_id a, i2d_shape_id b, void* context) {
+    const HookTable& t = *static_cast<const HookTable*>(context);
+    const auto group = [&](i2d_shape_id s) {
+        const auto found = t.ghost_group.find(s.bits);
+        return found == t.ghost_group.end() ? 0 : found->second;
+    };
+    const int ga = group(a), gb = group(b);
+    return ga == 0 || gb == 0 || ga == gb;
+}
+
+// A platform holds only what lands on it from above.
+inline bool one_way_platforms(i2d_shape_id a, i2d_shape_id b, const i2d_manifold* manifold, void* context) {
+    const HookTable& t = *static_cast<const HookTable*>(context);
+    const float up = t.platforms.count(a.bits) != 0 ? 1.0f : t.platforms.count(b.bits) != 0 ? -1.0f : 0.0f;
+    return up == 0.0f || up * manifold->normal.y > 0.95f;
+}
+
+// sleeping_bin's bin with one-way platforms across it and its shapes in three ghost
+// groups, both hooks set: pairs reach them from every stage the workers share (pair
+// finding, the narrowphase, continuous sweeps of the fast ones falling through).
+inline i2d_world_id hooked_bin(const i2d_world_def& wd) {
+    static std::deque<HookTable> tables;  // one per world built, alive to the end
+    const i2d_world_id world = i2d_world_create(&wd);
+    if (I2D_IS_NULL(world)) {
+        return world;
+    }
+    HookTable& table = tables.emplace_back();
+    i2d_world_set_custom_filter_callback(world, ghosts_apart, &table);
+    i2d_world_set_pre_solve_callback(world, one_way_platforms, &table);
+    const i2d_shape_def wall = material(0.6f, 0.0f);
+    add_walls(add_ground(world, wall, 12.0f), wall, 12.0f, 20.0f);
+    i2d_shape_def platform = material(0.6f, 0.0f);
+    platform.enable_pre_solve_events = true;
+    for (int k = 0; k < 3; ++k) {
+        const i2d_body_id body = add_body(world, I2D_BODY_STATIC, i2d_vec2{-6.0f + 6.0f * float(k), 3.0f + 3.0f * float(k)});
+        table.platforms.insert(i2d_shape_create_box(body, &platform, 3.0f, 0.1f).bits);
+    }
+    for (int i = 0; i < 450; ++i) {
+        const float x = -11.0f + 0.72f * float(i % 30) + 0.04f * float(i % 7);
+        const float y = 1.0f + 0.8f * float(i / 30);
+        const i2d_body_id body = add_body(world, I2D_BODY_DYNAMIC, i2d_vec2{x, y}, 0.13f * float(i % 11));
+        i2d_shape_def def = material(0.5f, (i % 7 == 0) ? 0.5f : 0.0f, bin_rolling_resistance);
+        def.enable_custom_filtering = true;
+        add_mixed_shape(body, i, &def);
+        i2d_shape_id shape = I2D_NULL_SHAPE_ID;
+        i2d_body_get_shapes(body, &shape, 1);
+        table.ghost_group[shape.bits] = i % 3;
     }
     return world;
 }

@@ -163,7 +163,7 @@ Bytes recorded_session(i2d_world_id original) {
     return out;
 }
 
-// Each record's checksum made to match what it now holds.
+// Each record's size check and checksum made to match what it now holds.
 void fix_records(Bytes& recording) {
     std::size_t at = i2d::recording_header_size;
     while (recording.size() - at >= i2d::record_header_size) {
@@ -172,12 +172,8 @@ void fix_records(Bytes& recording) {
         if (payload > recording.size() - at - i2d::record_header_size) {
             return;
         }
-        const std::size_t end = at + i2d::record_header_size + payload;
-        const uint64_t sum = i2d::checksum64(recording.data() + at + 4, end - at - 4);
-        for (int i = 0; i < 4; ++i) {
-            recording[at + std::size_t(i)] = (unsigned char)(sum >> (8 * i));
-        }
-        at = end;
+        i2d::seal_record(recording.data() + at, payload);
+        at += i2d::record_header_size + payload;
     }
 }
 

@@ -30,6 +30,8 @@ struct ShapeDef {
     bool enable_contact_events = true;
     bool enable_sensor_events = true;
     bool enable_hit_events = false;
+    bool enable_custom_filtering = false;
+    bool enable_pre_solve_events = false;
     Filter filter;
     void* user_data = nullptr;
 };
@@ -39,7 +41,7 @@ struct ShapeDef {
 // made, and the geometry, hundreds of bytes for a polygon, follow. The proxy's boxes are
 // kept here too so that neither step walks the tree to read them.
 /// A shape's event flags that can change after creation.
-enum class ShapeFlag : uint8_t { contact_events, sensor_events, hit_events, count };
+enum class ShapeFlag : uint8_t { contact_events, sensor_events, hit_events, pre_solve_events, count };
 
 struct Shape {
     int32_t body = null_index;
@@ -51,6 +53,8 @@ struct Shape {
     bool enable_contact_events = true;
     bool enable_sensor_events = true;
     bool enable_hit_events = false;
+    bool enable_custom_filtering = false;  // pairs with it reach the custom filter hook
+    bool enable_pre_solve_events = false;  // its touching pairs reach the pre-solve hook
     bool enlarged = false;  // the step gave it new boxes; its proxy moves at the step's end
     float aabb_margin = 0.0f;  // how far the fat box reaches beyond the tight box, m
     float friction = 0.0f, restitution = 0.0f;

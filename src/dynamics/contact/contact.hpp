@@ -38,6 +38,7 @@ enum ContactFlags : uint32_t {
     contact_held_by_chain = 1u << 10,     // a chain segment's contact that had points at the
                                           // last manifold: the segment holds the shape from its
                                           // free side, even once pushed behind it
+    contact_pre_solve = 1u << 11,         // either shape enables pre-solve events
 };
 
 /// A contact's link in one of its bodies' contact lists; keys are (contact << 1) | edge.

@@ -12,7 +12,8 @@ namespace i2d {
 // with one lookup, before the shapes and bodies are read. Solid shapes need a dynamic
 // body between them to push; a sensor reports whatever enters it, whatever moves either
 // (box2d#739): a trigger zone on a static body sees a kinematic platform. Static against
-// static never reaches here (the broadphase never pairs it).
+// static never reaches here (the broadphase never pairs it). The custom filter hook comes
+// last: game code is asked only about pairs that could otherwise touch.
 bool ContactSet::may_pair(int32_t shape_a, int32_t shape_b) const {
     if (pair_set_.contains(pair_key(shape_a, shape_b))) {
         return false;
@@ -26,7 +27,8 @@ bool ContactSet::may_pair(int32_t shape_a, int32_t shape_b) const {
         !a.is_sensor && !b.is_sensor) {
         return false;
     }
-    return should_collide(a.filter, b.filter) && !joints_.keeps_apart(a.body, b.body);
+    return should_collide(a.filter, b.filter) && !joints_.keeps_apart(a.body, b.body) &&
+           hooks_.allows_pair(events_.ids, shapes_, shape_a, shape_b);
 }
 
 // One pair-finding stage's range: the self search's parts, or the queries.

@@ -43,7 +43,8 @@ void ContactSet::create_contact(int32_t shape_a, int32_t shape_b, WakeBody wake)
         c.flags = contact_sensor | (visitor.enable_sensor_events ? contact_report_events : 0u);
     } else {
         c.flags = (a.enable_contact_events && b.enable_contact_events ? uint32_t(contact_report_events) : 0u) |
-                  (a.enable_hit_events || b.enable_hit_events ? uint32_t(contact_hit_events) : 0u);
+                  (a.enable_hit_events || b.enable_hit_events ? uint32_t(contact_hit_events) : 0u) |
+                  (a.enable_pre_solve_events || b.enable_pre_solve_events ? uint32_t(contact_pre_solve) : 0u);
     }
     mix_material(c, a, b);
     const int32_t body_of[2] = {a.body, b.body};
@@ -137,7 +138,7 @@ void ContactSet::destroy_contacts_between(int32_t body_a, int32_t body_b, WakeBo
     }
 }
 
-// A shape's material, outline (its rounding radius) or hit-event flag changed: its
+// A shape's material, outline (its rounding radius), hit-event or pre-solve flag changed: its
 // contacts take the new values. Contact and sensor event flags stay as the contact was
 // made, so that every begin event reported keeps its end.
 void ContactSet::refresh_contacts_of_shape(int32_t shape) {
@@ -150,7 +151,9 @@ void ContactSet::refresh_contacts_of_shape(int32_t shape) {
             mix_material(c, a, b);
             if ((c.flags & contact_sensor) == 0) {
                 const bool hits = a.enable_hit_events || b.enable_hit_events;
+                const bool pre_solve = a.enable_pre_solve_events || b.enable_pre_solve_events;
                 c.flags = hits ? c.flags | contact_hit_events : c.flags & ~uint32_t(contact_hit_events);
+                c.flags = pre_solve ? c.flags | contact_pre_solve : c.flags & ~uint32_t(contact_pre_solve);
             }
         }
     });

@@ -38,6 +38,7 @@
 #include "dynamics/body/body.hpp"
 #include "dynamics/body/shape.hpp"
 #include "dynamics/contact/contact.hpp"
+#include "dynamics/contact/contact_hooks.hpp"
 #include "dynamics/island/link_change.hpp"
 #include "dynamics/step_context.hpp"
 #include "dynamics/world/events.hpp"
@@ -55,8 +56,14 @@ using WakeBody = FunctionRef<void(int32_t body)>;
 class ContactSet {
 public:
     ContactSet(const WorldDef& settings, Pool<Body>& bodies, const Pool<Shape>& shapes, const JointSet& joints,
-               EventRecorder& events, TaskSystem& tasks)
-        : settings_(settings), bodies_(bodies), shapes_(shapes), joints_(joints), events_(events), tasks_(tasks) {}
+               EventRecorder& events, TaskSystem& tasks, const ContactHooks& hooks)
+        : settings_(settings),
+          bodies_(bodies),
+          shapes_(shapes),
+          joints_(joints),
+          events_(events),
+          tasks_(tasks),
+          hooks_(hooks) {}
 
     /// The contacts; the solver writes their impulses and touching flags at the end of
     /// a step (contact_solver.hpp), nothing else writes them from outside.
@@ -169,6 +176,7 @@ private:
     uint8_t collide_one(int32_t k, const StepContext& step);
     bool recycle(Contact& contact, const Body& a, const Body& b, const Tolerances& tolerances) const;
     void update_contact(Contact& contact, const Shape& a, const Shape& b, const StepContext& step);
+    bool pre_solve_refuses(const Contact& contact) const;
     uint8_t point_change_flags(const Contact& contact, bool had_points) const;
     template <auto F>
     void run_over_awake(const StepContext& step);
@@ -188,6 +196,7 @@ private:
     const JointSet& joints_;
     EventRecorder& events_;
     TaskSystem& tasks_;
+    const ContactHooks& hooks_;
     Pool<Contact> pool_;
     HashSet pair_set_;  // pair_key of the shapes of every contact
     std::vector<int32_t> awake_;

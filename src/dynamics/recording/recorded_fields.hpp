@@ -40,6 +40,10 @@ void shape_def_fields(Io& io, D& d) {
     io(d.enable_contact_events);
     io(d.enable_sensor_events);
     io(d.enable_hit_events);
+    if (io.has_version(2)) {
+        io(d.enable_custom_filtering);
+        io(d.enable_pre_solve_events);
+    }
     filter_fields(io, d.filter);
     io(d.user_data);
 }

@@ -1,8 +1,6 @@
 // SPDX-License-Identifier: MIT
 #include "dynamics/recording/recorder.hpp"
 
-#include "core/checksum.hpp"
-
 namespace i2d {
 
 Recorder::Recorder(RecordWriter write, void* context, int32_t& lock_depth)
@@ -19,17 +17,9 @@ void Recorder::write_header() {
     --lock_depth_;
 }
 
-// The record's size and checksum go in front of what the scope wrote.
+// The record's size and checks go in front of what the scope wrote.
 void Recorder::emit() {
-    const std::size_t payload = record_.size() - record_header_size;
-    unsigned char* size_at = record_.data() + 5;
-    for (int i = 0; i < 4; ++i) {
-        size_at[i] = static_cast<unsigned char>(payload >> (8 * i));
-    }
-    const uint64_t sum = checksum64(record_.data() + 4, record_.size() - 4);
-    for (int i = 0; i < 4; ++i) {
-        record_[std::size_t(i)] = static_cast<unsigned char>(sum >> (8 * i));
-    }
+    seal_record(record_.data(), record_.size() - record_header_size);
     ++lock_depth_;
     write_(record_.data(), record_.size(), context_);
     --lock_depth_;
@@ -46,6 +36,7 @@ RecordScope::RecordScope(Recorder* recorder, RecordedOp op) : recorder_(recorder
     out.u32(0);  // checksum, filled in by emit
     out.u8(static_cast<uint8_t>(op));
     out.u32(0);  // payload size, likewise
+    out.u32(0);  // the size's check, likewise
 }
 
 RecordScope::~RecordScope() {

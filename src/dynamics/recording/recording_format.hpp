@@ -10,6 +10,7 @@
 //                   4  the low 32 bits of checksum64 (core/checksum.hpp) of the rest
 //                   1  what it is (RecordedOp)
 //                   4  payload size, bytes
+//                   4  the low 32 bits of checksum64 of the 5 bytes above (format 2 on)
 //                      payload
 //
 // The first record is a `snapshot`: the world's full snapshot when recording started.
@@ -19,6 +20,8 @@
 // produced. A world restored while recording gives a `snapshot` record of what it became.
 // A reader takes the whole records a stream holds: one cut short at the end (a program
 // that stopped mid-write) is left out; a record whose checksum does not match is refused.
+// The size's own check lets a reader tell a record cut short from one whose size was
+// changed to reach past the end, which format 1 took for a cut and so dropped the rest.
 #pragma once
 
 #include <cstddef>
@@ -76,9 +79,17 @@ enum class RecordedOp : uint8_t {
 /// Receives a recording's bytes, a record at a time.
 using RecordWriter = void (*)(const void* bytes, std::size_t size, void* context);
 
-constexpr uint32_t recording_format_version = 1;
+// 2 added the shape def's opt-ins to the contact hooks (off in older recordings).
+constexpr uint32_t recording_format_version = 2;
 constexpr std::size_t recording_header_size = 16;
-constexpr std::size_t record_header_size = 9;
+constexpr std::size_t record_header_size = 13;
+constexpr std::size_t record_header_size_v1 = 9;  // format 1: no size check
+
+/// Fills in a record's payload size, size check and checksum: the first
+/// record_header_size bytes of `record`, which the payload follows.
+void seal_record(unsigned char* record, std::size_t payload_size);
+/// The size check a record's header holds (format 2 on): of its kind and size bytes.
+uint32_t record_size_check(const unsigned char* record);
 constexpr unsigned char recording_magic[8] = {'i', '2', 'd', 'r', 'e', 'c', 0, 0x1a};
 
 }  // namespace i2d

@@ -167,6 +167,10 @@ void shape_fields(Io& io, S& s, SnapshotPart part) {
     io(s.enable_contact_events);
     io(s.enable_sensor_events);
     io(s.enable_hit_events);
+    if (io.has_version(3)) {
+        io(s.enable_custom_filtering);
+        io(s.enable_pre_solve_events);
+    }
     io(s.aabb_margin);
     io(s.friction);
     io(s.restitution);

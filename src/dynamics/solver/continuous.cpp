@@ -3,6 +3,7 @@
 #include "dynamics/solver/continuous.hpp"
 
 #include "collision/geometry.hpp"
+#include "collision/manifold.hpp"
 #include "dynamics/constants.hpp"
 #include "dynamics/body/shape_bounds.hpp"
 #include "math/math.hpp"
@@ -91,7 +92,7 @@ void Continuous::run(const StepContext& step, const std::vector<int32_t>& fast_b
             if (bodies_[body].is_bullet == bullet_pass) {
                 std::vector<SensorCandidate>& found = found_[0];
                 found.clear();
-                const Impact first = sweep(body, bullet_pass, step.tolerances.linear_slop, found);
+                const Impact first = sweep(body, bullet_pass, step.tolerances, found);
                 apply(step, body, first, found.data(), found.data() + found.size());
             }
         }
@@ -123,7 +124,7 @@ void Continuous::sweep_range(const StepContext& step, Continuous& self, const No
         SweepResult& r = self.results_[std::size_t(k)];
         r.worker = worker;
         r.candidates_begin = int32_t(found.size());
-        r.first = self.sweep(self.non_bullets_[std::size_t(k)], false, step.tolerances.linear_slop, found);
+        r.first = self.sweep(self.non_bullets_[std::size_t(k)], false, step.tolerances, found);
         r.candidates_end = int32_t(found.size());
     }
 }
@@ -143,12 +144,14 @@ bool Continuous::swept_against(const Body& fast, const Body& other, bool bullet_
 }
 
 // The body's first impact along its sweep; the sensors it crosses go to `found`.
-Continuous::Impact Continuous::sweep(int32_t body, bool bullet_pass, float slop, std::vector<SensorCandidate>& found) {
+Continuous::Impact Continuous::sweep(int32_t body, bool bullet_pass, const Tolerances& tolerances,
+                                     std::vector<SensorCandidate>& found) {
     const Body& b = bodies_[body];
     FastShape fast;
     fast.body = body;
     fast.bullet_pass = bullet_pass;
-    fast.slop = slop;
+    fast.slop = tolerances.linear_slop;
+    fast.margin = tolerances.speculative_distance;
     fast.sweep = sweep_of(body);
     fast.start = Transform{fast.sweep.c1 - rotate(fast.sweep.q1, fast.sweep.local_center), fast.sweep.q1};
     const bool turned = !(fast.sweep.q1.c == fast.sweep.q2.c && fast.sweep.q1.s == fast.sweep.q2.s);
@@ -202,7 +205,8 @@ void Continuous::test_candidate(const FastShape& fast, int32_t other_index, Impa
     const Shape& shape = shapes_[fast.shape];
     const Shape& other = shapes_[other_index];
     if (!swept_against(bodies_[fast.body], bodies_[other.body], fast.bullet_pass) ||
-        !should_collide(shape.filter, other.filter)) {
+        !should_collide(shape.filter, other.filter) ||
+        !hooks_.allows_pair(events_.ids, shapes_, min_of(fast.shape, other_index), max_of(fast.shape, other_index))) {
         return;
     }
     const Sweep other_sweep = sweep_of(other.body);
@@ -232,10 +236,31 @@ void Continuous::test_candidate(const FastShape& fast, int32_t other_index, Impa
         r = sweep_centre(other_proxy, other_sweep, centre_point(shape.geometry), fast.sweep, first.fraction,
                          fast.slop);
     }
-    if (r.state == ToiState::hit && r.fraction < first.fraction) {
+    if (r.state == ToiState::hit && r.fraction < first.fraction &&
+        !pre_solve_refuses(fast, other_index, other_sweep, r.fraction)) {
         first.fraction = r.fraction;
         first.body = other.body;
     }
+}
+
+// A pair that opted in to the pre-solve hook is asked about the impact with the
+// manifold the shapes would have there: a one-way platform the hook turns off for a body
+// coming from below must not stop it there either, however fast it moves.
+bool Continuous::pre_solve_refuses(const FastShape& fast, int32_t other_index, const Sweep& other_sweep,
+                                   float fraction) const {
+    if (!hooks_.asks_pre_solve(shapes_[fast.shape], shapes_[other_index])) {
+        return false;
+    }
+    const bool fast_first = fast.shape < other_index;  // contacts name the lower shape A
+    const Transform fast_pose = sweep_transform(fast.sweep, fraction);
+    const Transform other_pose = sweep_transform(other_sweep, fraction);
+    const Shape& a = shapes_[fast_first ? fast.shape : other_index];
+    const Shape& b = shapes_[fast_first ? other_index : fast.shape];
+    const Manifold manifold = collide_shapes(a.geometry, fast_first ? fast_pose : other_pose, b.geometry,
+                                             fast_first ? other_pose : fast_pose, fast.margin, fast.slop);
+    return manifold.point_count > 0 &&
+           !hooks_.allows_contact(events_.ids, shapes_, fast_first ? fast.shape : other_index,
+                                  fast_first ? other_index : fast.shape, manifold);
 }
 
 // The body goes back to the fraction of its sweep, keeping its velocities: the next

@@ -32,6 +32,7 @@
 #include "core/stage_runner.hpp"
 #include "core/task_system.hpp"
 #include "dynamics/body/body.hpp"
+#include "dynamics/contact/contact_hooks.hpp"
 #include "dynamics/world/events.hpp"
 #include "dynamics/body/shape.hpp"
 #include "dynamics/step_context.hpp"
@@ -46,8 +47,8 @@ struct SensorCrossing {
 class Continuous {
 public:
     Continuous(Pool<Body>& bodies, Pool<Shape>& shapes, BroadPhase& broad_phase, EventRecorder& events,
-               TaskSystem& tasks)
-        : bodies_(bodies), shapes_(shapes), broad_phase_(broad_phase), events_(events), tasks_(tasks) {}
+               TaskSystem& tasks, const ContactHooks& hooks)
+        : bodies_(bodies), shapes_(shapes), broad_phase_(broad_phase), events_(events), tasks_(tasks), hooks_(hooks) {}
 
     /// Sweeps the fast bodies (awake order); moved ones get new bounds (their proxies
     /// move at the broadphase's next commit) and their move events the new pose.
@@ -63,7 +64,8 @@ private:
         Sweep sweep;
         Transform start;  // the body's pose at the start of the step
         ShapeProxy proxy;
-        float slop = 0.0f;  // the world's linear slop (Tolerances): impacts stop within it
+        float slop = 0.0f;    // the world's linear slop (Tolerances): impacts stop within it
+        float margin = 0.0f;  // the world's speculative distance: a manifold's reach
     };
     // The earliest impact found so far.
     struct Impact {
@@ -84,7 +86,8 @@ private:
     static void sweep_range(const StepContext& step, Continuous& continuous, const NoStageArg&, int32_t begin,
                             int32_t end, int32_t worker);
     void sweep_non_bullets(const StepContext& step);
-    Impact sweep(int32_t body, bool bullet_pass, float slop, std::vector<SensorCandidate>& found);
+    Impact sweep(int32_t body, bool bullet_pass, const Tolerances& tolerances, std::vector<SensorCandidate>& found);
+    bool pre_solve_refuses(const FastShape& fast, int32_t other_index, const Sweep& other_sweep, float fraction) const;
     void apply(const StepContext& step, int32_t body, const Impact& first, const SensorCandidate* found_begin,
                const SensorCandidate* found_end);
     void test_candidate(const FastShape& fast, int32_t other_shape, Impact& first,
@@ -98,6 +101,7 @@ private:
     BroadPhase& broad_phase_;
     EventRecorder& events_;
     TaskSystem& tasks_;
+    const ContactHooks& hooks_;
     std::vector<SensorCrossing> crossings_;
     std::vector<int32_t> non_bullets_;     // this step's fast bodies that are not bullets
     std::vector<SweepResult> results_;     // per non-bullet

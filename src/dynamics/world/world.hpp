@@ -27,6 +27,7 @@
 #include "dynamics/body/chain.hpp"
 #include "dynamics/body/shape.hpp"
 #include "dynamics/contact/contact.hpp"
+#include "dynamics/contact/contact_hooks.hpp"
 #include "dynamics/joint/joint.hpp"
 #include "dynamics/recording/recording_format.hpp"
 #include "dynamics/tolerances.hpp"
@@ -123,6 +124,9 @@ public:
     bool apply_torque(int32_t body, float torque, bool wake);
     bool apply_linear_impulse(int32_t body, Vec2 impulse, Vec2 point, bool wake);
     bool apply_angular_impulse(int32_t body, float impulse, bool wake);
+    /// Pushes the dynamic bodies whose shapes the blast reaches (world_explode.cpp),
+    /// waking them; recorded as the impulses it applies.
+    void explode(const ExplosionDef& def);
     void set_user_data(int32_t body, void* user_data);
     void set_mass_data(int32_t body, const MassOverride& mass);
     void set_body_setting(int32_t body, BodySetting setting, float value);
@@ -159,6 +163,9 @@ public:
     void set_density(int32_t shape, float density, bool update_body_mass);
     void set_material(int32_t shape, const SurfaceMaterial& material);
     void set_shape_flag(int32_t shape, ShapeFlag flag, bool value);
+    /// The host's contact hooks (contact_hooks.hpp): wiring, neither saved nor recorded.
+    void set_custom_filter(const ContactHooks::CustomFilter& filter);
+    void set_pre_solve(const ContactHooks::PreSolve& pre_solve);
     void set_shape_user_data(int32_t shape, void* user_data);
 
     // Joints (world_joints.cpp). The def must be valid (two live, different bodies,

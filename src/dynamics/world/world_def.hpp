@@ -34,4 +34,13 @@ struct WorldDef {
     float length_units_per_meter = 1.0f;       // the world's length unit (tolerances scale with it)
 };
 
+/// A blast (World::explode, world_explode.cpp); lengths in the world's unit.
+struct ExplosionDef {
+    uint64_t mask_bits = ~uint64_t(0);  // shapes whose category meets it are pushed
+    Vec2 position;
+    float radius = 1.0f;              // full strength within it
+    float falloff = 0.0f;             // fading linearly to nothing over this much beyond
+    float impulse_per_length = 1.0f;  // N s per length of outline facing the blast
+};
+
 }  // namespace i2d

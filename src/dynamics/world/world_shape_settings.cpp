@@ -61,7 +61,8 @@ void World::set_material(int32_t shape, const SurfaceMaterial& material) {
 }
 
 // Contact and sensor event flags apply to contacts and visits that begin afterwards (so
-// every begin reported keeps its end); hit events to every contact from the next step.
+// every begin reported keeps its end); hit and pre-solve events to every contact from the
+// next step.
 void World::set_shape_flag(int32_t shape, ShapeFlag flag, bool value) {
     RecordScope record(recorder_.get(), RecordedOp::set_shape_flag);
     record.write(shape, flag, value);
@@ -74,8 +75,16 @@ void World::set_shape_flag(int32_t shape, ShapeFlag flag, bool value) {
             s.enable_hit_events = value;
             stages_->contacts.refresh_contacts_of_shape(shape);
             break;
+        case ShapeFlag::pre_solve_events:
+            s.enable_pre_solve_events = value;
+            stages_->contacts.refresh_contacts_of_shape(shape);
+            break;
         case ShapeFlag::count: break;
     }
 }
+
+void World::set_custom_filter(const ContactHooks::CustomFilter& filter) { stages_->hooks.custom_filter = filter; }
+
+void World::set_pre_solve(const ContactHooks::PreSolve& pre_solve) { stages_->hooks.pre_solve = pre_solve; }
 
 }  // namespace i2d

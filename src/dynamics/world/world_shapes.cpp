@@ -39,6 +39,8 @@ int32_t World::attach_shape(int32_t body, const ShapeDef& def, const Geometry& g
     s.enable_contact_events = def.enable_contact_events;
     s.enable_sensor_events = def.enable_sensor_events;
     s.enable_hit_events = def.enable_hit_events;
+    s.enable_custom_filtering = def.enable_custom_filtering;
+    s.enable_pre_solve_events = def.enable_pre_solve_events;
     s.user_data = def.user_data;
 
     Body& b = bodies_[body];

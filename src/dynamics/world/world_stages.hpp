@@ -15,6 +15,7 @@
 #include "core/task_system.hpp"
 #include "dynamics/body/body.hpp"
 #include "dynamics/body/shape.hpp"
+#include "dynamics/contact/contact_hooks.hpp"
 #include "dynamics/contact/contact_set.hpp"
 #include "dynamics/island/island.hpp"
 #include "dynamics/joint/joint_set.hpp"
@@ -29,12 +30,13 @@ struct WorldStages {
     WorldStages(const WorldDef& settings, Pool<Body>& bodies, Pool<Shape>& shapes)
         : tasks(settings.worker_count, settings.tasks),
           joints(bodies),
-          contacts(settings, bodies, shapes, joints, events, tasks),
+          contacts(settings, bodies, shapes, joints, events, tasks, hooks),
           islands(bodies),
           solver(SolverLinks{bodies, shapes, joints.pool(), joints, contacts, islands, broad_phase, events, tasks},
                  settings.simd_path),
-          continuous(bodies, shapes, broad_phase, events, tasks) {}
+          continuous(bodies, shapes, broad_phase, events, tasks, hooks) {}
 
+    ContactHooks hooks;  // the host's, set between steps; the stages below read them
     TaskSystem tasks;
     BroadPhase broad_phase;
     EventRecorder events;
