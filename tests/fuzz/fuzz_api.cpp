@@ -395,7 +395,11 @@ i2d_shape_def shape_def(FuzzInput& in) {
             case 1: def.friction = in.real(); def.restitution = in.real(); break;
             case 2: def.rolling_resistance = in.real(); def.tangent_speed = in.real(); break;
             case 3: def.is_sensor = in.flag(); def.enable_sensor_events = in.flag(); break;
-            case 4: def.enable_contact_events = in.flag(); break;
+            case 4:
+                def.enable_contact_events = in.flag();
+                def.enable_custom_filtering = in.flag();
+                def.enable_pre_solve_events = in.flag();
+                break;
             case 5: def.filter = filter(in); break;
             default: def.internal_cookie = in.u32(); break;
         }
@@ -1095,6 +1099,10 @@ void run_pure_call(FuzzInput& in, uint8_t op) {
 constexpr uint8_t joint_sub_first = 30;
 
 #include "fuzz_runtime_calls.inl"
+#include "fuzz_hook_calls.inl"
+
+// Query-group instructions from this sub-opcode on are contact hook and explosion calls.
+constexpr uint8_t hook_sub_first = 34;
 
 // Shape instructions from this sub-opcode on are runtime API calls.
 constexpr uint8_t runtime_sub_first = 26;
@@ -1123,6 +1131,8 @@ void run_program(FuzzInput& in) {
             run_runtime_call(in, sub);
         } else if (group == 3) {
             run_shape_call(in, sub % 13);
+        } else if (group == 4 && sub >= hook_sub_first) {
+            run_hook_call(in, sub);
         } else if (group == 4) {
             run_query_call(in, sub % 7);
         } else {
