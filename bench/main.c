@@ -84,7 +84,8 @@ typedef struct options {
 static void usage(FILE* f) {
     fprintf(f,
             "usage: impulse2d_bench [--scene NAME[,NAME...]] [--sweep | --all] [--steps N] [--repeat R]\n"
-            "                       [--workers W] [--simd PATH] [--no-recycling] [--csv | --json] [--list]\n"
+            "                       [--workers W] [--simd PATH] [--no-recycling] [--idle-hooks] [--csv | --json]\n"
+            "                       [--list]\n"
             "  (default)      the scenes of scenes.md the engine can run, then the extras\n"
             "  --scene NAMES  only these scenes (see --list); may be given more than once\n"
             "  --sweep        the scaling sweep: rain_circles and pyramid_field at 1k, 4k, 16k, 64k bodies\n"
@@ -94,6 +95,7 @@ static void usage(FILE* f) {
             "  --workers W    worker threads of each world, 1..64 (the built-in pool); default 1\n"
             "  --simd PATH    contact kernels: automatic (default), scalar, sse2, avx2, avx512 or neon\n"
             "  --no-recycling make every manifold afresh at every step (enable_contact_recycling off)\n"
+            "  --idle-hooks   set both contact hooks on every world, no shape opting in (their idle cost)\n"
             "  --csv, --json  machine-readable output instead of the table\n"
             "  --list         list the scenes and exit\n"
             "exit status: 0 every scene sane, 1 a sanity check failed or a run differed, 2 bad usage,\n"
@@ -174,6 +176,8 @@ static bool parse_options(int argc, char** argv, options* opt) {
             ++i;
         } else if (strcmp(arg, "--no-recycling") == 0) {
             bench_contact_recycling = false;
+        } else if (strcmp(arg, "--idle-hooks") == 0) {
+            bench_idle_hooks = true;
         } else if (strcmp(arg, "--scene") == 0 && value) {
             if (!choose_scenes(value, opt)) {
                 return false;
@@ -630,9 +634,9 @@ static void print_header(const options* opt) {
     }
     bench_print_build_line(stdout, "bench");
     printf("# dt 1/60 s, %d substeps (a solve and a relax pass each), %d worker%s, contact kernels %s, "
-           "contact recycling %s\n",
+           "contact recycling %s, contact hooks %s\n",
            BENCH_SUBSTEPS, (int)opt->workers, opt->workers == 1 ? "" : "s", simd_path_in_use(),
-           bench_contact_recycling ? "on" : "off");
+           bench_contact_recycling ? "on" : "off", bench_idle_hooks ? "set, idle" : "unset");
     print_notes(opt);
     print_sleep_notes(opt);
     if (opt->format == FORMAT_CSV) {

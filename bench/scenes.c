@@ -31,6 +31,26 @@ static i2d_aabb aabb(float min_x, float min_y, float max_x, float max_y) {
 i2d_simd_path bench_simd_path = I2D_SIMD_AUTOMATIC;
 bool bench_contact_recycling = true;
 int32_t bench_worker_count = 1;
+bool bench_idle_hooks = false;
+
+static bool let_pair_touch(i2d_shape_id a, i2d_shape_id b, void* context) {
+    (void)a, (void)b, (void)context;
+    return true;
+}
+
+static bool let_contact_act(i2d_shape_id a, i2d_shape_id b, const i2d_manifold* manifold, void* context) {
+    (void)a, (void)b, (void)manifold, (void)context;
+    return true;
+}
+
+/* The bench's --idle-hooks: both contact hooks set on a world none of whose shapes opts in,
+ * whose cost should be nothing. */
+static void install_idle_hooks(i2d_world_id world) {
+    if (bench_idle_hooks && !I2D_IS_NULL(world)) {
+        i2d_world_set_custom_filter_callback(world, let_pair_touch, NULL);
+        i2d_world_set_pre_solve_callback(world, let_contact_act, NULL);
+    }
+}
 
 static bool create_world(bench_state* state, bool enable_sleep) {
     i2d_world_def def = i2d_default_world_def();
@@ -41,6 +61,7 @@ static bool create_world(bench_state* state, bool enable_sleep) {
     def.worker_count = bench_worker_count;
     state->sleep_enabled = enable_sleep;
     state->world = i2d_world_create(&def);
+    install_idle_hooks(state->world);
     return !I2D_IS_NULL(state->world);
 }
 
@@ -773,6 +794,7 @@ static bool create_ragdoll_rain(bench_state* state) {
     world_def.worker_count = bench_worker_count;
     state->sleep_enabled = true;
     state->world = i2d_world_create(&world_def);
+    install_idle_hooks(state->world);
     if (I2D_IS_NULL(state->world) || !reserve_bodies(state, RAIN_RAGDOLLS * BENCH_BONE_COUNT, 0) ||
         !reserve_joints(state, RAIN_RAGDOLLS * (BENCH_BONE_COUNT - 1))) {
         return false;

@@ -21,6 +21,8 @@ extern i2d_simd_path bench_simd_path;
 extern bool bench_contact_recycling;
 /* Worker threads of every scene's world (the built-in pool when above 1). */
 extern int32_t bench_worker_count;
+/* Whether every scene's world has both contact hooks set, no shape opting in (--idle-hooks). */
+extern bool bench_idle_hooks;
 
 /* The world of one run and what its hook and sanity check need to find in it. */
 typedef struct bench_state {
