@@ -221,6 +221,13 @@ public:
     void enable_hit_events(bool flag, Status& status) noexcept {
         i2d_shape_enable_hit_events(id_, flag); detail::record(status);
     }
+    bool pre_solve_events_enabled() const { return checked(i2d_shape_are_pre_solve_events_enabled(id_)); }
+    void enable_pre_solve_events(bool flag) {
+        i2d_shape_enable_pre_solve_events(id_, flag); detail::throw_if_failed();
+    }
+    void enable_pre_solve_events(bool flag, Status& status) noexcept {
+        i2d_shape_enable_pre_solve_events(id_, flag); detail::record(status);
+    }
     /** The point of the shape closest to target (world coordinates); target itself inside. */
     i2d_vec2 closest_point(i2d_vec2 target) const { return checked(i2d_shape_get_closest_point(id_, target)); }
     /** The shape's touching contacts as the last step left them. */
@@ -553,6 +560,20 @@ public:
     }
     i2d_world_counters counters() const { return checked(i2d_world_get_counters(id_)); }
     uint64_t state_hash() const { return checked(i2d_world_get_state_hash(id_)); }
+
+    /** The contact hooks (toolkit.h): plain functions, called on the step's workers, that
+     *  may use only their arguments; nullptr clears. */
+    void set_custom_filter(i2d_custom_filter_fn* fn, void* context = nullptr) {
+        i2d_world_set_custom_filter_callback(id_, fn, context); detail::throw_if_failed();
+    }
+    void set_pre_solve(i2d_pre_solve_fn* fn, void* context = nullptr) {
+        i2d_world_set_pre_solve_callback(id_, fn, context); detail::throw_if_failed();
+    }
+    /** Pushes the dynamic bodies near the blast (toolkit.h, i2d_world_explode). */
+    void explode(const i2d_explosion_def& def) { i2d_world_explode(id_, &def); detail::throw_if_failed(); }
+    void explode(const i2d_explosion_def& def, Status& status) noexcept {
+        i2d_world_explode(id_, &def); detail::record(status);
+    }
 
     /** The world as a portable snapshot (see snapshot.h): everything it simulates, not the
      *  host's wiring (worker_count, task callbacks, simd_path, enable_profile). */

@@ -9,33 +9,15 @@
 #include <vector>
 
 #include "check.h"
+#include "cpp_fixture.hpp"
+
+using cpp_fixture::make_ground;
+using cpp_fixture::step_seconds;
+using cpp_fixture::throws;
 
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-
-impulse2d::Shape make_ground(impulse2d::World& world) {
-    impulse2d::Body ground = world.create_body(impulse2d::body_def(I2D_BODY_STATIC, {0.0f, -1.0f}));
-    return ground.create_box(20.0f, 1.0f);
-}
-
-void step_seconds(impulse2d::World& world, float seconds) {
-    const int steps = static_cast<int>(std::lround(seconds * 60.0f));
-    for (int i = 0; i < steps; ++i) {
-        world.step(1.0f / 60.0f, 4);
-    }
-}
-
-// Whether fn throws impulse2d::Error with status and a message containing text.
-template <class F>
-bool throws(F fn, i2d_status status, const char* text) {
-    try {
-        fn();
-    } catch (const impulse2d::Error& e) {
-        return e.status() == status && std::string(e.what()).find(text) != std::string::npos;
-    }
-    return false;
-}
 
 }  // namespace
 
