@@ -519,8 +519,9 @@ class World:
         time, and what they cost adds to the step's time. The answer is fn's truth value.
         The world is locked while they run: any call on it raises WorldLocked. An
         exception fn raises gives the pair the answer True and is raised by step() once
-        the step is done (the first one, if several were). Snapshots, pickles and replays
-        keep the shapes' opt-ins but not the hooks."""
+        the step is done (the first one, if several were). Restoring a snapshot or state
+        in place keeps the hooks; a copy (from_snapshot, pickle, deepcopy) or a Replay has
+        the shapes' opt-ins but no hooks."""
         self._contact_hooks().set_pre_solve(fn)
 
     def explode(
