@@ -363,3 +363,19 @@ def test_a_dropped_world_with_hooks_is_destroyed_at_once():
         assert not _native.lib.i2d_world_is_valid(world_id)
     finally:
         gc.enable()
+
+
+def test_restoring_in_place_keeps_the_hooks_and_a_copy_has_none(world):
+    make_ground(world)
+    crate = world.create_body(position=(0.0, 0.5), enable_sleep=False)
+    shape = crate.create_box(0.5, 0.5, enable_pre_solve_events=True)
+    asked = []
+    world.set_pre_solve(lambda a, b, m: asked.append(a) is None)
+    data = world.save_snapshot()
+    world.restore_snapshot(data)
+    world.step()
+    assert len(asked) == 1
+    with impulse2d.World.from_snapshot(data) as copy:
+        assert copy.shape(shape).pre_solve_events_enabled  # the opt-in travels
+        copy.step()
+        assert len(asked) == 1  # the hook does not
