@@ -6,6 +6,7 @@ scene also runs without its hook, as the control that must fail the same check."
 import gc
 import math
 import threading
+import time
 
 import pytest
 
@@ -165,6 +166,10 @@ def ghost_pile(workers):
 
         def same_group(shape_a, shape_b, _manifold=None):
             threads.add(threading.get_ident())
+            if workers > 1 and len(threads) == 1:
+                # Holds its thread (without the GIL) a moment, so that the step's other
+                # threads take part of the work even when the machine is slow to wake them.
+                time.sleep(0.0002)
             return (shape_a in odd) == (shape_b in odd)
 
         world.set_custom_filter(same_group)
@@ -176,8 +181,9 @@ def ghost_pile(workers):
 def test_hooks_called_from_worker_threads_give_the_same_bits_as_one_thread():
     # With 4 workers the library finds this many new pairs on several threads at once, and
     # ctypes takes the GIL for each call; the answers depend only on the arguments, so the
-    # bits must be those of one thread. Which threads get work is the scheduler's choice:
-    # almost always several, so a few tries make sure the hooks ran on more than one.
+    # bits must be those of one thread. Which threads get work is the scheduler's choice
+    # (the hook waits a little while it has seen one thread only, to let the others in),
+    # so a few tries make sure the hooks ran on more than one.
     reference, threads = ghost_pile(1)
     assert len(threads) == 1
     for _attempt in range(5):
