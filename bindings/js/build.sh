@@ -33,10 +33,12 @@ mkdir -p "$dist"
 # -sENVIRONMENT=web: the loader then needs neither require nor __dirname, which an ES
 # module lacks in node; the binding hands node the .wasm bytes itself (wasmBinary).
 # -sFILESYSTEM=0: the library does no I/O.
+# -sALLOW_TABLE_GROWTH with addFunction and removeFunction: the contact hooks are JS
+# functions the library calls through its function table (World.setPreSolve).
 emcc -O3 "$library" -o "$dist/impulse2d_wasm.mjs" \
   -sMODULARIZE=1 -sEXPORT_ES6=1 -sEXPORT_NAME=createImpulse2dModule \
   -sENVIRONMENT=web -sWASM_BIGINT=1 -sALLOW_MEMORY_GROWTH=1 -sINITIAL_MEMORY=16MB \
-  -sFILESYSTEM=0 -sTOTAL_STACK=1MB \
+  -sFILESYSTEM=0 -sTOTAL_STACK=1MB -sALLOW_TABLE_GROWTH=1 \
   -sEXPORTED_FUNCTIONS="[${exports}\"_malloc\",\"_free\"]" \
-  -sEXPORTED_RUNTIME_METHODS='["UTF8ToString"]' -sINCOMING_MODULE_JS_API='["wasmBinary","instantiateWasm","print","printErr","locateFile"]'
+  -sEXPORTED_RUNTIME_METHODS='["UTF8ToString","addFunction","removeFunction"]' -sINCOMING_MODULE_JS_API='["wasmBinary","instantiateWasm","print","printErr","locateFile"]'
 echo "built $dist/impulse2d_wasm.mjs and $dist/impulse2d_wasm.wasm ($(stat -c %s "$dist/impulse2d_wasm.wasm") bytes)"

@@ -240,4 +240,11 @@ function writeShapeDef(rt, def, options) {
   if (options.enableContactEvents !== undefined) {
     u8[def + rt.field('i2d_shape_def.enable_contact_events')] = options.enableContactEvents ? 1 : 0;
   }
+  // The contact hooks' opt-ins (World.setCustomFilter, World.setPreSolve).
+  if (options.enableCustomFiltering !== undefined) {
+    u8[def + rt.field('i2d_shape_def.enable_custom_filtering')] = options.enableCustomFiltering ? 1 : 0;
+  }
+  if (options.enablePreSolveEvents !== undefined) {
+    u8[def + rt.field('i2d_shape_def.enable_pre_solve_events')] = options.enablePreSolveEvents ? 1 : 0;
+  }
 }

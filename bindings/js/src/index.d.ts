@@ -71,6 +71,28 @@ export interface ContactData {
   points: { point: Vec2; penetration: number; id: number; normalImpulse: number; tangentImpulse: number }[];
 }
 
+/** A contact's manifold as the pre-solve hook sees it (i2d_manifold): unit normal from A
+ *  to B and the touching points, one or two. */
+export interface Manifold {
+  normal: Vec2;
+  points: { point: Vec2; penetration: number; id: number }[];
+}
+
+/** World.setCustomFilter's hook: false and the two shapes never touch. Shapes the package
+ *  did not make come as ids. */
+export type CustomFilterFn = (shapeA: Shape | bigint, shapeB: Shape | bigint) => boolean;
+/** World.setPreSolve's hook: false and the contact is off for this step. */
+export type PreSolveFn = (shapeA: Shape | bigint, shapeB: Shape | bigint, manifold: Manifold) => boolean;
+
+/** A blast (i2d_explosion_def); a setting it does not have is a TypeError. */
+export interface ExplosionOptions {
+  position: Vec2Like;
+  radius?: number;                 // full strength within it; default 1, in [0, 1e6]
+  falloff?: number;                // fading linearly to nothing beyond the radius; default 0
+  impulsePerLength?: number;       // N s per length of outline facing the blast; default 1; negative pulls
+  maskBits?: number | bigint;      // categories pushed; default every bit
+}
+
 /** A convex shape for Impulse2d.shapeDistance: 1 to 8 points (its own frame), rounded by radius. */
 export interface DistanceShape { points: Vec2Like[]; radius?: number; position?: Vec2Like; angle?: number; }
 export interface DistanceResult { pointA: Vec2; pointB: Vec2; normal: Vec2; distance: number; }
@@ -94,6 +116,10 @@ export interface ShapeOptions {
   restitution?: number;            // default 0
   isSensor?: boolean;
   enableContactEvents?: boolean;
+  /** Pairs with this shape reach World.setCustomFilter's hook. */
+  enableCustomFiltering?: boolean;
+  /** Touching contacts of this shape reach World.setPreSolve's hook. */
+  enablePreSolveEvents?: boolean;
 }
 
 export type Geometry =
@@ -210,6 +236,8 @@ export class Shape {
   sensorEventsEnabled: boolean;
   contactEventsEnabled: boolean;
   hitEventsEnabled: boolean;
+  /** Whether its touching contacts reach World.setPreSolve's hook (from the next step). */
+  preSolveEventsEnabled: boolean;
   geometry(): Geometry;
   /** New geometry in the body frame (the kind may change); the body's mass is made again. */
   setCircle(radius: number, center?: Vec2Like): void;
@@ -463,7 +491,19 @@ export class World {
   readonly bodyByIndex: (Body | undefined)[];
   readonly bodies: Body[];
   isValid(): boolean;
+  /** Throws, once the step is done, the first error a contact hook threw during it. */
   step(timeStep?: number, substeps?: number): void;
+  /** Sets (null clears) the hook asked whether two shapes may ever touch, for pairs where
+   *  either has enableCustomFiltering. Hooks run inside step(), on its thread; any call on
+   *  the world from one throws I2D_ERR_WORLD_LOCKED; an error one throws gives the pair
+   *  true and is thrown by step(). */
+  setCustomFilter(fn: CustomFilterFn | null): void;
+  /** Sets (null clears) the hook asked every step whether a touching contact takes part,
+   *  for pairs where either shape has enablePreSolveEvents. As setCustomFilter otherwise. */
+  setPreSolve(fn: PreSolveFn | null): void;
+  /** Pushes every dynamic body with a shape within radius + falloff of position away from
+   *  it and wakes it (i2d_world_explode). */
+  explode(options: ExplosionOptions): void;
   get gravity(): Vec2;
   set gravity(g: Vec2Like);
   settings(): WorldSettings;

@@ -47,6 +47,10 @@ export const USES = {
   },
   i2d_shape_def: {
     density: 'float', friction: 'float', restitution: 'float', is_sensor: 'bool', enable_contact_events: 'bool',
+    enable_custom_filtering: 'bool', enable_pre_solve_events: 'bool',
+  },
+  i2d_explosion_def: {
+    mask_bits: 'uint64', position: 'i2d_vec2', radius: 'float', falloff: 'float', impulse_per_length: 'float',
   },
   i2d_circle: { center: 'i2d_vec2', radius: 'float' },
   i2d_capsule: { center1: 'i2d_vec2', center2: 'i2d_vec2', radius: 'float' },

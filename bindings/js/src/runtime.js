@@ -32,6 +32,7 @@ export class Runtime {
       world: this.readDefault('_i2d_default_world_def', 'i2d_world_def'),
       body: this.readDefault('_i2d_default_body_def', 'i2d_body_def'),
       shape: this.readDefault('_i2d_default_shape_def', 'i2d_shape_def'),
+      explosion: this.readDefault('_i2d_default_explosion_def', 'i2d_explosion_def'),
     };
     for (const kind of JOINT_KIND_NAMES) {
       this.defaults[`${kind}_joint`] = this.readDefault(`_i2d_default_${kind}_joint_def`, `i2d_${kind}_joint_def`);

@@ -72,6 +72,11 @@ export class Shape {
   set contactEventsEnabled(flag) { this.rt.check(this.rt.m._i2d_shape_enable_contact_events(this.id, flag ? 1 : 0)); }
   get hitEventsEnabled() { return this.getter('_i2d_shape_are_hit_events_enabled') !== 0; }
   set hitEventsEnabled(flag) { this.rt.check(this.rt.m._i2d_shape_enable_hit_events(this.id, flag ? 1 : 0)); }
+  /** Whether the shape's touching contacts reach World.setPreSolve's hook (from the next step). */
+  get preSolveEventsEnabled() { return this.getter('_i2d_shape_are_pre_solve_events_enabled') !== 0; }
+  set preSolveEventsEnabled(flag) {
+    this.rt.check(this.rt.m._i2d_shape_enable_pre_solve_events(this.id, flag ? 1 : 0));
+  }
 
   // New geometry in the body frame (the kind may change): the body's mass is made again
   // from its shapes and it wakes.

@@ -2,7 +2,9 @@
 // A world: stepping, bodies, joints, queries, events and snapshots over an i2d_world_id.
 import { Body, BODY_TYPES } from './body.js';
 import { BodyMoves } from './body_moves.js';
+import { ContactHooks } from './hooks.js';
 import { createJoint } from './joint.js';
+import { readManifold } from './manifold.js';
 import { Shape } from './shape.js';
 import { rememberStructure, saveBytes, structureOf, withBytesInModule } from './snapshot.js';
 import { vx, vy } from './vectors.js';
@@ -18,6 +20,8 @@ export class World {
     this.shapeById = new Map();
     /** Live joints by id, in creation order: what joint events are mapped back through. */
     this.jointById = new Map();
+    /** @internal The custom filter and pre-solve functions set on the world. */
+    this.hooks = new ContactHooks(this);
   }
 
   /** @internal A new world with the given options (Impulse2d.createWorld). */
@@ -94,9 +98,49 @@ export class World {
 
   isValid() { return this.rt.m._i2d_world_is_valid(this.id) !== 0; }
 
-  /** Advances by timeStep seconds in substeps equal substeps. */
+  /** Advances by timeStep seconds in substeps equal substeps; then throws the first error
+   *  a contact hook threw during the step, if one did. */
   step(timeStep = 1 / 60, substeps = 4) {
-    this.rt.check(this.rt.m._i2d_world_step(this.id, timeStep, substeps));
+    const status = this.rt.m._i2d_world_step(this.id, timeStep, substeps);
+    const raised = this.hooks.takeRaised();
+    this.rt.check(status);
+    if (raised.length > 0) throw raised[0];
+  }
+
+  /**
+   * fn(shapeA, shapeB) decides whether two shapes may ever touch (false: they pass through
+   * each other); null clears it. Asked when the pair is found, for pairs where either
+   * shape has enableCustomFiltering. Runs inside step() as setPreSolve's hook does.
+   */
+  setCustomFilter(fn) { this.hooks.set('customFilter', fn, 'setCustomFilter'); }
+
+  /**
+   * fn(shapeA, shapeB, manifold) decides whether a touching contact takes part in this
+   * step (false: no impulse, no begin event this step); null clears it. Asked every step
+   * the pair touches, for pairs where either shape has enablePreSolveEvents; manifold is
+   * {normal (from A to B), points: [{point, penetration, id}]}. The hooks run inside
+   * step(), on its thread; the world is locked meanwhile (any call on it throws
+   * I2D_ERR_WORLD_LOCKED). An error a hook throws gives the pair true and is thrown by
+   * step() once the step is done.
+   */
+  setPreSolve(fn) { this.hooks.set('preSolve', fn, 'setPreSolve'); }
+
+  /**
+   * A blast at position (i2d_world_explode): every dynamic body with a shape within
+   * radius (default 1) + falloff (default 0) of it, whose category meets maskBits (default
+   * every bit; a number or a BigInt), is pushed away by impulsePerLength (default 1) N s
+   * per length of its outline facing the blast, fading linearly over the falloff, and
+   * woken. A negative impulse pulls. A setting the blast does not have is a TypeError.
+   */
+  explode(options = {}) {
+    const rt = this.rt;
+    const def = rt.defBlock('explosion');
+    try {
+      writeExplosionDef(rt, def, options);
+      rt.check(rt.m._i2d_world_explode(this.id, def));
+    } finally {
+      rt.m._free(def);
+    }
   }
 
   get gravity() {
@@ -303,6 +347,7 @@ export class World {
   /** Destroys the world and everything in it. */
   destroy() {
     this.rt.check(this.rt.m._i2d_world_destroy(this.id));
+    this.hooks.release();
     this.bodyByIndex = [undefined];
     this.freeIndices = [];
     this.shapeById.clear();
@@ -317,8 +362,6 @@ export class World {
     const rt = this.rt;
     const stride = rt.size('i2d_contact_data');
     const field = (name) => rt.field(`i2d_contact_data.${name}`);
-    const manifold = field('manifold');
-    const pointStride = rt.size('i2d_manifold_point');
     const read = (out, count) => {
       const entries = [];
       for (let i = 0; i < count; i++) {
@@ -327,21 +370,12 @@ export class World {
           const shapeId = rt.u64[(at + field(name)) >> 3];
           return this.shapeById.get(shapeId) ?? shapeId;
         };
-        const m = at + manifold;
-        const pointCount = rt.i32[(m + rt.field('i2d_manifold.point_count')) >> 2];
-        const points = [];
-        for (let j = 0; j < pointCount; j++) {
-          const p = m + rt.field('i2d_manifold.points') + j * pointStride;
-          points.push({
-            point: rt.readVec2(p + rt.field('i2d_manifold_point.point')),
-            penetration: rt.f32[(p + rt.field('i2d_manifold_point.penetration')) >> 2],
-            id: rt.u32[(p + rt.field('i2d_manifold_point.id')) >> 2],
-            normalImpulse: rt.f32[((at + field('normal_impulses')) >> 2) + j],
-            tangentImpulse: rt.f32[((at + field('tangent_impulses')) >> 2) + j],
-          });
-        }
-        entries.push({ shapeA: shape('shape_a'), shapeB: shape('shape_b'),
-                       normal: rt.readVec2(m + rt.field('i2d_manifold.normal')), points });
+        const { normal, points } = readManifold(rt, at + field('manifold'));
+        points.forEach((p, j) => {
+          p.normalImpulse = rt.f32[((at + field('normal_impulses')) >> 2) + j];
+          p.tangentImpulse = rt.f32[((at + field('tangent_impulses')) >> 2) + j];
+        });
+        entries.push({ shapeA: shape('shape_a'), shapeB: shape('shape_b'), normal, points });
       }
       return entries;
     };
@@ -473,6 +507,23 @@ export function readWorldDef(rt, at) {
     hitEventThreshold: float('hit_event_threshold'),
     lengthUnitsPerMeter: float('length_units_per_meter'),
   };
+}
+
+const EXPLOSION_SETTINGS = ['position', 'radius', 'falloff', 'impulsePerLength', 'maskBits'];
+
+function writeExplosionDef(rt, def, options) {
+  for (const name of Object.keys(options)) {
+    if (!EXPLOSION_SETTINGS.includes(name)) {
+      throw new TypeError(`an explosion has no setting '${name}'; known: ${EXPLOSION_SETTINGS.join(', ')}`);
+    }
+  }
+  const field = (name) => def + rt.field(`i2d_explosion_def.${name}`);
+  // Always written: a missing position reads as NaN, which the library refuses.
+  rt.writeVec2(field('position'), vx(options.position), vy(options.position));
+  if (options.radius !== undefined) rt.f32[field('radius') >> 2] = options.radius;
+  if (options.falloff !== undefined) rt.f32[field('falloff') >> 2] = options.falloff;
+  if (options.impulsePerLength !== undefined) rt.f32[field('impulse_per_length') >> 2] = options.impulsePerLength;
+  if (options.maskBits !== undefined) rt.u64[field('mask_bits') >> 3] = BigInt.asUintN(64, BigInt(options.maskBits));
 }
 
 function writeBodyDef(rt, def, options, index) {

@@ -27,6 +27,8 @@ Snapshots (World.save_snapshot, from_snapshot, restore_snapshot) and rollback st
 (save_state, restore_state) bring a world back bit for bit; a World pickles and
 deep-copies through a snapshot. World.start_recording streams every change and step;
 Replay replays such a recording and names the first step whose hash differs.
+Contact hooks (World.set_custom_filter, World.set_pre_solve) decide pair by pair whether
+shapes touch: one-way platforms, ghosts; World.explode pushes what is near a blast.
 
 The native library is found through IMPULSE2D_LIBRARY, next to this package, in the
 source tree's build directories or where ``cmake --install`` put it; its struct layouts
@@ -58,6 +60,7 @@ from .types import (
     ContactEnd,
     Counters,
     DistanceResult,
+    Manifold,
     ManifoldPoint,
     MassData,
     RayHit,
@@ -98,6 +101,7 @@ __all__ = [
     "Counters",
     "MassData",
     "SurfaceMaterial",
+    "Manifold",
     "ManifoldPoint",
     "ContactData",
     "DistanceResult",

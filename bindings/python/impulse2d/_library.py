@@ -32,6 +32,10 @@ _STATUS = C.c_int32
 _PTR = C.c_void_p  # arrays passed as addresses (NumPy's arr.ctypes.data)
 _OVERLAP_FN = C.CFUNCTYPE(C.c_bool, _ID, C.c_void_p)
 _WRITE_FN = C.CFUNCTYPE(None, C.c_void_p, C.c_size_t, C.c_void_p)
+# The contact hooks (toolkit.h). The manifold arrives as an address: its class is built
+# at load, after these types.
+_CUSTOM_FILTER_FN = C.CFUNCTYPE(C.c_bool, _ID, _ID, C.c_void_p)
+_PRE_SOLVE_FN = C.CFUNCTYPE(C.c_bool, _ID, _ID, C.c_void_p, C.c_void_p)
 
 
 def signatures(S: _structs.Structs) -> Dict[str, Tuple[Any, List[Any]]]:
@@ -43,6 +47,7 @@ def signatures(S: _structs.Structs) -> Dict[str, Tuple[Any, List[Any]]]:
     QueryFilter, RayResult, Rot, Segment, ShapeDef = S.QueryFilter, S.RayResult, S.Rot, S.Segment, S.ShapeDef
     Transform, Vec2, WorldCounters, WorldDef = S.Transform, S.Vec2, S.WorldCounters, S.WorldDef
     MassData, SurfaceMaterial, ShapeProxy, DistanceResult = S.MassData, S.SurfaceMaterial, S.ShapeProxy, S.DistanceResult
+    ExplosionDef = S.ExplosionDef
     return {
         "i2d_version": (C.c_uint32, []),
         "i2d_status_string": (C.c_char_p, [C.c_int32]),
@@ -90,6 +95,11 @@ def signatures(S: _structs.Structs) -> Dict[str, Tuple[Any, List[Any]]]:
         "i2d_world_set_hit_event_threshold": (_STATUS, [_ID, C.c_float]),
         "i2d_world_shift_origin": (_STATUS, [_ID, Vec2]),
         "i2d_simd_path_supported": (C.c_bool, [C.c_int32]),
+        # contact hooks and explosions (toolkit.h)
+        "i2d_world_set_custom_filter_callback": (_STATUS, [_ID, _CUSTOM_FILTER_FN, C.c_void_p]),
+        "i2d_world_set_pre_solve_callback": (_STATUS, [_ID, _PRE_SOLVE_FN, C.c_void_p]),
+        "i2d_default_explosion_def": (ExplosionDef, []),
+        "i2d_world_explode": (_STATUS, [_ID, C.POINTER(ExplosionDef)]),
         # snapshots and rollback states (snapshot.h); buffers passed as addresses or bytes
         "i2d_world_get_snapshot_size": (C.c_size_t, [_ID]),
         "i2d_world_save_snapshot": (_STATUS, [_ID, _PTR, C.c_size_t, C.POINTER(C.c_size_t)]),
@@ -200,6 +210,8 @@ def signatures(S: _structs.Structs) -> Dict[str, Tuple[Any, List[Any]]]:
         "i2d_shape_are_contact_events_enabled": (C.c_bool, [_ID]),
         "i2d_shape_enable_hit_events": (_STATUS, [_ID, C.c_bool]),
         "i2d_shape_are_hit_events_enabled": (C.c_bool, [_ID]),
+        "i2d_shape_enable_pre_solve_events": (_STATUS, [_ID, C.c_bool]),
+        "i2d_shape_are_pre_solve_events_enabled": (C.c_bool, [_ID]),
     }
 
 

@@ -83,6 +83,9 @@ USES: Dict[str, Dict[str, str]] = {
     "i2d_shape_proxy": {"points": _VEC2 + "[]", "count": "int32", "radius": "float"},
     "i2d_distance_result": {"point_a": _VEC2, "point_b": _VEC2, "normal": _VEC2, "distance": "float"},
     "i2d_joint_event": {"joint": "i2d_joint_id"},
+    "i2d_explosion_def": {
+        "mask_bits": "uint64", "position": _VEC2, "radius": "float", "falloff": "float", "impulse_per_length": "float",
+    },
 }
 # Every joint def: its base (its own settings pass through by name, as with the other defs).
 USES.update({"i2d_%s_joint_def" % kind: {"base": "i2d_joint_base"} for kind in JOINT_KINDS})

@@ -378,7 +378,9 @@ class Body:
     def create_circle(self, radius: float, center: Sequence[float] = (0.0, 0.0), **settings: Any) -> Shape:
         """A circle centred at center (body frame). Settings are the shape def's fields:
         density, friction, restitution, rolling_resistance, tangent_speed, is_sensor,
-        enable_contact_events, enable_sensor_events, filter."""
+        enable_contact_events, enable_sensor_events, filter, and the contact hooks'
+        opt-ins enable_custom_filtering and enable_pre_solve_events (World.set_custom_filter,
+        World.set_pre_solve)."""
         circle = Circle(center=vec2(center), radius=radius)
         return self._created(lib.i2d_shape_create_circle(self._id, C.byref(self._shape_def(settings)), C.byref(circle)))
 

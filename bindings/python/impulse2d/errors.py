@@ -29,7 +29,8 @@ class InvalidHandle(Impulse2DError):
 
 
 class WorldLocked(Impulse2DError):
-    """I2D_ERR_WORLD_LOCKED: the world was changed from inside a query callback."""
+    """I2D_ERR_WORLD_LOCKED: the world was changed from inside a query callback, or called
+    at all from inside a contact hook."""
 
     status = 3
 

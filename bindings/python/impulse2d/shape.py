@@ -7,7 +7,7 @@ from typing import TYPE_CHECKING, Any, Callable, List, Sequence, Tuple, Union
 from ._native import check, check_last, lib, make_filter, pair, rot, vec2
 from ._structs import Capsule, Circle, ContactData as _ContactData, Filter, Polygon, Segment
 from ._structs import SurfaceMaterial as _SurfaceMaterial, Transform, Vec2
-from .types import ContactData, DistanceResult, ManifoldPoint, ShapeType, SurfaceMaterial, Vec
+from .types import ContactData, DistanceResult, Manifold, ManifoldPoint, ShapeType, SurfaceMaterial, Vec
 
 if TYPE_CHECKING:  # pragma: no cover
     from .body import Body
@@ -204,6 +204,19 @@ class Shape:
     def hit_events_enabled(self, value: bool) -> None:
         check(lib.i2d_shape_enable_hit_events(self._id, value))
 
+    @property
+    def pre_solve_events_enabled(self) -> bool:
+        """Whether the shape's touching contacts reach World.set_pre_solve's hook
+        (enable_pre_solve_events); a change applies from the next step."""
+        value = lib.i2d_shape_are_pre_solve_events_enabled(self._id)
+        if not value:
+            check_last()
+        return bool(value)
+
+    @pre_solve_events_enabled.setter
+    def pre_solve_events_enabled(self, value: bool) -> None:
+        check(lib.i2d_shape_enable_pre_solve_events(self._id, value))
+
     # ---- New geometry --------------------------------------------------------------------
     # Checked as at creation; the kind may change (a chain's segments are refused). The
     # body's mass is made again from its shapes (unless Body.mass_data overrode it), its
@@ -278,16 +291,21 @@ def _contacts(world: "World", get: Callable[..., int], owner_id: int) -> List[Co
         count = total
     found = []
     for c in array[:total]:
-        m = c.manifold
-        n = m.point_count
-        points = tuple(ManifoldPoint(pair(p.point), p.penetration, p.id) for p in m.points[:n])
+        m = manifold_of(c.manifold)
+        n = len(m.points)
         found.append(
             ContactData(
-                Shape(world, c.shape_a), Shape(world, c.shape_b), pair(m.normal), points,
+                Shape(world, c.shape_a), Shape(world, c.shape_b), m.normal, m.points,
                 tuple(c.normal_impulses[:n]), tuple(c.tangent_impulses[:n]),
             )
         )
     return found
+
+
+def manifold_of(m: Any) -> Manifold:
+    """A C i2d_manifold as the package's Manifold: its normal and its point_count points."""
+    points = tuple(ManifoldPoint(pair(p.point), p.penetration, p.id) for p in m.points[: m.point_count])
+    return Manifold(pair(m.normal), points)
 
 
 def shape_distance(

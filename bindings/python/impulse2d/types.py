@@ -125,6 +125,14 @@ class ManifoldPoint(NamedTuple):
     id: int  #: feature key, stable from step to step for the same features
 
 
+class Manifold(NamedTuple):
+    """A contact's manifold as the pre-solve hook sees it (i2d_manifold): the unit normal
+    from shape A to shape B and the touching points, one to two."""
+
+    normal: Vec
+    points: Tuple[ManifoldPoint, ...]
+
+
 class ContactData(NamedTuple):
     """A touching contact as the last step left it (i2d_contact_data): its shapes (in the
     order contact events name them), the unit normal from A to B, its manifold points and

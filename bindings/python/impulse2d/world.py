@@ -6,6 +6,7 @@ from typing import Any, Callable, Dict, Iterable, List, Optional, Sequence, Tupl
 
 from ._native import apply_settings, check, check_last, lib, pair, rot, vec2
 from ._structs import AABB, QueryFilter
+from ._hooks import Hooks
 from ._library import _OVERLAP_FN, _WRITE_FN
 from . import joint as _joint
 from .body import Body
@@ -19,6 +20,7 @@ from .types import (
     ContactBegin,
     ContactEnd,
     Counters,
+    Manifold,
     RayHit,
     SensorBegin,
     SensorEnd,
@@ -139,6 +141,7 @@ class World:
             world_id, self._id = self._id, 0
             self._user_data.clear()
             check(lib.i2d_world_destroy(world_id))
+            self._hooks = None  # the library no longer calls them
 
     @classmethod
     def _borrow(cls, world_id: int) -> "World":
@@ -154,6 +157,7 @@ class World:
         """Its owner destroyed it: the id is no longer this object's to use."""
         self._id = 0
         self._user_data.clear()
+        self._hooks = None
 
     @property
     def id(self) -> int:
@@ -170,8 +174,14 @@ class World:
     # ---- Stepping and settings -----------------------------------------------------------
 
     def step(self, time_step: float = 1.0 / 60.0, substeps: int = 4) -> None:
-        """Advances the world by time_step seconds in substeps equal substeps."""
-        check(lib.i2d_world_step(self._id, time_step, substeps))
+        """Advances the world by time_step seconds in substeps equal substeps. Raises,
+        once the step is done, the first exception a contact hook raised during it."""
+        status = lib.i2d_world_step(self._id, time_step, substeps)
+        hooks = getattr(self, "_hooks", None)
+        raised = hooks.take_raised() if hooks is not None else None
+        check(status)
+        if raised is not None:
+            raise raised
 
     @property
     def gravity(self) -> Vec:
@@ -480,6 +490,61 @@ class World:
                 BodyQuarantine(Body(self, q.body), (xf.p.x, xf.p.y), (xf.q.c, xf.q.s), BodyType(q.former_type))
             )
         return frozen
+
+    # ---- Contact hooks and explosions (include/impulse2d/toolkit.h) ------------------------
+
+    def _contact_hooks(self) -> Hooks:
+        hooks = getattr(self, "_hooks", None)
+        if hooks is None:
+            hooks = self._hooks = Hooks(self)
+        return hooks
+
+    def set_custom_filter(self, fn: Optional[Callable[[Shape, Shape], bool]]) -> None:
+        """fn(shape_a, shape_b) decides whether two shapes may ever touch (false: they pass
+        through each other), or None clears it. It is asked when the pair is found (their
+        bounds meet), only for pairs where either shape was created with
+        enable_custom_filtering=True; pairs already in contact keep it until their bounds
+        part. See set_pre_solve for when it runs and what it may do."""
+        self._contact_hooks().set_custom_filter(fn)
+
+    def set_pre_solve(self, fn: Optional[Callable[[Shape, Shape, Manifold], bool]]) -> None:
+        """fn(shape_a, shape_b, manifold) decides whether a touching contact takes part in
+        this step (false: no impulse, no begin event this step), or None clears it. It is
+        asked every step the pair touches, after the narrowphase, only for pairs where
+        either shape has pre_solve_events_enabled (enable_pre_solve_events=True); manifold
+        is a Manifold whose normal points from shape_a to shape_b.
+
+        Both hooks run inside step(), one Python call per pair asked, on the library's
+        worker threads when it has several: each call takes the GIL, so they run one at a
+        time, and what they cost adds to the step's time. The answer is fn's truth value.
+        The world is locked while they run: any call on it raises WorldLocked. An
+        exception fn raises gives the pair the answer True and is raised by step() once
+        the step is done (the first one, if several were). Restoring a snapshot or state
+        in place keeps the hooks; a copy (from_snapshot, pickle, deepcopy) or a Replay has
+        the shapes' opt-ins but no hooks."""
+        self._contact_hooks().set_pre_solve(fn)
+
+    def explode(
+        self,
+        position: Sequence[float],
+        radius: float = 1.0,
+        falloff: float = 0.0,
+        impulse_per_length: float = 1.0,
+        mask_bits: int = _ALL_BITS,
+    ) -> None:
+        """Pushes every dynamic body with a shape (whose category_bits meet mask_bits)
+        within radius + falloff of position, away from it, and wakes it: impulse_per_length
+        N s per length of the shape's outline that faces the blast, at full strength within
+        radius and fading linearly to nothing over falloff (measured to the shape's closest
+        point). A disc of radius r and mass m within radius leaves at
+        impulse_per_length * 2r / m. Negative impulse_per_length pulls. Sensors are not
+        pushed. InvalidArgument for a position that is not finite, a radius or falloff
+        outside [0, 1e6] or an impulse_per_length outside [-1e6, 1e6] (NaN included)."""
+        blast = lib.i2d_default_explosion_def()
+        blast.position = vec2(position)
+        blast.radius, blast.falloff, blast.impulse_per_length = radius, falloff, impulse_per_length
+        blast.mask_bits = mask_bits
+        check(lib.i2d_world_explode(self._id, C.byref(blast)))
 
     # ---- Queries ---------------------------------------------------------------------------
 
