@@ -51,12 +51,13 @@ bool Call::decode(uint64_t bits, IdKind kind, const char* kind_name, IdFields& f
         return kind == IdKind::world ? fail(I2D_ERR_INVALID_HANDLE, "world id is stale: the world was destroyed")
                                      : fail(I2D_ERR_INVALID_HANDLE, "the %s's world was destroyed", kind_name);
     }
-    // Only a job system's callbacks run user code inside a step, while the world's other
-    // workers may be changing any of it: nothing of the world may be read or changed.
+    // Inside a step only a job system's callbacks and the contact hooks run user code,
+    // while the world's other workers may be changing any of it: nothing of the world may
+    // be read or changed.
     if (world->is_stepping()) {
         return fail(I2D_ERR_WORLD_LOCKED,
-                    "called from inside the world's step (its job system's enqueue_task or finish_task); make "
-                    "this call after i2d_world_step returns");
+                    "called from inside the world's step (a contact hook, or its job system's enqueue_task or "
+                    "finish_task); make this call after i2d_world_step returns");
     }
     return true;
 }
