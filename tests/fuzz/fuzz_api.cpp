@@ -5,7 +5,8 @@
 // what the program holds, floats from a table of hostile values or raw bits, sizes and
 // counts of any sign). Ids are kept after their objects die, so stale, foreign (a body's
 // bits passed as a shape) and null ids are used on purpose. Query and ray callbacks call
-// back into the library and try to destroy things. Joints are made between any held
+// back into the library and try to destroy things, as the debug draw's callbacks do, which
+// also check that every float they are handed is finite. Joints are made between any held
 // bodies (of any world, live or dead) with hostile settings, then changed, read and
 // broken. The library must never crash, leak or trip a sanitizer, and a world (into
 // which the API accepts only finite values) must never report a non-finite position,
@@ -1095,6 +1096,7 @@ void run_pure_call(FuzzInput& in, uint8_t op) {
 constexpr uint8_t joint_sub_first = 30;
 
 #include "fuzz_runtime_calls.inl"
+#include "fuzz_draw_calls.inl"
 
 // Shape instructions from this sub-opcode on are runtime API calls.
 constexpr uint8_t runtime_sub_first = 26;
@@ -1123,6 +1125,8 @@ void run_program(FuzzInput& in) {
             run_runtime_call(in, sub);
         } else if (group == 3) {
             run_shape_call(in, sub % 13);
+        } else if (group == 4 && sub >= 24 && sub < 34) {
+            run_draw_call(in, sub);
         } else if (group == 4) {
             run_query_call(in, sub % 7);
         } else {
