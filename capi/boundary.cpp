@@ -128,7 +128,7 @@ bool Call::chain(i2d_chain_id id, ChainRef& out) {
 bool Call::unlocked(const World& world) {
     if (world.is_locked()) {
         return fail(I2D_ERR_WORLD_LOCKED,
-                    "called from inside a query callback; make this call after the query returns");
+                    "called from inside a query callback or a draw callback; make this call after it returns");
     }
     return true;
 }

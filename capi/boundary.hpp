@@ -74,7 +74,7 @@ public:
     bool shape(i2d_shape_id id, ShapeRef& out);
     bool joint(i2d_joint_id id, JointRef& out);
     bool chain(i2d_chain_id id, ChainRef& out);
-    /// Fails with I2D_ERR_WORLD_LOCKED inside a query callback.
+    /// Fails with I2D_ERR_WORLD_LOCKED inside a query or draw callback.
     bool unlocked(const World& world);
 
     bool finite(float v, const char* what);

@@ -43,11 +43,13 @@ endif()
 
 file(SIZE ${SVG} size)
 file(READ ${SVG} text)
-# The scene draws 5 circles (4 balls, a disc), about 35 polygons (boxes, walls, ledge, ramp,
-# triangle, pentagon, and dashed start outlines), 2 rounded shapes as <path> (a capsule and a
+# The picture comes through i2d_world_draw (the bodies now, then dashed where the moving ones
+# started). The scene draws 5 circles (4 balls, a disc), about 35 polygons (boxes, walls, ledge,
+# ramp, triangle, pentagon, and dashed start outlines), 2 rounded shapes as <path> (a capsule and a
 # rounded polygon) and 8 polylines (4 ball paths, 3 centres, the disc's rim point). The joint
-# floor adds 36 circles (the car's 2 wheels, the bump, 33 joint dots), 23 polygons (20 planks,
-# 2 posts, the chassis; its floor's 3 boxes) and 13 paths (the ragdoll's 11 capsules and 2 feet).
+# floor adds at least 36 circles (the car's 2 wheels, the bump, a dot at each of the 33 joints'
+# anchors), 23 polygons (20 planks, 2 posts, the chassis; its floor's 3 boxes) and 13 paths (the
+# ragdoll's 11 capsules and 2 feet).
 set(counts "")
 set(too_few FALSE)
 foreach(kind_min IN ITEMS "circle:41" "polygon:56" "path:15" "polyline:8")

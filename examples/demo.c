@@ -1,5 +1,6 @@
 /* SPDX-License-Identifier: MIT */
-/* The demo: a small scene that shows what impulse2d does, reported as text and drawn as SVG.
+/* The demo: a small scene that shows what impulse2d does, reported as text and drawn as SVG
+ * through the debug draw (i2d_world_draw with callbacks that write SVG elements).
  *
  * Usage: impulse2d_demo [output.svg]   (default: impulse2d_demo.svg in the working directory)
  *
@@ -133,8 +134,6 @@ static const float ball_restitution[BALL_COUNT] = {0.0f, 0.3f, 0.6f, 0.9f};
 #define BUMP_RADIUS 0.5f      /* buried in the 1 m thick ground but for its top */
 #define BUMP_HEIGHT 0.15f      /* how far the bump (a static disc) stands out of the ground */
 
-#define MAX_BODIES 96
-#define MAX_SHAPES_PER_BODY 64 /* the chain's body holds 60 segments */
 
 static const i2d_vec2 still = {0.0f, 0.0f};
 
@@ -159,7 +158,7 @@ typedef struct ball {
     float apex;     /* highest bottom height above the ground after the first bounce, m */
 } ball;
 
-/* The bodies followed by name; each gets a start outline in the picture. */
+/* The bodies followed by name. */
 enum {
     T_HEAVY, T_LIGHT, T_PLATFORM, T_RIDER, /* top floor */
     T_TIPPER, T_DISC, T_CAPSULE,           /* bottom floor; then the dropped shapes: */
@@ -169,8 +168,6 @@ enum {
 
 typedef struct demo {
     i2d_world_id world;
-    i2d_body_id bodies[MAX_BODIES]; /* every body, for drawing */
-    int body_count;
     tracked t[T_COUNT];
     ball balls[BALL_COUNT];
     i2d_body_id stack_top, pyramid_top;
@@ -204,6 +201,9 @@ typedef struct demo {
     /* The snapshot saved after step SNAPSHOT_STEP, and the state hash at the end of the run. */
     void* snapshot;
     size_t snapshot_size;
+    /* The world as built, before the first step: the picture draws it dashed (start outlines). */
+    void* start;
+    size_t start_size;
     uint64_t end_hash;
 } demo;
 
@@ -305,6 +305,21 @@ static double seconds_now(void) {
     return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
 }
 
+/* The world as it is, as a snapshot in a buffer of its own (i2d_world_save_snapshot: everything
+ * it simulates); its size goes to *size. */
+static void* save_world(i2d_world_id world, size_t* size) {
+    void* bytes;
+    *size = i2d_world_get_snapshot_size(world);
+    check_last("i2d_world_get_snapshot_size");
+    bytes = malloc(*size);
+    if (bytes == NULL) {
+        fprintf(stderr, "impulse2d_demo: out of memory for a %zu-byte snapshot\n", *size);
+        exit(EXIT_FAILURE);
+    }
+    check(i2d_world_save_snapshot(world, bytes, *size, NULL), "i2d_world_save_snapshot");
+    return bytes;
+}
+
 /* ---- Building the scene ------------------------------------------------------------- */
 
 static i2d_body_id add_body(demo* d, i2d_body_type type, i2d_vec2 p, float angle, i2d_vec2 v) {
@@ -318,11 +333,6 @@ static i2d_body_id add_body(demo* d, i2d_body_type type, i2d_vec2 p, float angle
     if (I2D_IS_NULL(body)) {
         fail("i2d_body_create");
     }
-    if (d->body_count == MAX_BODIES) {
-        fprintf(stderr, "impulse2d_demo: more than %d bodies\n", MAX_BODIES);
-        exit(EXIT_FAILURE);
-    }
-    d->bodies[d->body_count++] = body;
     return body;
 }
 
@@ -526,16 +536,8 @@ static void build_ragdoll(demo* d) {
     float middle_x = i2d_body_get_world_point(d->planks[BRIDGE_PLANKS / 2], vec2(-PLANK_HALF_LENGTH, 0.0f)).x;
     /* The feet are 0.275 m above the spawn point (scenes.md). */
     bench_ragdoll_def def = bench_default_ragdoll_def(row3(middle_x, RAGDOLL_FEET - 0.275f), 1);
-    int bone;
     if (!bench_ragdoll_create(d->world, &def, &d->ragdoll)) {
         fail("bench_ragdoll_create");
-    }
-    for (bone = 0; bone < BENCH_BONE_COUNT; ++bone) {
-        if (d->body_count == MAX_BODIES) {
-            fprintf(stderr, "impulse2d_demo: more than %d bodies\n", MAX_BODIES);
-            exit(EXIT_FAILURE);
-        }
-        d->bodies[d->body_count++] = d->ragdoll.bodies[bone];
     }
 }
 
@@ -590,7 +592,7 @@ static void build_chain_ground(i2d_body_id body) {
 }
 
 /* The thin wall and a bullet fired at it; the bullet is a circle of 5 cm radius. */
-static i2d_body_id build_wall_and_bullet(i2d_world_id world, demo* d) {
+static i2d_body_id build_wall_and_bullet(i2d_world_id world) {
     i2d_body_def wall_def = i2d_default_body_def(), bullet_def = i2d_default_body_def();
     i2d_shape_def shape = shape_def(1.0f, FRICTION, 0.0f);
     i2d_body_id wall, bullet;
@@ -604,14 +606,6 @@ static i2d_body_id build_wall_and_bullet(i2d_world_id world, demo* d) {
     bullet = i2d_body_create(world, &bullet_def);
     if (I2D_IS_NULL(wall) || I2D_IS_NULL(bullet)) {
         fail("i2d_body_create");
-    }
-    if (d) { /* drawn with the scene */
-        if (d->body_count + 2 > MAX_BODIES) {
-            fprintf(stderr, "impulse2d_demo: more than %d bodies\n", MAX_BODIES);
-            exit(EXIT_FAILURE);
-        }
-        d->bodies[d->body_count++] = wall;
-        d->bodies[d->body_count++] = bullet;
     }
     add_box(wall, &shape, THIN_WALL_HALF, BULLET_HEIGHT);
     add_circle(bullet, &shape, BULLET_RADIUS);
@@ -628,7 +622,7 @@ static void build_chain_level(demo* d) {
     add_box(d->chain_box, &slick, 0.4f, 0.25f);
     d->chain_ball = add_body(d, I2D_BODY_DYNAMIC, vec2(-5.0f, hill(-5.0f) + 1.0f), 0.0f, vec2(3.0f, 0.0f));
     add_circle(d->chain_ball, &slick, 0.35f);
-    d->bullet = build_wall_and_bullet(d->world, d);
+    d->bullet = build_wall_and_bullet(d->world);
     d->bullet_max_x = position(d->bullet).x;
 }
 
@@ -643,7 +637,7 @@ static void run_control_shot(demo* d) {
     if (I2D_IS_NULL(world)) {
         fail("i2d_world_create");
     }
-    bullet = build_wall_and_bullet(world, NULL);
+    bullet = build_wall_and_bullet(world);
     d->control_max_x = position(bullet).x;
     for (step = 0; step < 30; ++step) {
         check(i2d_world_step(world, TIME_STEP, SUBSTEPS), "i2d_world_step");
@@ -677,6 +671,7 @@ static void build_scene(demo* d) {
     d->momentum_before = mass(d->t[T_HEAVY].body) * velocity(d->t[T_HEAVY].body).x +
                          mass(d->t[T_LIGHT].body) * velocity(d->t[T_LIGHT].body).x;
     d->heavy_v_before = velocity(d->t[T_HEAVY].body).x;
+    d->start = save_world(d->world, &d->start_size);
 }
 
 /* ---- Watching it run ------------------------------------------------------------------ */
@@ -779,17 +774,7 @@ static void watch_joints(demo* d) {
     }
 }
 
-/* Saves the world as it is into d->snapshot (i2d_world_save_snapshot: everything it simulates). */
-static void save_snapshot(demo* d) {
-    d->snapshot_size = i2d_world_get_snapshot_size(d->world);
-    check_last("i2d_world_get_snapshot_size");
-    d->snapshot = malloc(d->snapshot_size);
-    if (d->snapshot == NULL) {
-        fprintf(stderr, "impulse2d_demo: out of memory for a %zu-byte snapshot\n", d->snapshot_size);
-        exit(EXIT_FAILURE);
-    }
-    check(i2d_world_save_snapshot(d->world, d->snapshot, d->snapshot_size, NULL), "i2d_world_save_snapshot");
-}
+static void save_snapshot(demo* d) { d->snapshot = save_world(d->world, &d->snapshot_size); }
 
 static void run(demo* d) {
     int step, i;
@@ -1012,137 +997,191 @@ typedef struct view {
 static float px(const view* v, float x) { return (x - v->min_x) * v->scale; }
 static float py(const view* v, float y) { return (v->max_y - y) * v->scale; }
 
-/* How a shape is painted: fill "none" and a dash pattern for start outlines. */
-typedef struct style {
-    const char* fill;
-    const char* stroke;
-    const char* dash; /* NULL for a solid line */
-} style;
+/* An SVG backend of the debug draw: i2d_world_draw hands it the world through these callbacks
+ * (shapes in colours that say their bodies' state, joints, as toolkit.h lists them), and it
+ * writes each as an SVG element. A dashed canvas draws outlines only, of what moves. */
+typedef struct canvas {
+    FILE* f;
+    const view* v;
+    int dashed; /* start outlines: no fill, a dashed line, static shapes left out */
+} canvas;
 
-/* By body type: static, kinematic, dynamic. */
-static const style body_styles[3] = {
-    {"#b4b4b4", "#6c6c6c", NULL}, {"#5b9bd5", "#2e5f8f", NULL}, {"#f5a045", "#a85a12", NULL}};
+#define STROKE_SHADE 0.6f /* the outline is the fill's colour this much as bright */
+#define SHAPE_STROKE 1.5f /* px */
+#define LINE_STROKE 3.0f  /* px: segments, which have no inside */
+#define JOINT_STROKE 1.0f /* px */
 
-/* Ends an element with the style's paint. */
-static void paint(FILE* f, style s) {
-    fprintf(f, " fill=\"%s\" stroke=\"%s\" stroke-width=\"1.5\"", s.fill, s.stroke);
-    if (s.dash) {
-        fprintf(f, " stroke-dasharray=\"%s\"", s.dash);
+static void svg_color(FILE* f, i2d_color color, float shade) {
+    unsigned r = (unsigned)((float)((color >> 16) & 0xffu) * shade);
+    unsigned g = (unsigned)((float)((color >> 8) & 0xffu) * shade);
+    unsigned b = (unsigned)((float)(color & 0xffu) * shade);
+    fprintf(f, "#%02x%02x%02x", r, g, b);
+}
+
+/* Ends a shape's element: filled in its colour with a darker outline, or a dashed outline. */
+static void paint(const canvas* c, i2d_color color) {
+    fprintf(c->f, " fill=\"");
+    if (c->dashed) {
+        fprintf(c->f, "none");
+    } else {
+        svg_color(c->f, color, 1.0f);
     }
-    fprintf(f, "/>\n");
+    fprintf(c->f, "\" stroke=\"");
+    svg_color(c->f, color, STROKE_SHADE);
+    fprintf(c->f, "\" stroke-width=\"%.1f\"%s/>\n", SHAPE_STROKE, c->dashed ? " stroke-dasharray=\"4,3\"" : "");
 }
 
 static void svg_point(FILE* f, const view* v, const char* before, i2d_vec2 p) {
     fprintf(f, "%s%.2f,%.2f", before, px(v, p.x), py(v, p.y));
 }
 
-static void svg_line(FILE* f, const view* v, i2d_vec2 a, i2d_vec2 b, const char* stroke, float width) {
-    fprintf(f, "<line x1=\"%.2f\" y1=\"%.2f\" x2=\"%.2f\" y2=\"%.2f\" stroke=\"%s\" stroke-width=\"%.1f\""
-               " stroke-linecap=\"round\"/>\n",
-            px(v, a.x), py(v, a.y), px(v, b.x), py(v, b.y), stroke, width);
+static void svg_line(const canvas* c, i2d_vec2 a, i2d_vec2 b, i2d_color color, float width) {
+    fprintf(c->f, "<line x1=\"%.2f\" y1=\"%.2f\" x2=\"%.2f\" y2=\"%.2f\" stroke=\"", px(c->v, a.x), py(c->v, a.y),
+            px(c->v, b.x), py(c->v, b.y));
+    svg_color(c->f, color, STROKE_SHADE);
+    fprintf(c->f, "\" stroke-width=\"%.1f\" stroke-linecap=\"round\"%s/>\n", width,
+            c->dashed ? " stroke-dasharray=\"4,3\"" : "");
 }
 
+/* What a dashed canvas leaves out: static shapes, which never left their start. */
+static int skipped(const canvas* c, i2d_color color) { return c->dashed && color == I2D_COLOR_STATIC; }
+
 /* Every point within radius of a convex polygon (a capsule is the 2-gon of its two centres):
- * each edge pushed out along its normal, the gaps closed by arcs around the corners. */
-static void draw_rounded(FILE* f, const view* v, i2d_transform xf, const i2d_vec2* points,
-                         const i2d_vec2* normals, int count, float radius, style s) {
+ * each edge pushed out along its normal, the gaps closed by arcs around the corners. Points in
+ * the world; the normals are the edges' outward ones. */
+static void svg_rounded(const canvas* c, const i2d_vec2* points, const i2d_vec2* normals, int count, float radius,
+                        i2d_color color) {
     int i;
-    fprintf(f, "<path d=\"");
+    fprintf(c->f, "<path d=\"");
     for (i = 0; i < count; ++i) {
         i2d_vec2 p = points[i], q = points[(i + 1) % count], n = normals[i];
         i2d_vec2 m = normals[(i + count - 1) % count];
         if (i == 0) {
-            svg_point(f, v, "M", place(xf, vec2(p.x + radius * m.x, p.y + radius * m.y)));
+            svg_point(c->f, c->v, "M", vec2(p.x + radius * m.x, p.y + radius * m.y));
         }
         /* Counter-clockwise in the world stays counter-clockwise on the screen, which with y
          * down is the negative-angle direction: sweep flag 0. */
-        fprintf(f, " A%.2f,%.2f 0 0 0", radius * v->scale, radius * v->scale);
-        svg_point(f, v, " ", place(xf, vec2(p.x + radius * n.x, p.y + radius * n.y)));
-        svg_point(f, v, " L", place(xf, vec2(q.x + radius * n.x, q.y + radius * n.y)));
+        fprintf(c->f, " A%.2f,%.2f 0 0 0", radius * c->v->scale, radius * c->v->scale);
+        svg_point(c->f, c->v, " ", vec2(p.x + radius * n.x, p.y + radius * n.y));
+        svg_point(c->f, c->v, " L", vec2(q.x + radius * n.x, q.y + radius * n.y));
     }
-    fprintf(f, " Z\"");
-    paint(f, s);
+    fprintf(c->f, " Z\"");
+    paint(c, color);
 }
 
-static void draw_polygon(FILE* f, const view* v, i2d_transform xf, i2d_shape_id shape, style s) {
-    i2d_polygon polygon = i2d_shape_get_polygon(shape);
+/* The outward normal of the counter-clockwise edge a -> b. */
+static i2d_vec2 edge_normal(i2d_vec2 a, i2d_vec2 b) {
+    float dx = b.x - a.x, dy = b.y - a.y, length = hypotf(dx, dy);
+    return vec2(dy / length, -dx / length);
+}
+
+static void on_solid_polygon(i2d_transform xf, const i2d_vec2* vertices, int32_t count, float radius,
+                             i2d_color color, void* context) {
+    const canvas* c = (const canvas*)context;
+    i2d_vec2 placed[I2D_MAX_POLYGON_VERTICES], normals[I2D_MAX_POLYGON_VERTICES];
     int i;
-    check_last("i2d_shape_get_polygon");
-    if (polygon.radius > 0.0f) {
-        draw_rounded(f, v, xf, polygon.vertices, polygon.normals, polygon.count, polygon.radius, s);
+    if (skipped(c, color)) {
         return;
     }
-    fprintf(f, "<polygon points=\"");
-    for (i = 0; i < polygon.count; ++i) {
-        svg_point(f, v, i ? " " : "", place(xf, polygon.vertices[i]));
+    for (i = 0; i < count; ++i) {
+        placed[i] = place(xf, vertices[i]);
     }
-    fprintf(f, "\"");
-    paint(f, s);
-}
-
-static void draw_capsule(FILE* f, const view* v, i2d_transform xf, i2d_shape_id shape, style s) {
-    i2d_capsule c = i2d_shape_get_capsule(shape);
-    i2d_vec2 points[2], normals[2];
-    float dx = c.center2.x - c.center1.x, dy = c.center2.y - c.center1.y, length = hypotf(dx, dy);
-    check_last("i2d_shape_get_capsule");
-    points[0] = c.center1;
-    points[1] = c.center2;
-    normals[0] = vec2(dy / length, -dx / length);
-    normals[1] = vec2(-normals[0].x, -normals[0].y);
-    draw_rounded(f, v, xf, points, normals, 2, c.radius, s);
-}
-
-/* A circle with a radius line along the body's x axis, so that its turning shows. */
-static void draw_circle(FILE* f, const view* v, i2d_transform xf, i2d_shape_id shape, style s) {
-    i2d_circle c = i2d_shape_get_circle(shape);
-    i2d_vec2 center = place(xf, c.center);
-    check_last("i2d_shape_get_circle");
-    fprintf(f, "<circle cx=\"%.2f\" cy=\"%.2f\" r=\"%.2f\"", px(v, center.x), py(v, center.y), c.radius * v->scale);
-    paint(f, s);
-    svg_line(f, v, center, place(xf, vec2(c.center.x + c.radius, c.center.y)), s.stroke, 1.5f);
-}
-
-/* Draws every shape of the body as placed by xf. */
-static void draw_body(FILE* f, const view* v, i2d_body_id body, i2d_transform xf, style s) {
-    i2d_shape_id shapes[MAX_SHAPES_PER_BODY];
-    int count = (int)i2d_body_get_shapes(body, shapes, MAX_SHAPES_PER_BODY), i;
-    check_last("i2d_body_get_shapes");
-    for (i = 0; i < count && i < MAX_SHAPES_PER_BODY; ++i) {
-        i2d_shape_type type = i2d_shape_get_type(shapes[i]);
-        check_last("i2d_shape_get_type");
-        if (type == I2D_SHAPE_POLYGON) {
-            draw_polygon(f, v, xf, shapes[i], s);
-        } else if (type == I2D_SHAPE_CAPSULE) {
-            draw_capsule(f, v, xf, shapes[i], s);
-        } else if (type == I2D_SHAPE_CIRCLE) {
-            draw_circle(f, v, xf, shapes[i], s);
-        } else { /* a segment or a chain's segment */
-            i2d_segment seg = i2d_shape_get_segment(shapes[i]);
-            check_last("i2d_shape_get_segment");
-            svg_line(f, v, place(xf, seg.point1), place(xf, seg.point2), s.stroke, 3.0f);
+    if (radius > 0.0f) {
+        for (i = 0; i < count; ++i) {
+            normals[i] = edge_normal(placed[i], placed[(i + 1) % count]);
         }
+        svg_rounded(c, placed, normals, count, radius, color);
+        return;
     }
+    fprintf(c->f, "<polygon points=\"");
+    for (i = 0; i < count; ++i) {
+        svg_point(c->f, c->v, i ? " " : "", placed[i]);
+    }
+    fprintf(c->f, "\"");
+    paint(c, color);
 }
 
-/* Every body where it is now, then a dashed outline of each followed body where it started. */
-static void draw_bodies(FILE* f, const view* v, const demo* d) {
-    int i;
-    for (i = 0; i < d->body_count; ++i) {
-        i2d_body_type type = i2d_body_get_type(d->bodies[i]);
-        check_last("i2d_body_get_type");
-        draw_body(f, v, d->bodies[i], transform(d->bodies[i]), body_styles[type]);
+static void on_solid_capsule(i2d_vec2 p1, i2d_vec2 p2, float radius, i2d_color color, void* context) {
+    const canvas* c = (const canvas*)context;
+    i2d_vec2 points[2], normals[2];
+    if (skipped(c, color)) {
+        return;
     }
-    for (i = 0; i < T_COUNT; ++i) {
-        style s = body_styles[i == T_PLATFORM ? I2D_BODY_KINEMATIC : I2D_BODY_DYNAMIC];
-        s.fill = "none";
-        s.dash = "4,3";
-        draw_body(f, v, d->t[i].body, d->t[i].start, s);
-    }
+    points[0] = p1;
+    points[1] = p2;
+    normals[0] = edge_normal(p1, p2);
+    normals[1] = vec2(-normals[0].x, -normals[0].y);
+    svg_rounded(c, points, normals, 2, radius, color);
 }
 
-static void draw_path(FILE* f, const view* v, const i2d_vec2* path, int count, const char* stroke) {
+/* A circle with a radius line along its body's x axis, so that its turning shows. */
+static void on_solid_circle(i2d_transform xf, float radius, i2d_color color, void* context) {
+    const canvas* c = (const canvas*)context;
+    if (skipped(c, color)) {
+        return;
+    }
+    fprintf(c->f, "<circle cx=\"%.2f\" cy=\"%.2f\" r=\"%.2f\"", px(c->v, xf.p.x), py(c->v, xf.p.y),
+            radius * c->v->scale);
+    paint(c, color);
+    svg_line(c, xf.p, vec2(xf.p.x + radius * xf.q.c, xf.p.y + radius * xf.q.s), color, SHAPE_STROKE);
+}
+
+/* Segments and chain segments are shapes (thick); the joints' lines are thin. */
+static void on_segment(i2d_vec2 p1, i2d_vec2 p2, i2d_color color, void* context) {
+    const canvas* c = (const canvas*)context;
+    if (skipped(c, color)) {
+        return;
+    }
+    svg_line(c, p1, p2, color, color == I2D_COLOR_JOINT ? JOINT_STROKE : LINE_STROKE);
+}
+
+/* A dot (a joint's anchors): size is its diameter in pixels. */
+static void on_point(i2d_vec2 p, float size, i2d_color color, void* context) {
+    const canvas* c = (const canvas*)context;
+    fprintf(c->f, "<circle cx=\"%.2f\" cy=\"%.2f\" r=\"%.2f\" fill=\"", px(c->v, p.x), py(c->v, p.y), 0.5f * size);
+    svg_color(c->f, color, STROKE_SHADE);
+    fprintf(c->f, "\" stroke=\"none\"/>\n");
+}
+
+/* The world through the SVG callbacks: every shape and joint as they are now. */
+static void draw_world(FILE* f, const view* v, i2d_world_id world, int dashed) {
+    canvas c;
+    i2d_debug_draw draw = i2d_default_debug_draw(); /* shapes and joints */
+    c.f = f;
+    c.v = v;
+    c.dashed = dashed;
+    draw.draw_solid_polygon = on_solid_polygon;
+    draw.draw_solid_capsule = on_solid_capsule;
+    draw.draw_solid_circle = on_solid_circle;
+    draw.draw_segment = on_segment;
+    draw.draw_point = on_point;
+    draw.draw_joints = !dashed;
+    draw.context = &c;
+    check(i2d_world_draw(world, &draw), "i2d_world_draw");
+}
+
+/* Dashed outlines of what moves, where it started: the world as built, loaded from the snapshot
+ * taken before the first step and drawn. */
+static void draw_start(FILE* f, const view* v, const demo* d) {
+    i2d_world_id start = i2d_world_create_from_snapshot(d->start, d->start_size, NULL);
+    if (I2D_IS_NULL(start)) {
+        fail("i2d_world_create_from_snapshot");
+    }
+    draw_world(f, v, start, 1);
+    check(i2d_world_destroy(start), "i2d_world_destroy");
+}
+
+/* The colours of the paths and marks the demo draws itself. */
+#define BALL_PATH_COLOR 0xC0392Bu
+#define APEX_COLOR 0x333333u
+#define CENTRE_PATH_COLOR 0x7D3C98u
+#define RIM_PATH_COLOR 0x1E8449u
+
+static void draw_path(FILE* f, const view* v, const i2d_vec2* path, int count, i2d_color stroke) {
     int k;
-    fprintf(f, "<polyline fill=\"none\" stroke=\"%s\" stroke-width=\"1.2\" stroke-opacity=\"0.8\" points=\"", stroke);
+    fprintf(f, "<polyline fill=\"none\" stroke=\"");
+    svg_color(f, stroke, 1.0f);
+    fprintf(f, "\" stroke-width=\"1.2\" stroke-opacity=\"0.8\" points=\"");
     for (k = 0; k < count; ++k) {
         svg_point(f, v, k ? " " : "", path[k]);
     }
@@ -1170,15 +1209,17 @@ static void draw_paths(FILE* f, const view* v, const demo* d) {
         float fall_time = sqrtf(2.0f * BALL_DROP_HEIGHT / GRAVITY);
         float apex_x = x + BALL_DRIFT * fall_time * (1.0f + b->restitution);
         float apex_y = b->restitution * b->restitution * BALL_DROP_HEIGHT + BALL_RADIUS;
-        draw_path(f, v, b->t.path, b->t.path_count, "#c0392b");
-        fprintf(f, "<line x1=\"%.2f\" y1=\"%.2f\" x2=\"%.2f\" y2=\"%.2f\" stroke=\"#333\" stroke-dasharray=\"3,2\"/>\n",
-                px(v, apex_x - 0.6f), py(v, apex_y), px(v, apex_x + 0.6f), py(v, apex_y));
+        draw_path(f, v, b->t.path, b->t.path_count, BALL_PATH_COLOR);
+        fprintf(f, "<line x1=\"%.2f\" y1=\"%.2f\" x2=\"%.2f\" y2=\"%.2f\" stroke=\"", px(v, apex_x - 0.6f),
+                py(v, apex_y), px(v, apex_x + 0.6f), py(v, apex_y));
+        svg_color(f, APEX_COLOR, 1.0f);
+        fprintf(f, "\" stroke-dasharray=\"3,2\"/>\n");
         draw_text(f, v, vec2(x, BALL_DROP_HEIGHT + 2.0f * BALL_RADIUS + 0.3f), "e = %.1f", b->restitution);
     }
     for (i = T_TIPPER; i <= T_CAPSULE; ++i) {
-        draw_path(f, v, d->t[i].path, d->t[i].path_count, "#7d3c98");
+        draw_path(f, v, d->t[i].path, d->t[i].path_count, CENTRE_PATH_COLOR);
     }
-    draw_path(f, v, d->rim, d->rim_count, "#1e8449");
+    draw_path(f, v, d->rim, d->rim_count, RIM_PATH_COLOR);
 }
 
 static void draw_labels(FILE* f, const view* v, const demo* d) {
@@ -1205,58 +1246,50 @@ static void draw_labels(FILE* f, const view* v, const demo* d) {
               (double)BULLET_SPEED, (double)(200.0f * THIN_WALL_HALF), (double)d->control_max_x);
 }
 
-/* A dot where each joint holds its two bodies (body A's anchor). */
-static void draw_joint(FILE* f, const view* v, i2d_joint_id joint) {
-    i2d_vec2 at = i2d_body_get_world_point(i2d_joint_get_body_a(joint), i2d_joint_get_local_anchor_a(joint));
-    check_last("reading a joint's anchor");
-    fprintf(f, "<circle cx=\"%.2f\" cy=\"%.2f\" r=\"2.5\" fill=\"#222\" stroke=\"none\"/>\n", px(v, at.x),
-            py(v, at.y));
-}
+/* How a legend entry is painted: a filled swatch in a colour, a dashed outline, or a line. */
+typedef enum swatch_kind { SWATCH_FILL, SWATCH_DASHED, SWATCH_LINE } swatch_kind;
 
-static void draw_joints(FILE* f, const view* v, const demo* d) {
-    int k;
-    for (k = 0; k <= BRIDGE_PLANKS; ++k) {
-        draw_joint(f, v, d->bridge_joints[k]);
-    }
-    for (k = 1; k < BENCH_BONE_COUNT; ++k) {
-        draw_joint(f, v, d->ragdoll.joints[k]);
-    }
-    draw_joint(f, v, d->suspension[0]);
-    draw_joint(f, v, d->suspension[1]);
-}
-
-/* One legend entry: a swatch (a square, or a line when the style has no fill) and its text.
- * Returns where the next entry starts. */
-static float legend_entry(FILE* f, float x, float y, style s, const char* text) {
-    if (s.fill) {
-        fprintf(f, "<rect x=\"%.1f\" y=\"%.1f\" width=\"14\" height=\"14\"", x, y - 11.0f);
+/* One legend entry: a swatch (a square, or a line) and its text. Returns where the next entry
+ * starts. */
+static float legend_entry(FILE* f, float x, float y, swatch_kind kind, i2d_color color, const char* dash,
+                          const char* text) {
+    if (kind == SWATCH_LINE) {
+        fprintf(f, "<line x1=\"%.1f\" y1=\"%.1f\" x2=\"%.1f\" y2=\"%.1f\" stroke=\"", x, y - 4.0f, x + 22.0f, y - 4.0f);
+        svg_color(f, color, 1.0f);
+        fprintf(f, "\" stroke-width=\"1.5\"%s%s%s/>\n", dash ? " stroke-dasharray=\"" : "", dash ? dash : "",
+                dash ? "\"" : "");
     } else {
-        fprintf(f, "<line x1=\"%.1f\" y1=\"%.1f\" x2=\"%.1f\" y2=\"%.1f\"", x, y - 4.0f, x + 22.0f, y - 4.0f);
-        s.fill = "none";
+        fprintf(f, "<rect x=\"%.1f\" y=\"%.1f\" width=\"14\" height=\"14\" fill=\"", x, y - 11.0f);
+        if (kind == SWATCH_DASHED) {
+            fprintf(f, "none");
+        } else {
+            svg_color(f, color, 1.0f);
+        }
+        fprintf(f, "\" stroke=\"");
+        svg_color(f, color, STROKE_SHADE);
+        fprintf(f, "\" stroke-width=\"1.5\"%s/>\n", kind == SWATCH_DASHED ? " stroke-dasharray=\"4,3\"" : "");
     }
-    paint(f, s);
     fprintf(f, "<text x=\"%.1f\" y=\"%.1f\">%s</text>\n", x + 28.0f, y, text);
     return x + 50.0f + 7.0f * (float)strlen(text); /* about 7 px a character */
 }
 
 static void draw_legend(FILE* f, float top) {
-    static const style start = {"none", "#555", "4,3"}, ball_path = {NULL, "#c0392b", NULL};
-    static const style apex = {NULL, "#333", "3,2"}, centre = {NULL, "#7d3c98", NULL}, rim = {NULL, "#1e8449", NULL};
     float y = top + 20.0f, x = 10.0f;
-    x = legend_entry(f, x, y, body_styles[I2D_BODY_STATIC], "static");
-    x = legend_entry(f, x, y, body_styles[I2D_BODY_KINEMATIC], "kinematic");
-    x = legend_entry(f, x, y, body_styles[I2D_BODY_DYNAMIC], "dynamic");
-    x = legend_entry(f, x, y, start, "start position");
-    x = legend_entry(f, x, y, ball_path, "ball path");
-    x = legend_entry(f, x, y, apex, "predicted apex, e\xc2\xb2 h");
-    x = legend_entry(f, x, y, centre, "path of a centre");
-    legend_entry(f, x, y, rim, "path of a rim point");
+    x = legend_entry(f, x, y, SWATCH_FILL, I2D_COLOR_STATIC, NULL, "static");
+    x = legend_entry(f, x, y, SWATCH_FILL, I2D_COLOR_KINEMATIC, NULL, "kinematic");
+    x = legend_entry(f, x, y, SWATCH_FILL, I2D_COLOR_AWAKE, NULL, "awake");
+    x = legend_entry(f, x, y, SWATCH_FILL, I2D_COLOR_ASLEEP, NULL, "asleep");
+    x = legend_entry(f, x, y, SWATCH_DASHED, I2D_COLOR_AWAKE, NULL, "start position");
+    x = legend_entry(f, x, y, SWATCH_LINE, BALL_PATH_COLOR, NULL, "ball path");
+    x = legend_entry(f, x, y, SWATCH_LINE, APEX_COLOR, "3,2", "apex, e\xc2\xb2 h");
+    x = legend_entry(f, x, y, SWATCH_LINE, CENTRE_PATH_COLOR, NULL, "centre path");
+    legend_entry(f, x, y, SWATCH_LINE, RIM_PATH_COLOR, NULL, "rim point path");
     fprintf(f, "<text x=\"10\" y=\"%.1f\">impulse2d demo: the state after %.1f s (%d steps of 1/60 s, %d substeps"
-               " each); y up, 1 m = %.0f px. Top: bodies that only move; middle: bodies that turn"
-               " (a circle's line is a radius);</text>\n",
+               " each); y up, 1 m = %.0f px. Top: bodies that only move; middle: bodies that turn (a circle's line"
+               " is a radius);</text>\n",
             y + 22.0f, (double)STEP_COUNT * TIME_STEP, STEP_COUNT, SUBSTEPS, VIEW_SCALE);
-    fprintf(f, "<text x=\"10\" y=\"%.1f\">third: bodies held by joints, a dot at each joint; bottom: a chain"
-               " landscape and a bullet fired at a thin wall.</text>\n",
+    fprintf(f, "<text x=\"10\" y=\"%.1f\">third: bodies held by joints (lines to each joint's anchors, a dot at"
+               " each); bottom: a chain landscape and a bullet fired at a thin wall. Drawn by i2d_world_draw.</text>\n",
             y + 40.0f);
 }
 
@@ -1276,8 +1309,8 @@ static void write_svg(const demo* d, const char* path) {
             width, height + CAPTION_HEIGHT, width, height + CAPTION_HEIGHT);
     fprintf(f, "<rect width=\"100%%\" height=\"100%%\" fill=\"white\"/>\n");
     draw_paths(f, &v, d);
-    draw_bodies(f, &v, d);
-    draw_joints(f, &v, d);
+    draw_start(f, &v, d);
+    draw_world(f, &v, d->world, 0);
     draw_labels(f, &v, d);
     draw_legend(f, height);
     fprintf(f, "</svg>\n");
@@ -1303,6 +1336,7 @@ int main(int argc, char** argv) {
     run(&d);
     report(&d);
     write_svg(&d, svg_path);
+    free(d.start);
     same = rerun_from_snapshot(&d);
     check(i2d_world_destroy(d.world), "i2d_world_destroy");
     printf("picture: %s\n", svg_path);

@@ -685,6 +685,13 @@ public:
                                     i2d_query_filter filter = i2d_default_query_filter()) const {
         return checked(i2d_world_cast_ray_closest(id_, origin, translation, filter));
     }
+    /** Draws the world through draw's callbacks (i2d_world_draw; start from
+     *  i2d_default_debug_draw()). The callbacks run before it returns, with the world
+     *  locked: they may read it, not change it. Throws for a refused def or bounds. */
+    void draw(const i2d_debug_draw& draw) const { i2d_world_draw(id_, &draw); detail::throw_if_failed(); }
+    void draw(const i2d_debug_draw& draw, Status& status) const noexcept {
+        i2d_world_draw(id_, &draw); detail::record(status);
+    }
     /** The last step's contact events (arrays owned by the world, valid until the next step). */
     i2d_contact_events contact_events() const { return checked(i2d_world_get_contact_events(id_)); }
     i2d_body_events body_events() const { return checked(i2d_world_get_body_events(id_)); }

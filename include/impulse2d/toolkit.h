@@ -186,32 +186,72 @@ I2D_API i2d_status i2d_world_explode(i2d_world_id world, const i2d_explosion_def
 /** A colour, 0xRRGGBB. */
 typedef uint32_t i2d_color;
 
-/* A shape's colour says its body's state; these are the values i2d_world_draw gives. */
+/* A shape's colour says its body's state; these are the values i2d_world_draw gives.
+ * When several hold, the first in this list wins (a sensor on a disabled body is drawn
+ * disabled, a bullet asleep is drawn asleep). */
+#define I2D_COLOR_QUARANTINED 0xFF3333u /**< a body the step quarantined (non-finite state): red */
+#define I2D_COLOR_DISABLED 0x666666u    /**< a disabled body: dark grey */
+#define I2D_COLOR_SENSOR 0x33CCFFu      /**< a sensor shape, on an enabled body of any type: sky blue */
 #define I2D_COLOR_STATIC 0x80E680u      /**< a static body's shapes: pale green */
 #define I2D_COLOR_KINEMATIC 0x8080E6u   /**< kinematic: blue-violet */
+#define I2D_COLOR_BULLET 0xE6E64Du      /**< a bullet, awake: yellow */
 #define I2D_COLOR_AWAKE 0xE6B380u       /**< a dynamic body awake: tan */
 #define I2D_COLOR_ASLEEP 0x999999u      /**< a dynamic body asleep: grey */
-#define I2D_COLOR_BULLET 0xE6E64Du      /**< a bullet, awake: yellow */
-#define I2D_COLOR_SENSOR 0x33CCFFu      /**< a sensor shape, on any body: sky blue */
-#define I2D_COLOR_DISABLED 0x666666u    /**< a disabled body: dark grey */
-#define I2D_COLOR_QUARANTINED 0xFF3333u /**< a body the step quarantined (non-finite state): red */
 
-/* The drawing callbacks' types (context is i2d_debug_draw.context). */
-/** A closed polygon outline (bounds come here, four vertices). */
+/* Joints (draw_joints; the last three with draw_joint_extras). */
+#define I2D_COLOR_JOINT 0x7FB89Au        /**< segments from the body origins to the anchors and between them */
+#define I2D_COLOR_JOINT_ANCHOR 0x2E8B57u /**< a point at each anchor */
+#define I2D_COLOR_JOINT_LIMIT 0xE05050u  /**< limits: angle lines, ticks across an axis, length points */
+#define I2D_COLOR_JOINT_MOTOR 0xB050E0u  /**< motors and targets (a mouse joint's, a motor joint's) */
+#define I2D_COLOR_JOINT_SPRING 0x50A0E0u /**< a spring's rest angle, translation or length */
+
+/* Boxes, bodies and contacts. */
+#define I2D_COLOR_BOUNDS 0xFFD700u           /**< draw_bounds: a shape's fattened bounds (gold) */
+#define I2D_COLOR_ISLAND 0xFF4500u           /**< draw_islands: an awake island's bounds */
+#define I2D_COLOR_MASS 0xF5F5F5u             /**< draw_mass: the text of a body's mass */
+#define I2D_COLOR_CONTACT 0x3366FFu          /**< a contact point within the contact slop */
+#define I2D_COLOR_SPECULATIVE 0xC8C8C8u      /**< a contact point farther apart than the slop */
+#define I2D_COLOR_CONTACT_NORMAL 0x696969u   /**< draw_contact_normals */
+#define I2D_COLOR_CONTACT_IMPULSE 0xFF00FFu  /**< draw_contact_impulses */
+#define I2D_COLOR_FRICTION_IMPULSE 0xFFFF00u /**< draw_friction_impulses */
+
+/* draw_graph_colors: the solver's constraint colour k of a contact is drawn as
+ * I2D_GRAPH_COLORS[k % I2D_GRAPH_COLOR_COUNT]; its overflow colour (contacts solved last,
+ * in sequence) as I2D_COLOR_GRAPH_OVERFLOW, with a larger point. */
+#define I2D_GRAPH_COLOR_COUNT 12
+#define I2D_GRAPH_COLORS                                                                               \
+    {0xFF0000u, 0xFF8000u, 0xFFFF00u, 0x80FF00u, 0x00FF00u, 0x00FF80u, 0x00FFFFu, 0x0080FFu, 0x0000FFu, \
+     0x8000FFu, 0xFF00FFu, 0xFF0080u}
+#define I2D_COLOR_GRAPH_OVERFLOW 0xFFFFFFu
+
+/* The drawing callbacks' types (context is i2d_debug_draw.context). Every coordinate is in
+ * world units, y up; every value handed over is finite. */
+/** A closed polygon outline, world vertices, counter-clockwise (bounds come here, four
+ *  vertices from the lower left). */
 typedef void i2d_draw_polygon_fn(const i2d_vec2* vertices, int32_t count, i2d_color color, void* context);
-/** A filled polygon: local vertices placed by transform, grown by radius. */
+/** A filled polygon: local vertices (counter-clockwise) placed by transform, grown by
+ *  radius (a rounded polygon when radius > 0). The vertices are valid during the call. */
 typedef void i2d_draw_solid_polygon_fn(i2d_transform transform, const i2d_vec2* vertices, int32_t count,
                                        float radius, i2d_color color, void* context);
+/** A circle outline (a revolute joint's motor, with draw_joint_extras). */
 typedef void i2d_draw_circle_fn(i2d_vec2 center, float radius, i2d_color color, void* context);
-/** A filled circle; transform.p is its centre, transform.q its body's rotation. */
+/** A filled circle; transform.p is its centre, transform.q its body's rotation (draw a
+ *  radius along transform.q's x axis to show it turning). */
 typedef void i2d_draw_solid_circle_fn(i2d_transform transform, float radius, i2d_color color, void* context);
+/** A filled capsule: every point within radius of the segment p1-p2. */
 typedef void i2d_draw_solid_capsule_fn(i2d_vec2 p1, i2d_vec2 p2, float radius, i2d_color color, void* context);
+/** A line: segments and chain segments, joints, contact normals and impulses. */
 typedef void i2d_draw_segment_fn(i2d_vec2 p1, i2d_vec2 p2, i2d_color color, void* context);
+/** A frame: a body's centre of mass and rotation (draw_mass). */
 typedef void i2d_draw_transform_fn(i2d_transform transform, void* context);
+/** A dot; size is in pixels, whatever the view's scale (joint anchors, contact points). */
 typedef void i2d_draw_point_fn(i2d_vec2 p, float size, i2d_color color, void* context);
+/** Text at a point (a body's mass, with draw_mass); the text is valid during the call. */
 typedef void i2d_draw_string_fn(i2d_vec2 p, const char* text, i2d_color color, void* context);
 
-/** The caller's drawing callbacks; any may be NULL (that kind is then not drawn). */
+/** The caller's drawing callbacks and what to draw. Obtain with i2d_default_debug_draw(),
+ *  then set the callbacks and flags. Any callback may be NULL: that kind is then not drawn
+ *  (the rest is). */
 typedef struct i2d_debug_draw {
     i2d_draw_polygon_fn* draw_polygon;
     i2d_draw_solid_polygon_fn* draw_solid_polygon;
@@ -222,30 +262,41 @@ typedef struct i2d_debug_draw {
     i2d_draw_transform_fn* draw_transform;
     i2d_draw_point_fn* draw_point;
     i2d_draw_string_fn* draw_string;
-    /** Cull to this box when use_drawing_bounds is set. */
+    /** Cull to this box when use_drawing_bounds is set: only shapes whose bounds overlap it
+     *  are drawn, and only the mass, joints, contacts and islands of their bodies. Finite,
+     *  min <= max; default +-1e9. */
     i2d_aabb drawing_bounds;
-    bool use_drawing_bounds;
-    bool draw_shapes;            /**< default true */
-    bool draw_joints;            /**< default true */
-    bool draw_joint_extras;      /**< limits, motors, springs */
-    bool draw_bounds;            /**< shapes' fattened bounds */
-    bool draw_mass;              /**< bodies' centres of mass */
-    bool draw_contacts;          /**< contact points */
-    bool draw_contact_normals;
+    bool use_drawing_bounds;     /**< default false: the whole world */
+    bool draw_shapes;            /**< default true; coloured by body state (I2D_COLOR_STATIC...) */
+    bool draw_joints;            /**< default true; joints with a disabled body are not drawn */
+    bool draw_joint_extras;      /**< limits, motors, springs (0.5 m marks) */
+    bool draw_bounds;            /**< shapes' fattened bounds (draw_polygon, four vertices) */
+    bool draw_mass;              /**< dynamic bodies' centres of mass (draw_transform, draw_string) */
+    bool draw_contacts;          /**< contact points (draw_point) */
+    bool draw_contact_normals;   /**< 0.3 m along each point's normal, from shape A to B */
+    /** Along the normal, 10 m per N s of the point's normal impulse (last substep). */
     bool draw_contact_impulses;
+    /** Along the tangent (the normal turned a quarter counter-clockwise), 10 m per N s. */
     bool draw_friction_impulses;
-    bool draw_graph_colors;      /**< contact points in their constraint colour */
-    bool draw_islands;           /**< awake islands' bounds */
+    bool draw_graph_colors;      /**< contact points in their constraint colour (drawn even
+                                      without draw_contacts) */
+    bool draw_islands;           /**< awake islands' bounds (draw_polygon) */
     void* context;               /**< handed to every callback */
     /** Set by i2d_default_debug_draw(); do not set. */
     uint32_t internal_cookie;
 } i2d_debug_draw;
 
-/** No callbacks; draw_shapes and draw_joints on. */
+/** No callbacks; draw_shapes and draw_joints on, every other flag off. */
 I2D_API i2d_debug_draw i2d_default_debug_draw(void);
 
-/** Draws the world through the callbacks. The world is locked while they run: calls that
- *  change it answer I2D_ERR_WORLD_LOCKED; getters and queries work. */
+/** Draws the world through the callbacks, on the calling thread, before it returns:
+ *  shapes first (static, kinematic, dynamic trees in turn when culled; in creation-slot
+ *  order when not), then per body its mass, joints, contacts and island. The world is
+ *  locked while they run, as in a query's callback: calls that change it answer
+ *  I2D_ERR_WORLD_LOCKED; getters, queries and i2d_world_draw work. Lengths scale with the
+ *  world's length_units_per_meter. Bad input (a NULL or uninitialised draw, a NaN or
+ *  inverted drawing_bounds when used, a bad id): a status, no callback called, the world
+ *  untouched. */
 I2D_API i2d_status i2d_world_draw(i2d_world_id world, const i2d_debug_draw* draw);
 
 #ifdef __cplusplus

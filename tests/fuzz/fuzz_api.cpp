@@ -5,7 +5,8 @@
 // what the program holds, floats from a table of hostile values or raw bits, sizes and
 // counts of any sign). Ids are kept after their objects die, so stale, foreign (a body's
 // bits passed as a shape) and null ids are used on purpose. Query and ray callbacks call
-// back into the library and try to destroy things. Joints are made between any held
+// back into the library and try to destroy things, as the debug draw's callbacks do, which
+// also check that every float they are handed is finite. Joints are made between any held
 // bodies (of any world, live or dead) with hostile settings, then changed, read and
 // broken. The library must never crash, leak or trip a sanitizer, and a world (into
 // which the API accepts only finite values) must never report a non-finite position,
@@ -1099,9 +1100,12 @@ void run_pure_call(FuzzInput& in, uint8_t op) {
 constexpr uint8_t joint_sub_first = 30;
 
 #include "fuzz_runtime_calls.inl"
+#include "fuzz_draw_calls.inl"
 #include "fuzz_hook_calls.inl"
 
-// Query-group instructions from this sub-opcode on are contact hook and explosion calls.
+// Query-group instructions: debug draws in [draw_sub_first, hook_sub_first), contact hook
+// and explosion calls from hook_sub_first on.
+constexpr uint8_t draw_sub_first = 24;
 constexpr uint8_t hook_sub_first = 34;
 
 // Shape instructions from this sub-opcode on are runtime API calls.
@@ -1133,6 +1137,8 @@ void run_program(FuzzInput& in) {
             run_shape_call(in, sub % 13);
         } else if (group == 4 && sub >= hook_sub_first) {
             run_hook_call(in, sub);
+        } else if (group == 4 && sub >= draw_sub_first) {
+            run_draw_call(in, sub);
         } else if (group == 4) {
             run_query_call(in, sub % 7);
         } else {

@@ -164,6 +164,25 @@ def cast_past_the_bound():
     return p + [4 + 6 * 3, 0] + small(0) * 4 + small(0) + small(1.5) + special(14) * 2 + [0]
 
 
+def draw(variant, flags=None, culled_half=None):
+    """Group 4, sub 24 + variant (fuzz_draw_calls.inl): i2d_world_draw of the first world with
+    every callback set; variants 0 and 1 draw everything, 9 culls to a box of half size
+    culled_half around the first body; others take two flag bytes and unused bounds. Then
+    the callbacks' bytes: a few calls back in (a step, a destroy, a create, a body change, a
+    getter, a query, a nested draw, a gravity change), the rest just check."""
+    p = [4 + 6 * (24 + variant), 0, 0xFF, 0x01]
+    if variant >= 2:
+        p += [flags & 0xFF, flags >> 8]
+    if variant == 9:
+        p += [0] + small(culled_half)
+    elif variant >= 2:
+        p += [0] + small(-1) + small(-1) + small(1) + small(1)
+    p += [0]  # the def initialised
+    pokes = [200, 0, 200, 1, 200, 2, 200, 3, 0] + small(1) + small(0) + [200, 4, 200, 5] + small(-2) + small(-2)
+    pokes += small(1.5) + small(1.5) + [200, 6, 0x0F, 0x00, 0, 0, 200, 7] + small(0) + small(1)
+    return p + pokes
+
+
 seeds = {
     "pile_steps": pile() + step(30),
     "pile_queries": pile() + step(10) + overlap_query() + ray_query() + step(5),
@@ -175,6 +194,8 @@ seeds = {
     "pile_workers_newest_first": pile(world_create_workers(4, 2)) + step(10),
     "pile_workers_intruding": pile(world_create_workers(2, 3)) + step(10),
     "pile_workers_built_in": pile(world_create_workers(2, 6)) + step(10),
+    "pile_draws": pile() + joints() + step(10) + draw(0),
+    "pile_draw_culled": pile() + joints() + step(10) + draw(9, flags=0x07FF, culled_half=1.5),
     "finding_joint_far_angles": far_joint_angles(),
     "finding_cast_starting_inside": cast_starting_inside(),
     "finding_cast_past_the_bound": cast_past_the_bound(),

@@ -77,6 +77,9 @@ public:
         colored_ = false;
         awake_joints_.forget();
     }
+    /// Whether ordered_contacts() holds a colouring: false before the first and after
+    /// forget() (a restored world's contacts are not those it names).
+    bool is_colored() const { return colored_; }
     /// Whether the last update gathered the joints again (their trees must be found again).
     bool joints_regathered() const { return joints_regathered_; }
 

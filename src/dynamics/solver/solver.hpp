@@ -79,6 +79,8 @@ public:
     /// The world's state was replaced (a snapshot restored): colour, gather and plan
     /// again at the next step.
     void forget_caches();
+    /// The constraint graph as the last step coloured it (the debug draw's graph colours).
+    const ConstraintGraph& graph() const { return graph_; }
 
 private:
     // A colour that has joints or contacts, in solve order, the overflow colour last.

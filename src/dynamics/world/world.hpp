@@ -11,7 +11,7 @@
 // that a change is never half made. The work is split by what it changes:
 // world.cpp (creation and the wiring between stages), world_bodies.cpp,
 // world_body_enable.cpp, world_shapes.cpp, world_joints.cpp, world_step.cpp,
-// world_query.cpp, world_origin.cpp and world_validate.cpp.
+// world_query.cpp, world_draw.cpp, world_origin.cpp and world_validate.cpp.
 #pragma once
 
 #include <cstddef>
@@ -37,6 +37,7 @@
 namespace i2d {
 
 class Recorder;
+struct DebugDraw;
 struct SnapshotHeader;
 
 struct WorldStages;
@@ -241,6 +242,12 @@ public:
     /// the world is locked.
     void visit_touching_contacts(int32_t body, int32_t shape, FunctionRef<void(const ContactData&)> visit) const;
     void visit_sensor_overlaps(int32_t sensor, FunctionRef<void(int32_t visitor)> visit) const;
+
+    // Drawing (world_draw.cpp).
+    /// Hands the world's pictures to draw's sink, as its options ask (debug_draw.hpp). The
+    /// world is locked while the sink runs, as for a query: it may read the world (and
+    /// draw it again), never change it.
+    void draw(const DebugDraw& draw) const;
 
     // Snapshots (snapshot/world_snapshot.cpp, snapshot_format.hpp).
     /// The bytes a full snapshot of the world takes now, its header included.
