@@ -42,8 +42,29 @@ public:
         return value >= 0 && word < words_.size() && (words_[word] >> (value & 63) & 1u) != 0;
     }
     int32_t count() const { return count_; }
+    /// Calls visit(value) for every value in it, in increasing order.
+    template <class Visit>
+    void visit(Visit&& visit) const {
+        for (std::size_t w = 0; w < words_.size(); ++w) {
+            for (uint64_t word = words_[w]; word != 0; word &= word - 1) {
+                visit(int32_t(w << 6) + lowest_bit(word));
+            }
+        }
+    }
 
 private:
+    static int32_t lowest_bit(uint64_t word) {
+#if defined(__GNUC__)
+        return __builtin_ctzll(word);
+#else
+        int32_t n = 0;
+        for (; (word & 1u) == 0; word >>= 1) {
+            ++n;
+        }
+        return n;
+#endif
+    }
+
     std::vector<uint64_t> words_;
     int32_t count_ = 0;
 };

@@ -3,6 +3,7 @@
 // beyond the current size are absent rather than out of bounds, and membership agrees
 // with a plain reference set under random use.
 #include <set>
+#include <vector>
 
 #include "check.h"
 #include "core/bit_set.hpp"
@@ -41,4 +42,7 @@ I2D_TEST(unit_bit_set_matches_a_reference_set) {
         I2D_CHECK(set.contains(probe) == (reference.count(probe) == 1));
     }
     I2D_CHECK(set.count() == int32_t(reference.size()));
+    std::vector<int32_t> visited;
+    set.visit([&](int32_t value) { visited.push_back(value); });
+    I2D_CHECK(visited == std::vector<int32_t>(reference.begin(), reference.end()));  // every one, in order
 }

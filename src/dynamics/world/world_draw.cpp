@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "collision/geometry.hpp"
+#include "core/bit_set.hpp"
 #include "dynamics/debug_draw.hpp"
 #include "dynamics/joint/joint_draw.hpp"
 #include "dynamics/world/world.hpp"
@@ -29,50 +30,7 @@ constexpr float overflow_point_size = 8.0f;  // pixels: a contact of the graph's
 constexpr float contact_normal_length = 0.3f;  // m, scaled to the world's length unit
 constexpr float impulse_length_per_newton_second = 10.0f;  // m per N s, scaled likewise
 constexpr float joint_extra_length = 0.5f;  // m, scaled likewise: limit lines, axes
-constexpr int32_t bits_per_word = 64;
 constexpr int32_t mass_text_size = 32;
-
-/// One bit per index of a pool, all clear; visited in index order.
-class Marks {
-public:
-    explicit Marks(int32_t capacity) : words_(std::size_t((capacity + bits_per_word - 1) / bits_per_word), 0u) {}
-
-    /// Marks the index; returns whether it was not marked before.
-    bool mark(int32_t index) {
-        uint64_t& word = words_[std::size_t(index / bits_per_word)];
-        const uint64_t bit = uint64_t(1) << (index % bits_per_word);
-        const bool fresh = (word & bit) == 0;
-        word |= bit;
-        return fresh;
-    }
-    void mark_all() {
-        for (uint64_t& word : words_) {
-            word = ~uint64_t(0);
-        }
-    }
-    template <class Visit>
-    void visit(Visit&& visit) const {
-        for (std::size_t w = 0; w < words_.size(); ++w) {
-            for (uint64_t word = words_[w]; word != 0; word &= word - 1) {
-                visit(int32_t(w) * bits_per_word + count_trailing_zeros(word));
-            }
-        }
-    }
-
-private:
-    static int32_t count_trailing_zeros(uint64_t word) {
-#if defined(__GNUC__)
-        return __builtin_ctzll(word);
-#else
-        int32_t n = 0;
-        for (; (word & 1u) == 0; word >>= 1) {
-            ++n;
-        }
-        return n;
-#endif
-    }
-    std::vector<uint64_t> words_;
-};
 
 /// The colour that says the state of a shape's body: the first of quarantined, disabled,
 /// sensor (the shape's own), static, kinematic, bullet (awake), awake and asleep.
@@ -114,13 +72,7 @@ struct DrawnWorld {
 class WorldDrawer {
 public:
     WorldDrawer(const DebugDraw& draw, const DrawnWorld& world)
-        : sink_(draw.sink),
-          options_(draw.options),
-          world_(world),
-          visible_(world.bodies.capacity()),
-          drawn_joints_(world.joints.capacity()),
-          drawn_contacts_(world.contacts.capacity()),
-          drawn_islands_(world.islands.capacity()) {}
+        : sink_(draw.sink), options_(draw.options), world_(world) {}
 
     void run() {
         if (options_.use_bounds) {
@@ -188,13 +140,15 @@ private:
                 visit_shape(shape);
             }
         }
-        visible_.mark_all();
+        for (int32_t body = 0; body < world_.bodies.capacity(); ++body) {
+            visible_.insert(body);
+        }
     }
 
     void visit_shape(int32_t shape) {
         const Shape& s = world_.shapes[shape];
         const Body& b = world_.bodies[s.body];
-        visible_.mark(s.body);
+        visible_.insert(s.body);
         if (options_.shapes) {
             draw_geometry(s.geometry, b.transform, shape_color(b, s));
         }
@@ -250,7 +204,7 @@ private:
 
     void draw_body(int32_t body) {
         if (!world_.bodies.is_live(body)) {
-            return;  // mark_all marks free slots too
+            return;  // unculled, every slot is visible, free ones too
         }
         const Body& b = world_.bodies[body];
         if (options_.mass && b.type == BodyType::dynamic) {
@@ -289,7 +243,7 @@ private:
             key = j.edges[key & 1].next_key;
             const Body& a = world_.bodies[j.def.body_a];
             const Body& other = world_.bodies[j.def.body_b];
-            if (drawn_joints_.mark(joint) && a.enabled && other.enabled) {
+            if (drawn_joints_.insert(joint) && a.enabled && other.enabled) {
                 draw_joint(j.def, a.transform, other.transform, sink_, options_.joint_extras,
                            joint_extra_length * world_.length_unit);
             }
@@ -301,7 +255,7 @@ private:
             const int32_t contact = contact_of_key(key);
             const Contact& c = world_.contacts[contact];
             key = c.edges[edge_of_key(key)].next_key;
-            if (drawn_contacts_.mark(contact) && is_solvable(c)) {
+            if (drawn_contacts_.insert(contact) && is_solvable(c)) {
                 draw_contact(contact, c);
             }
         }
@@ -370,7 +324,7 @@ private:
     // An awake island's bounds: the union of its bodies' fat boxes.
     void draw_island(int32_t island) {
         const Island& isl = world_.islands[island];
-        if (isl.awake_index == null_index || !drawn_islands_.mark(island)) {
+        if (isl.awake_index == null_index || !drawn_islands_.insert(island)) {
             return;
         }
         AABB box;
@@ -390,10 +344,10 @@ private:
     const DrawSink& sink_;
     const DrawOptions& options_;
     const DrawnWorld& world_;
-    Marks visible_;  // bodies
-    Marks drawn_joints_;
-    Marks drawn_contacts_;
-    Marks drawn_islands_;
+    BitSet visible_;  // bodies
+    BitSet drawn_joints_;
+    BitSet drawn_contacts_;
+    BitSet drawn_islands_;
     std::vector<int8_t> graph_colors_;  // per contact, when asked for
 };
 
