@@ -10,7 +10,8 @@
 // broken. The library must never crash, leak or trip a sanitizer, and a world (into
 // which the API accepts only finite values) must never report a non-finite position,
 // velocity or joint measure; a cast's normal is unit and a translation longer than 1e9 m
-// is refused; a joint's angles read back in (-pi, pi]. A breach aborts with a message.
+// is refused; a joint's angles read back in (-pi, pi]; the character mover's answers are
+// finite (fuzz_mover_calls.inl). A breach aborts with a message.
 //
 // Only the public header is used: the harness is a hostile C API caller.
 #include <impulse2d/impulse2d.h>
@@ -21,6 +22,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <vector>
 
 #include "../api/any_joint_def.h"
 #include "fuzz_input.hpp"
@@ -1095,6 +1097,7 @@ void run_pure_call(FuzzInput& in, uint8_t op) {
 constexpr uint8_t joint_sub_first = 30;
 
 #include "fuzz_runtime_calls.inl"
+#include "fuzz_mover_calls.inl"
 
 // Shape instructions from this sub-opcode on are runtime API calls.
 constexpr uint8_t runtime_sub_first = 26;
@@ -1123,6 +1126,8 @@ void run_program(FuzzInput& in) {
             run_runtime_call(in, sub);
         } else if (group == 3) {
             run_shape_call(in, sub % 13);
+        } else if (group == 4 && sub >= 14 && sub < 24) {
+            run_mover_call(in, sub);
         } else if (group == 4) {
             run_query_call(in, sub % 7);
         } else {
