@@ -6,17 +6,23 @@
 // v3.1's mover sample and Rapier's KinematicCharacterController do, in five parts:
 //
 // 1. Skin. Every query uses the capsule grown by `skin`, so the real capsule keeps that
-//    gap to every surface (plus the band the casts stop in, mover_contact.hpp: a gap
-//    between a half and three quarters of the mover slop). Planes are solved to keep the
-//    grown capsule three quarters of the slop clear (rest_gap), the far end of that band,
-//    so that a shape the mover touches is never moved deeper into by rounding and every
-//    cast starts clear of what it slides along.
+//    gap to every surface, plus at most the mover slop: casts stop at a gap between a
+//    half and three quarters of it (mover_contact.hpp), and planes are solved to keep
+//    the grown capsule 7/8 of it clear (rest_gap). Resting beyond the casts' band means
+//    that what the mover slides along, and a shape level with it (the next tile of a
+//    tiled floor, whose corner comes exactly as near as the floor), is never within the
+//    band, so a cast neither stops at a seam nor counts a slide as moving deeper; resting
+//    within the slop means a collide still finds the ground it stands on.
 // 2. Slide (cast and slide, max_iterations rounds): collide the grown capsule into
 //    planes, solve the rest of the move against them (solve_planes: the nearest move
 //    that goes into none), cast along the solved move, which stops short of anything in
 //    the way however long the move is (so it never tunnels), and go as far as the cast
 //    allows. The rest is asked for again next round against the planes found there: what
-//    a wall refuses becomes a slide along it. A round that goes the whole way ends the slide.
+//    a wall refuses becomes a slide along it. A round that goes the whole way ends the
+//    slide. Planes stand in for the surfaces to first order and so refuse a little more
+//    than the shapes do (a tiled floor's next corner, no nearer than the floor, looks
+//    like a ramp up); when the mover rests clear of everything it touches and the planes
+//    would bend its move, the move as asked is cast first and taken if nothing is in its way.
 // 3. Slopes. "Up" is opposite the world's gravity (+y without gravity). A plane whose
 //    normal is within max_slope_angle of up is ground, which the slide climbs like any
 //    plane; a steeper one is a wall. Walking into a wall that faces up would slide up its
@@ -67,9 +73,16 @@ constexpr float slope_cosine_tolerance = 1.0e-4f;
 /// A slide move shorter than this share of the mover slop is no move: the slide ends.
 constexpr float settle_share = 0.01f;
 
-/// The planes a mover solves against keep it this share of the mover slop clear: the far
-/// end of the band its casts stop in (mover_contact.hpp).
-constexpr float rest_gap_share = mover_stop_share + mover_stop_tolerance_share;
+/// The planes a mover solves against keep it this share of the mover slop clear: beyond
+/// the band its casts stop in (up to 3/4, mover_contact.hpp), within the reach of its
+/// collides (1). See the design note, part 1.
+constexpr float rest_gap_share = 0.875f;
+static_assert(rest_gap_share > mover_stop_share + mover_stop_tolerance_share && rest_gap_share < 1.0f,
+              "rest between the casts' stop band and the collides' reach");
+
+/// A shape this share of the mover slop nearer than the rest gap is still at it: the
+/// rounding of a push to the rest gap, not an overlap to push out of.
+constexpr float rest_gap_tolerance_share = 1.0f / 16.0f;
 
 using Touch = MoverNeighbourhood::Touch;
 
@@ -102,6 +115,7 @@ private:
     Vec2 climbable_normal(Vec2 normal) const;
     bool walks_into_wall(Vec2 move, const Touches& touches) const;
     Vec2 without_climb(Vec2 move, const Touches& touches) const;
+    bool rests_clear(const Touches& touches) const;
     Vec2 solve(Vec2 move, const Touches& touches) const;
     bool land(Vec2 from, float depth, Vec2& out, Touches& out_touches) const;
     void note_hits(const Touches& touches);
@@ -220,6 +234,18 @@ Vec2 CharacterMove::without_climb(Vec2 move, const Touches& touches) const {
     return move;
 }
 
+// Whether every touched shape is at least the rest gap away (within rounding): nothing to
+// push out of.
+bool CharacterMove::rests_clear(const Touches& touches) const {
+    const float clear = (rest_gap_share - rest_gap_tolerance_share) * slop_;
+    for (int32_t i = 0; i < touches.count; ++i) {
+        if (!(touches.items[i].contact.separation >= clear)) {
+            return false;
+        }
+    }
+    return true;
+}
+
 Vec2 CharacterMove::solve(Vec2 move, const Touches& touches) const {
     CollisionPlane planes[max_touches];
     const float rest_gap = rest_gap_share * slop_;
@@ -274,11 +300,25 @@ void CharacterMove::slide() {
             }
         }
         remaining = without_climb(remaining, touches);
-        const Vec2 delta = solve(remaining, touches);
+        Vec2 delta = solve(remaining, touches);
         if (!(length_squared(delta) > settle_ * settle_)) {
             break;
         }
-        const MoverNeighbourhood::Hit hit = cast(position_, delta);
+        MoverNeighbourhood::Hit hit;
+        if (!(delta == remaining) && rests_clear(touches)) {
+            // Planes stand in for the surfaces to first order and so refuse more than the
+            // shapes do: the next tile of a tiled floor, whose corner comes no nearer than
+            // the floor, looks like a ramp. With nothing to push out of, the move as asked
+            // goes when the exact cast lets it.
+            hit = cast(position_, remaining);
+            if (hit.fraction < 1.0f) {
+                hit = cast(position_, delta);
+            } else {
+                delta = remaining;
+            }
+        } else {
+            hit = cast(position_, delta);
+        }
         const Vec2 moved = hit.fraction * delta;
         position_ += moved;
         remaining -= moved;
