@@ -142,6 +142,21 @@ inline i2d_distance_result shape_distance(const i2d_shape_proxy& a, i2d_transfor
     return result;
 }
 
+/** The move nearest target_delta that runs into none of the planes (i2d_solve_planes); fills
+ *  each plane's push. */
+inline i2d_plane_result solve_planes(i2d_vec2 target_delta, std::vector<i2d_collision_plane>& planes) {
+    const i2d_plane_result result =
+        i2d_solve_planes(target_delta, planes.data(), static_cast<int32_t>(planes.size()));
+    detail::throw_if_failed();
+    return result;
+}
+/** The vector less its part that runs into the clipping planes (i2d_clip_vector). */
+inline i2d_vec2 clip_vector(i2d_vec2 vector, const std::vector<i2d_collision_plane>& planes) {
+    const i2d_vec2 result = i2d_clip_vector(vector, planes.data(), static_cast<int32_t>(planes.size()));
+    detail::throw_if_failed();
+    return result;
+}
+
 class Body;
 class World;
 
@@ -691,6 +706,45 @@ public:
     void draw(const i2d_debug_draw& draw) const { i2d_world_draw(id_, &draw); detail::throw_if_failed(); }
     void draw(const i2d_debug_draw& draw, Status& status) const noexcept {
         i2d_world_draw(id_, &draw); detail::record(status);
+    }
+    /** The character mover (toolkit.h): how far along translation the capsule (world
+     *  coordinates) goes before it touches a shape, as a fraction in [0, 1]. */
+    float cast_mover(const i2d_capsule& mover, i2d_vec2 translation,
+                     i2d_query_filter filter = i2d_default_query_filter()) const {
+        return checked(i2d_world_cast_mover(id_, &mover, translation, filter));
+    }
+    /** The planes of the shapes the capsule (world coordinates) touches, one per shape. */
+    std::vector<i2d_collision_plane> collide_mover(const i2d_capsule& mover,
+                                                   i2d_query_filter filter = i2d_default_query_filter()) const {
+        std::vector<i2d_collision_plane> planes(8);
+        for (;;) {
+            const int32_t total =
+                i2d_world_collide_mover(id_, &mover, filter, planes.data(), static_cast<int32_t>(planes.size()));
+            detail::throw_if_failed();
+            if (static_cast<std::size_t>(total) <= planes.size()) {
+                planes.resize(static_cast<std::size_t>(total));
+                return planes;
+            }
+            planes.resize(static_cast<std::size_t>(total));
+        }
+    }
+    /** Moves a character (i2d_world_move_character): the capsule in its own frame, from
+     *  position by velocity * time_step. Pushing (def.push_mass > 0) is its only change to
+     *  the world. */
+    i2d_character_result move_character(const i2d_character_def& def, const i2d_capsule& capsule, i2d_vec2 position,
+                                        i2d_vec2 velocity, float time_step = 1.0f / 60.0f) {
+        i2d_character_result out{};
+        i2d_world_move_character(id_, &def, &capsule, position, velocity, time_step, &out);
+        detail::throw_if_failed();
+        return out;
+    }
+    /** The non-throwing form: a zeroed result when refused. */
+    i2d_character_result move_character(const i2d_character_def& def, const i2d_capsule& capsule, i2d_vec2 position,
+                                        i2d_vec2 velocity, float time_step, Status& status) noexcept {
+        i2d_character_result out{};
+        i2d_world_move_character(id_, &def, &capsule, position, velocity, time_step, &out);
+        detail::record(status);
+        return out;
     }
     /** The last step's contact events (arrays owned by the world, valid until the next step). */
     i2d_contact_events contact_events() const { return checked(i2d_world_get_contact_events(id_)); }

@@ -34,7 +34,8 @@ typedef struct i2d_plane {
 
 /** A plane the mover touches, as i2d_world_collide_mover reports it: the normal points
  *  from the shape toward the mover, and offset is the mover's signed separation along it
- *  (negative when overlapping). */
+ *  (negative when overlapping). Moved by d, the mover keeps clear of the shape while
+ *  offset + dot(normal, d) >= 0 (the plane standing in for the surface). */
 typedef struct i2d_collision_plane {
     i2d_plane plane;
     /** How far the plane may push the mover; FLT_MAX for a rigid plane. */
@@ -54,24 +55,36 @@ typedef struct i2d_plane_result {
 
 /** The fraction of translation, in [0, 1], that the capsule (world coordinates) can move
  *  before it comes within the world's contact slop of a shape the filter sees (1: the
- *  whole way). Shapes it already touches or overlaps stop it only when it moves deeper
- *  into them. Sensors are not seen. Bad input: 0 and a status. */
+ *  whole way). It stops at a gap between a half and three quarters of the slop (the
+ *  world def's contact_slop, at least the linear slop, 0.005 m in the world's units), so
+ *  that i2d_world_collide_mover finds again what stopped it. Shapes it already touches
+ *  (within that gap) or overlaps stop it only when it moves deeper into them: at once,
+ *  fraction 0. It never passes through a shape however long the translation. Sensors are
+ *  not seen. A query: allowed inside query callbacks. Bad input: 0 and a status. */
 I2D_API float i2d_world_cast_mover(i2d_world_id world, const i2d_capsule* mover, i2d_vec2 translation,
                                    i2d_query_filter filter);
 
-/** The planes of the shapes within the contact slop of the capsule (world coordinates):
- *  touching, overlapping or slightly apart. Fills out with up to capacity planes (rigid,
- *  clipping velocity) and returns how many there are (out may be NULL with capacity 0 to
- *  count). Sensors are not seen. Bad input: 0 and a status. */
+/** The planes of the shapes within the contact slop of the capsule (world coordinates,
+ *  the slop as for i2d_world_cast_mover): touching, overlapping or slightly apart, one
+ *  per shape, in a fixed order for the same world. Fills out with up to capacity planes
+ *  (rigid: push_limit FLT_MAX, push 0, clip_velocity true) and returns how many there are
+ *  (out may be NULL with capacity 0 to count). Sensors are not seen. Bad input: 0 and a
+ *  status. */
 I2D_API int32_t i2d_world_collide_mover(i2d_world_id world, const i2d_capsule* mover, i2d_query_filter filter,
                                         i2d_collision_plane* out, int32_t capacity);
 
 /** Moves target_delta until every rigid plane's separation plus the move along its normal
- *  is at least zero (soft planes push at most push_limit), filling each plane's push.
- *  Pure: needs no world. NaN or infinite input gives a zero translation and a status. */
+ *  is at least zero (soft planes push at most push_limit), filling each plane's push:
+ *  iterative projection, each plane pushing along its normal, never pulling, sweeps until
+ *  the pushes settle (at most 32; iteration_count says how many, 0 without planes). Pure:
+ *  needs no world. Refused (a zero translation, pushes untouched, a status): NaN or
+ *  infinite input, a count below zero, NULL planes with a count, a normal not of unit
+ *  length (within 1e-3), a push_limit below zero, an offset or a delta beyond 1e9. */
 I2D_API i2d_plane_result i2d_solve_planes(i2d_vec2 target_delta, i2d_collision_plane* planes, int32_t count);
 
-/** The vector with the part that runs into planes with clip_velocity set removed. Pure. */
+/** The vector with the part that runs into planes with clip_velocity set removed: the
+ *  nearest vector that runs into none of them (in a corner of two, possibly zero). Pure;
+ *  refused as i2d_solve_planes refuses, with a zero vector. */
 I2D_API i2d_vec2 i2d_clip_vector(i2d_vec2 vector, const i2d_collision_plane* planes, int32_t count);
 
 /** How i2d_world_move_character moves a character. Obtain with
@@ -100,8 +113,12 @@ typedef struct i2d_character_def {
 typedef struct i2d_character_result {
     /** Where the capsule's local origin ends. */
     i2d_vec2 position;
-    /** The velocity asked for, clipped by what was hit. It does not include
-     *  ground_velocity: add that to ride a moving platform. */
+    /** The velocity asked for, clipped by what the character ends up touching: walls and
+     *  ceilings take away the part that runs into them (and a wall too steep to walk, the
+     *  part that would rise along it); ground takes away only the downward part, so a
+     *  level walk onto a ramp or a step stays level rather than turning into a climb that
+     *  would carry the character off the top. It does not include ground_velocity: add
+     *  that to ride a moving platform. */
     i2d_vec2 velocity;
     /** Whether a plane under the character has a normal within max_slope_angle of up
      *  (up is opposite the world's gravity; +y in a world without gravity). */
@@ -112,19 +129,25 @@ typedef struct i2d_character_result {
     i2d_shape_id ground_shape;
     /** The velocity of the ground's body at the feet. */
     i2d_vec2 ground_velocity;
-    /** How many shapes the move touched. */
+    /** How many distinct shapes the move touched (counted up to 64). */
     int32_t hit_count;
 } i2d_character_result;
 
 I2D_API i2d_character_def i2d_default_character_def(void);
 
 /** Moves the capsule (given in the character's local frame) from position by velocity *
- *  time_step: cast-and-slide against the shapes the filter sees, stepping onto ledges up
- *  to step_height and snapping down to ground within snap_distance (only when it was on
- *  the ground and is not moving up). It never passes through a shape however fast it
- *  moves. Apart from the impulses it gives dynamic bodies it pushes (push_mass > 0), it
- *  changes nothing in the world. Bad input (NaN, inf, a negative time step, a bad id, an
- *  uninitialised def): a status, out zeroed and the world untouched. */
+ *  time_step: cast-and-slide against the shapes the filter sees (sensors not), keeping
+ *  `skin` (plus at most the contact slop) from every surface, not climbing ground
+ *  steeper than max_slope_angle, stepping onto ledges up to step_height and snapping
+ *  down to ground within snap_distance (only when it was on the ground and is not moving
+ *  up). It never passes through a shape however fast it moves. Each dynamic body it ends
+ *  up touching and moving into gets an impulse, as from a body of push_mass meeting it
+ *  in a plastic collision (and wakes); apart from those (push_mass > 0), it changes
+ *  nothing in the world, and a move with push_mass 0 is a query, allowed inside query
+ *  callbacks (one that pushes gets I2D_ERR_WORLD_LOCKED there). Allocates nothing. Bad
+ *  input (NaN, inf, a negative time step, a move longer than 1e9, a bad id, NULL, an
+ *  uninitialised def or one out of its ranges, a capsule radius outside [1e-4, 1e5]): a
+ *  status, out zeroed and the world untouched. */
 I2D_API i2d_status i2d_world_move_character(i2d_world_id world, const i2d_character_def* def,
                                             const i2d_capsule* capsule, i2d_vec2 position, i2d_vec2 velocity,
                                             float time_step, i2d_character_result* out);

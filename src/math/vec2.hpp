@@ -117,6 +117,12 @@ inline bool contains(const AABB& outer, const AABB& inner) {
 }
 /// The smallest box holding both.
 inline AABB union_of(const AABB& a, const AABB& b) { return {min(a.lower, b.lower), max(a.upper, b.upper)}; }
+/// The box grown by margin (>= 0) on every side.
+inline AABB grown(const AABB& a, float margin) { return {a.lower - Vec2{margin, margin}, a.upper + Vec2{margin, margin}}; }
+/// The smallest box holding the box at its start and moved by translation.
+inline AABB swept(const AABB& a, Vec2 translation) {
+    return union_of(a, {a.lower + translation, a.upper + translation});
+}
 inline bool contains_point(const AABB& a, Vec2 p) {
     return p.x >= a.lower.x && p.x <= a.upper.x && p.y >= a.lower.y && p.y <= a.upper.y;
 }

@@ -11,7 +11,8 @@
 // broken. The library must never crash, leak or trip a sanitizer, and a world (into
 // which the API accepts only finite values) must never report a non-finite position,
 // velocity or joint measure; a cast's normal is unit and a translation longer than 1e9 m
-// is refused; a joint's angles read back in (-pi, pi]. A breach aborts with a message.
+// is refused; a joint's angles read back in (-pi, pi]; the character mover's answers are
+// finite (fuzz_mover_calls.inl). A breach aborts with a message.
 //
 // Only the public header is used: the harness is a hostile C API caller.
 #include <impulse2d/impulse2d.h>
@@ -22,6 +23,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <vector>
 
 #include "../api/any_joint_def.h"
 #include "fuzz_input.hpp"
@@ -1102,9 +1104,12 @@ constexpr uint8_t joint_sub_first = 30;
 #include "fuzz_runtime_calls.inl"
 #include "fuzz_draw_calls.inl"
 #include "fuzz_hook_calls.inl"
+#include "fuzz_mover_calls.inl"
 
-// Query-group instructions: debug draws in [draw_sub_first, hook_sub_first), contact hook
-// and explosion calls from hook_sub_first on.
+// Query-group instructions: the character mover in [mover_sub_first, draw_sub_first), debug
+// draws in [draw_sub_first, hook_sub_first), contact hook and explosion calls from
+// hook_sub_first on.
+constexpr uint8_t mover_sub_first = 14;
 constexpr uint8_t draw_sub_first = 24;
 constexpr uint8_t hook_sub_first = 34;
 
@@ -1139,6 +1144,8 @@ void run_program(FuzzInput& in) {
             run_hook_call(in, sub);
         } else if (group == 4 && sub >= draw_sub_first) {
             run_draw_call(in, sub);
+        } else if (group == 4 && sub >= mover_sub_first) {
+            run_mover_call(in, sub);
         } else if (group == 4) {
             run_query_call(in, sub % 7);
         } else {

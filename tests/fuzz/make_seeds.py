@@ -183,6 +183,38 @@ def draw(variant, flags=None, culled_half=None):
     return p + pokes
 
 
+def mover_op(sub):
+    """A mover call (fuzz_mover_calls.inl): group 4, subs 14 to 23; sub % 6 picks the call."""
+    return 4 + 6 * sub
+
+
+def mover_capsule():
+    # flag (small values), centres (0, 0.3) and (0, 1.5), radius 0.3
+    return [1] + small(0) + small(0.3) + small(0) + small(1.5) + small(0.3)
+
+
+def mover_plane(angle, offset):
+    # a unit normal at angle, offset, rigid (FLT_MAX), push left 0, clipping
+    return [0] + small(angle) + small(offset) + [1] + small(0) + [1]
+
+
+def mover_calls():
+    """A character walked at 4 m/s from the floor's left end into the pile (pushing it),
+    with a cast, a collide, the plane calls on a floor and a wall, and a pushing move
+    tried inside a query callback."""
+    p = [mover_op(18), 0] + mover_capsule() + [1] + small(1) + small(0) + [0, 0]      # cast
+    p += [mover_op(19), 0] + mover_capsule() + [1, 4, 0, 0]                          # collide
+    planes = [3, 2] + mover_plane(1.5708, 0) + mover_plane(3.1416 - 4, 0.05)
+    p += [mover_op(20), 0] + planes + [1] + small(0.3) + small(-0.2)                  # solve
+    p += [mover_op(21), 0] + planes + [1] + small(1.5) + small(-1.5)                  # clip
+    for _ in range(20):                                                             # moves
+        p += [mover_op(23), 0, 0, 0] + mover_capsule() + [1] + small(-1.8) + small(-0.73)
+        p += [1] + small(0.5) + small(0) + [1, 0, 0, 0]
+    p += [mover_op(22), 0] + small(-2) + small(-1) + small(1) + small(1.5)          # in a query
+    p += [0] + small(-1.8) + small(-0.73) + small(0.5) + small(0) + [200]           # pushing; stop
+    return p
+
+
 seeds = {
     "pile_steps": pile() + step(30),
     "pile_queries": pile() + step(10) + overlap_query() + ray_query() + step(5),
@@ -199,6 +231,7 @@ seeds = {
     "finding_joint_far_angles": far_joint_angles(),
     "finding_cast_starting_inside": cast_starting_inside(),
     "finding_cast_past_the_bound": cast_past_the_bound(),
+    "pile_mover": pile() + step(10) + mover_calls() + step(5),
 }
 here = os.path.dirname(os.path.abspath(__file__))
 for name, program in seeds.items():

@@ -11,7 +11,7 @@
 // that a change is never half made. The work is split by what it changes:
 // world.cpp (creation and the wiring between stages), world_bodies.cpp,
 // world_body_enable.cpp, world_shapes.cpp, world_joints.cpp, world_step.cpp,
-// world_query.cpp, world_draw.cpp, world_origin.cpp and world_validate.cpp.
+// world_query.cpp, world_mover.cpp, world_draw.cpp, world_origin.cpp and world_validate.cpp.
 #pragma once
 
 #include <cstddef>
@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "broadphase/proxy_key.hpp"
+#include "collision/mover_contact.hpp"
 #include "collision/shape_proxy.hpp"
 #include "core/function_ref.hpp"
 #include "core/pool.hpp"
@@ -236,6 +237,24 @@ public:
     /// Every shape the proxy (world space) overlaps or touches.
     void overlap_shape(const ShapeProxy& proxy, const QueryFilter& filter, ShapeVisitor visit, void* context) const;
     void rebuild_static_tree();
+
+    // The character mover's queries (world_mover.cpp): a capsule in world space, moved by
+    // game code rather than by the solver. They see no sensors and call no user code.
+    /// The mover's touching tolerance, length units: the contact slop, at least the linear
+    /// slop (a mover needs a band to stop in and find again).
+    float mover_slop() const;
+    /// The fraction in [0, 1] of translation the capsule goes before it comes within the
+    /// mover slop of a shape (mover_cast: touched shapes stop it only moving deeper).
+    float cast_mover(const Capsule& mover, Vec2 translation, const QueryFilter& filter) const;
+    /// Calls visit for every shape within the mover slop of the capsule, with its plane.
+    void collide_mover(const Capsule& mover, const QueryFilter& filter,
+                       FunctionRef<void(int32_t shape, const MoverContact& contact)> visit) const;
+    /// Calls visit(shape) for every shape but sensors that the filter sees and whose tight
+    /// box overlaps box, in the trees' fixed order; visit returns false to stop.
+    void visit_mover_shapes(const AABB& box, const QueryFilter& filter, FunctionRef<bool(int32_t shape)> visit) const;
+    /// The shape's proxy placed where its body is.
+    ShapeProxy placed_proxy(int32_t shape) const;
+
     /// The touching contacts of the body (of one of its shapes, unless shape is
     /// null_index) and the shapes visiting a sensor shape, as the last step left them
     /// (ContactSet::visit_touching, visit_sensor_visitors). They read only: allowed while
