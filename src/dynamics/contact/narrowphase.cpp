@@ -115,7 +115,7 @@ uint8_t ContactSet::collide_one(int32_t k, const StepContext& step) {
         if (!recycle(c, bodies_[a.body], bodies_[b.body], step.tolerances)) {
             update_contact(c, a, b, step);
         }
-        if (pre_solve_refuses(c)) {
+        if ((c.flags & contact_pre_solve) != 0 && pre_solve_refuses(c)) {  // the flag first: no call
             c.point_count = 0;
             c.flags &= ~uint32_t(contact_recyclable);  // the hook is asked again next step
         }
@@ -183,7 +183,7 @@ void ContactSet::update_contact(Contact& c, const Shape& a, const Shape& b, cons
 // The pre-solve hook may turn a contact with points off for this step: it then has none,
 // so the solver neither pushes nor counts it as touching (an end event if it was).
 bool ContactSet::pre_solve_refuses(const Contact& c) const {
-    if ((c.flags & contact_pre_solve) == 0 || hooks_.pre_solve.call == nullptr || c.point_count == 0) {
+    if (hooks_.pre_solve.call == nullptr || c.point_count == 0) {
         return false;
     }
     return !hooks_.allows_contact(events_.ids, shapes_, c.shape_a, c.shape_b, manifold_of(c));
