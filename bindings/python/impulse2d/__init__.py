@@ -29,6 +29,9 @@ deep-copies through a snapshot. World.start_recording streams every change and s
 Replay replays such a recording and names the first step whose hash differs.
 Contact hooks (World.set_custom_filter, World.set_pre_solve) decide pair by pair whether
 shapes touch: one-way platforms, ghosts; World.explode pushes what is near a blast.
+World.move_character moves a game character's capsule (walks, slides, climbs steps,
+rides platforms); World.cast_mover, World.collide_mover, solve_planes and clip_vector are
+the pieces for movers of one's own.
 
 The native library is found through IMPULSE2D_LIBRARY, next to this package, in the
 source tree's build directories or where ``cmake --install`` put it; its struct layouts
@@ -50,11 +53,14 @@ from .errors import (
     WorldLocked,
 )
 from .joint import Joint
+from ._mover import clip_vector, solve_planes
 from .shape import Shape, shape_distance
 from .types import (
     BodyMove,
     BodyQuarantine,
     BodyType,
+    CharacterResult,
+    CollisionPlane,
     ContactBegin,
     ContactData,
     ContactEnd,
@@ -63,6 +69,7 @@ from .types import (
     Manifold,
     ManifoldPoint,
     MassData,
+    PlaneResult,
     RayHit,
     SensorBegin,
     SensorEnd,
@@ -106,6 +113,11 @@ __all__ = [
     "ContactData",
     "DistanceResult",
     "shape_distance",
+    "CharacterResult",
+    "CollisionPlane",
+    "PlaneResult",
+    "solve_planes",
+    "clip_vector",
     "Impulse2DError",
     "InvalidArgument",
     "InvalidHandle",

@@ -86,6 +86,18 @@ USES: Dict[str, Dict[str, str]] = {
     "i2d_explosion_def": {
         "mask_bits": "uint64", "position": _VEC2, "radius": "float", "falloff": "float", "impulse_per_length": "float",
     },
+    # The character mover (toolkit.h).
+    "i2d_plane": {"normal": _VEC2, "offset": "float"},
+    "i2d_collision_plane": {"plane": "i2d_plane", "push_limit": "float", "push": "float", "clip_velocity": "bool"},
+    "i2d_plane_result": {"translation": _VEC2, "iteration_count": "int32"},
+    "i2d_character_def": {
+        "max_slope_angle": "float", "step_height": "float", "snap_distance": "float", "skin": "float",
+        "max_iterations": "int32", "push_mass": "float", "filter": "i2d_query_filter",
+    },
+    "i2d_character_result": {
+        "position": _VEC2, "velocity": _VEC2, "on_ground": "bool", "ground_normal": _VEC2, "ground_shape": _ID,
+        "ground_velocity": _VEC2, "hit_count": "int32",
+    },
 }
 # Every joint def: its base (its own settings pass through by name, as with the other defs).
 USES.update({"i2d_%s_joint_def" % kind: {"base": "i2d_joint_base"} for kind in JOINT_KINDS})
