@@ -158,6 +158,19 @@ class DistanceResult(NamedTuple):
     distance: float  #: between the surfaces; 0 when they touch or overlap
 
 
+class Transform(NamedTuple):
+    """A position and rotation, as the debug drawer's callbacks receive them
+    (i2d_transform): apply() places a point given in its frame."""
+
+    position: Vec
+    rotation: Vec  #: (cosine, sine)
+
+    def apply(self, point: Vec) -> Vec:
+        """point (in this frame) in world coordinates."""
+        (px, py), (c, s), (x, y) = self.position, self.rotation, point
+        return (c * x - s * y + px, s * x + c * y + py)
+
+
 class CollisionPlane(NamedTuple):
     """A plane the character mover touches or is kept from (i2d_collision_plane): the
     points x with dot(normal, x) = offset, normal unit. As World.collide_mover reports

@@ -8,7 +8,7 @@ from ._native import apply_settings, check, check_last, lib, pair, rot, vec2
 from ._structs import AABB, QueryFilter
 from ._hooks import Hooks
 from ._library import _OVERLAP_FN, _WRITE_FN
-from . import _mover
+from . import _draw, _mover
 from . import joint as _joint
 from ._mover import CapsuleLike
 from .body import Body
@@ -608,6 +608,54 @@ class World:
         in a fixed order for the same world. Feed them to solve_planes and clip_vector to
         build a mover of your own. Filter and sensors as for cast_mover."""
         return _mover.collide_mover(self, capsule, filter)
+
+    # ---- Debug drawing (include/impulse2d/toolkit.h) ---------------------------------------
+
+    def draw(
+        self,
+        drawer: Any,
+        *,
+        shapes: bool = True,
+        joints: bool = True,
+        joint_extras: bool = False,
+        bounds: bool = False,
+        mass: bool = False,
+        contacts: bool = False,
+        contact_normals: bool = False,
+        contact_impulses: bool = False,
+        friction_impulses: bool = False,
+        graph_colors: bool = False,
+        islands: bool = False,
+        bounds_box: Optional[Sequence[Sequence[float]]] = None,
+    ) -> None:
+        """Draws the world through the drawer's methods, before returning (i2d_world_draw):
+        draw_polygon(vertices, color), draw_solid_polygon(transform, vertices, radius,
+        color), draw_circle(center, radius, color), draw_solid_circle(transform, radius,
+        color), draw_solid_capsule(p1, p2, radius, color), draw_segment(p1, p2, color),
+        draw_transform(transform), draw_point(p, size, color), draw_string(p, text, color).
+        Points are (x, y) tuples in world units (a solid polygon's vertices are local:
+        transform.apply places them); transform is a Transform(position, rotation); color an
+        int 0xRRGGBB, one of the COLOR_* constants (a shape's says its body's state). What
+        the drawer has no method for is not drawn.
+
+        The flags choose what is drawn: shapes, joints (on by default), joint_extras
+        (limits, motors, springs), bounds (shapes' fattened boxes), mass (centres of mass
+        and mass as text), contacts (points), contact_normals, contact_impulses,
+        friction_impulses, graph_colors (contact points in their solver colour), islands
+        (awake islands' boxes). bounds_box ((min_x, min_y), (max_x, max_y)) draws only the
+        shapes whose bounds overlap it, and their bodies' joints, contacts and the rest.
+
+        The world is locked while the methods run: calls that change it raise WorldLocked
+        there; getters, queries and draw work. The first exception a method raises ends
+        the drawer's part (the library finishes its pass without calling the drawer again)
+        and is raised here. InvalidArgument for a bounds_box that is not finite or is
+        inverted; InvalidHandle for a destroyed world. Each picture costs a Python call,
+        see bindings/python/README.md."""
+        flags = dict(draw_shapes=shapes, draw_joints=joints, draw_joint_extras=joint_extras, draw_bounds=bounds,
+                     draw_mass=mass, draw_contacts=contacts, draw_contact_normals=contact_normals,
+                     draw_contact_impulses=contact_impulses, draw_friction_impulses=friction_impulses,
+                     draw_graph_colors=graph_colors, draw_islands=islands)
+        _draw.draw(self, drawer, flags, bounds_box)
 
     # ---- Queries ---------------------------------------------------------------------------
 
