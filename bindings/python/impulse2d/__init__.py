@@ -29,6 +29,10 @@ deep-copies through a snapshot. World.start_recording streams every change and s
 Replay replays such a recording and names the first step whose hash differs.
 Contact hooks (World.set_custom_filter, World.set_pre_solve) decide pair by pair whether
 shapes touch: one-way platforms, ghosts; World.explode pushes what is near a blast.
+World.move_character moves a game character's capsule (walks, slides, climbs steps,
+rides platforms); World.cast_mover, World.collide_mover, solve_planes and clip_vector are
+the pieces for movers of one's own. World.draw hands the world to a drawer's draw_*
+methods, in the COLOR_* colours.
 
 The native library is found through IMPULSE2D_LIBRARY, next to this package, in the
 source tree's build directories or where ``cmake --install`` put it; its struct layouts
@@ -50,11 +54,39 @@ from .errors import (
     WorldLocked,
 )
 from .joint import Joint
+from ._draw import (
+    COLOR_ASLEEP,
+    COLOR_AWAKE,
+    COLOR_BOUNDS,
+    COLOR_BULLET,
+    COLOR_CONTACT,
+    COLOR_CONTACT_IMPULSE,
+    COLOR_CONTACT_NORMAL,
+    COLOR_DISABLED,
+    COLOR_FRICTION_IMPULSE,
+    COLOR_GRAPH_OVERFLOW,
+    COLOR_ISLAND,
+    COLOR_JOINT,
+    COLOR_JOINT_ANCHOR,
+    COLOR_JOINT_LIMIT,
+    COLOR_JOINT_MOTOR,
+    COLOR_JOINT_SPRING,
+    COLOR_KINEMATIC,
+    COLOR_MASS,
+    COLOR_QUARANTINED,
+    COLOR_SENSOR,
+    COLOR_SPECULATIVE,
+    COLOR_STATIC,
+    GRAPH_COLORS,
+)
+from ._mover import clip_vector, solve_planes
 from .shape import Shape, shape_distance
 from .types import (
     BodyMove,
     BodyQuarantine,
     BodyType,
+    CharacterResult,
+    CollisionPlane,
     ContactBegin,
     ContactData,
     ContactEnd,
@@ -63,11 +95,13 @@ from .types import (
     Manifold,
     ManifoldPoint,
     MassData,
+    PlaneResult,
     RayHit,
     SensorBegin,
     SensorEnd,
     ShapeType,
     SurfaceMaterial,
+    Transform,
 )
 from .world import World
 from .replay import Replay
@@ -106,6 +140,35 @@ __all__ = [
     "ContactData",
     "DistanceResult",
     "shape_distance",
+    "CharacterResult",
+    "CollisionPlane",
+    "PlaneResult",
+    "solve_planes",
+    "clip_vector",
+    "Transform",
+    "GRAPH_COLORS",
+    "COLOR_ASLEEP",
+    "COLOR_AWAKE",
+    "COLOR_BOUNDS",
+    "COLOR_BULLET",
+    "COLOR_CONTACT",
+    "COLOR_CONTACT_IMPULSE",
+    "COLOR_CONTACT_NORMAL",
+    "COLOR_DISABLED",
+    "COLOR_FRICTION_IMPULSE",
+    "COLOR_GRAPH_OVERFLOW",
+    "COLOR_ISLAND",
+    "COLOR_JOINT",
+    "COLOR_JOINT_ANCHOR",
+    "COLOR_JOINT_LIMIT",
+    "COLOR_JOINT_MOTOR",
+    "COLOR_JOINT_SPRING",
+    "COLOR_KINEMATIC",
+    "COLOR_MASS",
+    "COLOR_QUARANTINED",
+    "COLOR_SENSOR",
+    "COLOR_SPECULATIVE",
+    "COLOR_STATIC",
     "Impulse2DError",
     "InvalidArgument",
     "InvalidHandle",

@@ -48,6 +48,7 @@ def signatures(S: _structs.Structs) -> Dict[str, Tuple[Any, List[Any]]]:
     Transform, Vec2, WorldCounters, WorldDef = S.Transform, S.Vec2, S.WorldCounters, S.WorldDef
     MassData, SurfaceMaterial, ShapeProxy, DistanceResult = S.MassData, S.SurfaceMaterial, S.ShapeProxy, S.DistanceResult
     ExplosionDef = S.ExplosionDef
+    CharacterDef, CharacterResult, PlaneResult, DebugDraw = S.CharacterDef, S.CharacterResult, S.PlaneResult, S.DebugDraw
     return {
         "i2d_version": (C.c_uint32, []),
         "i2d_status_string": (C.c_char_p, [C.c_int32]),
@@ -100,6 +101,18 @@ def signatures(S: _structs.Structs) -> Dict[str, Tuple[Any, List[Any]]]:
         "i2d_world_set_pre_solve_callback": (_STATUS, [_ID, _PRE_SOLVE_FN, C.c_void_p]),
         "i2d_default_explosion_def": (ExplosionDef, []),
         "i2d_world_explode": (_STATUS, [_ID, C.POINTER(ExplosionDef)]),
+        # the character mover (toolkit.h); plane arrays passed as addresses
+        "i2d_world_cast_mover": (C.c_float, [_ID, C.POINTER(Capsule), Vec2, QueryFilter]),
+        "i2d_world_collide_mover": (C.c_int32, [_ID, C.POINTER(Capsule), QueryFilter, _PTR, C.c_int32]),
+        "i2d_solve_planes": (PlaneResult, [Vec2, _PTR, C.c_int32]),
+        "i2d_clip_vector": (Vec2, [Vec2, _PTR, C.c_int32]),
+        "i2d_default_character_def": (CharacterDef, []),
+        "i2d_world_move_character": (
+            _STATUS, [_ID, C.POINTER(CharacterDef), C.POINTER(Capsule), Vec2, Vec2, C.c_float, C.POINTER(CharacterResult)]
+        ),
+        # debug drawing (toolkit.h)
+        "i2d_default_debug_draw": (DebugDraw, []),
+        "i2d_world_draw": (_STATUS, [_ID, C.POINTER(DebugDraw)]),
         # snapshots and rollback states (snapshot.h); buffers passed as addresses or bytes
         "i2d_world_get_snapshot_size": (C.c_size_t, [_ID]),
         "i2d_world_save_snapshot": (_STATUS, [_ID, _PTR, C.c_size_t, C.POINTER(C.c_size_t)]),

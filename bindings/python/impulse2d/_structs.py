@@ -25,6 +25,17 @@ NAMES = {"i2d_aabb": "AABB"}
 # Joint kinds in i2d_joint_type order: the C enum's value is the index.
 JOINT_KINDS = ("distance", "filter", "motor", "mouse", "prismatic", "revolute", "weld", "wheel")
 
+# i2d_debug_draw's callbacks (each the name of the drawer's method it calls) and its
+# flags, in the header's order.
+DRAW_CALLBACKS = (
+    "draw_polygon", "draw_solid_polygon", "draw_circle", "draw_solid_circle", "draw_solid_capsule", "draw_segment",
+    "draw_transform", "draw_point", "draw_string",
+)
+DRAW_FLAGS = (
+    "draw_shapes", "draw_joints", "draw_joint_extras", "draw_bounds", "draw_mass", "draw_contacts",
+    "draw_contact_normals", "draw_contact_impulses", "draw_friction_impulses", "draw_graph_colors", "draw_islands",
+)
+
 _VEC2 = "i2d_vec2"
 _ID = "i2d_shape_id"
 USES: Dict[str, Dict[str, str]] = {
@@ -86,6 +97,23 @@ USES: Dict[str, Dict[str, str]] = {
     "i2d_explosion_def": {
         "mask_bits": "uint64", "position": _VEC2, "radius": "float", "falloff": "float", "impulse_per_length": "float",
     },
+    # The character mover (toolkit.h).
+    "i2d_plane": {"normal": _VEC2, "offset": "float"},
+    "i2d_collision_plane": {"plane": "i2d_plane", "push_limit": "float", "push": "float", "clip_velocity": "bool"},
+    "i2d_plane_result": {"translation": _VEC2, "iteration_count": "int32"},
+    "i2d_character_def": {
+        "max_slope_angle": "float", "step_height": "float", "snap_distance": "float", "skin": "float",
+        "max_iterations": "int32", "push_mass": "float", "filter": "i2d_query_filter",
+    },
+    "i2d_character_result": {
+        "position": _VEC2, "velocity": _VEC2, "on_ground": "bool", "ground_normal": _VEC2, "ground_shape": _ID,
+        "ground_velocity": _VEC2, "hit_count": "int32",
+    },
+    # Debug drawing (toolkit.h): the callbacks, the culling box and the flags.
+    "i2d_debug_draw": dict(
+        {name: "function" for name in DRAW_CALLBACKS},
+        drawing_bounds="i2d_aabb", **{name: "bool" for name in ("use_drawing_bounds",) + DRAW_FLAGS},
+    ),
 }
 # Every joint def: its base (its own settings pass through by name, as with the other defs).
 USES.update({"i2d_%s_joint_def" % kind: {"base": "i2d_joint_base"} for kind in JOINT_KINDS})

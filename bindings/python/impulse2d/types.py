@@ -2,7 +2,7 @@
 """Enumerations and the named tuples that events and queries return."""
 
 import enum
-from typing import NamedTuple, Tuple, TYPE_CHECKING
+from typing import NamedTuple, Optional, Tuple, TYPE_CHECKING
 
 if TYPE_CHECKING:  # pragma: no cover
     from .body import Body
@@ -156,3 +156,57 @@ class DistanceResult(NamedTuple):
     point_b: Vec  #: on B's surface
     normal: Vec  #: unit, from A towards B; (0, 0) when they overlap
     distance: float  #: between the surfaces; 0 when they touch or overlap
+
+
+class Transform(NamedTuple):
+    """A position and rotation, as the debug drawer's callbacks receive them
+    (i2d_transform): apply() places a point given in its frame."""
+
+    position: Vec
+    rotation: Vec  #: (cosine, sine)
+
+    def apply(self, point: Vec) -> Vec:
+        """point (in this frame) in world coordinates."""
+        (px, py), (c, s), (x, y) = self.position, self.rotation, point
+        return (c * x - s * y + px, s * x + c * y + py)
+
+
+class CollisionPlane(NamedTuple):
+    """A plane the character mover touches or is kept from (i2d_collision_plane): the
+    points x with dot(normal, x) = offset, normal unit. As World.collide_mover reports
+    one, the normal points from the shape toward the mover and offset is the mover's
+    signed separation (negative when overlapping); moved by d, the mover keeps clear
+    while offset + dot(normal, d) >= 0. A tuple (normal, offset) works wherever a plane
+    is taken."""
+
+    normal: Vec
+    offset: float
+    #: How far the plane may push the mover (solve_planes); math.inf for a rigid plane
+    #: (the C API's FLT_MAX, which is what it is given).
+    push_limit: float = float("inf")
+    #: How far solve_planes found it pushed; 0 in what collide_mover reports.
+    push: float = 0.0
+    #: Whether clip_vector clips against it.
+    clip_velocity: bool = True
+
+
+class PlaneResult(NamedTuple):
+    """What solve_planes found (i2d_plane_result, plus each plane's push)."""
+
+    translation: Vec  #: the move that keeps every rigid plane's separation >= 0
+    iteration_count: int  #: sweeps it took (at most 32; 0 without planes)
+    pushes: Tuple[float, ...]  #: how far each plane pushed, in the order given
+
+
+class CharacterResult(NamedTuple):
+    """Where World.move_character left the character (i2d_character_result)."""
+
+    position: Vec  #: where the capsule's local origin ends
+    #: The velocity asked for, less what runs into walls and ceilings and the downward part
+    #: the ground takes; without ground_velocity (add that to ride a platform).
+    velocity: Vec
+    on_ground: bool  #: standing on ground within max_slope_angle of up
+    ground_normal: Vec  #: (0, 0) when not on the ground
+    ground_shape: Optional["Shape"]  #: the shape stood on, or None
+    ground_velocity: Vec  #: the velocity of the ground's body at the feet
+    hit_count: int  #: distinct shapes the move touched (counted up to 64)

@@ -8,7 +8,9 @@ from ._native import apply_settings, check, check_last, lib, pair, rot, vec2
 from ._structs import AABB, QueryFilter
 from ._hooks import Hooks
 from ._library import _OVERLAP_FN, _WRITE_FN
+from . import _draw, _mover
 from . import joint as _joint
+from ._mover import CapsuleLike
 from .body import Body
 from .errors import InvalidArgument, InvalidHandle
 from .joint import Joint
@@ -17,6 +19,8 @@ from .types import (
     BodyMove,
     BodyQuarantine,
     BodyType,
+    CharacterResult,
+    CollisionPlane,
     ContactBegin,
     ContactEnd,
     Counters,
@@ -545,6 +549,113 @@ class World:
         blast.radius, blast.falloff, blast.impulse_per_length = radius, falloff, impulse_per_length
         blast.mask_bits = mask_bits
         check(lib.i2d_world_explode(self._id, C.byref(blast)))
+
+    # ---- The character mover (include/impulse2d/toolkit.h) ---------------------------------
+
+    def move_character(
+        self,
+        capsule: CapsuleLike,
+        position: Sequence[float],
+        velocity: Sequence[float],
+        time_step: float,
+        *,
+        max_slope_angle: Optional[float] = None,
+        step_height: Optional[float] = None,
+        snap_distance: Optional[float] = None,
+        skin: Optional[float] = None,
+        max_iterations: Optional[int] = None,
+        push_mass: Optional[float] = None,
+        filter: Any = None,
+    ) -> CharacterResult:
+        """Moves a character's capsule ((center1, center2, radius) in the character's frame,
+        as Shape.geometry() gives a capsule) from position by velocity * time_step:
+        cast-and-slide against the shapes the filter sees, keeping skin from every surface,
+        walking up ground no steeper than max_slope_angle, stepping onto ledges up to
+        step_height and snapping down to ground within snap_distance. It never passes
+        through a shape. Returns a CharacterResult (position, clipped velocity, on_ground,
+        ground_normal, ground_shape, ground_velocity, hit_count); add ground_velocity to the
+        next move's velocity to ride a moving platform.
+
+        Settings left None take i2d_default_character_def()'s values: max_slope_angle
+        0.7854 rad (45 degrees, in [0, pi/2)), step_height 0.25, snap_distance 0.2, skin 0.01
+        (> 0), max_iterations 5 (in [1, 64]), push_mass 80 kg (each dynamic body it moves
+        into gets an impulse as from that mass; 0 pushes nothing and makes the move a pure
+        query). filter is (category_bits, mask_bits), default every shape; sensors are
+        never seen. docs/character_mover.md describes a move.
+
+        InvalidArgument, with the library's message and the world untouched, for NaN or
+        infinite values, a negative time step, a move longer than 1e9, settings out of
+        their ranges or a capsule radius outside [1e-4, 1e5]; WorldLocked for a move that
+        pushes, inside a query or draw callback."""
+        settings = dict(max_slope_angle=max_slope_angle, step_height=step_height, snap_distance=snap_distance,
+                        skin=skin, max_iterations=max_iterations, push_mass=push_mass)
+        d = _mover.character_def(settings, filter)
+        return _mover.move_character(self, d, capsule, position, velocity, time_step)
+
+    def cast_mover(self, capsule: CapsuleLike, translation: Sequence[float], filter: Any = None) -> float:
+        """The fraction of translation, in [0, 1], that the capsule ((center1, center2,
+        radius) in world coordinates) can move before it comes within the world's contact
+        slop of a shape the filter ((category_bits, mask_bits), default every shape) sees:
+        1 the whole way. It stops at a gap of a half to three quarters of the slop, and at
+        once (0) when moving deeper into a shape it already touches; it never passes through
+        one. Sensors are not seen. A query: allowed inside query and draw callbacks."""
+        return _mover.cast_mover(self, capsule, translation, filter)
+
+    def collide_mover(self, capsule: CapsuleLike, filter: Any = None) -> List[CollisionPlane]:
+        """A CollisionPlane per shape within the contact slop of the capsule (world
+        coordinates): its normal from the shape toward the capsule, its offset the signed
+        separation (negative when overlapping), push_limit inf (rigid), clip_velocity True;
+        in a fixed order for the same world. Feed them to solve_planes and clip_vector to
+        build a mover of your own. Filter and sensors as for cast_mover."""
+        return _mover.collide_mover(self, capsule, filter)
+
+    # ---- Debug drawing (include/impulse2d/toolkit.h) ---------------------------------------
+
+    def draw(
+        self,
+        drawer: Any,
+        *,
+        shapes: bool = True,
+        joints: bool = True,
+        joint_extras: bool = False,
+        bounds: bool = False,
+        mass: bool = False,
+        contacts: bool = False,
+        contact_normals: bool = False,
+        contact_impulses: bool = False,
+        friction_impulses: bool = False,
+        graph_colors: bool = False,
+        islands: bool = False,
+        bounds_box: Optional[Sequence[Sequence[float]]] = None,
+    ) -> None:
+        """Draws the world through the drawer's methods, before returning (i2d_world_draw):
+        draw_polygon(vertices, color), draw_solid_polygon(transform, vertices, radius,
+        color), draw_circle(center, radius, color), draw_solid_circle(transform, radius,
+        color), draw_solid_capsule(p1, p2, radius, color), draw_segment(p1, p2, color),
+        draw_transform(transform), draw_point(p, size, color), draw_string(p, text, color).
+        Points are (x, y) tuples in world units (a solid polygon's vertices are local:
+        transform.apply places them); transform is a Transform(position, rotation); color an
+        int 0xRRGGBB, one of the COLOR_* constants (a shape's says its body's state). What
+        the drawer has no method for is not drawn.
+
+        The flags choose what is drawn: shapes, joints (on by default), joint_extras
+        (limits, motors, springs), bounds (shapes' fattened boxes), mass (centres of mass
+        and mass as text), contacts (points), contact_normals, contact_impulses,
+        friction_impulses, graph_colors (contact points in their solver colour), islands
+        (awake islands' boxes). bounds_box ((min_x, min_y), (max_x, max_y)) draws only the
+        shapes whose bounds overlap it, and their bodies' joints, contacts and the rest.
+
+        The world is locked while the methods run: calls that change it raise WorldLocked
+        there; getters, queries and draw work. The first exception a method raises ends
+        the drawer's part (the library finishes its pass without calling the drawer again)
+        and is raised here. InvalidArgument for a bounds_box that is not finite or is
+        inverted; InvalidHandle for a destroyed world. Each picture costs a Python call,
+        see bindings/python/README.md."""
+        flags = dict(draw_shapes=shapes, draw_joints=joints, draw_joint_extras=joint_extras, draw_bounds=bounds,
+                     draw_mass=mass, draw_contacts=contacts, draw_contact_normals=contact_normals,
+                     draw_contact_impulses=contact_impulses, draw_friction_impulses=friction_impulses,
+                     draw_graph_colors=graph_colors, draw_islands=islands)
+        _draw.draw(self, drawer, flags, bounds_box)
 
     # ---- Queries ---------------------------------------------------------------------------
 
