@@ -41,10 +41,14 @@ bool valid_local_capsule(Call& call, const i2d_capsule* capsule) {
 }
 
 bool valid_plane(Call& call, const i2d_collision_plane& p, int32_t index) {
-    char what[48];
+    char what[48], normal[64], offset[64], push_limit[64];
     std::snprintf(what, sizeof what, "planes[%d]", static_cast<int>(index));
-    if (!call.finite(p.plane.normal, what) || !call.in_range(p.plane.offset, -max_coordinate, max_coordinate, what) ||
-        !call.in_range(p.push_limit, 0.0f, FLT_MAX, what)) {
+    std::snprintf(normal, sizeof normal, "%s.plane.normal", what);
+    std::snprintf(offset, sizeof offset, "%s.plane.offset", what);
+    std::snprintf(push_limit, sizeof push_limit, "%s.push_limit", what);
+    if (!call.finite(p.plane.normal, normal) ||
+        !call.in_range(p.plane.offset, -max_coordinate, max_coordinate, offset) ||
+        !call.in_range(p.push_limit, 0.0f, FLT_MAX, push_limit)) {
         return false;
     }
     const float length_sq = p.plane.normal.x * p.plane.normal.x + p.plane.normal.y * p.plane.normal.y;

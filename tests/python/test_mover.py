@@ -341,8 +341,8 @@ def test_plane_calls_refuse_bad_planes_with_the_librarys_message(call):
     cases = [
         (((0.0, 0.0), [((2.0, 0.0), 0.0)]), "planes[0] normal (2, 0) is not unit length"),
         (((math.nan, 0.0), [((0.0, 1.0), 0.0)]), first + ".x is NaN"),
-        (((0.0, 0.0), [((0.0, 1.0), 0.0), ((0.0, 1.0), 0.0, -1.0)]), "planes[1] is -1"),
-        (((0.0, 0.0), [((0.0, 1.0), math.inf)]), "planes[0] is +inf"),
+        (((0.0, 0.0), [((0.0, 1.0), 0.0), ((0.0, 1.0), 0.0, -1.0)]), "planes[1].push_limit is -1"),
+        (((0.0, 0.0), [((0.0, 1.0), math.inf)]), "planes[0].plane.offset is +inf"),
     ]
     for args, message in cases:
         with pytest.raises(impulse2d.InvalidArgument) as caught:
