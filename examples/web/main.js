@@ -1,11 +1,16 @@
 // SPDX-License-Identifier: MIT
-// The scene page: runs a scene live, one world step per animation frame, rewinds while
-// the rewind button or R (or Backspace) is held, and exposes window.impulse2dPage for the
-// browser test (scene choice, stepping, state read-back).
+// The scene page, a gallery drawn only through World.draw: runs a scene live, one world
+// step per animation frame, draws it with the draw-flag toggles through the canvas
+// backend, rewinds while the rewind button or R (or Backspace) is held, lets the
+// platformer's character be walked from the keys, and exposes window.impulse2dPage for
+// the browser test (scene choice, stepping, state read-back).
 import { loadImpulse2d } from '../../bindings/js/src/index.js';
+import { BACKGROUND, CanvasDrawer } from './draw_canvas.js';
+import { makeDrawToggles } from './draw_flags.js';
+import { Keyboard } from './keyboard.js';
+import { Camera, drawFrame } from './renderer.js';
 import { Rewind } from './rewind.js';
 import { SCENES } from './scenes.js';
-import { Camera, draw } from './renderer.js';
 
 const TIME_STEP = 1 / 60;
 const SUBSTEPS = 4;
@@ -23,18 +28,26 @@ const DRAG_MAX_ACCELERATION = 500;  // m/s^2: the joint's max force over the bod
 // mixed scene's, about 0.2 MB, keep the 5 s).
 const REWIND_FRAMES = 5 * 60;
 const REWIND_BYTES = 96 * 1024 * 1024;
+/** The drag joint's spring is drawn red, from the grabbed point to the pointer. */
+const DRAG_COLOR = 0xDC2626;
+/** A dynamic body counts as moved once 1 cm from where the scene put it. */
+const MOVED_DISTANCE = 0.01;
 
 const i2d = await loadImpulse2d();
 const canvas = document.getElementById('view');
 const ctx = canvas.getContext('2d');
 const camera = new Camera(canvas);
+const drawer = new CanvasDrawer(ctx, camera);
+const drawFlags = makeDrawToggles(document.getElementById('flags'));
+const keyboard = new Keyboard(window);
+const actionButton = document.getElementById('action');
 const picker = document.getElementById('scene');
 const readout = document.getElementById('readout');
 const pauseButton = document.getElementById('pause');
 const rewindButton = document.getElementById('rewind');
 
 const state = {
-  name: null, world: null, scene: null, transforms: new Float32Array(0), starts: null,
+  name: null, world: null, scene: null, starts: [],
   paused: false, steps: 0, stepMs: [], held: null, drag: null, dragAnchor: null,
   rewind: new Rewind(REWIND_FRAMES, REWIND_BYTES), rewinding: false,
 };
@@ -49,39 +62,15 @@ function loadScene(name) {
   // The body the drag joint hangs from: static and shapeless, so that the held body still
   // collides with everything (a joint's two bodies do not collide with each other).
   const dragAnchor = world.createBody();
-  const bodies = world.bodies;
-  const transforms = new Float32Array(4 * (bodies[bodies.length - 1].index + 1));
-  for (const body of bodies) {
-    const t = body.transform();
-    transforms.set([t.x, t.y, t.c, t.s], 4 * body.index);
-    body.userData = { type: body.type, asleep: false, geometries: body.shapes.map((s) => s.geometry()) };
-  }
-  Object.assign(state, { name, world, scene, transforms, starts: transforms.slice(), steps: 0, stepMs: [],
-                         held: null, drag: null, dragAnchor });
-  state.rewind.restart(world);
+  const starts = world.bodies.filter((b) => b.type === 'dynamic').map((body) => ({ body, ...body.position }));
+  Object.assign(state, { name, world, scene, starts, steps: 0, stepMs: [], held: null, drag: null, dragAnchor });
+  keyboard.enabled = scene.takesKeys === true;
+  keyboard.held.clear();
+  actionButton.hidden = scene.action === undefined;
+  actionButton.textContent = scene.action?.label ?? '';
+  state.rewind.restart(world, scene.saveGame?.());
   picker.value = name;
   camera.setView(scene.view);
-}
-
-/** Copies the last step's moved bodies into the page's transforms: one call per frame. */
-function readMoves() {
-  const moves = state.world.bodyMoves();
-  const { floats, stride, transformWord } = moves;
-  for (let i = 0; i < moves.count; i++) {
-    const index = moves.bodyIndex(i);
-    const from = i * stride + transformWord;
-    state.transforms.set(floats.subarray(from, from + 4), 4 * index);
-    state.world.bodyByIndex[index].userData.asleep = moves.fellAsleep(i);
-  }
-}
-
-/** Reads every body's pose after a restore (a restore reports no moves). */
-function readAllBodies() {
-  for (const body of state.world.bodies) {
-    const t = body.transform();
-    state.transforms.set([t.x, t.y, t.c, t.s], 4 * body.index);
-    if (body.userData.type !== 'static') body.userData.asleep = !body.awake;
-  }
 }
 
 function step() {
@@ -90,20 +79,23 @@ function step() {
   state.stepMs.push(performance.now() - start);
   if (state.stepMs.length > 60) state.stepMs.shift();
   state.steps++;
-  readMoves();
-  state.rewind.save(state.world);
+  // The game's frame after the world's: the platformer moves its character here.
+  state.scene.update?.(keyboard.actions(), TIME_STEP);
+  state.rewind.save(state.world, state.scene.saveGame?.());
 }
 
 /** One frame back, while a body is not held (holding one changes the world's structure). */
 function stepBack() {
-  if (state.drag || !state.rewind.back(state.world)) return;
+  if (state.drag) return;
+  const back = state.rewind.back(state.world);
+  if (back === null) return;
   state.steps--;
-  readAllBodies();
+  if (back.game !== undefined) state.scene.restoreGame(back.game);
 }
 
 /** The world's structure changed: states saved before cannot be restored into it. */
 function structureChanged() {
-  state.rewind.restart(state.world);
+  state.rewind.restart(state.world, state.scene.saveGame?.());
 }
 
 function msPerStep() {
@@ -112,8 +104,10 @@ function msPerStep() {
 }
 
 function render() {
-  const drag = state.drag && { from: state.held.getWorldPoint(state.drag.localAnchorB), to: state.drag.target };
-  draw(ctx, camera, state.world.bodies, state.transforms, state.held, drag);
+  drawFrame(drawer, state.world, drawFlags, (d) => {
+    state.scene.drawExtras?.(d);
+    if (state.drag) d.drawSegment(state.held.getWorldPoint(state.drag.localAnchorB), state.drag.target, DRAG_COLOR);
+  });
   const counters = state.world.counters();
   const rewind = state.rewind;
   readout.textContent = `${msPerStep().toFixed(2)} ms/step (median of 60) · ${counters.bodyCount} bodies · ` +
@@ -129,6 +123,13 @@ function frame() {
   requestAnimationFrame(frame);
 }
 
+/** A world point in page pixels. */
+function pagePoint(p) {
+  const screen = camera.toScreen(p.x, p.y);
+  const rect = canvas.getBoundingClientRect();
+  return { x: rect.left + screen.x * rect.width / canvas.width, y: rect.top + screen.y * rect.height / canvas.height };
+}
+
 function pointerWorld(event) {
   const rect = canvas.getBoundingClientRect();
   return camera.toWorld((event.clientX - rect.left) * canvas.width / rect.width,
@@ -139,8 +140,11 @@ canvas.addEventListener('pointerdown', (event) => {
   const p = pointerWorld(event);
   const r = 0.01;
   const shape = state.world.overlapAABB(p.x - r, p.y - r, p.x + r, p.y + r)
-    .find((s) => s && s.body.userData.type === 'dynamic');
-  if (!shape) return;
+    .find((s) => s && s.body.type === 'dynamic');
+  if (!shape) {
+    state.scene.click?.(p);  // off every body: the scene's own use of a click (a blast)
+    return;
+  }
   const body = shape.body;
   // Held at the point pressed, so the body hangs from it and turns as it is pulled.
   state.drag = state.world.createMouseJoint(state.dragAnchor, body, {
@@ -174,6 +178,7 @@ pauseButton.addEventListener('click', () => {
 });
 document.getElementById('step').addEventListener('click', () => { step(); render(); });
 document.getElementById('reset').addEventListener('click', () => loadScene(state.name));
+actionButton.addEventListener('click', () => state.scene.action?.run());
 // Rewind while held: the button, or R or Backspace. Letting go resumes from there.
 const rewindKeys = new Set(['r', 'R', 'Backspace']);
 const setRewinding = (on) => {
@@ -209,11 +214,10 @@ window.impulse2dPage = {
     const seconds = state.steps * TIME_STEP;
     let moved = 0;
     let maxMove = 0;
-    for (const body of state.world.bodies) {
-      if (body.userData.type !== 'dynamic') continue;
-      const t = 4 * body.index;
-      const d = Math.hypot(state.transforms[t] - state.starts[t], state.transforms[t + 1] - state.starts[t + 1]);
-      if (d > 0.01) moved++;
+    for (const start of state.starts) {
+      const p = start.body.position;
+      const d = Math.hypot(p.x - start.x, p.y - start.y);
+      if (d > MOVED_DISTANCE) moved++;
       maxMove = Math.max(maxMove, d);
     }
     return { scene: state.name, steps: state.steps, msPerStep: msPerStep(), bodyCount: counters.bodyCount,
@@ -223,14 +227,12 @@ window.impulse2dPage = {
   },
   /** A dynamic body near the middle of the scene: {index, x, y} in canvas pixels. */
   pickDynamicBody() {
-    const dynamic = state.world.bodies.filter((b) => b.userData.type === 'dynamic');
+    const dynamic = state.world.bodies.filter((b) => b.type === 'dynamic');
     const body = dynamic[dynamic.length >> 1];
-    const p = body.position;
-    const px = canvas.width / 2 + camera.scale * (p.x - camera.cx);
-    const py = canvas.height / 2 - camera.scale * (p.y - camera.cy);
-    const rect = canvas.getBoundingClientRect();
-    return { index: body.index, x: rect.left + px * rect.width / canvas.width, y: rect.top + py * rect.height / canvas.height };
+    return { index: body.index, ...pagePoint(body.position) };
   },
+  /** A world point in page pixels (where a mouse event would hit it). */
+  pagePoint,
   bodyPosition(index) { return state.world.bodyByIndex[index].position; },
   /** The world's state hash, 16 hex digits. */
   hash() { return state.world.stateHash().toString(16).padStart(16, '0'); },
@@ -239,12 +241,17 @@ window.impulse2dPage = {
   /** Canvas pixels that differ from the background: a blank canvas has none. */
   paintedPixels() {
     const data = ctx.getImageData(0, 0, canvas.width, canvas.height).data;
+    const [r, g, b] = BACKGROUND.rgb;
     let painted = 0;
     for (let i = 0; i < data.length; i += 4) {
-      if (data[i] !== 0xf8 || data[i + 1] !== 0xfa || data[i + 2] !== 0xfc) painted++;
+      if (data[i] !== r || data[i + 1] !== g || data[i + 2] !== b) painted++;
     }
     return painted;
   },
+  /** How many times each drawer method was called for the last frame drawn. */
+  drawCounts() { return { ...drawer.counts }; },
+  /** The draw flags the toggles hold now. */
+  drawFlags() { return { ...drawFlags }; },
 };
 
 loadScene('pyramid');

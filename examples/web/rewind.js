@@ -8,6 +8,10 @@
 // or joint made, destroyed or changed since, include/impulse2d/snapshot.h): the page calls
 // restart() after each such change (taking hold of a body, moving the pointer that pulls
 // it, letting go), which keeps only the present.
+//
+// A game keeps state the world does not hold (the platformer's character is moved by
+// game code, not a body): save() keeps it beside the world's state, and back() gives it
+// back for the game to restore.
 
 export class Rewind {
   /** At most maxFrames states and maxBytes bytes of them. */
@@ -18,31 +22,34 @@ export class Rewind {
     this.bytes = 0;
   }
 
-  /** Forgets the past: the world's present state is the only one kept. */
-  restart(world) {
+  /** Forgets the past: the world's present state (and the game's) is the only one kept. */
+  restart(world, game) {
     this.states = [];
     this.bytes = 0;
-    this.save(world);
+    this.save(world, game);
   }
 
-  /** Keeps the world's state after a frame, dropping the oldest past the limits. */
-  save(world) {
+  /** Keeps the world's state after a frame, and the game's if any, dropping the oldest
+   *  past the limits. */
+  save(world, game) {
     const state = world.saveState();
-    this.states.push(state);
+    this.states.push({ state, game });
     this.bytes += state.length;
     while (this.states.length > 1 && (this.states.length > this.maxFrames || this.bytes > this.maxBytes)) {
-      this.bytes -= this.states.shift().length;
+      this.bytes -= this.states.shift().state.length;
     }
   }
 
   /** Frames the world can go back. */
   get frames() { return this.states.length - 1; }
 
-  /** Takes the world one frame back; false when no older state is kept. */
+  /** Takes the world one frame back: {game} as saved with that frame, or null when no
+   *  older state is kept. */
   back(world) {
-    if (this.states.length < 2) return false;
-    this.bytes -= this.states.pop().length;
-    world.restoreState(this.states[this.states.length - 1]);
-    return true;
+    if (this.states.length < 2) return null;
+    this.bytes -= this.states.pop().state.length;
+    const { state, game } = this.states[this.states.length - 1];
+    world.restoreState(state);
+    return { game };
   }
 }

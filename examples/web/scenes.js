@@ -1,6 +1,13 @@
 // SPDX-License-Identifier: MIT
 // The page's scenes. Each builds its bodies in a fresh world and says how to judge a
 // run: check(world, scene, seconds simulated) returns the figures the browser test reads back.
+// The scene a build returns has the camera's view and, optionally, what the page calls
+// on it: update(actions, timeStep) after each step, drawExtras(drawer) after the world is
+// drawn, takesKeys (the platformer's keys), action {label, run} (a button), click(point)
+// (a click off every body), saveGame() / restoreGame(saved) (game state to rewind).
+import { explosionScene, explosionState } from './explosion.js';
+import { jointsScene, jointsState } from './joints_scene.js';
+import { platformer, platformerState } from './platformer.js';
 
 const DEG = Math.PI / 180;
 
@@ -105,5 +112,23 @@ export const SCENES = {
       drumAngleError: angleBetween(scene.drum.angle, TUMBLER_SPEED * seconds),
       drumDrift: Math.hypot(scene.drum.position.x - scene.center.x, scene.drum.position.y - scene.center.y),
     }),
+  },
+  platformer: {
+    title: 'Platformer (arrows or A/D walk, Space/W/Up jump)',
+    build: (world) => platformer(world),
+    worldOptions: {},
+    check: (world, scene) => platformerState(scene),
+  },
+  explosion: {
+    title: 'Explosion (click, or Blast)',
+    build: (world) => explosionScene(world),
+    worldOptions: {},
+    check: (world, scene) => explosionState(world, scene),
+  },
+  joints: {
+    title: 'Joints (bridge, chain, slider, spring, car, weld)',
+    build: (world) => jointsScene(world),
+    worldOptions: {},
+    check: (world, scene) => jointsState(world, scene),
   },
 };

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 // A rigid body: a thin handle over an i2d_body_id, and the factory of its shapes.
+import { writeFilter } from './filters.js';
 import { Shape } from './shape.js';
 import { vx, vy } from './vectors.js';
 
@@ -247,4 +248,7 @@ function writeShapeDef(rt, def, options) {
   if (options.enablePreSolveEvents !== undefined) {
     u8[def + rt.field('i2d_shape_def.enable_pre_solve_events')] = options.enablePreSolveEvents ? 1 : 0;
   }
+  // Which shapes it collides with ({categoryBits, maskBits, groupIndex}), and which
+  // queries and character moves see it (their filter's mask against its category).
+  if (options.filter !== undefined) writeFilter(rt, def + rt.field('i2d_shape_def.filter'), options.filter);
 }

@@ -93,6 +93,127 @@ export interface ExplosionOptions {
   maskBits?: number | bigint;      // categories pushed; default every bit
 }
 
+/** Category and mask bits (64 wide: a number up to 2^53, or a BigInt). A query, or a
+ *  character move, sees a shape when its maskBits meet the shape's category and the
+ *  shape's mask meets its categoryBits. */
+export interface QueryFilter { categoryBits?: number | bigint; maskBits?: number | bigint; }
+/** A shape's collision filter (i2d_filter): defaults category 1, every mask bit, group 0. */
+export interface ShapeFilter extends QueryFilter { groupIndex?: number; }
+
+/** A capsule: every point within radius of the segment center1-center2. */
+export interface Capsule { center1: Vec2Like; center2: Vec2Like; radius: number; }
+
+/** How World.moveCharacter moves a character (i2d_character_def); left out, the default. */
+export interface CharacterSettings {
+  maxSlopeAngle?: number;          // rad in [0, pi/2); default pi/4: steeper ground is a wall
+  stepHeight?: number;             // default 0.25: ledges up to this are stepped onto
+  snapDistance?: number;           // default 0.2: keeps the feet on the ground going down
+  skin?: number;                   // default 0.01, > 0: the gap kept to every surface
+  maxIterations?: number;          // default 5, in [1, 64]: cast-and-slide rounds
+  pushMass?: number;               // kg, default 80; 0 pushes nothing (the move is then a query)
+  filter?: QueryFilter;            // default every shape
+}
+/** Impulse2d.defaultCharacterDef(): every setting, the filter's bits as BigInts. */
+export interface CharacterDef extends Required<Omit<CharacterSettings, 'filter'>> {
+  filter: { categoryBits: bigint; maskBits: bigint };
+}
+export interface MoveCharacterOptions extends CharacterSettings {
+  /** In the character's frame: position places its origin. */
+  capsule: Capsule;
+  position: Vec2Like;
+  velocity: Vec2Like;
+  timeStep: number;                // s, in [0, 1000]
+}
+export interface CharacterResult {
+  position: Vec2;
+  /** The velocity asked for less what runs into walls and ceilings (and into the ground,
+   *  its downward part); without groundVelocity. */
+  velocity: Vec2;
+  onGround: boolean;
+  groundNormal: Vec2;              // zero when not on the ground
+  groundShape: Shape | bigint | null;
+  /** The ground's velocity at the feet: add it to the next move to ride a platform. */
+  groundVelocity: Vec2;
+  hitCount: number;
+}
+
+/** A plane the mover touches (i2d_collision_plane): normal from the shape toward the
+ *  mover, offset its separation (negative when overlapping). Moved by d, the mover keeps
+ *  clear while offset + dot(normal, d) >= 0. */
+export interface CollisionPlane {
+  normal: Vec2;
+  offset: number;
+  /** How far the plane may push; a rigid plane's is FLT_MAX (3.4028234663852886e38). */
+  pushLimit: number;
+  push: number;
+  clipVelocity: boolean;
+}
+/** A plane for solvePlanes and clipVector: pushLimit left out or Infinity is rigid,
+ *  clipVelocity defaults to true, push is ignored. */
+export interface CollisionPlaneLike {
+  normal: Vec2Like;
+  offset: number;
+  pushLimit?: number;
+  push?: number;
+  clipVelocity?: boolean;
+}
+export interface PlaneSolution { translation: Vec2; iterationCount: number; pushes: number[]; }
+
+/** A colour, 0xRRGGBB. */
+export type DrawColor = number;
+/**
+ * What World.draw hands the world to: any of these methods (kinds without one are not
+ * drawn). Vertices are a Float32Array of x, y pairs viewing the module's memory, valid
+ * during the call only; transforms are {x, y, c, s}; coordinates in world units, y up.
+ */
+export interface Drawer {
+  /** A closed outline, world vertices counter-clockwise (bounds, islands: four). */
+  drawPolygon?(vertices: Float32Array, color: DrawColor): void;
+  /** A filled polygon: local vertices placed by transform, grown by radius. */
+  drawSolidPolygon?(transform: Transform, vertices: Float32Array, radius: number, color: DrawColor): void;
+  /** A circle outline (a revolute joint's motor, with drawJointExtras). */
+  drawCircle?(center: Vec2, radius: number, color: DrawColor): void;
+  /** A filled circle at transform's origin; transform's rotation shows it turning. */
+  drawSolidCircle?(transform: Transform, radius: number, color: DrawColor): void;
+  drawSolidCapsule?(p1: Vec2, p2: Vec2, radius: number, color: DrawColor): void;
+  /** Segment shapes, joints, contact normals and impulses. */
+  drawSegment?(p1: Vec2, p2: Vec2, color: DrawColor): void;
+  /** A body's centre of mass and rotation (drawMass). */
+  drawTransform?(transform: Transform): void;
+  /** A dot of size pixels, whatever the view's scale. */
+  drawPoint?(p: Vec2, size: number, color: DrawColor): void;
+  /** Text at a point (a body's mass, with drawMass). */
+  drawString?(p: Vec2, text: string, color: DrawColor): void;
+}
+/** World.draw's options (i2d_debug_draw); an option it does not have is a TypeError. */
+export interface DrawOptions {
+  drawShapes?: boolean;            // default true; coloured by body state (DRAW_COLORS)
+  drawJoints?: boolean;            // default true
+  drawJointExtras?: boolean;       // limits, motors, springs
+  drawBounds?: boolean;            // shapes' fattened bounds
+  drawMass?: boolean;              // dynamic bodies' centres of mass and masses
+  drawContacts?: boolean;          // contact points
+  drawContactNormals?: boolean;    // 0.3 m along each normal
+  drawContactImpulses?: boolean;   // 10 m per N s along the normal
+  drawFrictionImpulses?: boolean;  // 10 m per N s along the tangent
+  drawGraphColors?: boolean;       // contact points in their solver colour (GRAPH_COLORS)
+  drawIslands?: boolean;           // awake islands' bounds
+  /** Cull to this box: only shapes whose bounds overlap it, and their bodies' extras. */
+  drawingBounds?: AABB | null;
+}
+
+/** The colours World.draw gives (include/impulse2d/toolkit.h's I2D_COLOR_*). */
+export const DRAW_COLORS: Readonly<{
+  quarantined: number; disabled: number; sensor: number; static: number; kinematic: number; bullet: number;
+  awake: number; asleep: number; joint: number; jointAnchor: number; jointLimit: number; jointMotor: number;
+  jointSpring: number; bounds: number; island: number; mass: number; contact: number; speculative: number;
+  contactNormal: number; contactImpulse: number; frictionImpulse: number; graphOverflow: number;
+}>;
+/** The solver's constraint colour k is drawn as GRAPH_COLORS[k % 12]. */
+export const GRAPH_COLORS: readonly number[];
+/** 0xRRGGBB as '#rrggbb', or 'rgba(r, g, b, alpha)' for alpha below 1. */
+export function colorToCss(color: DrawColor, alpha?: number): string;
+
 /** A convex shape for Impulse2d.shapeDistance: 1 to 8 points (its own frame), rounded by radius. */
 export interface DistanceShape { points: Vec2Like[]; radius?: number; position?: Vec2Like; angle?: number; }
 export interface DistanceResult { pointA: Vec2; pointB: Vec2; normal: Vec2; distance: number; }
@@ -120,6 +241,8 @@ export interface ShapeOptions {
   enableCustomFiltering?: boolean;
   /** Touching contacts of this shape reach World.setPreSolve's hook. */
   enablePreSolveEvents?: boolean;
+  /** Who it collides with, and which queries and character moves see it. */
+  filter?: ShapeFilter;
 }
 
 export type Geometry =
@@ -504,6 +627,16 @@ export class World {
   /** Pushes every dynamic body with a shape within radius + falloff of position away from
    *  it and wakes it (i2d_world_explode). */
   explode(options: ExplosionOptions): void;
+  /** Moves a character (i2d_world_move_character); changes nothing in the world but the
+   *  pushes it gives dynamic bodies (none with pushMass 0). */
+  moveCharacter(options: MoveCharacterOptions): CharacterResult;
+  /** The fraction in [0, 1] of translation the capsule (world coordinates) can move. */
+  castMover(capsule: Capsule, translation: Vec2Like, filter?: QueryFilter): number;
+  /** A plane per shape within the contact slop of the capsule (world coordinates). */
+  collideMover(capsule: Capsule, filter?: QueryFilter): CollisionPlane[];
+  /** Draws the world through the drawer's methods before it returns; the first error a
+   *  method throws ends the drawing and is thrown after. */
+  draw(drawer: Drawer, options?: DrawOptions): void;
   get gravity(): Vec2;
   set gravity(g: Vec2Like);
   settings(): WorldSettings;
@@ -566,6 +699,12 @@ export class Impulse2d {
   worldFromSnapshot(bytes: SnapshotBytes): World;
   /** The default settings of a world in lengthUnitsPerMeter units (default 1). */
   defaultWorldSettings(lengthUnitsPerMeter?: number): WorldSettings;
+  /** The character def's defaults, as World.moveCharacter takes them. */
+  defaultCharacterDef(): CharacterDef;
+  /** The move nearest targetDelta that runs into none of the rigid planes. */
+  solvePlanes(targetDelta: Vec2Like, planes: CollisionPlaneLike[]): PlaneSolution;
+  /** The vector less its part running into the planes with clipVelocity. */
+  clipVector(vector: Vec2Like, planes: CollisionPlaneLike[]): Vec2;
   /** The closest points of two convex shapes, in metres. */
   shapeDistance(a: DistanceShape, b: DistanceShape): DistanceResult;
 }

@@ -5,6 +5,7 @@
 //   const world = i2d.createWorld({ gravity: [0, -10] });
 import createImpulse2dModule from '../dist/impulse2d_wasm.mjs';
 import { Runtime } from './runtime.js';
+import { clipVector, defaultCharacterDef, solvePlanes } from './mover.js';
 import { readWorldDef, World } from './world.js';
 import { vx, vy } from './vectors.js';
 
@@ -13,6 +14,7 @@ export { World } from './world.js';
 export { BodyMoves } from './body_moves.js';
 export { Body } from './body.js';
 export { Shape } from './shape.js';
+export { DRAW_COLORS, GRAPH_COLORS, colorToCss } from './colors.js';
 export {
   Joint, RevoluteJoint, PrismaticJoint, DistanceJoint, WeldJoint, WheelJoint, MotorJoint, MouseJoint, FilterJoint,
 } from './joint.js';
@@ -55,6 +57,21 @@ export class Impulse2d {
     rt.checkLast();
     return readWorldDef(rt, rt.result());
   }
+
+  /** The character def's defaults, as World.moveCharacter's settings: {maxSlopeAngle,
+   *  stepHeight, snapDistance, skin, maxIterations, pushMass, filter}. */
+  defaultCharacterDef() { return defaultCharacterDef(this.rt); }
+
+  /**
+   * The move nearest targetDelta that runs into none of the rigid planes (soft ones push
+   * at most their pushLimit): {translation, iterationCount, pushes (how far each plane
+   * pushed)} (i2d_solve_planes). Planes are as World.collideMover gives them; pushLimit
+   * defaults to rigid (Infinity is rigid too), clipVelocity to true. Needs no world.
+   */
+  solvePlanes(targetDelta, planes) { return solvePlanes(this.rt, targetDelta, planes); }
+
+  /** The vector less its part that runs into the planes with clipVelocity (i2d_clip_vector). */
+  clipVector(vector, planes) { return clipVector(this.rt, vector, planes); }
 
   /**
    * The closest points of two convex shapes, each {points (1 to 8, their own frame),

@@ -5,6 +5,7 @@
 // the description, so a field added to a C header reaches it with no edit here. USES
 // names each field it reads or writes and how; a module that lacks one or describes it
 // otherwise is refused at load, naming every problem, instead of being misread.
+import { DRAW_CALLBACK_FIELDS, DRAW_FLAG_FIELDS } from './draw_fields.js';
 import { BASE_SETTINGS, FLAG, FLOAT, KIND_SETTINGS, POINT } from './joint_kinds.js';
 
 /** i2d_field_kind's values (include/impulse2d/base.h) by name. */
@@ -47,10 +48,31 @@ export const USES = {
   },
   i2d_shape_def: {
     density: 'float', friction: 'float', restitution: 'float', is_sensor: 'bool', enable_contact_events: 'bool',
-    enable_custom_filtering: 'bool', enable_pre_solve_events: 'bool',
+    enable_custom_filtering: 'bool', enable_pre_solve_events: 'bool', filter: 'i2d_filter',
   },
+  i2d_filter: { category_bits: 'uint64', mask_bits: 'uint64', group_index: 'int32' },
+  i2d_query_filter: { category_bits: 'uint64', mask_bits: 'uint64' },
   i2d_explosion_def: {
     mask_bits: 'uint64', position: 'i2d_vec2', radius: 'float', falloff: 'float', impulse_per_length: 'float',
+  },
+  // The character mover (mover.js).
+  i2d_character_def: {
+    max_slope_angle: 'float', step_height: 'float', snap_distance: 'float', skin: 'float', max_iterations: 'int32',
+    push_mass: 'float', filter: 'i2d_query_filter',
+  },
+  i2d_character_result: {
+    position: 'i2d_vec2', velocity: 'i2d_vec2', on_ground: 'bool', ground_normal: 'i2d_vec2', ground_shape: ID,
+    ground_velocity: 'i2d_vec2', hit_count: 'int32',
+  },
+  i2d_plane: { normal: 'i2d_vec2', offset: 'float' },
+  i2d_collision_plane: { plane: 'i2d_plane', push_limit: 'float', push: 'float', clip_velocity: 'bool' },
+  i2d_plane_result: { translation: 'i2d_vec2', iteration_count: 'int32' },
+  // Debug drawing (debug_draw.js): the callbacks are table slots the binding fills.
+  i2d_debug_draw: {
+    ...Object.fromEntries(DRAW_CALLBACK_FIELDS.map((f) => [f, 'function'])),
+    drawing_bounds: 'i2d_aabb', use_drawing_bounds: 'bool',
+    ...Object.fromEntries(DRAW_FLAG_FIELDS.map((f) => [f, 'bool'])),
+    context: 'void*',
   },
   i2d_circle: { center: 'i2d_vec2', radius: 'float' },
   i2d_capsule: { center1: 'i2d_vec2', center2: 'i2d_vec2', radius: 'float' },

@@ -33,6 +33,8 @@ export class Runtime {
       body: this.readDefault('_i2d_default_body_def', 'i2d_body_def'),
       shape: this.readDefault('_i2d_default_shape_def', 'i2d_shape_def'),
       explosion: this.readDefault('_i2d_default_explosion_def', 'i2d_explosion_def'),
+      character: this.readDefault('_i2d_default_character_def', 'i2d_character_def'),
+      debugDraw: this.readDefault('_i2d_default_debug_draw', 'i2d_debug_draw'),
     };
     for (const kind of JOINT_KIND_NAMES) {
       this.defaults[`${kind}_joint`] = this.readDefault(`_i2d_default_${kind}_joint_def`, `i2d_${kind}_joint_def`);

@@ -2,9 +2,11 @@
 // A world: stepping, bodies, joints, queries, events and snapshots over an i2d_world_id.
 import { Body, BODY_TYPES } from './body.js';
 import { BodyMoves } from './body_moves.js';
+import { drawWorld } from './debug_draw.js';
 import { ContactHooks } from './hooks.js';
 import { createJoint } from './joint.js';
 import { readManifold } from './manifold.js';
+import { castMover, collideMover, moveCharacter } from './mover.js';
 import { Shape } from './shape.js';
 import { rememberStructure, saveBytes, structureOf, withBytesInModule } from './snapshot.js';
 import { vx, vy } from './vectors.js';
@@ -142,6 +144,45 @@ export class World {
       rt.m._free(def);
     }
   }
+
+  /**
+   * Moves a character (i2d_world_move_character): options are {capsule: {center1, center2,
+   * radius} in the character's frame, position, velocity, timeStep} and any setting of
+   * Impulse2d.defaultCharacterDef() to change (maxSlopeAngle, stepHeight, snapDistance,
+   * skin, maxIterations, pushMass, filter). Returns {position, velocity (clipped by what
+   * it touches; add groundVelocity to ride a platform), onGround, groundNormal,
+   * groundShape (a Shape, or null), groundVelocity, hitCount}. Changes nothing in the
+   * world but the pushes it gives dynamic bodies (none with pushMass 0). A setting it
+   * does not have is a TypeError; a bad value an Impulse2dError, the world untouched.
+   */
+  moveCharacter(options) { return moveCharacter(this, options); }
+
+  /** The fraction in [0, 1] of translation the capsule (world coordinates) can move before
+   *  it comes within the contact slop of a shape the filter ({categoryBits, maskBits};
+   *  default every shape) sees (i2d_world_cast_mover). */
+  castMover(capsule, translation, filter) { return castMover(this, capsule, translation, filter); }
+
+  /** The planes of the shapes within the contact slop of the capsule (i2d_world_collide_mover),
+   *  each {normal (from the shape toward the capsule), offset (the separation), pushLimit,
+   *  push, clipVelocity}: what Impulse2d.solvePlanes and clipVector take. */
+  collideMover(capsule, filter) { return collideMover(this, capsule, filter); }
+
+  /**
+   * Draws the world through the drawer's methods (i2d_world_draw), on this thread, before
+   * it returns. The drawer has any of drawPolygon(vertices, color), drawSolidPolygon(
+   * transform, vertices, radius, color), drawCircle(center, radius, color),
+   * drawSolidCircle(transform, radius, color), drawSolidCapsule(p1, p2, radius, color),
+   * drawSegment(p1, p2, color), drawTransform(transform), drawPoint(p, size, color),
+   * drawString(p, text, color); kinds it lacks are not drawn. Vertices are a Float32Array
+   * of x, y pairs viewing the module's memory, valid during the call (slice() to keep);
+   * colours are 0xRRGGBB (DRAW_COLORS, colorToCss). Options: the flags drawShapes and
+   * drawJoints (default true), drawJointExtras, drawBounds, drawMass, drawContacts,
+   * drawContactNormals, drawContactImpulses, drawFrictionImpulses, drawGraphColors,
+   * drawIslands (default false), and drawingBounds {minX, minY, maxX, maxY} to cull to.
+   * The world is locked meanwhile (getters and queries work). The first error a method
+   * throws ends the drawing and is thrown once the library has returned.
+   */
+  draw(drawer, options) { drawWorld(this, drawer, options); }
 
   get gravity() {
     const rt = this.rt;
