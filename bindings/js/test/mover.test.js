@@ -268,11 +268,13 @@ test('bad planes are refused with the library message', () => {
   const floor = plane(0, 1, 0);
   refused(() => i2d.solvePlanes([NaN, 0], [floor]), 'I2D_ERR_INVALID_ARGUMENT', 'target_delta');
   refused(() => i2d.solvePlanes([0, -1], [plane(0, 2, 0)]), 'I2D_ERR_INVALID_ARGUMENT', 'unit');
-  refused(() => i2d.solvePlanes([0, -1], [plane(0, 1, NaN)]), 'I2D_ERR_INVALID_ARGUMENT', 'planes[0] is NaN');
+  refused(() => i2d.solvePlanes([0, -1], [plane(0, 1, NaN)]), 'I2D_ERR_INVALID_ARGUMENT',
+          'planes[0].plane.offset is NaN');
   refused(() => i2d.solvePlanes([0, -1], [plane(0, 1, 0, { pushLimit: -1 })]), 'I2D_ERR_INVALID_ARGUMENT',
-          'planes[0] is -1');
+          'planes[0].push_limit is -1');
   refused(() => i2d.clipVector([1, Infinity], [floor]), 'I2D_ERR_INVALID_ARGUMENT', 'vector');
-  refused(() => i2d.clipVector([1, 0], [{ offset: 0 }]), 'I2D_ERR_INVALID_ARGUMENT', 'planes[0].x is NaN');
+  refused(() => i2d.clipVector([1, 0], [{ offset: 0 }]), 'I2D_ERR_INVALID_ARGUMENT',
+          'planes[0].plane.normal.x is NaN');
   assert.throws(() => i2d.solvePlanes([0, -1], floor), TypeError);
   assert.throws(() => i2d.clipVector([0, -1], null), TypeError);
 });
