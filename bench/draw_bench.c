@@ -11,17 +11,14 @@
  * printed with the minimum. The counts are checked before any timing: the default pass must see
  * every shape once, and the culled one fewer shapes but some. Times are never asserted on. */
 
-/* clock_gettime and CLOCK_MONOTONIC are POSIX, not C99. */
-#define _POSIX_C_SOURCE 199309L
-
 #include "arguments.h"
 #include "build_info.h"
+#include "timing.h"
 #include "scenes.h"
 
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <time.h>
 
 enum { EXIT_OK = 0, EXIT_CHECK_FAILED = 1, EXIT_USAGE = 2, EXIT_API_ERROR = 3 };
 
@@ -145,17 +142,6 @@ static bool scene_bounds(const bench_state* state, i2d_aabb* out) {
 
 /* ---- Timing ------------------------------------------------------------------------------------ */
 
-static double now_ns(void) {
-    struct timespec t;
-    clock_gettime(CLOCK_MONOTONIC, &t);
-    return (double)t.tv_sec * 1e9 + (double)t.tv_nsec;
-}
-
-static int compare_doubles(const void* a, const void* b) {
-    double x = *(const double*)a, y = *(const double*)b;
-    return (x > y) - (x < y);
-}
-
 /* Median and minimum of reps timed calls after the untimed ones; false when a call failed. */
 static bool time_pass(i2d_world_id world, const i2d_debug_draw* d, int32_t reps, double* samples, double* median,
                       double* minimum) {
@@ -166,14 +152,14 @@ static bool time_pass(i2d_world_id world, const i2d_debug_draw* d, int32_t reps,
         }
     }
     for (r = 0; r < reps; ++r) {
-        double start = now_ns();
+        double start = bench_nanoseconds_now();
         i2d_status status = i2d_world_draw(world, d);
-        samples[r] = now_ns() - start;
+        samples[r] = bench_nanoseconds_now() - start;
         if (status != I2D_OK) {
             return false;
         }
     }
-    qsort(samples, (size_t)reps, sizeof *samples, compare_doubles);
+    qsort(samples, (size_t)reps, sizeof *samples, bench_compare_doubles);
     *median = samples[reps / 2];
     *minimum = samples[0];
     return true;

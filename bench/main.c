@@ -14,18 +14,15 @@
  * outside the clock. Times are never asserted on: the exit status says only whether every scene
  * ran and stayed sane (and gave the same final state in every run). */
 
-/* clock_gettime and CLOCK_MONOTONIC are POSIX, not C99. */
-#define _POSIX_C_SOURCE 199309L
-
 #include "arguments.h"
 #include "build_info.h"
+#include "timing.h"
 #include "scenes.h"
 
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <time.h>
 
 #define MAX_REPEATS 100
 /* Single-step times kept for the p90; past this many the p90 is not computed. */
@@ -239,12 +236,6 @@ typedef struct scene_result {
     bool deterministic;          /* every run ended in that state */
 } scene_result;
 
-static double seconds_now(void) {
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
-
 static void report_failure(const bench_scene* scene, const bench_state* state, const char* what) {
     /* Read the status and copy the message before another i2d_ call replaces them. */
     i2d_status status = i2d_last_status();
@@ -371,14 +362,14 @@ static bool run_once(const bench_scene* scene, int32_t steps, scene_result* r, i
         return false;
     }
     for (step = 1; step < steps; ++step) {
-        double start = seconds_now(), ms;
+        double start = bench_seconds_now(), ms;
         i2d_profile p;
         if (!step_once(scene, &state, state.warm_steps - 1 + step)) {
             report_failure(scene, &state, "step");
             bench_state_destroy(&state);
             return false;
         }
-        ms = 1000.0 * (seconds_now() - start);
+        ms = 1000.0 * (bench_seconds_now() - start);
         total += ms;
         if (samples) {
             samples[step - 1] = ms;
@@ -401,32 +392,22 @@ static bool run_once(const bench_scene* scene, int32_t steps, scene_result* r, i
     return true;
 }
 
-static int compare_doubles(const void* a, const void* b) {
-    double x = *(const double*)a, y = *(const double*)b;
-    return (x > y) - (x < y);
-}
-
-static double median_of(double* values, int32_t n) {
-    qsort(values, (size_t)n, sizeof values[0], compare_doubles);
-    return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
-}
-
 static void summarise(scene_result* r, double* samples, int32_t sample_count) {
     double sorted[MAX_REPEATS];
     int32_t n = r->repeats, k, i;
     memcpy(sorted, r->ms, (size_t)n * sizeof sorted[0]);
-    r->median_ms = median_of(sorted, n);
+    r->median_ms = bench_sort_median(sorted, n);
     r->min_ms = sorted[0];
     for (k = 0; k < STAGE_COUNT; ++k) {
         for (i = 0; i < n; ++i) {
             sorted[i] = r->stage_ms[i][k];
         }
-        r->stage_median[k] = median_of(sorted, n);
+        r->stage_median[k] = bench_sort_median(sorted, n);
     }
     if (samples && sample_count > 0) {
         /* Nearest rank. */
         int32_t rank = (int32_t)ceil(0.9 * (double)sample_count);
-        qsort(samples, (size_t)sample_count, sizeof samples[0], compare_doubles);
+        qsort(samples, (size_t)sample_count, sizeof samples[0], bench_compare_doubles);
         r->p90_ms = samples[(rank > 0 ? rank : 1) - 1];
     } else {
         r->p90_ms = NAN;

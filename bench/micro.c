@@ -15,17 +15,14 @@
  *
  * Each figure is the median (and minimum) of R samples. Times are never asserted on. */
 
-/* clock_gettime and CLOCK_MONOTONIC are POSIX, not C99. */
-#define _POSIX_C_SOURCE 199309L
-
 #include "build_info.h"
+#include "timing.h"
 #include "scenes.h"
 
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <time.h>
 
 enum { EXIT_OK = 0, EXIT_MISMATCH = 1, EXIT_USAGE = 2, EXIT_API_ERROR = 3 };
 
@@ -63,24 +60,7 @@ static void print_row(const char* section, const char* name, double median, doub
     fflush(stdout);
 }
 
-/* ---- Timing --------------------------------------------------------------------------------- */
-
-static double seconds_now(void) {
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
-
-static int compare_doubles(const void* a, const void* b) {
-    double x = *(const double*)a, y = *(const double*)b;
-    return (x > y) - (x < y);
-}
-
-/* Sorts values and returns the median; values[0] is then the minimum. */
-static double median_of(double* values, int32_t n) {
-    qsort(values, (size_t)n, sizeof values[0], compare_doubles);
-    return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
-}
+/* ---- Poses ---------------------------------------------------------------------------------- */
 
 /* xorshift32 with a fixed seed: the same poses every run. */
 static uint32_t g_seed = 0x2545f491u;
@@ -295,25 +275,25 @@ static bool bench_manifolds(const options* opt) {
         make_poses((kernel_id)k);
         /* Calibrate: passes per sample so that a sample lasts sample_seconds. */
         for (;;) {
-            start = seconds_now();
+            start = bench_seconds_now();
             for (p = 0; p < passes; ++p) {
                 sink += run_kernel((kernel_id)k);
             }
-            elapsed = seconds_now() - start;
+            elapsed = bench_seconds_now() - start;
             if (elapsed >= sample_seconds || passes >= (1 << 20)) {
                 break;
             }
             passes *= 2;
         }
         for (r = 0; r < opt->repeats; ++r) {
-            start = seconds_now();
+            start = bench_seconds_now();
             for (p = 0; p < passes; ++p) {
                 sink += run_kernel((kernel_id)k);
             }
-            ns[r] = 1e9 * (seconds_now() - start) / ((double)passes * POSES);
+            ns[r] = 1e9 * (bench_seconds_now() - start) / ((double)passes * POSES);
         }
         (void)sink;
-        median = median_of(ns, opt->repeats);
+        median = bench_sort_median(ns, opt->repeats);
         snprintf(detail, sizeof detail, "%.0f%% of poses give points", 100.0 * touching_fraction((kernel_id)k));
         print_row("manifold", g_kernels[k].name, median, ns[0], "ns/call", detail);
     }
@@ -422,26 +402,26 @@ static bool time_queries(i2d_world_id world, const box_field* field, const char*
         rays[2 * q + 1] = vec2(RAY_LENGTH * cosf(t), RAY_LENGTH * sinf(t));
     }
     for (r = 0; ok && r < opt->repeats; ++r) {
-        double start = seconds_now();
+        double start = bench_seconds_now();
         hits = 0;
         for (q = 0; ok && q < queries; ++q) {
             ok = i2d_world_overlap_aabb(world, boxes[q], filter, count_hit, &hits) == I2D_OK;
         }
-        ns[r] = 1e9 * (seconds_now() - start) / (double)queries;
+        ns[r] = 1e9 * (bench_seconds_now() - start) / (double)queries;
         ray_hits = 0;
-        start = seconds_now();
+        start = bench_seconds_now();
         for (q = 0; q < queries; ++q) {
             ray_hits += i2d_world_cast_ray_closest(world, rays[2 * q], rays[2 * q + 1], filter).hit;
         }
-        ray_ns[r] = 1e9 * (seconds_now() - start) / (double)queries;
+        ray_ns[r] = 1e9 * (bench_seconds_now() - start) / (double)queries;
     }
     free(boxes);
     free(rays);
     if (!ok) {
         return false;
     }
-    median = median_of(ns, opt->repeats);
-    ray_median = median_of(ray_ns, opt->repeats);
+    median = bench_sort_median(ns, opt->repeats);
+    ray_median = bench_sort_median(ray_ns, opt->repeats);
     snprintf(name, sizeof name, "overlap_aabb 4x4 m, %s", label);
     snprintf(detail, sizeof detail, "%d boxes, %.2f hits/query", (int)field->count, (double)hits / (double)queries);
     print_row("query", name, median, ns[0], "ns/query", detail);
@@ -539,10 +519,10 @@ static bool bench_solve(const options* opt, const char* scene_name) {
         pairs_ms[r] = sums[3] / (double)steps;
     }
     /* median_of sorts: each array's [0] is its minimum afterwards. */
-    median_solve = median_of(solve, opt->repeats);
-    median_collide = median_of(collide, opt->repeats);
-    median_bounds = median_of(bounds, opt->repeats);
-    median_pairs = median_of(pairs_ms, opt->repeats);
+    median_solve = bench_sort_median(solve, opt->repeats);
+    median_collide = bench_sort_median(collide, opt->repeats);
+    median_bounds = bench_sort_median(bounds, opt->repeats);
+    median_pairs = bench_sort_median(pairs_ms, opt->repeats);
     snprintf(name, sizeof name, "solve per contact, %s", scene_name);
     snprintf(detail, sizeof detail, "%d touching contacts, %d passes per substep: %.1f ns/contact/pass",
              (int)contacts, (int)passes, median_solve / (double)passes);

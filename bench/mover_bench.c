@@ -14,20 +14,17 @@
  * touched, and how much of the walk the level let through (walls and crates stop some).
  * Times are never asserted on. */
 
-/* clock_gettime and CLOCK_MONOTONIC are POSIX, not C99. */
-#define _POSIX_C_SOURCE 199309L
-
 #include <impulse2d/impulse2d.h>
 
 #include "arguments.h"
 #include "build_info.h"
+#include "timing.h"
 
 #include <math.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <time.h>
 
 enum { EXIT_OK = 0, EXIT_CHECK_FAILED = 1, EXIT_USAGE = 2, EXIT_API_ERROR = 3 };
 
@@ -145,17 +142,6 @@ static bool build_level(i2d_world_id world) {
     return true;
 }
 
-static double now_ns(void) {
-    struct timespec t;
-    clock_gettime(CLOCK_MONOTONIC, &t);
-    return (double)t.tv_sec * 1e9 + (double)t.tv_nsec;
-}
-
-static int compare_doubles(const void* a, const void* b) {
-    const double x = *(const double*)a, y = *(const double*)b;
-    return (x > y) - (x < y);
-}
-
 /* One game frame's velocity for a character: walking its way, falling while airborne. */
 static i2d_vec2 frame_velocity(const character* c) {
     i2d_vec2 v;
@@ -212,7 +198,7 @@ int main(int argc, char** argv) {
         for (int k = 0; k < opt.characters; ++k) {
             velocities[k] = frame_velocity(&characters[k]);
         }
-        const double start = now_ns();
+        const double start = bench_nanoseconds_now();
         for (int k = 0; k < opt.characters; ++k) {
             character* c = &characters[k];
             if (i2d_world_move_character(world, &def, &capsule, c->position, velocities[k], dt, &c->last) != I2D_OK) {
@@ -221,7 +207,7 @@ int main(int argc, char** argv) {
             }
             c->position = c->last.position;
         }
-        per_call[f] = (now_ns() - start) / (double)opt.characters;
+        per_call[f] = (bench_nanoseconds_now() - start) / (double)opt.characters;
         for (int k = 0; k < opt.characters; ++k) {
             character* c = &characters[k];
             c->velocity = c->last.velocity;
@@ -243,7 +229,7 @@ int main(int argc, char** argv) {
             }
         }
     }
-    qsort(per_call, (size_t)opt.frames, sizeof(double), compare_doubles);
+    qsort(per_call, (size_t)opt.frames, sizeof(double), bench_compare_doubles);
     const double calls = (double)opt.frames * (double)opt.characters;
     printf("mover_bench,move_character,median_us %.3f,p90_us %.3f,min_us %.3f,grounded %.1f%%,shapes_per_move %.2f,"
            "walking %.1f%%\n",

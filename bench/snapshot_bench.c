@@ -15,18 +15,15 @@
  * the world restored from it and stepped gives the state hash of the world that was never
  * restored, so a broken path cannot be timed. Times are never asserted on. */
 
-/* clock_gettime and CLOCK_MONOTONIC are POSIX, not C99. */
-#define _POSIX_C_SOURCE 199309L
-
 #include "arguments.h"
 #include "build_info.h"
+#include "timing.h"
 #include "scenes.h"
 
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <time.h>
 
 enum { EXIT_OK = 0, EXIT_CHECK_FAILED = 1, EXIT_USAGE = 2, EXIT_API_ERROR = 3 };
 
@@ -309,17 +306,6 @@ static bool count_contacts(const bench_state* state, contact_count* out) {
 
 /* ---- Timing --------------------------------------------------------------------------------- */
 
-static double now_ns(void) {
-    struct timespec t;
-    clock_gettime(CLOCK_MONOTONIC, &t);
-    return (double)t.tv_sec * 1e9 + (double)t.tv_nsec;
-}
-
-static int compare_doubles(const void* a, const void* b) {
-    double x = *(const double*)a, y = *(const double*)b;
-    return (x > y) - (x < y);
-}
-
 typedef struct timing {
     double median_ns;
     double min_ns;
@@ -327,7 +313,7 @@ typedef struct timing {
 
 static timing summarize(double* samples, int32_t n) {
     timing t;
-    qsort(samples, (size_t)n, sizeof *samples, compare_doubles);
+    qsort(samples, (size_t)n, sizeof *samples, bench_compare_doubles);
     t.median_ns = samples[n / 2];
     t.min_ns = samples[0];
     return t;
@@ -364,7 +350,7 @@ static double run_once(const buffers* b, operation op) {
     i2d_status status = I2D_OK;
     i2d_world_id created = {0};
     size_t written = 0;
-    start = now_ns();
+    start = bench_nanoseconds_now();
     switch (op) {
         case OP_SAVE_STATE:
             status = i2d_world_save_state(b->world, b->state_scratch, b->state_size, &written);
@@ -387,7 +373,7 @@ static double run_once(const buffers* b, operation op) {
             break;
         case OP_COUNT: break;
     }
-    end = now_ns();
+    end = bench_nanoseconds_now();
     if (op == OP_CREATE_FROM_SNAPSHOT) {
         if (I2D_IS_NULL(created) || i2d_world_destroy(created) != I2D_OK) {
             return -1.0;
