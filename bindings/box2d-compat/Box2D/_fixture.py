@@ -1,0 +1,146 @@
+# SPDX-License-Identifier: MIT
+"""b2Fixture: a shape attached to a body, over one impulse2d shape id."""
+
+import copy
+
+import impulse2d
+
+from ._native import check, check_last, lib, structs
+from ._shapes import b2Filter, b2FixtureDef, shape_def_of
+
+
+class b2Fixture(object):
+    """Keeps the shape description it was made from (its vertices are what a renderer
+    reads every frame, so they are never fetched from C) and the Python userData."""
+
+    def __init__(self, body, fd):
+        self._body = body
+        self._shape = copy.copy(fd.shape)
+        self._def = copy.copy(fd)  # for re-creating the shape as a sensor
+        self._def.filter = b2Filter(fd.filter.categoryBits, fd.filter.maskBits, fd.filter.groupIndex)
+        self._def.shape = self._shape
+        self.userData = fd.userData
+        self._id = self._make(fd.isSensor)
+
+    def _make(self, is_sensor):
+        shape_def = shape_def_of(self._def, is_sensor)
+        shape_id = self._shape._create(self._body._id, shape_def)
+        if not shape_id:
+            check_last()
+        self._def.isSensor = is_sensor
+        self._body._world._fixtures[shape_id] = self
+        return shape_id
+
+    @property
+    def body(self):
+        return self._body
+
+    @property
+    def shape(self):
+        return self._shape
+
+    @property
+    def type(self):
+        return self._shape.type
+
+    @property
+    def sensor(self):
+        return self._def.isSensor
+
+    @sensor.setter
+    def sensor(self, value):
+        # impulse2d fixes a shape's sensor flag at creation: the shape is made again,
+        # behind this same fixture object, with the flag changed.
+        value = bool(value)
+        if value == self._def.isSensor:
+            return
+        world = self._body._world
+        world._fixture_ending(self)
+        check(lib.i2d_shape_destroy(self._id))
+        del world._fixtures[self._id]
+        self._id = self._make(value)
+
+    isSensor = sensor
+
+    @property
+    def density(self):
+        return self._def.density
+
+    @density.setter
+    def density(self, value):
+        check(lib.i2d_shape_set_density(self._id, value, True))
+        self._def.density = value
+
+    @property
+    def friction(self):
+        return lib.i2d_shape_get_friction(self._id) if self._check() else 0.0
+
+    @friction.setter
+    def friction(self, value):
+        check(lib.i2d_shape_set_friction(self._id, value))
+        self._def.friction = value
+
+    @property
+    def restitution(self):
+        return lib.i2d_shape_get_restitution(self._id) if self._check() else 0.0
+
+    @restitution.setter
+    def restitution(self, value):
+        check(lib.i2d_shape_set_restitution(self._id, value))
+        self._def.restitution = value
+
+    @property
+    def filterData(self):
+        f = self._def.filter
+        return b2Filter(f.categoryBits, f.maskBits, f.groupIndex)
+
+    @filterData.setter
+    def filterData(self, value):
+        f = structs.Filter(category_bits=value.categoryBits, mask_bits=value.maskBits, group_index=value.groupIndex)
+        check(lib.i2d_shape_set_filter(self._id, f))
+        self._def.filter = b2Filter(value.categoryBits, value.maskBits, value.groupIndex)
+
+    def _check(self):
+        if not lib.i2d_shape_is_valid(self._id):
+            raise impulse2d.InvalidHandle("fixture's shape 0x%016x was destroyed" % self._id)
+        return True
+
+    def _handle(self):
+        return impulse2d.Shape(self._body._world._w, self._id)
+
+    def TestPoint(self, point):
+        """Whether the world point lies in the fixture (its outline included)."""
+        x, y = point
+        cx, cy = self._handle().closest_point((x, y))
+        return abs(cx - x) < 1e-6 and abs(cy - y) < 1e-6
+
+    @property
+    def aabb(self):
+        from ._world import b2AABB
+
+        lo, hi = self._handle().aabb
+        return b2AABB(lowerBound=lo, upperBound=hi)
+
+    def GetAABB(self, childIndex=0):
+        return self.aabb
+
+    def __repr__(self):
+        return "b2Fixture(shape=%r, sensor=%s)" % (self._shape, self._def.isSensor)
+
+
+def fixture_def_from(kwargs, shape_cls=None):
+    """A b2FixtureDef from CreateFixture-style keywords: the def's own fields, and for
+    Create*Fixture the shape's (radius=, pos=, vertices=, box=)."""
+    fd = b2FixtureDef()
+    shape_kwargs = {}
+    for key, value in kwargs.items():
+        if key in ("shape", "density", "friction", "restitution", "isSensor", "userData",
+                   "categoryBits", "maskBits", "groupIndex", "filter"):
+            setattr(fd, key, value)
+        elif shape_cls is not None:
+            shape_kwargs[key] = value
+        else:
+            raise AttributeError('Invalid keyword argument "%s" for CreateFixture' % key)
+    if shape_cls is not None:
+        fd.shape = shape_cls(**shape_kwargs)
+    return fd
