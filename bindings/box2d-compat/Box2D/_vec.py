@@ -10,8 +10,10 @@ class b2Vec2(object):
 
     __slots__ = ("x", "y")
 
-    def __init__(self, x=0.0, y=None):
-        if y is None:
+    def __init__(self, x=None, y=None):
+        if x is None:
+            x = y = 0.0
+        elif y is None:
             if isinstance(x, (int, float)):
                 raise TypeError("b2Vec2 takes two numbers or one pair, not %r" % (x,))
             x, y = x
