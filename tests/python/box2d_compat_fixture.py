@@ -1,14 +1,15 @@
 # SPDX-License-Identifier: MIT
 """Shared by the test_box2d_compat_*.py files: puts bindings/box2d-compat on sys.path
-(conftest.py already has bindings/python) and holds the small helpers they share."""
+(and bindings/python, which conftest.py also adds) and holds the small helpers they share."""
 
 import os
 import sys
 
 _HERE = os.path.dirname(os.path.abspath(__file__))
-_COMPAT = os.path.normpath(os.path.join(_HERE, "..", "..", "bindings", "box2d-compat"))
-if _COMPAT not in sys.path:
-    sys.path.insert(0, _COMPAT)
+for _part in ("python", "box2d-compat"):  # the impulse2d package too, for scripts run outside pytest
+    _path = os.path.normpath(os.path.join(_HERE, "..", "..", "bindings", _part))
+    if _path not in sys.path:
+        sys.path.insert(0, _path)
 
 import Box2D  # noqa: E402
 from Box2D import b2  # noqa: E402
