@@ -322,4 +322,4 @@ class b2Body(object):
         self._world._fixture_ending(fixture)
         check(lib.i2d_shape_destroy(fixture._id))
         self._fixtures.remove(fixture)
-        del self._world._fixtures[fixture._id]
+        fixture._forget()

@@ -1,35 +1,45 @@
 # SPDX-License-Identifier: MIT
 """b2Fixture: a shape attached to a body, over one impulse2d shape id."""
 
-import copy
-
 import impulse2d
 
 from ._native import check, check_last, lib, structs
-from ._shapes import b2Filter, b2FixtureDef, shape_def_of
+from ._shapes import b2Filter, b2FixtureDef, shape_def
 
 
 class b2Fixture(object):
     """Keeps the shape description it was made from (its vertices are what a renderer
-    reads every frame, so they are never fetched from C) and the Python userData."""
+    reads every frame, so they are never fetched from C), the def's values (to make the
+    shape again as a sensor) and the Python userData."""
 
     def __init__(self, body, fd):
+        if fd.shape is None:
+            raise impulse2d.InvalidArgument("fixtureDef has no shape")
         self._body = body
-        self._shape = copy.copy(fd.shape)
-        self._def = copy.copy(fd)  # for re-creating the shape as a sensor
-        self._def.filter = b2Filter(fd.filter.categoryBits, fd.filter.maskBits, fd.filter.groupIndex)
-        self._def.shape = self._shape
+        self._shape = fd.shape.__copy__()
+        f = fd.filter
+        self._filter = (f.categoryBits, f.maskBits, f.groupIndex)
+        self._density, self._friction, self._restitution = fd.density, fd.friction, fd.restitution
         self.userData = fd.userData
-        self._id = self._make(fd.isSensor)
+        self._sensor = bool(fd.isSensor)
+        self._id = self._make(self._sensor)
 
     def _make(self, is_sensor):
-        shape_def = shape_def_of(self._def, is_sensor)
-        shape_id = self._shape._create(self._body._id, shape_def)
+        d = shape_def(self._density, self._friction, self._restitution, is_sensor, self._filter)
+        shape_id = self._shape._create(self._body._id, d)
         if not shape_id:
             check_last()
-        self._def.isSensor = is_sensor
-        self._body._world._fixtures[shape_id] = self
+        self._sensor = is_sensor
+        world = self._body._world
+        world._fixtures[shape_id] = self
+        world._sensor_count += is_sensor
         return shape_id
+
+    def _forget(self):
+        """Drops the world's entries for the shape (destroyed, or about to be)."""
+        world = self._body._world
+        del world._fixtures[self._id]
+        world._sensor_count -= self._sensor
 
     @property
     def body(self):
@@ -45,31 +55,31 @@ class b2Fixture(object):
 
     @property
     def sensor(self):
-        return self._def.isSensor
+        return self._sensor
 
     @sensor.setter
     def sensor(self, value):
         # impulse2d fixes a shape's sensor flag at creation: the shape is made again,
         # behind this same fixture object, with the flag changed.
         value = bool(value)
-        if value == self._def.isSensor:
+        if value == self._sensor:
             return
         world = self._body._world
         world._fixture_ending(self)
         check(lib.i2d_shape_destroy(self._id))
-        del world._fixtures[self._id]
+        self._forget()
         self._id = self._make(value)
 
     isSensor = sensor
 
     @property
     def density(self):
-        return self._def.density
+        return self._density
 
     @density.setter
     def density(self, value):
         check(lib.i2d_shape_set_density(self._id, value, True))
-        self._def.density = value
+        self._density = value
 
     @property
     def friction(self):
@@ -78,7 +88,7 @@ class b2Fixture(object):
     @friction.setter
     def friction(self, value):
         check(lib.i2d_shape_set_friction(self._id, value))
-        self._def.friction = value
+        self._friction = value
 
     @property
     def restitution(self):
@@ -87,18 +97,17 @@ class b2Fixture(object):
     @restitution.setter
     def restitution(self, value):
         check(lib.i2d_shape_set_restitution(self._id, value))
-        self._def.restitution = value
+        self._restitution = value
 
     @property
     def filterData(self):
-        f = self._def.filter
-        return b2Filter(f.categoryBits, f.maskBits, f.groupIndex)
+        return b2Filter(*self._filter)
 
     @filterData.setter
     def filterData(self, value):
         f = structs.Filter(category_bits=value.categoryBits, mask_bits=value.maskBits, group_index=value.groupIndex)
         check(lib.i2d_shape_set_filter(self._id, f))
-        self._def.filter = b2Filter(value.categoryBits, value.maskBits, value.groupIndex)
+        self._filter = (value.categoryBits, value.maskBits, value.groupIndex)
 
     def _check(self):
         if not lib.i2d_shape_is_valid(self._id):
@@ -125,7 +134,7 @@ class b2Fixture(object):
         return self.aabb
 
     def __repr__(self):
-        return "b2Fixture(shape=%r, sensor=%s)" % (self._shape, self._def.isSensor)
+        return "b2Fixture(shape=%r, sensor=%s)" % (self._shape, self._sensor)
 
 
 def fixture_def_from(kwargs, shape_cls=None):

@@ -25,8 +25,9 @@ class b2Shape(object):
             setattr(self, key, value)
 
     def __copy__(self):
+        # Shallow is enough: setters replace the vertex lists and arrays, never edit them.
         other = type(self).__new__(type(self))
-        other.__dict__.update(self.__dict__)
+        other.__dict__ = self.__dict__.copy()
         return other
 
     copy = __copy__
@@ -245,16 +246,16 @@ class b2FixtureDef(object):
         return "b2FixtureDef(shape=%r, density=%g)" % (self.shape, self.density)
 
 
-def shape_def_of(fd, is_sensor=None):
-    """A C shape def for a fixtureDef. Contact events are left on (the default) for every
-    shape: the listener may be set at any time."""
-    d = lib.i2d_default_shape_def()
-    d.density = fd.density
-    d.friction = fd.friction
-    d.restitution = fd.restitution
-    d.is_sensor = fd.isSensor if is_sensor is None else is_sensor
-    f = fd.filter
-    d.filter.category_bits = f.categoryBits
-    d.filter.mask_bits = f.maskBits
-    d.filter.group_index = f.groupIndex
+_SHAPE_DEF = lib.i2d_default_shape_def()
+_ShapeDef = type(_SHAPE_DEF)
+
+
+def shape_def(density, friction, restitution, is_sensor, filter_bits):
+    """A C shape def (a copy of the library's default, which is cheaper than asking for
+    one). Contact events stay on (the default) for every shape: the listener may be set
+    at any time."""
+    d = _ShapeDef.from_buffer_copy(_SHAPE_DEF)
+    d.density, d.friction, d.restitution, d.is_sensor = density, friction, restitution, is_sensor
+    f = d.filter
+    f.category_bits, f.mask_bits, f.group_index = filter_bits
     return d

@@ -2,6 +2,8 @@
 """b2World over an impulse2d.World: bodies, joints, stepping, the contact listener and
 the queries."""
 
+import struct
+
 import impulse2d
 
 from ._body import b2Body, b2BodyDef, b2_dynamicBody, b2_kinematicBody, b2_staticBody
@@ -32,6 +34,30 @@ JOINT_HERTZ = 1e5
 #: than its angular one).
 SLEEP_SPEED_THRESHOLD = 0.05
 TIME_TO_SLEEP = 0.5
+
+def _ray_result_struct():
+    """A struct.Struct reading (shape, point x, y, normal x, y, fraction) from one
+    i2d_ray_result, at the offsets the library described (see impulse2d/_layout.py)."""
+    R, V = structs.RayResult, structs.Vec2
+    parts = [(R.shape.offset, "Q"), (R.point.offset + V.x.offset, "f"), (R.point.offset + V.y.offset, "f"),
+             (R.normal.offset + V.x.offset, "f"), (R.normal.offset + V.y.offset, "f"), (R.fraction.offset, "f")]
+    if parts != sorted(parts):  # unpack gives fields in memory order
+        raise ImportError("Box2D compat: i2d_ray_result's fields are not in the order this module reads")
+    fmt, at = "=", 0
+    for offset, code in parts:
+        fmt += "x" * (offset - at) + code
+        at = offset + struct.calcsize("=" + code)
+    return struct.Struct(fmt), C.sizeof(R)
+
+
+_RAY_RESULT, _RAY_RESULT_SIZE = _ray_result_struct()
+_cast_ray_all = lib.i2d_world_cast_ray_all
+_step = lib.i2d_world_step
+_contact_events = lib.i2d_world_get_contact_events
+_sensor_events = lib.i2d_world_get_sensor_events
+
+_BODY_DEF = lib.i2d_default_body_def()
+_BodyDef = type(_BODY_DEF)
 
 _MIX_MAXIMUM = 2  # i2d_mixing_rule: Box2D mixes restitution as the larger of the two
 _ALL = 0xFFFFFFFFFFFFFFFF
@@ -83,8 +109,10 @@ class b2World(object):
         self._fixtures = {}
         self._joints = {}
         self._touching = {}
+        self._sensor_count = 0  # sensor fixtures: without any, a step reads no sensor events
         self._ray_capacity = 16
         self._ray_buffer = (structs.RayResult * self._ray_capacity)()
+        self._ray_address = C.addressof(self._ray_buffer)
         self._id_capacity = 64
         self._id_buffer = (C.c_uint64 * self._id_capacity)()
         self._query_filter = structs.QueryFilter(category_bits=_ALL, mask_bits=_ALL)
@@ -161,7 +189,7 @@ class b2World(object):
             defn = b2BodyDef(**kwargs)
         elif kwargs:
             raise TypeError("CreateBody takes a b2BodyDef or keywords, not both")
-        d = lib.i2d_default_body_def()
+        d = _BodyDef.from_buffer_copy(_BODY_DEF)
         d.type = int(defn.type)
         d.position = Vec2(*as_pair(defn.position))
         d.rotation = lib.i2d_make_rot(defn.angle)
@@ -222,7 +250,7 @@ class b2World(object):
             self._forget_joint(edge.joint)
         check(lib.i2d_body_destroy(body._id))
         for fixture in body._fixtures:
-            self._fixtures.pop(fixture._id, None)
+            fixture._forget()
         self._bodies.pop(body._id, None)
 
     def _fixture_ending(self, fixture):
@@ -285,15 +313,16 @@ class b2World(object):
     def Step(self, timeStep, velocityIterations=8, positionIterations=3):
         """Advances by timeStep in self.substeps impulse2d substeps (the iteration counts
         are accepted and unused), then reports the step's contacts to the listener."""
-        check(lib.i2d_world_step(self._wid, timeStep, self.substeps))
-        self._report()
+        status = _step(self._wid, timeStep, self.substeps)
+        if status:
+            check(status)
+        events = _contact_events(self._wid)
+        if events.begin_count or events.end_count or self._sensor_count:
+            self._report(events)
 
-    def _report(self):
+    def _report(self, events):
         fixtures, touching, listener = self._fixtures, self._touching, self.contactListener
-        events = lib.i2d_world_get_contact_events(self._wid)
-        sensors = lib.i2d_world_get_sensor_events(self._wid)
-        if not (events.begin_count or events.end_count or sensors.begin_count or sensors.end_count):
-            return
+        sensors = _sensor_events(self._wid)
         for i in range(events.begin_count):
             e = events.begin_events[i]
             self._begin(e.shape_a, e.shape_b, fixtures, touching, listener)
@@ -337,28 +366,29 @@ class b2World(object):
         -1 (ignore), 0 (stop), a fraction (clip) and 1 (go on)."""
         x1, y1 = point1
         x2, y2 = point2
-        buffer, capacity = self._ray_buffer, self._ray_capacity
         origin, translation = Vec2(x1, y1), Vec2(x2 - x1, y2 - y1)
-        total = lib.i2d_world_cast_ray_all(self._wid, origin, translation, self._query_filter,
-                                           C.addressof(buffer), capacity)
-        if total < 0:
-            check_last()
-        if total > capacity:
-            self._ray_capacity = capacity = total
-            self._ray_buffer = buffer = (structs.RayResult * capacity)()
-            total = lib.i2d_world_cast_ray_all(self._wid, origin, translation, self._query_filter,
-                                               C.addressof(buffer), capacity)
-        fixtures, limit = self._fixtures, 1.0
+        total = _cast_ray_all(self._wid, origin, translation, self._query_filter, self._ray_address,
+                              self._ray_capacity)
+        if total <= 0:
+            if total < 0:
+                check_last()
+            return
+        if total > self._ray_capacity:
+            self._ray_capacity = total
+            self._ray_buffer = (structs.RayResult * total)()
+            self._ray_address = C.addressof(self._ray_buffer)
+            total = _cast_ray_all(self._wid, origin, translation, self._query_filter, self._ray_address, total)
+        # One struct.unpack per hit reads the results faster than ctypes field access.
+        buffer, unpack, size = self._ray_buffer, _RAY_RESULT.unpack_from, _RAY_RESULT_SIZE
+        fixtures, report, limit = self._fixtures, callback.ReportFixture, 1.0
         for i in range(total):
-            r = buffer[i]
-            fraction = r.fraction
+            shape_id, px, py, nx, ny, fraction = unpack(buffer, i * size)
             if fraction > limit:
                 break
-            fixture = fixtures.get(r.shape)
+            fixture = fixtures.get(shape_id)
             if fixture is None:
                 continue
-            p, n = r.point, r.normal
-            answer = callback.ReportFixture(fixture, b2Vec2(p.x, p.y), b2Vec2(n.x, n.y), fraction)
+            answer = report(fixture, b2Vec2(px, py), b2Vec2(nx, ny), fraction)
             if answer == 0:
                 break
             if 0 < answer < limit:
@@ -410,10 +440,10 @@ def _box2d_pairs(fa, fb):
     ba, bb = fa._body, fb._body
     if ba is bb or (ba._type != b2_dynamicBody and bb._type != b2_dynamicBody):
         return False
-    a, b = fa._def.filter, fb._def.filter
-    if a.groupIndex == b.groupIndex and a.groupIndex != 0:
-        return a.groupIndex > 0
-    return bool(a.maskBits & b.categoryBits) and bool(a.categoryBits & b.maskBits)
+    (category_a, mask_a, group_a), (category_b, mask_b, group_b) = fa._filter, fb._filter
+    if group_a == group_b and group_a != 0:
+        return group_a > 0
+    return bool(mask_a & category_b) and bool(category_a & mask_b)
 
 
 _DEF_OF_JOINT = {}  # filled by the package: joint classes to their defs, for CreateJoint(type=...)
