@@ -110,3 +110,25 @@ def test_prismatic_distance_and_weld():
     step(gravity_world, 1.0)
     assert glued.position == pytest.approx((0, 8), abs=0.02) and glued.angle == pytest.approx(0.3, abs=0.01)
     assert weld.type == Box2D.e_weldJoint
+
+
+def test_more_substeps_stiffen_a_limit_against_a_strong_motor():
+    # A light limb driven into its limit by a strong motor (a walker's knee): impulse2d's
+    # limit is a soft row as stiff as the substep allows, Box2D's is rigid. The default 8
+    # substeps keep the overshoot near 0.1 rad; 16 bring it near Box2D's.
+    overshoot = {}
+    for substeps in (4, 8, 16):
+        world = Box2D.b2World(gravity=(0, 0), substeps=substeps)
+        assert world.substeps == substeps
+        hull = world.CreateStaticBody(position=(0, 0))
+        shin = world.CreateDynamicBody(position=(0, -0.4))
+        shin.CreatePolygonFixture(box=(0.08, 0.4), density=1)
+        joint = world.CreateJoint(b2.revoluteJointDef(bodyA=hull, bodyB=shin, localAnchorA=(0, 0),
+                                                      localAnchorB=(0, 0.4), enableMotor=True, maxMotorTorque=80,
+                                                      motorSpeed=-6, enableLimit=True, lowerAngle=-0.5,
+                                                      upperAngle=0.5))
+        step(world, 1.0, 50)
+        overshoot[substeps] = joint.lowerLimit - joint.angle
+    assert Box2D.b2World().substeps == Box2D.DEFAULT_SUBSTEPS == 8
+    assert overshoot[4] > overshoot[8] > overshoot[16] > 0
+    assert overshoot[8] < 0.15 and overshoot[16] < 0.06
