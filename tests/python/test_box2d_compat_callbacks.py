@@ -153,3 +153,31 @@ def test_query_aabb_reports_fixtures_until_false():
 
     world.QueryAABB(First(), b2.AABB(lowerBound=(0, -2), upperBound=(10, 2)))
     assert len(found) == 1
+
+
+def test_ends_come_before_begins_within_a_step():
+    # A body leaving one tile and entering the next in a single step: a listener keeping
+    # one "on a tile" flag per body, as the environments do, ends with it set.
+    world = Box2D.b2World(gravity=(0, 0))
+    order = []
+
+    class Flag(b2.contactListener):
+        def BeginContact(self, contact):
+            order.append(("begin", contact.fixtureA.body.userData))
+            car.on_tile = True
+
+        def EndContact(self, contact):
+            order.append(("end", contact.fixtureA.body.userData))
+            car.on_tile = False
+
+    world.contactListener = Flag()
+    for name, x in (("a", 0.5), ("b", 1.5)):
+        world.CreateStaticBody(position=(x, 0), userData=name,
+                               fixtures=b2.fixtureDef(shape=b2.polygonShape(box=(0.5, 0.5)), isSensor=True))
+    car = _box(world, "car", (0.9, 0), half=0.05)
+    car.on_tile = False
+    world.Step(1 / 60.0, 6, 2)
+    assert order == [("begin", "a")] and car.on_tile
+    car.linearVelocity = (12, 0)  # 0.2 m in the next step: from 0.85..0.95 to 1.05..1.15
+    world.Step(1 / 60.0, 6, 2)
+    assert order == [("begin", "a"), ("end", "a"), ("begin", "b")] and car.on_tile

@@ -98,7 +98,7 @@ def _pair_key(a, b):
 
 class b2World(object):
     """A world. Callbacks run after each Step, from impulse2d's contact and sensor
-    events, in the order begin events then end events."""
+    events: the step's end events, then its begin events."""
 
     def __init__(self, gravity=(0.0, -10.0), doSleep=True, **kwargs):
         self._w = impulse2d.World(
@@ -323,18 +323,21 @@ class b2World(object):
     def _report(self, events):
         fixtures, touching, listener = self._fixtures, self._touching, self.contactListener
         sensors = _sensor_events(self._wid)
-        for i in range(events.begin_count):
-            e = events.begin_events[i]
-            self._begin(e.shape_a, e.shape_b, fixtures, touching, listener)
-        for i in range(sensors.begin_count):
-            e = sensors.begin_events[i]
-            self._begin(e.sensor_shape, e.visitor_shape, fixtures, touching, listener, True)
+        # Ends before begins: a pair changes state at most once per step, and a body
+        # moving from one shape to its neighbour (a leg across two terrain edges) then
+        # ends on "touching the new one", whatever flags the listener keeps per body.
         for i in range(events.end_count):
             e = events.end_events[i]
             self._end(e.shape_a, e.shape_b, touching, listener)
         for i in range(sensors.end_count):
             e = sensors.end_events[i]
             self._end(e.sensor_shape, e.visitor_shape, touching, listener)
+        for i in range(events.begin_count):
+            e = events.begin_events[i]
+            self._begin(e.shape_a, e.shape_b, fixtures, touching, listener)
+        for i in range(sensors.begin_count):
+            e = sensors.begin_events[i]
+            self._begin(e.sensor_shape, e.visitor_shape, fixtures, touching, listener, True)
 
     @staticmethod
     def _begin(a, b, fixtures, touching, listener, sensor=False):
