@@ -23,6 +23,17 @@ def test_default_gravity_and_free_fall():
     assert world2.gravity == (0, 0) and not world2.allowSleeping
 
 
+def test_speed_is_capped_as_box2d_caps_travel_per_step():
+    # Box2D 2.3: at most 2 m per step, 100 m/s at 50 Hz (the compat world's cap).
+    world = Box2D.b2World(gravity=(0, 0))
+    spark = world.CreateDynamicBody()
+    spark.CreateCircleFixture(radius=2 / 30.0, density=3.5)
+    spark.ApplyLinearImpulse((13.0, 0), spark.worldCenter, True)  # 13 N s on 49 g: 265 m/s uncapped
+    world.Step(1 / 50.0, 6, 2)
+    assert spark.linearVelocity.length == pytest.approx(100.0, rel=1e-4)
+    assert spark.position.x == pytest.approx(2.0, rel=1e-3)
+
+
 def test_body_at_rest_falls_asleep_after_half_a_second():
     world = Box2D.b2World()
     ground(world)

@@ -36,8 +36,7 @@ class b2Vec2(object):
             raise IndexError("b2Vec2 index out of range")
 
     def __iter__(self):
-        yield self.x
-        yield self.y
+        return iter((self.x, self.y))
 
     @property
     def tuple(self):

@@ -24,6 +24,11 @@ Vec2 = structs.Vec2
 #: substeps attribute (or b2World(substeps=...)) overrides it.
 DEFAULT_SUBSTEPS = 8
 
+#: Box2D 2.3 caps a body's travel at 2 m per step (b2_maxTranslation), scaling its
+#: velocity down: 100 m/s at Gymnasium's 50 Hz. impulse2d caps the speed itself, once for
+#: the world; LunarLander's engine particles leave at over 200 m/s without it.
+MAXIMUM_LINEAR_SPEED = 100.0
+
 #: Joints as stiff as the substep allows (the library caps joint_hertz at a quarter of the
 #: substep rate), nearest to Box2D's rigid joints and limits.
 JOINT_HERTZ = 1e5
@@ -103,7 +108,8 @@ class b2World(object):
     def __init__(self, gravity=(0.0, -10.0), doSleep=True, **kwargs):
         self._w = impulse2d.World(
             gravity=as_pair(gravity), enable_sleep=bool(doSleep), sleep_speed_threshold=SLEEP_SPEED_THRESHOLD,
-            time_to_sleep=TIME_TO_SLEEP, restitution_mixing=_MIX_MAXIMUM, joint_hertz=JOINT_HERTZ)
+            time_to_sleep=TIME_TO_SLEEP, restitution_mixing=_MIX_MAXIMUM, joint_hertz=JOINT_HERTZ,
+            maximum_linear_speed=MAXIMUM_LINEAR_SPEED)
         self._wid = self._w.id
         self._bodies = {}
         self._fixtures = {}
