@@ -144,3 +144,30 @@ def test_bad_input_raises_with_the_library_message():
         world.Step(-1.0, 6, 2)
     with pytest.raises(AttributeError):
         world.CreateDynamicBody(positon=(0, 0))
+
+
+def test_awake_can_be_set_and_forces_may_leave_a_sleeper_asleep():
+    world = Box2D.b2World()
+    body = world.CreateDynamicBody(position=(0, 10), awake=False,
+                                   fixtures=b2.fixtureDef(shape=b2.circleShape(radius=0.5), density=1))
+    assert not body.awake
+    body.ApplyForceToCenter((0, 100), False)  # wake=False: a sleeping body ignores it
+    step(world, 0.5)
+    assert not body.awake and body.position.y == pytest.approx(10.0)
+    body.awake = True
+    step(world, 0.5)
+    assert body.awake and body.position.y < 10.0
+    body.awake = False
+    assert not body.awake
+
+
+def test_world_and_body_contact_lists():
+    world = Box2D.b2World()
+    floor = ground(world)
+    box = world.CreateDynamicBody(position=(0, 0.5))
+    box.CreatePolygonFixture(box=(0.5, 0.5), density=1)
+    step(world, 0.2)
+    assert world.contactCount == 1 and len(world.contacts) == 1
+    edge = box.contacts[0]
+    assert edge.other is floor and edge.contact.touching
+    assert floor.contacts[0].other is box
