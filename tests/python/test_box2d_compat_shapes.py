@@ -43,6 +43,12 @@ def test_fixture_def_fields_reach_the_fixture():
     assert body.mass == pytest.approx(1.0)
     f.friction = 0.9
     assert f.friction == pytest.approx(0.9)
+    view = f.filterData
+    view.maskBits = 0x3  # refilters at once (pybox2d's copy would not)
+    assert impulse2d.Shape(world.impulse2d_world, f._id).filter == (0x20, 0x3, -2)
+    copy = b2.filter(categoryBits=0x40, maskBits=0x1, groupIndex=0)
+    f.filterData = copy
+    assert (view.categoryBits, view.maskBits, view.groupIndex) == (0x40, 0x1, 0)
     assert f.TestPoint(body.position) and not f.TestPoint((5, 5))
     lo, hi = f.aabb.lowerBound, f.aabb.upperBound
     assert lo == pytest.approx((-0.5, -0.5)) and hi == pytest.approx((0.5, 0.5))

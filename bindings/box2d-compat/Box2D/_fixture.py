@@ -22,6 +22,7 @@ class b2Fixture(object):
         self._density, self._friction, self._restitution = fd.density, fd.friction, fd.restitution
         self.userData = fd.userData
         self._sensor = bool(fd.isSensor)
+        self._filter_view = None
         self._id = self._make(self._sensor)
 
     def _make(self, is_sensor):
@@ -101,13 +102,19 @@ class b2Fixture(object):
 
     @property
     def filterData(self):
-        return b2Filter(*self._filter)
+        """The fixture's filter as one object kept by the fixture (a lidar callback reads
+        it per hit): changing a field of it refilters the fixture at once."""
+        view = self._filter_view
+        if view is None:
+            view = self._filter_view = _FilterView(self)
+        return view
 
     @filterData.setter
     def filterData(self, value):
-        f = structs.Filter(category_bits=value.categoryBits, mask_bits=value.maskBits, group_index=value.groupIndex)
+        bits = (value.categoryBits, value.maskBits, value.groupIndex)
+        f = structs.Filter(category_bits=bits[0], mask_bits=bits[1], group_index=bits[2])
         check(lib.i2d_shape_set_filter(self._id, f))
-        self._filter = (value.categoryBits, value.maskBits, value.groupIndex)
+        self._filter = bits
 
     def _check(self):
         if not lib.i2d_shape_is_valid(self._id):
@@ -135,6 +142,25 @@ class b2Fixture(object):
 
     def __repr__(self):
         return "b2Fixture(shape=%r, sensor=%s)" % (self._shape, self._sensor)
+
+
+class _FilterView(b2Filter):
+    """b2Filter whose fields are its fixture's: reading costs no allocation, writing
+    sets the fixture's filter (pybox2d hands out a copy, which a write leaves alone)."""
+
+    __slots__ = ("_fixture",)
+
+    def __init__(self, fixture):
+        object.__setattr__(self, "_fixture", fixture)
+
+    categoryBits = property(lambda self: self._fixture._filter[0], lambda self, v: self._set(0, v))
+    maskBits = property(lambda self: self._fixture._filter[1], lambda self, v: self._set(1, v))
+    groupIndex = property(lambda self: self._fixture._filter[2], lambda self, v: self._set(2, v))
+
+    def _set(self, index, value):
+        bits = list(self._fixture._filter)
+        bits[index] = value
+        self._fixture.filterData = b2Filter(*bits)
 
 
 def fixture_def_from(kwargs, shape_cls=None):
