@@ -195,30 +195,45 @@ class b2World(object):
             defn = b2BodyDef(**kwargs)
         elif kwargs:
             raise TypeError("CreateBody takes a b2BodyDef or keywords, not both")
+        # The library's default def is Box2D's (static, at rest, gravity scale 1, may
+        # sleep): only what differs is written (a NaN differs from 0 and is written, to
+        # be refused by the library).
         d = _BodyDef.from_buffer_copy(_BODY_DEF)
-        d.type = int(defn.type)
-        d.position = Vec2(*as_pair(defn.position))
-        d.rotation = lib.i2d_make_rot(defn.angle)
-        d.linear_velocity = Vec2(*as_pair(defn.linearVelocity))
-        d.angular_velocity = defn.angularVelocity
-        d.linear_damping = defn.linearDamping
-        d.angular_damping = defn.angularDamping
-        d.gravity_scale = defn.gravityScale
-        d.fixed_rotation = bool(defn.fixedRotation)
-        d.enable_sleep = bool(defn.allowSleep)
-        d.is_bullet = bool(defn.bullet)
+        body_type = d.type = int(defn.type)
+        x, y = defn.position
+        if x or y:
+            d.position = Vec2(x, y)
+        if defn.angle:
+            d.rotation = lib.i2d_make_rot(defn.angle)
+        x, y = defn.linearVelocity
+        if x or y:
+            d.linear_velocity = Vec2(x, y)
+        if defn.angularVelocity:
+            d.angular_velocity = defn.angularVelocity
+        if defn.linearDamping:
+            d.linear_damping = defn.linearDamping
+        if defn.angularDamping:
+            d.angular_damping = defn.angularDamping
+        if defn.gravityScale != 1.0:
+            d.gravity_scale = defn.gravityScale
+        if defn.fixedRotation:
+            d.fixed_rotation = True
+        if not defn.allowSleep:
+            d.enable_sleep = False
+        if defn.bullet:
+            d.is_bullet = True
         body_id = lib.i2d_body_create(self._wid, C.byref(d))
         if not body_id:
             check_last()
-        body = b2Body(self, body_id, int(defn.type), defn.userData)
+        body = b2Body(self, body_id, body_type, defn.userData)
         self._bodies[body_id] = body
         try:
             for fd in _listed(defn.fixtures):
                 body.CreateFixture(fd)
-            template = defn.shapeFixture or b2FixtureDef()
-            for shape in _listed(defn.shapes):
-                fd = _with_shape(template, shape)
-                body.CreateFixture(fd)
+            if defn.shapes is not None:
+                template = defn.shapeFixture or b2FixtureDef()
+                for shape in _listed(defn.shapes):
+                    body.CreateFixture(_with_shape(template, shape))
             if not defn.awake:
                 body.awake = False
             if not defn.active:
