@@ -27,7 +27,8 @@ def test_revolute_def_takes_the_reference_angle_from_its_bodies():
     init = b2.revoluteJointDef()
     init.Initialize(base, arm, (0, 5))
     assert init.referenceAngle == pytest.approx(0.4)
-    assert init.localAnchorA == pytest.approx((0, 0)) and init.localAnchorB == pytest.approx((-1 * math.cos(0.5), math.sin(0.5)))
+    assert init.localAnchorA == pytest.approx((0, 0))
+    assert init.localAnchorB == pytest.approx((-math.cos(0.5), math.sin(0.5)))  # (0, 5) in the arm's frame
     joint = world.CreateJoint(rjd)
     assert joint.angle == pytest.approx(0.0, abs=1e-6) and joint.referenceAngle == pytest.approx(0.4)
     assert joint.bodyA is base and joint.bodyB is arm and joint.type == Box2D.e_revoluteJoint

@@ -2,8 +2,6 @@
 """Joint definitions and joints: revolute, prismatic, distance and weld, over
 impulse2d's joints of the same kinds."""
 
-import math
-
 import impulse2d
 
 from ._native import check, check_last, lib
