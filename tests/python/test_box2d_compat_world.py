@@ -96,6 +96,8 @@ def test_forces_impulses_and_torques():
     world.Step(0.5, 6, 2)
     assert body.linearVelocity.x == pytest.approx(3.0, rel=1e-4)  # F t / m
     assert body.angularVelocity == pytest.approx(0.5, rel=1e-4)  # T t / I
+    world.Step(0.5, 6, 2)  # forces last one step, as Box2D's with autoClearForces
+    assert body.linearVelocity.x == pytest.approx(3.0, rel=1e-4)
     body.linearVelocity, body.angularVelocity = (0, 0), 0
     body.ApplyForce((0, 1), body.worldCenter + (1, 0), True)  # 1 m off-centre: torque 1 N m too
     world.Step(0.5, 6, 2)
