@@ -173,3 +173,27 @@ def test_world_and_body_contact_lists():
     edge = box.contacts[0]
     assert edge.other is floor and edge.contact.touching
     assert floor.contacts[0].other is box
+
+
+def test_body_settings_pass_through():
+    world = Box2D.b2World()
+    body = world.CreateDynamicBody(position=(0, 10), linearDamping=0.5, angularDamping=0.25, gravityScale=0.0,
+                                   fixedRotation=True, bullet=True, allowSleep=False)
+    body.CreateCircleFixture(radius=0.5, density=1)
+    assert (body.linearDamping, body.angularDamping, body.gravityScale) == (0.5, 0.25, 0.0)
+    assert body.fixedRotation and body.bullet and not body.sleepingAllowed
+    step(world, 1.0)
+    assert body.position.y == pytest.approx(10.0)  # gravity scale 0
+    body.gravityScale = 1.0
+    body.type = Box2D.b2_staticBody
+    assert body.type == b2.staticBody and body.mass == 0.0
+    step(world, 0.5)
+    assert body.position.y == pytest.approx(10.0)
+    body.type = b2.dynamicBody
+    body.active = False  # out of the world: no motion, no contacts
+    assert not body.active
+    step(world, 0.5)
+    assert body.position.y == pytest.approx(10.0)
+    body.active = True
+    step(world, 0.5)
+    assert body.position.y < 10.0
