@@ -133,3 +133,20 @@ def test_more_substeps_stiffen_a_limit_against_a_strong_motor():
     assert Box2D.b2World().substeps == Box2D.DEFAULT_SUBSTEPS == 8
     assert overshoot[4] > overshoot[8] > overshoot[16] > 0
     assert overshoot[8] < 0.05 and overshoot[16] < 0.015
+
+
+def test_wheel_joint_spring_and_motor():
+    world = Box2D.b2World()
+    ground = world.CreateStaticBody(shapes=b2.edgeShape(vertices=[(-50, 0), (50, 0)]))
+    chassis = world.CreateDynamicBody(position=(0, 1.0))
+    chassis.CreatePolygonFixture(box=(1, 0.2), density=1)
+    wheel = world.CreateDynamicBody(position=(0, 0.5))
+    wheel.CreateCircleFixture(radius=0.5, density=1, friction=0.9)
+    joint = world.CreateJoint(b2.wheelJointDef(bodyA=chassis, bodyB=wheel, localAnchorA=(0, -0.5),
+                                               localAxisA=(0, 1), enableMotor=True, maxMotorTorque=50,
+                                               motorSpeed=-2.0, frequencyHz=4.0, dampingRatio=0.7))
+    assert joint.type == Box2D.e_wheelJoint and joint.springFrequencyHz == 4.0 and ground
+    step(world, 2.0)
+    assert joint.speed == pytest.approx(-2.0, rel=0.02)  # the motor turns the wheel clockwise...
+    assert wheel.linearVelocity.x == pytest.approx(1.0, rel=0.05)  # ...and it rolls right at w r
+    assert 0 < joint.translation < 0.1  # the chassis sags onto the wheel: B's anchor rises along the axis

@@ -21,7 +21,8 @@ from ._shapes import b2CircleShape, b2EdgeShape, b2Filter, b2FixtureDef, b2Polyg
 from ._fixture import b2Fixture
 from ._body import b2Body, b2BodyDef, b2_dynamicBody, b2_kinematicBody, b2_staticBody
 from ._joints import (b2DistanceJoint, b2DistanceJointDef, b2Joint, b2JointDef, b2JointEdge, b2PrismaticJoint,
-                      b2PrismaticJointDef, b2RevoluteJoint, b2RevoluteJointDef, b2WeldJoint, b2WeldJointDef)
+                      b2PrismaticJointDef, b2RevoluteJoint, b2RevoluteJointDef, b2WeldJoint, b2WeldJointDef,
+                      b2WheelJoint, b2WheelJointDef)
 from ._joints import (e_distanceJoint, e_gearJoint, e_mouseJoint, e_prismaticJoint, e_pulleyJoint,
                       e_revoluteJoint, e_unknownJoint, e_weldJoint, e_wheelJoint)
 from ._callbacks import (b2Contact, b2ContactEdge, b2ContactFilter, b2ContactListener, b2DestructionListener,
@@ -33,7 +34,8 @@ __version__ = "2.3.10"  # the pybox2d API level it stands in for
 __version_info__ = (2, 3, 10)
 
 _DEF_OF_JOINT.update({b2RevoluteJoint: b2RevoluteJointDef, b2PrismaticJoint: b2PrismaticJointDef,
-                      b2DistanceJoint: b2DistanceJointDef, b2WeldJoint: b2WeldJointDef})
+                      b2DistanceJoint: b2DistanceJointDef, b2WeldJoint: b2WeldJointDef,
+                      b2WheelJoint: b2WheelJointDef})
 
 b2_pi = _math.pi
 b2_maxPolygonVertices = 8

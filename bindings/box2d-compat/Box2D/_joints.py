@@ -144,6 +144,30 @@ class b2WeldJointDef(b2JointDef):
         return s
 
 
+class b2WheelJointDef(b2JointDef):
+    """Box2D 2.3's wheel: a suspension spring (frequencyHz, dampingRatio; default 2 Hz
+    and 0.7) along localAxisA and a motor on the turning."""
+
+    _kind = "wheel"
+    _fields = dict(localAxisA=(1.0, 0.0), enableMotor=False, maxMotorTorque=0.0, motorSpeed=0.0,
+                   frequencyHz=2.0, dampingRatio=0.7)
+
+    @property
+    def axis(self):
+        return self.bodyA.GetWorldVector(self.localAxisA)
+
+    @axis.setter
+    def axis(self, value):
+        self.localAxisA = self.bodyA.GetLocalVector(value)
+
+    def _settings(self):
+        s = b2JointDef._settings(self)
+        s.update(local_axis_a=as_pair(self.localAxisA), enable_spring=self.frequencyHz > 0, hertz=self.frequencyHz,
+                 damping_ratio=self.dampingRatio, enable_motor=bool(self.enableMotor),
+                 max_motor_torque=self.maxMotorTorque, motor_speed=self.motorSpeed)
+        return s
+
+
 class b2JointEdge(object):
     __slots__ = ("joint", "other")
 
@@ -299,5 +323,27 @@ class b2WeldJoint(b2Joint):
     type = e_weldJoint
 
 
+class b2WheelJoint(b2Joint):
+    type = e_wheelJoint
+
+    @property
+    def translation(self):
+        value = lib.i2d_wheel_joint_get_translation(self._id)
+        if value == 0.0:
+            check_last()
+        return value
+
+    @property
+    def speed(self):
+        """rad/s: B's spin minus A's, as Box2D's GetJointSpeed."""
+        return self._bodyB.angularVelocity - self._bodyA.angularVelocity
+
+    motorSpeed = _accessor("wheel", "motor_speed")
+    maxMotorTorque = _accessor("wheel", "max_motor_torque")
+    motorEnabled = _accessor("wheel", "enable_motor")
+    springFrequencyHz = _accessor("wheel", "hertz")
+    springDampingRatio = _accessor("wheel", "damping_ratio")
+
+
 JOINT_CLASSES = {"revolute": b2RevoluteJoint, "prismatic": b2PrismaticJoint,
-                 "distance": b2DistanceJoint, "weld": b2WeldJoint}
+                 "distance": b2DistanceJoint, "weld": b2WeldJoint, "wheel": b2WheelJoint}

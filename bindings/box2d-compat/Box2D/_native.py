@@ -21,6 +21,7 @@ for _name, _restype, _argtypes in (
     ("i2d_revolute_joint_get_motor_torque", C.c_float, [_ID]),
     ("i2d_prismatic_joint_get_translation", C.c_float, [_ID]),
     ("i2d_prismatic_joint_get_speed", C.c_float, [_ID]),
+    ("i2d_wheel_joint_get_translation", C.c_float, [_ID]),
     ("i2d_revolute_joint_set_limits", C.c_int32, [_ID, C.c_float, C.c_float]),
     ("i2d_body_get_world_point_velocity", Vec2, [_ID, Vec2]),
 ):

@@ -9,7 +9,7 @@ import impulse2d
 from ._body import b2Body, b2BodyDef, b2_dynamicBody, b2_kinematicBody, b2_staticBody
 from ._callbacks import b2Contact
 from ._joints import (JOINT_CLASSES, b2DistanceJointDef, b2JointEdge, b2PrismaticJointDef,
-                      b2RevoluteJointDef, b2WeldJointDef)
+                      b2RevoluteJointDef, b2WeldJointDef, b2WheelJointDef)
 from ._native import C, check, check_last, lib, structs
 from ._shapes import b2FixtureDef
 from ._vec import b2Vec2, as_pair
@@ -323,6 +323,9 @@ class b2World(object):
 
     def CreateWeldJoint(self, **kwargs):
         return self.CreateJoint(b2WeldJointDef(**kwargs))
+
+    def CreateWheelJoint(self, **kwargs):
+        return self.CreateJoint(b2WheelJointDef(**kwargs))
 
     def DestroyJoint(self, joint):
         check(lib.i2d_joint_destroy(joint._id))
