@@ -2,12 +2,14 @@
 """Box2D.b2World and b2Body: defaults, motion against closed forms, sleep, creation
 styles, destruction and bad input."""
 
+import gc
 import math
 
 import pytest
 
 import impulse2d
-from box2d_compat_fixture import Box2D, b2, ground, step
+from impulse2d._native import lib
+from box2d_compat_fixture import Box2D, Recorder, b2, ground, step
 
 
 def test_default_gravity_and_free_fall():
@@ -197,3 +199,27 @@ def test_body_settings_pass_through():
     body.active = True
     step(world, 0.5)
     assert body.position.y < 10.0
+
+
+def test_a_dropped_world_is_freed_at_once():
+    # No reference cycle through the world: its C world goes when the last reference
+    # does, without waiting for the cyclic collector (LunarLander makes a world per reset).
+    gc.disable()
+    try:
+        world = Box2D.b2World()
+        world.contactListener = Recorder()
+        floor = ground(world)
+        box = world.CreateDynamicBody(position=(0, 0.5))
+        box.CreatePolygonFixture(box=(0.5, 0.5), density=1)
+        world.CreateJoint(b2.revoluteJointDef(bodyA=floor, bodyB=box))
+        step(world, 0.2)
+        world_id = world.impulse2d_world.id
+        assert lib.i2d_world_is_valid(world_id)
+        del world
+        assert not lib.i2d_world_is_valid(world_id)
+        with pytest.raises(impulse2d.InvalidHandle):
+            box.position
+        with pytest.raises(impulse2d.InvalidHandle):
+            box.world
+    finally:
+        gc.enable()

@@ -7,6 +7,7 @@ equal, and carry the attributes a program set on them (environments hang their o
 fields, such as ground_contact, on bodies)."""
 
 import math
+import weakref
 
 import impulse2d
 
@@ -57,7 +58,7 @@ class b2Body(object):
     transform); a body or world destroyed raises impulse2d.InvalidHandle."""
 
     def __init__(self, world, body_id, body_type, user_data):
-        self._world = world
+        self._world_ref = weakref.ref(world)
         self._id = body_id
         self._type = body_type
         self._fixtures = []
@@ -66,6 +67,17 @@ class b2Body(object):
 
     def __repr__(self):
         return "b2Body(0x%016x)" % self._id
+
+    @property
+    def _world(self):
+        # Bodies refer to their world weakly: no cycle keeps a dropped world (LunarLander
+        # makes a new one every reset) and its C world alive until the cyclic collector
+        # runs; impulse2d allows 256 live worlds. As in pybox2d, a body does not keep its
+        # world: once the world is gone, using the body raises.
+        world = self._world_ref()
+        if world is None:
+            raise impulse2d.InvalidHandle("b2Body 0x%016x: its b2World no longer exists" % self._id)
+        return world
 
     # ---- pose and velocity ------------------------------------------------------------
     @property

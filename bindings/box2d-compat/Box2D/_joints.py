@@ -184,7 +184,6 @@ class b2Joint(object):
     type = e_unknownJoint
 
     def __init__(self, world, joint_id, bodyA, bodyB, user_data):
-        self._world = world
         self._id = joint_id
         self._bodyA, self._bodyB = bodyA, bodyB
         self.userData = user_data
@@ -193,7 +192,7 @@ class b2Joint(object):
     bodyB = property(lambda self: self._bodyB)
 
     def _handle(self):
-        return impulse2d.Joint(self._world._w, self._id)
+        return impulse2d.Joint(self._bodyA._world._w, self._id)
 
     @property
     def anchorA(self):
