@@ -15,7 +15,7 @@ namespace i2d::capi {
 
 /// Worlds alive at once (12 bits of an id). Creating and destroying is unlimited.
 constexpr int32_t max_worlds = I2D_MAX_WORLDS;
-constexpr uint16_t max_world_generation = 0x1FF;  // 9 bits in an id
+constexpr uint16_t max_world_generation = 0xFF;  // 8 bits in an id
 
 /// The generation after g: 1..max_world_generation, round and round; 0 never (it would
 /// make the id of slot 0's first world all but null).
