@@ -127,7 +127,7 @@ def build_library_from_source(build_temp):
         )
     cmake = cmake_program()
     build_dir = os.path.join(os.path.abspath(build_temp), "cmake")
-    print("impulse2d: no prebuilt library given; building libimpulse2d from source in " + build_dir)
+    print("impulse2d: building libimpulse2d from source with CMake in " + build_dir)
     try:
         run([cmake] + cmake_configure_arguments(build_dir))
         run([cmake] + cmake_build_arguments(build_dir))
@@ -153,6 +153,14 @@ def library_to_bundle(build_temp):
     return build_library_from_source(build_temp)
 
 
+def remove_stale_libraries(package_dir):
+    # build_lib outlives a pip run (pip builds in the source tree): a library an earlier
+    # run copied there would otherwise land in this wheel too.
+    for name in os.listdir(package_dir):
+        if name.startswith("libimpulse2d") or name == "impulse2d.dll":
+            os.remove(os.path.join(package_dir, name))
+
+
 class BuildPyWithLibrary(build_py):
     def run(self):
         super().run()
@@ -161,10 +169,12 @@ class BuildPyWithLibrary(build_py):
             library = library_to_bundle(build_temp)
         except BuildError as error:
             sys.exit("impulse2d: error: %s" % error)
+        package_dir = os.path.join(self.build_lib, "impulse2d")
+        remove_stale_libraries(package_dir)
         if library is None:
             print("impulse2d: IMPULSE2D_BUNDLE=none; the package will look for the library at import time")
             return
-        target = os.path.join(self.build_lib, "impulse2d", os.path.basename(library))
+        target = os.path.join(package_dir, os.path.basename(library))
         # Copy the file the symlink chain ends at, under the unversioned name.
         shutil.copyfile(os.path.realpath(library), target)
         print("impulse2d: bundled %s" % library)
