@@ -110,6 +110,17 @@ timed() {
   echo "  ($((SECONDS - start)) s)"
 }
 
+# Says what is missing instead of letting pip fail deep in its output.
+check_prerequisites() {
+  command -v cmake >/dev/null || { echo "FAIL: no cmake on PATH (apt-get install cmake)" >&2; exit 1; }
+  if ! "$python" -c "import setuptools, wheel" 2>/dev/null; then
+    echo "FAIL: $python lacks setuptools or wheel (apt-get install python3-setuptools python3-wheel," \
+      "and PYTHON=/usr/bin/python3)" >&2
+    exit 1
+  fi
+}
+
+check_prerequisites
 copy_source_tree "$work/src"
 package="$work/src/bindings/python"
 
