@@ -48,15 +48,20 @@ class BuildError(Exception):
     """A reason the library cannot be bundled, worded for the person running pip."""
 
 
+def requested_bundle_mode():
+    return os.environ.get("IMPULSE2D_BUNDLE", "").strip().lower() or "auto"
+
+
 def bundle_mode():
-    mode = os.environ.get("IMPULSE2D_BUNDLE", "auto").strip().lower() or "auto"
+    mode = requested_bundle_mode()
     if mode not in BUNDLE_CHOICES:
         raise BuildError("IMPULSE2D_BUNDLE=%s: expected one of %s" % (mode, ", ".join(BUNDLE_CHOICES)))
     return mode
 
 
 def bundles_a_library():
-    return os.environ.get("IMPULSE2D_BUNDLE", "").strip().lower() != "none"
+    # Unchecked: setuptools asks before build_py can report a bad value properly.
+    return requested_bundle_mode() != "none"
 
 
 def library_from_environment():
@@ -169,8 +174,13 @@ class BuildPyWithLibrary(build_py):
             library = library_to_bundle(build_temp)
         except BuildError as error:
             sys.exit("impulse2d: error: %s" % error)
-        package_dir = os.path.join(self.build_lib, "impulse2d")
-        remove_stale_libraries(package_dir)
+        if getattr(self, "editable_mode", False):
+            # `pip install -e` imports the package from the source tree, not build_lib
+            # (bindings/python/.gitignore ignores the copy).
+            package_dir = os.path.join(HERE, "impulse2d")
+        else:
+            package_dir = os.path.join(self.build_lib, "impulse2d")
+            remove_stale_libraries(package_dir)
         if library is None:
             print("impulse2d: IMPULSE2D_BUNDLE=none; the package will look for the library at import time")
             return
