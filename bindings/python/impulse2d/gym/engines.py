@@ -15,8 +15,8 @@ from . import constants as K
 
 NOOP_DISCRETE = 0
 MAIN_ENGINE_ACTION = 2
-LEFT_ENGINE_ACTION = 1    # fires the left nozzle, which turns the lander clockwise ...
-RIGHT_ENGINE_ACTION = 3   # ... and this one counter-clockwise
+LEFT_ENGINE_ACTION = 1    # the left nozzle: turns the lander counter-clockwise ...
+RIGHT_ENGINE_ACTION = 3   # ... and the right one clockwise
 
 
 class Throttles(NamedTuple):
