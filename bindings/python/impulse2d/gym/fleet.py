@@ -56,6 +56,7 @@ class LanderFleet:
         self.substeps, self.workers = int(substeps), int(workers)
         self.rngs: List[np.random.Generator] = [np.random.default_rng() for _ in range(count)]
         self.worlds: List[Optional[World]] = [None] * count
+        self._world_ids: List[int] = [0] * count
         self.landers: List[Optional[Lander]] = [None] * count
         self.terrains: List[Optional[Terrain]] = [None] * count
         self._batch: Optional[WorldBatch] = None
@@ -111,6 +112,7 @@ class LanderFleet:
             self._hull_mass = (mass_data.mass, mass_data.rotational_inertia, mass_data.center)
         self.worlds[index], self.landers[index], self.terrains[index] = world, lander, terrain
         self.hull_ids[index] = lander.hull.id
+        self._world_ids[index] = world.id
         self.pad_height[index] = terrain.pad_height
         self.angle[index] = 0.0
         self.leg_touches[index] = 0
@@ -138,10 +140,7 @@ class LanderFleet:
         if self._batch is None:
             self._batch = WorldBatch(self.worlds, self.workers)
         self._batch.step(K.FRAME_TIME, self.substeps)
-        for index in range(self.count):
-            self._read_motion(index)
-            self._read_contacts(index)
-        self.at_rest[:] = [not lib.i2d_body_is_awake(int(i)) for i in self.hull_ids]
+        self._read_all()
         return self._score(throttles)
 
     def _blow(self) -> None:
@@ -166,21 +165,35 @@ class LanderFleet:
         for index in np.flatnonzero((throttles.main > 0.0) | (throttles.side > 0.0)):
             index = int(index)
             check(lib.i2d_world_set_body_velocities(
-                self.worlds[index].id, ids + 8 * index, 1, new_linear + 8 * index, new_angular + 4 * index))
+                self._world_ids[index], ids + 8 * index, 1, new_linear + 8 * index, new_angular + 4 * index))
+
+    def _read_all(self) -> None:
+        """Every hull's motion, contacts and sleep after a frame: four library calls per
+        world, in a loop kept tight because it runs count times a frame."""
+        ids, transforms, linear, angular, _, _ = self._addresses
+        get_transforms, get_velocities = lib.i2d_world_get_body_transforms, lib.i2d_world_get_body_velocities
+        get_events, is_awake = lib.i2d_world_get_contact_events, lib.i2d_body_is_awake
+        at_rest = self.at_rest
+        for index, (world_id, hull_id) in enumerate(zip(self._world_ids, self.hull_ids.tolist())):
+            status = get_transforms(world_id, ids + 8 * index, 1, transforms + 16 * index) or get_velocities(
+                world_id, ids + 8 * index, 1, linear + 8 * index, angular + 4 * index)
+            if status:
+                check(status)
+            events = get_events(world_id)
+            if events.begin_count or events.end_count:
+                self._count_contacts(index, events)
+            at_rest[index] = not is_awake(hull_id)
 
     def _read_motion(self, index: int) -> None:
         ids, transforms, linear, angular, _, _ = self._addresses
-        world_id = self.worlds[index].id
+        world_id = self._world_ids[index]
         check(lib.i2d_world_get_body_transforms(world_id, ids + 8 * index, 1, transforms + 16 * index))
         check(lib.i2d_world_get_body_velocities(world_id, ids + 8 * index, 1, linear + 8 * index, angular + 4 * index))
 
-    def _read_contacts(self, index: int) -> None:
+    def _count_contacts(self, index: int, events) -> None:
         """Crash and leg contacts from the frame's contact begin and end events. A leg is
         down while it has at least one contact (Gymnasium keeps one flag per leg, which
         the end of one of two contacts clears; counting avoids that)."""
-        events = lib.i2d_world_get_contact_events(self.worlds[index].id)
-        if events.begin_count == 0 and events.end_count == 0:
-            return
         lander = self.landers[index]
         hull, legs = lander.hull_shape_id, lander.leg_shape_ids
         for k in range(events.begin_count):
