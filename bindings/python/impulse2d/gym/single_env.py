@@ -11,6 +11,7 @@ from . import constants as K
 from . import spaces
 from .engines import continuous_throttles, discrete_throttles
 from .fleet import DEFAULT_SUBSTEPS, LanderFleet
+from .render import render_rgb
 
 try:
     from gymnasium import Env as _Base
@@ -19,16 +20,16 @@ except ImportError:
 
 
 class LunarLander(_Base):
-    metadata = {"render_modes": [], "render_fps": K.FRAMES_PER_SECOND}
+    metadata = {"render_modes": ["rgb_array"], "render_fps": K.FRAMES_PER_SECOND}
 
     def __init__(self, render_mode: Optional[str] = None, continuous: bool = False,
                  gravity: float = K.DEFAULT_GRAVITY, enable_wind: bool = False,
                  wind_power: float = K.DEFAULT_WIND_POWER, turbulence_power: float = K.DEFAULT_TURBULENCE_POWER,
                  max_episode_steps: Optional[int] = K.DEFAULT_MAX_EPISODE_STEPS,
                  substeps: int = DEFAULT_SUBSTEPS) -> None:
-        if render_mode is not None:
-            raise ValueError("LunarLander does not render yet (render_mode must be None)")
-        self.render_mode = None
+        if render_mode not in (None, "rgb_array"):
+            raise ValueError("LunarLander renders rgb_array pictures only; got render_mode %r" % (render_mode,))
+        self.render_mode = render_mode
         self.continuous = bool(continuous)
         self.max_episode_steps = max_episode_steps
         self.fleet = LanderFleet(1, gravity, enable_wind, wind_power, turbulence_power, substeps, workers=1)
@@ -64,6 +65,12 @@ class LunarLander(_Base):
         self._elapsed += 1
         truncated = self.max_episode_steps is not None and self._elapsed >= self.max_episode_steps
         return (result.observations[0], float(result.rewards[0]), bool(result.terminated[0]), bool(truncated), {})
+
+    def render(self) -> Optional[np.ndarray]:
+        """With render_mode "rgb_array", a (400, 600, 3) uint8 picture; otherwise None."""
+        if self.render_mode != "rgb_array" or not self._started:
+            return None
+        return render_rgb(self.fleet.worlds[0], self.fleet.terrains[0])
 
     def close(self) -> None:
         self.fleet.close()

@@ -18,6 +18,7 @@ from . import constants as K
 from . import spaces
 from .engines import NOOP_DISCRETE, continuous_throttles, discrete_throttles
 from .fleet import DEFAULT_SUBSTEPS, LanderFleet
+from .render import render_rgb
 
 try:
     from gymnasium.vector import VectorEnv as _Base
@@ -31,19 +32,19 @@ Seeds = Union[None, int, Sequence[Optional[int]]]
 
 
 class VectorLunarLander(_Base):
-    metadata = {"render_modes": [], "render_fps": K.FRAMES_PER_SECOND, "autoreset_mode": _NEXT_STEP}
+    metadata = {"render_modes": ["rgb_array"], "render_fps": K.FRAMES_PER_SECOND, "autoreset_mode": _NEXT_STEP}
 
     def __init__(self, num_envs: int = 1, continuous: bool = False, gravity: float = K.DEFAULT_GRAVITY,
                  enable_wind: bool = False, wind_power: float = K.DEFAULT_WIND_POWER,
                  turbulence_power: float = K.DEFAULT_TURBULENCE_POWER,
                  max_episode_steps: Optional[int] = K.DEFAULT_MAX_EPISODE_STEPS, render_mode: Optional[str] = None,
                  substeps: int = DEFAULT_SUBSTEPS, workers: int = 1) -> None:
-        if render_mode is not None:
-            raise ValueError("VectorLunarLander does not render (render_mode must be None)")
+        if render_mode not in (None, "rgb_array"):
+            raise ValueError("VectorLunarLander renders rgb_array pictures only; got render_mode %r" % (render_mode,))
         self.num_envs = int(num_envs)
         self.continuous = bool(continuous)
         self.max_episode_steps = max_episode_steps
-        self.render_mode = None
+        self.render_mode = render_mode
         self.fleet = LanderFleet(self.num_envs, gravity, enable_wind, wind_power, turbulence_power, substeps, workers)
         self.single_observation_space = spaces.observation_space()
         self.single_action_space = spaces.action_space(self.continuous)
@@ -87,6 +88,13 @@ class VectorLunarLander(_Base):
         rewards = np.where(resetting, 0.0, result.rewards)
         self._needs_reset = terminated | truncated
         return result.observations, rewards, terminated, truncated, {}
+
+    def render(self) -> Optional[Tuple[np.ndarray, ...]]:
+        """With render_mode "rgb_array", one (400, 600, 3) uint8 picture per sub-env (as
+        Gymnasium's SyncVectorEnv.render gives); otherwise None."""
+        if self.render_mode != "rgb_array" or not self._started:
+            return None
+        return tuple(render_rgb(world, terrain) for world, terrain in zip(self.fleet.worlds, self.fleet.terrains))
 
     def close(self, **kwargs: Any) -> None:
         self.fleet.close()
