@@ -279,3 +279,22 @@ def test_many_sub_envs_keep_independent_streams():
     assert len({row.tobytes() for row in obs}) == 8
     again, _ = env.reset(seed=[100 + i for i in range(8)])
     assert again.tobytes() == obs.tobytes()
+
+
+def continuous_pilot(obs):
+    """The PD pilot's lift and turn as throttles: main engine from -1 (off) to 1, the
+    lateral input's sign choosing the nozzle."""
+    x, y, vx, vy, angle, spin, left_down, right_down = obs
+    lean = np.clip(0.5 * x + 1.0 * vx, -0.4, 0.4)
+    turn = 0.5 * (lean - angle) - 1.0 * spin
+    lift = 0.5 * (0.5 * abs(x) - y) - 0.5 * vy
+    if left_down or right_down:
+        turn, lift = 0.0, -0.5 * vy
+    return np.clip([20.0 * lift - 1.0, -20.0 * turn], -1.0, 1.0).astype(np.float32)
+
+
+def test_continuous_pd_pilot_lands_most_seeds_with_more_than_200():
+    env = LunarLander(continuous=True)
+    results = [run_episode(env, seed, continuous_pilot) for seed in range(10)]
+    assert sum(total > 200 and last == 100.0 for _, total, last, _, _ in results) >= 8, \
+        [round(r[1]) for r in results]
