@@ -7,7 +7,6 @@ threads), and the state each policy sees is read with one bulk call per world.
 This is the simulation shared by VectorLunarLander and LunarLander; episodes,
 autoreset and time limits are theirs."""
 
-import ctypes as C
 from typing import List, Optional
 
 import numpy as np
