@@ -1,6 +1,7 @@
 # SPDX-License-Identifier: MIT
 """impulse2d.gym imports without Gymnasium, registers nothing then, and registers its
-ids and entry points with Gymnasium when a gymnasium module is importable."""
+ids and entry points with Gymnasium when a gymnasium module is importable; where
+Gymnasium is installed, gymnasium.make, check_env and make_vec work with them."""
 
 import importlib
 import sys
@@ -58,3 +59,52 @@ def test_register_with_gymnasium_registers_both_ids_once(monkeypatch):
         assert getattr(importlib.import_module(module), name) is impulse2d.gym.LunarLander
         module, name = call["vector_entry_point"].split(":")
         assert getattr(importlib.import_module(module), name) is impulse2d.gym.VectorLunarLander
+
+
+# Through Gymnasium itself, where it is installed (kept in this file, which always has a
+# test to run, so that CTest does not see a file of skips as "no tests").
+needs_gymnasium = pytest.mark.skipif(not gymnasium_installed(), reason="Gymnasium is not installed")
+
+
+@needs_gymnasium
+def test_ids_are_registered_and_make_wraps_a_time_limit():
+    import gymnasium
+
+    for env_id in registration.ENVIRONMENT_IDS:
+        assert env_id in gymnasium.registry
+    env = gymnasium.make("impulse2d/LunarLander-v3")
+    assert env.spec.max_episode_steps == 1000
+    obs, _ = env.reset(seed=0)
+    assert env.observation_space.contains(obs)
+
+
+@needs_gymnasium
+def test_check_env_passes():
+    from gymnasium.utils.env_checker import check_env
+
+    check_env(impulse2d.gym.LunarLander())
+    check_env(impulse2d.gym.LunarLander(continuous=True, render_mode="rgb_array"))
+
+
+@needs_gymnasium
+def test_native_vector_env_equals_gymnasium_sync_vector_env():
+    """Gymnasium's SyncVectorEnv over the single env and the native vector env give the
+    same bits, through autoresets."""
+    import gymnasium
+    import numpy as np
+
+    sync = gymnasium.make_vec("impulse2d/LunarLander-v3", num_envs=3, vectorization_mode="sync")
+    native = gymnasium.make_vec("impulse2d/LunarLander-v3", num_envs=3, vectorization_mode="vector_entry_point")
+    assert native.metadata["autoreset_mode"] == gymnasium.vector.AutoresetMode.NEXT_STEP
+    a, _ = sync.reset(seed=9)
+    b, _ = native.reset(seed=9)
+    assert a.tobytes() == b.tobytes()
+    rng = np.random.default_rng(0)
+    ends = 0
+    for _ in range(600):
+        actions = rng.integers(0, 4, 3)
+        expected, got = sync.step(actions), native.step(actions)
+        for x, y in zip(expected[:4], got[:4]):
+            assert np.array_equal(x, y)
+        ends += int(expected[2].sum() + expected[3].sum())
+    assert ends >= 3
