@@ -74,8 +74,9 @@ name = os.path.basename(wheels[0])
 assert name == expected, "wheel %s, expected %s" % (name, expected)
 with zipfile.ZipFile(wheels[0]) as wheel:
     files = wheel.namelist()
-assert "impulse2d/libimpulse2d.so" in files, "no impulse2d/libimpulse2d.so in %s" % files
-print("wheel:", name, "holds impulse2d/libimpulse2d.so")
+for needed in ("impulse2d/libimpulse2d.so", "impulse2d/gym/__init__.py"):
+    assert needed in files, "no %s in %s" % (needed, files)
+print("wheel:", name, "holds impulse2d/libimpulse2d.so and impulse2d.gym")
 EOF
 }
 
@@ -85,6 +86,7 @@ check_installed() {
   (cd / && PYTHONPATH="$target" "$python" - "$target" <<'EOF'
 import os, sys
 import impulse2d
+import impulse2d.gym
 
 target = os.path.realpath(sys.argv[1])
 loaded = os.path.realpath(impulse2d.library_path)
