@@ -84,9 +84,10 @@ bool Call::body(i2d_body_id id, BodyRef& out) {
 }
 
 bool Call::body(i2d_body_id id, BodyRef& out, const char* field) {
-    if (body(id, out)) {
-        return true;
-    }
+    return body(id, out) || fail_in(field);
+}
+
+bool Call::fail_in(const char* field) {
     char detail[sizeof detail_];
     std::snprintf(detail, sizeof detail, "%s", detail_);
     return fail(last_status(), "%s: %s", field, detail);

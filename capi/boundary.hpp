@@ -74,6 +74,8 @@ public:
     bool shape(i2d_shape_id id, ShapeRef& out);
     bool joint(i2d_joint_id id, JointRef& out);
     bool chain(i2d_chain_id id, ChainRef& out);
+    /// The last failure again, its message starting with the field that held the value.
+    bool fail_in(const char* field);
     /// Fails with I2D_ERR_WORLD_LOCKED inside a query or draw callback.
     bool unlocked(const World& world);
 

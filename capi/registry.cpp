@@ -21,11 +21,11 @@ int32_t g_next_slot = 0;  // round robin: a freed slot is reused as late as poss
 
 }  // namespace
 
-// A slot's generation counts 1..4095 and then starts again at 1 (0 is never used), so a
+// A slot's generation counts 1..255 and then starts again at 1 (0 is never used), so a
 // process may create worlds forever. The price of finite id bits: an id of a destroyed
-// world is refused until its slot has been reused 4094 times; the 4095th reuse gives
-// the same bits again. Slots are taken round robin, so with few worlds alive that takes
-// about 256 x 4095 (a million) further worlds; with all but one slot in use, 4095.
+// world is refused until its slot has been reused 254 times; the 255th reuse gives the
+// same bits again. Slots are taken round robin, so with few worlds alive that takes
+// about 4096 x 255 (a million) further worlds; with all but one slot in use, 255.
 WorldSlotRef register_world(World* world) {
     std::lock_guard<std::mutex> lock(g_mutex);
     for (int32_t k = 0; k < max_worlds; ++k) {

@@ -5,15 +5,17 @@
 
 #include <cstdint>
 
+#include <impulse2d/types.h>
+
 namespace i2d {
 class World;
 }
 
 namespace i2d::capi {
 
-/// Worlds alive at once (8 bits of an id). Creating and destroying is unlimited.
-constexpr int32_t max_worlds = 256;
-constexpr uint16_t max_world_generation = 0xFFF;  // 12 bits in an id
+/// Worlds alive at once (12 bits of an id). Creating and destroying is unlimited.
+constexpr int32_t max_worlds = I2D_MAX_WORLDS;
+constexpr uint16_t max_world_generation = 0xFF;  // 8 bits in an id
 
 /// The generation after g: 1..max_world_generation, round and round; 0 never (it would
 /// make the id of slot 0's first world all but null).

@@ -44,18 +44,7 @@ I2D_API bool i2d_world_is_valid(i2d_world_id id) {
 I2D_API i2d_status i2d_world_step(i2d_world_id id, float time_step, int32_t substep_count) {
     return guarded("i2d_world_step", I2D_ERR_OUT_OF_MEMORY, [&](Call& call) {
         WorldRef w;
-        if (!call.world(id, w) || !call.unlocked(*w.world) ||
-            !call.in_range(time_step, 0.0f, max_time_step, "time_step")) {
-            return last_status();
-        }
-        if (time_step != 0.0f && time_step < min_time_step) {
-            call.fail(I2D_ERR_INVALID_ARGUMENT, "time_step is %g; it must be 0 (paused) or at least %g s",
-                      static_cast<double>(time_step), static_cast<double>(min_time_step));
-            return last_status();
-        }
-        if (substep_count < 1 || substep_count > max_substeps) {
-            call.fail(I2D_ERR_INVALID_ARGUMENT, "substep_count is %d; it must be in [1, %d]", substep_count,
-                      max_substeps);
+        if (!call.world(id, w) || !call.unlocked(*w.world) || !valid_step(call, time_step, substep_count)) {
             return last_status();
         }
         w.world->step(time_step, substep_count);

@@ -48,23 +48,38 @@ bool valid_simd_path(Call& call, const i2d_simd_path* path) {
     return true;
 }
 
-// Workers: a count in range, and a job system given whole or not at all (a world with
-// half a job system could enqueue and never finish).
-bool valid_workers(Call& call, const i2d_world_def& def) {
-    if (def.worker_count < 1 || def.worker_count > I2D_MAX_WORKERS) {
-        return call.fail(I2D_ERR_INVALID_ARGUMENT, "world def: worker_count is %d; it must be in [1, %d]",
-                         int(def.worker_count), int(I2D_MAX_WORKERS));
+}  // namespace
+
+// A worker count in range, and a job system given whole or not at all (half a job system
+// could enqueue and never finish).
+bool valid_job_system(Call& call, const char* def_name, int32_t worker_count, bool has_enqueue, bool has_finish) {
+    if (worker_count < 1 || worker_count > I2D_MAX_WORKERS) {
+        return call.fail(I2D_ERR_INVALID_ARGUMENT, "%s: worker_count is %d; it must be in [1, %d]", def_name,
+                         int(worker_count), int(I2D_MAX_WORKERS));
     }
-    if ((def.enqueue_task == nullptr) != (def.finish_task == nullptr)) {
+    if (has_enqueue != has_finish) {
         return call.fail(I2D_ERR_INVALID_ARGUMENT,
-                         "world def: enqueue_task and finish_task must be given together (or both NULL for the "
+                         "%s: enqueue_task and finish_task must be given together (or both NULL for the "
                          "built-in threads); %s is NULL",
-                         def.enqueue_task == nullptr ? "enqueue_task" : "finish_task");
+                         def_name, has_enqueue ? "finish_task" : "enqueue_task");
     }
     return true;
 }
 
-}  // namespace
+bool valid_step(Call& call, float time_step, int32_t substep_count) {
+    if (!call.in_range(time_step, 0.0f, max_time_step, "time_step")) {
+        return false;
+    }
+    if (time_step != 0.0f && time_step < min_time_step) {
+        return call.fail(I2D_ERR_INVALID_ARGUMENT, "time_step is %g; it must be 0 (paused) or at least %g s",
+                         static_cast<double>(time_step), static_cast<double>(min_time_step));
+    }
+    if (substep_count < 1 || substep_count > max_substeps) {
+        return call.fail(I2D_ERR_INVALID_ARGUMENT, "substep_count is %d; it must be in [1, %d]", substep_count,
+                         max_substeps);
+    }
+    return true;
+}
 
 bool validate_world_def(Call& call, const i2d_world_def* def) {
     if (!call.not_null(def, "world def") || !call.cookie(def->internal_cookie, "world_def") ||
@@ -89,7 +104,9 @@ bool validate_world_def(Call& call, const i2d_world_def* def) {
            call.in_range(def->sleep_speed_threshold, 0.0f, speed_limit, "world def: sleep_speed_threshold") &&
            call.in_range(def->time_to_sleep, 0.0f, max_setting, "world def: time_to_sleep") &&
            call.in_range(def->hit_event_threshold, 0.0f, speed_limit, "world def: hit_event_threshold") &&
-           valid_simd_path(call, &def->simd_path) && valid_workers(call, *def);
+           valid_simd_path(call, &def->simd_path) &&
+           valid_job_system(call, "world def", def->worker_count, def->enqueue_task != nullptr,
+                            def->finish_task != nullptr);
 }
 
 namespace {

@@ -9,6 +9,11 @@
 
 namespace i2d::capi {
 
+/// A def's worker_count in [1, I2D_MAX_WORKERS], and both or neither of its job system's
+/// callbacks; def_name starts the message.
+bool valid_job_system(Call& call, const char* def_name, int32_t worker_count, bool has_enqueue, bool has_finish);
+/// A step's time step (0, or in [min_time_step, max_time_step]) and substep count.
+bool valid_step(Call& call, float time_step, int32_t substep_count);
 /// Every field of a world def in its documented range, and the cookie set.
 bool validate_world_def(Call& call, const i2d_world_def* def);
 WorldDef to_core(const i2d_world_def& def);

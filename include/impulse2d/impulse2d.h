@@ -24,9 +24,9 @@
  *   I2D_ERR_WORLD_LOCKED. Other worlds may be used.
  * - A world is used from one thread at a time; different worlds may be used from
  *   different threads at once.
- * - Limits: 256 worlds alive at once (created and destroyed without limit: an id of a
- *   destroyed world stays stale until its slot has been reused 4094 times, about a
- *   million worlds later when few are alive); 16,777,215 bodies and as many shapes per world;
+ * - Limits: 4096 worlds alive at once (I2D_MAX_WORLDS; created and destroyed without
+ *   limit: an id of a destroyed world stays stale until its slot has been reused 254
+ *   times, about a million worlds later when few are alive); 16,777,215 bodies and as many shapes per world;
  *   shape sizes from 0.0001 to 100,000 m, and every point of a shape's geometry within
  *   100,000 m of its body's origin; positions within 1e9 m of the world origin. Past
  *   them calls answer I2D_ERR_CAPACITY or I2D_ERR_INVALID_ARGUMENT. */
@@ -34,6 +34,7 @@
 #define IMPULSE2D_H
 
 #include "base.h"
+#include "batch.h"
 #include "collision.h"
 #include "id.h"
 #include "joint.h"

@@ -87,8 +87,19 @@ inline void record(Status& out) noexcept {
     }
 }
 
+/** The ids of a range of Worlds, for i2d_worlds_step. */
+template <class Worlds>
+std::vector<i2d_world_id> world_ids(const Worlds& worlds) {
+    std::vector<i2d_world_id> ids;
+    for (const auto& world : worlds) {
+        ids.push_back(world.id());
+    }
+    return ids;
+}
+
 /** Every entry of a C getter that fills up to capacity and returns how many there are
  *  (i2d_body_get_contact_data and the like): sized by the library, then filled. */
+
 template <class Id, class T>
 std::vector<T> all_of(int32_t (*getter)(Id, T*, int32_t), Id id) {
     std::vector<T> out;
@@ -810,6 +821,24 @@ private:
     }
     i2d_world_id id_{0};
 };
+
+/** Steps every world of a range of Worlds (a std::vector<World>, say) in one call, as
+ *  World::step would step each, shared out among def.worker_count threads
+ *  (i2d_worlds_step). A bad world, repeat or argument throws, and no world moves. */
+template <class Worlds>
+void step_worlds(const Worlds& worlds, float time_step = 1.0f / 60.0f, int32_t substeps = 4,
+                 const i2d_batch_def& def = i2d_default_batch_def()) {
+    const std::vector<i2d_world_id> ids = detail::world_ids(worlds);
+    i2d_worlds_step(ids.data(), static_cast<int32_t>(ids.size()), time_step, substeps, &def);
+    detail::throw_if_failed();
+}
+template <class Worlds>
+void step_worlds(const Worlds& worlds, float time_step, int32_t substeps, const i2d_batch_def& def,
+                 Status& status) {
+    const std::vector<i2d_world_id> ids = detail::world_ids(worlds);
+    i2d_worlds_step(ids.data(), static_cast<int32_t>(ids.size()), time_step, substeps, &def);
+    detail::record(status);
+}
 
 inline Body Body::in(const World& world) const {
     const i2d_body_id id = i2d_body_in_world(id_, world.id());

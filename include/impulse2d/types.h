@@ -64,6 +64,9 @@ typedef enum i2d_simd_path {
     I2D_SIMD_NEON           /**< 4 contacts at a time: every AArch64 CPU */
 } i2d_simd_path;
 
+/** Most worlds alive at once; creating and destroying them is unlimited. */
+#define I2D_MAX_WORLDS 4096
+
 /** Most workers a world may have (i2d_world_def.worker_count). */
 #define I2D_MAX_WORKERS 64
 

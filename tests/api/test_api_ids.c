@@ -410,7 +410,7 @@ I2D_TEST(api_ids_stale_after_world_destroy) {
  * again, even when a new world takes the old one's slot and its bodies and shapes take
  * the same slot indices. Slots are taken round robin, so the tests hold every slot but
  * one with live worlds: each new world then really reuses the last one's slot. */
-enum { RECYCLE_ROUNDS = 40, HELD_WORLDS = 255, SLOT_PERIOD = 4095 };
+enum { RECYCLE_ROUNDS = 40, HELD_WORLDS = I2D_MAX_WORLDS - 1, SLOT_PERIOD = 255 };
 
 static void check_capacity_refused_at(int line, const char* what);
 
@@ -469,8 +469,8 @@ I2D_TEST(api_ids_world_recycle) {
     release_held(held);
 }
 
-/* The slot of a destroyed world, reused as often as its 12-bit generation allows before
- * it comes round (4094 times): the old world's ids, bodies and shapes included, stay
+/* The slot of a destroyed world, reused as often as its 8-bit generation allows before
+ * it comes round (254 times): the old world's ids, bodies and shapes included, stay
  * refused every time. All other slots are held by live worlds, so the next world always
  * takes that one slot; creation then goes on across several wrap-arounds (no slot is
  * retired: a process may create worlds forever). */
@@ -511,16 +511,16 @@ I2D_TEST(api_ids_world_slot_reused_until_wrap) {
     i2d_world_def def = i2d_default_world_def();
     i2d_world_id last = i2d_world_create(&def);
     I2D_CHECK(i2d_world_is_valid(last));
-    check_capacity_refused_at(__LINE__, "world 257 after wrap-arounds");
-    I2D_CHECK(strstr(i2d_last_error_message(), "256 worlds are alive") != NULL);
+    check_capacity_refused_at(__LINE__, "the world past capacity, after wrap-arounds");
+    I2D_CHECK(strstr(i2d_last_error_message(), "4096 worlds are alive") != NULL);
     I2D_CHECK_STATUS(i2d_world_destroy(last), I2D_OK);
     release_held(held);
 }
 
 /* A process may create and destroy worlds without limit (reinforcement learning and test
- * loops do). The old registry refused for good after 1,048,320 cycles (256 slots times
- * 4095 generations); the short test goes just past that, the long one (a minute under
- * the sanitizers, a second or two in Release) ten million cycles. */
+ * loops do). A registry that retired a slot whose generations ran out would refuse for
+ * good after 1,044,480 cycles (4096 slots times 255 generations); the short test goes
+ * just past that, the long one ten million cycles. */
 static void create_worlds_forever(int cycles) {
     for (int c = 0; c < cycles; ++c) {
         if (!create_and_destroy_world(c)) {
@@ -654,8 +654,8 @@ I2D_TEST(api_ids_double_destroy) {
     }
 }
 
-/* 256 worlds alive at once; the 257th is refused until one is destroyed. */
-enum { WORLD_CAPACITY = 256 };
+/* I2D_MAX_WORLDS alive at once; one more is refused until one is destroyed. */
+enum { WORLD_CAPACITY = I2D_MAX_WORLDS };
 
 static void destroy_worlds(i2d_world_id* worlds, int count) {
     for (int i = 0; i < count; ++i) {
@@ -695,16 +695,16 @@ I2D_TEST(api_ids_world_capacity) {
     }
     I2D_CHECK(created == WORLD_CAPACITY);
     if (created == WORLD_CAPACITY) {
-        check_capacity_refused_at(__LINE__, "world 257");
+        check_capacity_refused_at(__LINE__, "the world past capacity");
         /* Freeing one slot lets exactly one more world in. */
         I2D_CHECK_STATUS(i2d_world_destroy(worlds[100]), I2D_OK);
         i2d_world_def def = i2d_default_world_def();
         worlds[100] = i2d_world_create(&def);
         I2D_CHECK(i2d_world_is_valid(worlds[100]));
-        check_capacity_refused_at(__LINE__, "world 257 after one was replaced");
+        check_capacity_refused_at(__LINE__, "the world past capacity after one was replaced");
         /* The worlds still work while the registry is full. */
         i2d_body_def body_def = i2d_default_body_def();
-        I2D_CHECK(!I2D_IS_NULL(i2d_body_create(worlds[255], &body_def)));
+        I2D_CHECK(!I2D_IS_NULL(i2d_body_create(worlds[WORLD_CAPACITY - 1], &body_def)));
     }
     destroy_worlds(worlds, WORLD_CAPACITY);
 
@@ -788,4 +788,41 @@ I2D_TEST(api_ids_last_status_after_success) {
     I2D_CHECK(i2d_last_status() == I2D_OK);
     I2D_CHECK(strcmp(i2d_last_error_message(), "") == 0);
     i2d_world_destroy(world);
+}
+
+/* Every kind of id reads the same as a signed and an unsigned 64-bit integer: bindings
+ * that get ids as signed from returns and unsigned from event arrays (JavaScript's
+ * BigInt, Java's long) compare them equal. The last world slot and a high generation
+ * fill the other bits. */
+static bool top_bit_clear(uint64_t bits) { return (bits >> 63) == 0; }
+
+I2D_TEST(api_ids_top_bit_is_clear_for_every_kind) {
+    static i2d_world_id held[I2D_MAX_WORLDS - 1];
+    int count = 0;
+    for (; count < I2D_MAX_WORLDS - 1; ++count) {
+        i2d_world_def def = i2d_default_world_def();
+        held[count] = i2d_world_create(&def);
+        I2D_CHECK(top_bit_clear(held[count].bits));
+    }
+    i2d_world_id world = make_world(-10.0f); /* the last slot */
+    I2D_REQUIRE(!I2D_IS_NULL(world));
+    I2D_CHECK(top_bit_clear(world.bits));
+    i2d_body_id a = make_body(world, I2D_BODY_DYNAMIC, 0.0f, 0.0f);
+    i2d_body_id b = make_body(world, I2D_BODY_STATIC, 1.0f, 0.0f);
+    i2d_shape_def shape_def = i2d_default_shape_def();
+    i2d_shape_id shape = i2d_shape_create_box(a, &shape_def, 0.5f, 0.5f);
+    i2d_revolute_joint_def joint_def = i2d_default_revolute_joint_def();
+    joint_def.base.body_a = a;
+    joint_def.base.body_b = b;
+    i2d_joint_id joint = i2d_joint_create_revolute(world, &joint_def);
+    const i2d_vec2 points[4] = {v2(3, 0), v2(2, 0), v2(-2, 0), v2(-3, 0)};
+    i2d_chain_def chain_def = i2d_default_chain_def();
+    chain_def.points = points;
+    chain_def.count = 4;
+    i2d_chain_id chain = i2d_chain_create(b, &chain_def);
+    I2D_CHECK(!I2D_IS_NULL(joint) && !I2D_IS_NULL(chain) && !I2D_IS_NULL(shape));
+    I2D_CHECK(top_bit_clear(a.bits) && top_bit_clear(shape.bits) && top_bit_clear(joint.bits) &&
+              top_bit_clear(chain.bits));
+    i2d_world_destroy(world);
+    destroy_worlds(held, count);
 }

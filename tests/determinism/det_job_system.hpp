@@ -38,8 +38,9 @@ public:
     JobSystem(const JobSystem&) = delete;
     JobSystem& operator=(const JobSystem&) = delete;
 
-    /// Fills the world def's job system fields.
-    void install(i2d_world_def& def) {
+    /// Fills the job system fields of a world def or a batch def.
+    template <class Def>
+    void install(Def& def) {
         def.enqueue_task = &enqueue;
         def.finish_task = &finish;
         def.user_task_context = this;

@@ -310,8 +310,9 @@ void finish_job(void* handle, void* user_context) {
 
 // A worker count (mostly 1 to 8, sometimes any int) and who runs the work: a job system
 // above, half of one (refused), or the built-in threads (2 workers at most, as threads
-// that spin between tasks would starve the fuzzer).
-void worker_settings(FuzzInput& in, i2d_world_def& def) {
+// that spin between tasks would starve the fuzzer). For a world def or a batch def.
+template <class Def>
+void worker_settings(FuzzInput& in, Def& def) {
     const uint8_t k = in.byte();
     def.worker_count = k < 240 ? 1 + k % 8 : static_cast<int32_t>(in.u32());
     const uint8_t who = in.byte() % 7;
@@ -541,6 +542,43 @@ void read_events(i2d_world_id w) {
 
 // ---- The instructions ------------------------------------------------------------------
 
+// A batch of up to four worlds picked as any world is (bad ids and repeats among them),
+// on worker settings as a world def gets them: refused whole, or each world stepped and
+// checked. The batch's worlds count as stepping for an intruding job system.
+void step_batch(FuzzInput& in) {
+    constexpr int max_batch = 4;
+    i2d_world_id worlds[max_batch];
+    const int count = in.byte() % (max_batch + 1);
+    for (int i = 0; i < count; ++i) {
+        worlds[i] = pick_world(in);
+    }
+    i2d_batch_def def = i2d_default_batch_def();
+    if (in.byte() < 96) {
+        worker_settings(in, def);
+    }
+    const float dt = in.byte() < 200 ? 1.0f / 60.0f : in.real();
+    const int32_t batch_count = in.byte() < 250 ? count : static_cast<int32_t>(in.u32());
+    const i2d_world_id* list = in.byte() < 8 ? nullptr : worlds;
+    if (g_stepping_count + count > max_nested_steps) {
+        return;  // deep enough: the harness declines, not the library
+    }
+    for (int i = 0; i < count; ++i) {
+        g_stepping[g_stepping_count++] = worlds[i];
+    }
+    const i2d_status status = i2d_worlds_step(list, batch_count, dt, 4, maybe_null(in, def));
+    g_stepping_count -= count;
+    if (g_trace) {
+        std::fprintf(stderr, "  batch of %d (count %d): %s\n", count, int(batch_count), i2d_status_string(status));
+    }
+    if (status != I2D_OK) {
+        return;
+    }
+    check_all_finite();
+    for (int i = 0; i < count; ++i) {
+        read_events(worlds[i]);
+    }
+}
+
 void run_world_call(FuzzInput& in, uint8_t op) {
     switch (op) {
         case 0: {
@@ -587,6 +625,10 @@ void run_world_call(FuzzInput& in, uint8_t op) {
         }
         case 5: i2d_world_rebuild_static_tree(pick_world(in)); break;
         default: {
+            if (in.byte() < 128) {
+                step_batch(in);
+                break;
+            }
             int32_t path = 0, status = 0;
             in.raw_enum(&path);
             in.raw_enum(&status);
@@ -1128,7 +1170,7 @@ void run_program(FuzzInput& in) {
             trace_bodies();
         }
         if (group == 0) {
-            if (sub % 7 == 2 && --steps_left < 0) {
+            if ((sub % 7 == 2 || sub % 7 == 6) && --steps_left < 0) {
                 continue;
             }
             run_world_call(in, sub % 7);

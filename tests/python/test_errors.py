@@ -68,13 +68,13 @@ def test_world_locked_inside_a_query(world):
     assert seen == [(0.0, 0.0)] and body.linear_velocity == (0.0, 0.0)
 
 
-def test_capacity_error_past_256_worlds():
+def test_capacity_error_past_4096_worlds():
     worlds = []
     try:
-        with pytest.raises(impulse2d.CapacityError, match="256"):
-            for _ in range(300):
+        with pytest.raises(impulse2d.CapacityError, match="4096 worlds are alive"):
+            for _ in range(4200):
                 worlds.append(impulse2d.World())
-        assert len(worlds) <= 256
+        assert len(worlds) <= 4096
     finally:
         for w in worlds:
             w.destroy()

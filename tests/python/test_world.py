@@ -72,8 +72,8 @@ def test_counters_and_state_hash_follow_the_scene(world):
 
 
 def test_garbage_collected_worlds_are_destroyed():
-    # 256 worlds may live at once: dropping 600 unreferenced ones must free their slots.
-    for _ in range(600):
+    # 4096 worlds may live at once: dropping 5000 unreferenced ones must free their slots.
+    for _ in range(5000):
         world = impulse2d.World()
         make_ground(world)
         del world

@@ -695,6 +695,8 @@ export class Impulse2d {
   /** (major << 16) | (minor << 8) | patch */
   readonly version: number;
   createWorld(options?: WorldOptions): World;
+  /** Steps the worlds in one call, each as world.step would; a bad one throws and none moves. */
+  stepWorlds(worlds: Iterable<World>, timeStep?: number, substeps?: number): void;
   /** World.fromSnapshot(this, bytes). */
   worldFromSnapshot(bytes: SnapshotBytes): World;
   /** The default settings of a world in lengthUnitsPerMeter units (default 1). */

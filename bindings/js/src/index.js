@@ -5,6 +5,7 @@
 //   const world = i2d.createWorld({ gravity: [0, -10] });
 import createImpulse2dModule from '../dist/impulse2d_wasm.mjs';
 import { Runtime } from './runtime.js';
+import { stepWorlds } from './batch.js';
 import { clipVector, defaultCharacterDef, solvePlanes } from './mover.js';
 import { readWorldDef, World } from './world.js';
 import { vx, vy } from './vectors.js';
@@ -45,6 +46,15 @@ export class Impulse2d {
   get version() { return this.rt.m._i2d_version(); }
 
   createWorld(options) { return World.create(this.rt, options); }
+
+  /**
+   * Steps the worlds in one call (i2d_worlds_step), each as world.step(timeStep, substeps)
+   * would. A world that is not a World, is destroyed or is listed twice, or a bad timeStep
+   * or substeps, throws naming it, and no world moves. Here in WebAssembly the worlds
+   * are stepped in turn on this thread. Throws, once all are stepped, the first error a
+   * contact hook threw.
+   */
+  stepWorlds(worlds, timeStep = 1 / 60, substeps = 4) { stepWorlds(this.rt, worlds, timeStep, substeps); }
 
   /** A new world from a snapshot's bytes: World.fromSnapshot(this, bytes). */
   worldFromSnapshot(bytes) { return World.fromSnapshot(this, bytes); }

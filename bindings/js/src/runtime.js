@@ -33,6 +33,7 @@ export class Runtime {
       body: this.readDefault('_i2d_default_body_def', 'i2d_body_def'),
       shape: this.readDefault('_i2d_default_shape_def', 'i2d_shape_def'),
       explosion: this.readDefault('_i2d_default_explosion_def', 'i2d_explosion_def'),
+      batch: this.readDefault('_i2d_default_batch_def', 'i2d_batch_def'),
       character: this.readDefault('_i2d_default_character_def', 'i2d_character_def'),
       debugDraw: this.readDefault('_i2d_default_debug_draw', 'i2d_debug_draw'),
     };

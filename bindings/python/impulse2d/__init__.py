@@ -104,6 +104,7 @@ from .types import (
     Transform,
 )
 from .world import World
+from .batch import WorldBatch, step_worlds
 from .replay import Replay
 
 __version__ = "0.2.0"
@@ -116,6 +117,8 @@ STATIC, KINEMATIC, DYNAMIC = BodyType.STATIC, BodyType.KINEMATIC, BodyType.DYNAM
 
 __all__ = [
     "World",
+    "WorldBatch",
+    "step_worlds",
     "Replay",
     "Body",
     "Shape",

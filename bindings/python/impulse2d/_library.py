@@ -71,6 +71,8 @@ def signatures(S: _structs.Structs) -> Dict[str, Tuple[Any, List[Any]]]:
         "i2d_world_destroy": (_STATUS, [_ID]),
         "i2d_world_is_valid": (C.c_bool, [_ID]),
         "i2d_world_step": (_STATUS, [_ID, C.c_float, C.c_int32]),
+        "i2d_default_batch_def": (S.BatchDef, []),
+        "i2d_worlds_step": (_STATUS, [_PTR, C.c_int32, C.c_float, C.c_int32, C.POINTER(S.BatchDef)]),
         "i2d_world_set_gravity": (_STATUS, [_ID, Vec2]),
         "i2d_world_get_gravity": (Vec2, [_ID]),
         "i2d_world_get_counters": (WorldCounters, [_ID]),

@@ -52,6 +52,7 @@ USES: Dict[str, Dict[str, str]] = {
     "i2d_polygon": {"vertices": _VEC2 + "[]", "count": "int32", "radius": "float"},
     # Defs: what the wrappers set by name; other settings pass through by their C name.
     "i2d_world_def": {"gravity": _VEC2},
+    "i2d_batch_def": {"worker_count": "int32"},
     "i2d_body_def": {"type": "int32", "position": _VEC2, "rotation": "i2d_rot"},
     "i2d_shape_def": {"filter": "i2d_filter"},
     "i2d_joint_base": {

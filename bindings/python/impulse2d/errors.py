@@ -36,7 +36,7 @@ class WorldLocked(Impulse2DError):
 
 
 class CapacityError(Impulse2DError):
-    """I2D_ERR_CAPACITY: a documented limit (e.g. 256 worlds alive at once) was reached."""
+    """I2D_ERR_CAPACITY: a documented limit (e.g. 4096 worlds alive at once) was reached."""
 
     status = 4
 

@@ -181,11 +181,15 @@ class World:
         """Advances the world by time_step seconds in substeps equal substeps. Raises,
         once the step is done, the first exception a contact hook raised during it."""
         status = lib.i2d_world_step(self._id, time_step, substeps)
-        hooks = getattr(self, "_hooks", None)
-        raised = hooks.take_raised() if hooks is not None else None
+        raised = self._take_hook_exception()
         check(status)
         if raised is not None:
             raise raised
+
+    def _take_hook_exception(self) -> Optional[BaseException]:
+        """The first exception a contact hook raised in the last step, forgotten here."""
+        hooks = getattr(self, "_hooks", None)
+        return hooks.take_raised() if hooks is not None else None
 
     @property
     def gravity(self) -> Vec:

@@ -218,7 +218,12 @@ public:
     bool is_locked() const { return lock_depth_ > 0; }
     /// Inside step: only a job system's enqueue and finish callbacks run user code then,
     /// and the C API refuses them every call that names this world.
-    bool is_stepping() const { return stepping_; }
+    bool is_stepping() const { return in_batch_ || stepping_; }
+    /// Set for the whole of a batch step (world_batch.hpp): the world counts as stepping
+    /// before and after its own step, while other workers step the batch's other worlds.
+    /// Tested first by is_stepping, so that a call from another worker never reads
+    /// stepping_ while this world's worker writes it.
+    void set_in_batch(bool flag) { in_batch_ = flag; }
     /// Aborts on a broken internal invariant; does nothing unless built with I2D_VALIDATE.
     /// Runs after every step (a whole-world check per creation would make building a
     /// large scene quadratic in validating builds).
@@ -394,6 +399,7 @@ private:
     mutable bool profiling_ = false;
     mutable int32_t lock_depth_ = 0;
     bool stepping_ = false;
+    bool in_batch_ = false;
 };
 
 /// Locks the world while a query's callbacks run, so that they cannot change it.

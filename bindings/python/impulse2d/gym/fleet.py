@@ -1,0 +1,222 @@
+# SPDX-License-Identifier: MIT
+"""N lunar landers, each alone in its own impulse2d world, advanced a frame at a time
+together: the engines of all are computed with NumPy, the worlds are stepped in one
+library call (impulse2d.WorldBatch over i2d_worlds_step, GIL released, on worker
+threads), and the state each policy sees is read with one bulk call per world.
+
+This is the simulation shared by VectorLunarLander and LunarLander; episodes,
+autoreset and time limits are theirs."""
+
+from typing import List, Optional
+
+import numpy as np
+
+from .. import World
+from .._native import check, lib, structs
+from ..batch import WorldBatch
+from . import constants as K
+from .engines import Throttles, fuel_cost, velocity_change
+from .lander import Lander, build_lander
+from .observation import state_of, unwrap_angle
+from .reward import episode_end, frame_reward, shaping
+from .terrain import Terrain, build_terrain, random_terrain
+from .wind import gust, random_start
+
+# impulse2d's solver takes substeps within each frame instead of Box2D 2.3's iterations
+# (Gymnasium asks for 180 velocity and 60 position iterations per frame). impulse2d's
+# usual 4 substeps leave a landed lander rocking on its legs (about 0.03 m/s and
+# 0.1 rad/s, for good: it never sleeps, so a landing never ends the episode); 8
+# substeps of 2.5 ms damp that out and it sleeps 1 to 1.5 s after touchdown, as in
+# Box2D. 16 changes the heuristic landings' scores by a point or two only.
+DEFAULT_SUBSTEPS = 8
+
+
+class FrameResult:
+    """What one frame gives every lander: observations (n, 8) float32, rewards (n,)
+    float64 and terminated (n,) bool."""
+
+    __slots__ = ("observations", "rewards", "terminated")
+
+    def __init__(self, observations: np.ndarray, rewards: np.ndarray, terminated: np.ndarray) -> None:
+        self.observations, self.rewards, self.terminated = observations, rewards, terminated
+
+
+class LanderFleet:
+    def __init__(self, count: int, gravity: float = K.DEFAULT_GRAVITY, enable_wind: bool = False,
+                 wind_power: float = K.DEFAULT_WIND_POWER, turbulence_power: float = K.DEFAULT_TURBULENCE_POWER,
+                 substeps: int = DEFAULT_SUBSTEPS, workers: int = 1) -> None:
+        if count < 1:
+            raise ValueError("a fleet needs at least one lander; got %d" % count)
+        if not -12.0 < gravity < 0.0:
+            raise ValueError("gravity must be within (-12, 0), as in LunarLander-v3; got %r" % gravity)
+        self.count = count
+        self.gravity, self.enable_wind = float(gravity), bool(enable_wind)
+        self.wind_power, self.turbulence_power = float(wind_power), float(turbulence_power)
+        self.substeps, self.workers = int(substeps), int(workers)
+        self.rngs: List[np.random.Generator] = [np.random.default_rng() for _ in range(count)]
+        self.worlds: List[Optional[World]] = [None] * count
+        self._world_ids: List[int] = [0] * count
+        self.landers: List[Optional[Lander]] = [None] * count
+        self.terrains: List[Optional[Terrain]] = [None] * count
+        self._batch: Optional[WorldBatch] = None
+        self._allocate_state()
+
+    def _allocate_state(self) -> None:
+        n = self.count
+        # Filled by the library through the addresses below; never reallocated.
+        self.hull_ids = np.zeros(n, dtype=np.uint64)
+        self.transforms = np.zeros((n, 4), dtype=np.float32)
+        self.linear = np.zeros((n, 2), dtype=np.float32)
+        self.angular = np.zeros(n, dtype=np.float32)
+        self._new_linear = np.zeros((n, 2), dtype=np.float32)
+        self._new_angular = np.zeros(n, dtype=np.float32)
+        self._addresses = [a.ctypes.data for a in (self.hull_ids, self.transforms, self.linear, self.angular,
+                                                   self._new_linear, self._new_angular)]
+        self.angle = np.zeros(n, dtype=np.float64)
+        self.leg_touches = np.zeros((n, 2), dtype=np.int32)
+        self.crashed = np.zeros(n, dtype=bool)
+        self.at_rest = np.zeros(n, dtype=bool)
+        self.previous_potential = np.full(n, np.nan)
+        self.pad_height = np.zeros(n, dtype=np.float64)
+        self.wind_counter = np.zeros(n, dtype=np.int64)
+        self.turbulence_counter = np.zeros(n, dtype=np.int64)
+        self._hull_mass: Optional[tuple] = None
+
+    # ---- Episodes -----------------------------------------------------------------------
+
+    def seed(self, index: int, seed: Optional[int]) -> None:
+        """A new random stream for lander index (NumPy's default generator, PCG64, as
+        Gymnasium's np_random; None draws fresh entropy)."""
+        self.rngs[index] = np.random.default_rng(seed)
+
+    def rebuild(self, index: int) -> None:
+        """Starts lander index's episode in a new world: terrain, lander, initial push and
+        wind counters drawn from its random stream in Gymnasium's order. A fresh world
+        (not a cleared one) makes an episode depend on its seed alone. The episode's first
+        frame is the caller's (a frame with no engines, as Gymnasium's reset takes)."""
+        rng = self.rngs[index]
+        if self.worlds[index] is not None:
+            self.worlds[index].destroy()
+        world = World(gravity=(0.0, self.gravity))
+        terrain = random_terrain(rng)
+        build_terrain(world, terrain)
+        lander = build_lander(world)
+        push = (rng.uniform(-K.INITIAL_PUSH, K.INITIAL_PUSH), rng.uniform(-K.INITIAL_PUSH, K.INITIAL_PUSH))
+        lander.hull.apply_force(push)  # acts during the first frame only
+        if self.enable_wind:
+            self.wind_counter[index] = random_start(rng)
+            self.turbulence_counter[index] = random_start(rng)
+        if self._hull_mass is None:
+            mass_data = lander.hull.mass_data
+            self._hull_mass = (mass_data.mass, mass_data.rotational_inertia, mass_data.center)
+        self.worlds[index], self.landers[index], self.terrains[index] = world, lander, terrain
+        self.hull_ids[index] = lander.hull.id
+        self._world_ids[index] = world.id
+        self.pad_height[index] = terrain.pad_height
+        self.angle[index] = 0.0
+        self.leg_touches[index] = 0
+        self.crashed[index] = self.at_rest[index] = False
+        self.previous_potential[index] = np.nan
+        self._read_motion(index)
+        self._batch = None  # its id list names the old world
+
+    def close(self) -> None:
+        for world in self.worlds:
+            if world is not None:
+                world.destroy()
+        self.worlds = [None] * self.count
+        self._batch = None
+
+    # ---- One frame ----------------------------------------------------------------------
+
+    def frame(self, throttles: Throttles) -> FrameResult:
+        """Fires the engines as throttles say, advances every world by 1/50 s and reads
+        what the landers see."""
+        dispersion = np.stack([rng.uniform(-1.0, 1.0, size=2) for rng in self.rngs])
+        if self.enable_wind:
+            self._blow()
+        self._fire_engines(throttles, dispersion)
+        if self._batch is None:
+            self._batch = WorldBatch(self.worlds, self.workers)
+        self._batch.step(K.FRAME_TIME, self.substeps)
+        self._read_all()
+        return self._score(throttles)
+
+    def _blow(self) -> None:
+        """Wind and turbulence push a lander in flight (Gymnasium stops them, and their
+        counters, while a leg touches the ground)."""
+        airborne = ~np.any(self.leg_touches > 0, axis=1)
+        for index in np.flatnonzero(airborne):
+            hull_id = int(self.hull_ids[index])
+            force = gust(int(self.wind_counter[index])) * self.wind_power
+            torque = gust(int(self.turbulence_counter[index])) * self.turbulence_power
+            check(lib.i2d_body_apply_force_to_center(hull_id, structs.Vec2(force, 0.0), True))
+            check(lib.i2d_body_apply_torque(hull_id, torque, True))
+        self.wind_counter += airborne
+        self.turbulence_counter += airborne
+
+    def _fire_engines(self, throttles: Throttles, dispersion: np.ndarray) -> None:
+        mass, inertia, center = self._hull_mass
+        dv, dw = velocity_change(throttles, self.transforms, dispersion, mass, inertia, center)
+        self._new_linear[:] = self.linear + dv
+        self._new_angular[:] = self.angular + dw
+        ids, _, _, _, new_linear, new_angular = self._addresses
+        for index in np.flatnonzero((throttles.main > 0.0) | (throttles.side > 0.0)):
+            index = int(index)
+            check(lib.i2d_world_set_body_velocities(
+                self._world_ids[index], ids + 8 * index, 1, new_linear + 8 * index, new_angular + 4 * index))
+
+    def _read_all(self) -> None:
+        """Every hull's motion, contacts and sleep after a frame: four library calls per
+        world, in a loop kept tight because it runs count times a frame."""
+        ids, transforms, linear, angular, _, _ = self._addresses
+        get_transforms, get_velocities = lib.i2d_world_get_body_transforms, lib.i2d_world_get_body_velocities
+        get_events, is_awake = lib.i2d_world_get_contact_events, lib.i2d_body_is_awake
+        at_rest = self.at_rest
+        for index, (world_id, hull_id) in enumerate(zip(self._world_ids, self.hull_ids.tolist())):
+            status = get_transforms(world_id, ids + 8 * index, 1, transforms + 16 * index) or get_velocities(
+                world_id, ids + 8 * index, 1, linear + 8 * index, angular + 4 * index)
+            if status:
+                check(status)
+            events = get_events(world_id)
+            if events.begin_count or events.end_count:
+                self._count_contacts(index, events)
+            at_rest[index] = not is_awake(hull_id)
+
+    def _read_motion(self, index: int) -> None:
+        ids, transforms, linear, angular, _, _ = self._addresses
+        world_id = self._world_ids[index]
+        check(lib.i2d_world_get_body_transforms(world_id, ids + 8 * index, 1, transforms + 16 * index))
+        check(lib.i2d_world_get_body_velocities(world_id, ids + 8 * index, 1, linear + 8 * index, angular + 4 * index))
+
+    def _count_contacts(self, index: int, events) -> None:
+        """Crash and leg contacts from the frame's contact begin and end events. A leg is
+        down while it has at least one contact (Gymnasium keeps one flag per leg, which
+        the end of one of two contacts clears; counting avoids that)."""
+        lander = self.landers[index]
+        hull, legs = lander.hull_shape_id, lander.leg_shape_ids
+        for k in range(events.begin_count):
+            event = events.begin_events[k]
+            pair = (event.shape_a, event.shape_b)
+            if hull in pair:
+                self.crashed[index] = True
+            for leg in (0, 1):
+                if legs[leg] in pair:
+                    self.leg_touches[index, leg] += 1
+        for k in range(events.end_count):
+            event = events.end_events[k]
+            pair = (event.shape_a, event.shape_b)
+            for leg in (0, 1):
+                if legs[leg] in pair:
+                    self.leg_touches[index, leg] -= 1
+
+    def _score(self, throttles: Throttles) -> FrameResult:
+        self.angle = unwrap_angle(self.angle, self.transforms[:, 2], self.transforms[:, 3])
+        state = state_of(self.transforms[:, :2].astype(np.float64), self.linear.astype(np.float64), self.angle,
+                         self.angular.astype(np.float64), self.leg_touches > 0, self.pad_height)
+        potential = shaping(state)
+        rewards = frame_reward(potential, self.previous_potential, fuel_cost(throttles))
+        self.previous_potential = potential
+        off_screen = np.abs(state[:, 0]) >= 1.0
+        rewards, terminated = episode_end(rewards, self.crashed.copy(), off_screen, self.at_rest.copy())
+        return FrameResult(state.astype(np.float32), rewards, terminated)
