@@ -63,8 +63,12 @@ def _lander_scene():
 def test_lander_settles_on_its_legs_and_falls_asleep():
     scene = _lander_scene()
     world, lander, legs = scene["world"], scene["lander"], scene["legs"]
-    for leg in legs:  # the def's referenceAngle came from the bodies: the legs start at angle 0
-        assert leg.joint.angle == pytest.approx(0.0, abs=1e-5)
+    for leg, limit in zip(legs, (0.4, -0.4)):
+        # built at joint angle 0 (the def's referenceAngle came from the bodies) with
+        # their anchors 0.6 m apart, outside their limits: CreateJoint joins them and
+        # turns them to the nearest limit, as Box2D's first position iterations do
+        assert leg.joint.angle == pytest.approx(limit, abs=1e-5)
+        assert (leg.joint.anchorA - leg.joint.anchorB).length < 1e-5
     particles, asleep_at = [], None
     for i in range(int(10 * FPS)):
         vy = lander.linearVelocity.y

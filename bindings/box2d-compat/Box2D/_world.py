@@ -2,6 +2,7 @@
 """b2World over an impulse2d.World: bodies, joints, stepping, the contact listener and
 the queries."""
 
+import math
 import struct
 
 import impulse2d
@@ -304,6 +305,8 @@ class b2World(object):
         body_a, body_b = defn.bodyA, defn.bodyB
         if body_a is None or body_b is None:
             raise ValueError("CreateJoint: bodyA and bodyB must both be set")
+        if kind == "revolute":
+            _close_gap(defn)
         w = self._w
         handle = w.create_joint(kind, impulse2d.Body(w, body_a._id), impulse2d.Body(w, body_b._id), **defn._settings())
         joint = JOINT_CLASSES[kind](self, handle.id, body_a, body_b, defn.userData)
@@ -446,6 +449,55 @@ class b2World(object):
 
     def __repr__(self):
         return "b2World(bodies=%d, joints=%d)" % (len(self._bodies), len(self._joints))
+
+
+def _close_gap(defn):
+    """Moves a revolute joint's dynamic side so that its anchors meet.
+
+    Box2D's position iterations pull apart anchors together without adding velocity
+    (0.2 m per iteration; Gymnasium passes 60, so its walker, built with its joints 0.5 m
+    apart, and its lander's legs, 0.6 m apart, are joined in the first step). impulse2d's
+    soft joints close a gap with velocity: that walker would leave the ground at 8 m/s.
+    So the gap is closed at creation: body B and what hangs from it (bodies reached
+    through their joints, not through A) are moved by it; body A's side when B is not
+    dynamic. Nothing moves when the two sides are joined already (a loop)."""
+    body_a, body_b = defn.bodyA, defn.bodyB
+    anchor_a = body_a.GetWorldPoint(defn.localAnchorA)
+    anchor_b = body_b.GetWorldPoint(defn.localAnchorB)
+    gap = anchor_a - anchor_b
+    if gap.lengthSquared < 1e-12:
+        return
+    if body_b._type == b2_dynamicBody:
+        moved, fixed, shift = body_b, body_a, gap
+    elif body_a._type == b2_dynamicBody:
+        moved, fixed, shift = body_a, body_b, -gap
+    else:
+        return
+    # A list, not a set: the order bodies are moved in must not depend on their
+    # addresses, or a world would not replay bit for bit.
+    side, todo = [moved], [moved]
+    while todo:
+        for edge in todo.pop()._joint_edges:
+            other = edge.other
+            if other is fixed:
+                return  # a loop: moving one side would pull the other joints apart
+            if other not in side and other._type == b2_dynamicBody:
+                side.append(other)
+                todo.append(other)
+    for body in side:
+        body.position = body.position + shift
+    if getattr(defn, "enableLimit", False):
+        # Box2D's position iterations bring a joint angle outside its limits back too.
+        angle = body_b.angle - body_a.angle - defn.referenceAngle
+        turn = min(max(angle, defn.lowerAngle), defn.upperAngle) - angle
+        if turn:
+            if moved is body_a:
+                turn = -turn
+            pivot = body_a.GetWorldPoint(defn.localAnchorA)
+            c, s = math.cos(turn), math.sin(turn)
+            for body in side:
+                x, y = body.position - pivot
+                body.transform = ((pivot.x + c * x - s * y, pivot.y + s * x + c * y), body.angle + turn)
 
 
 def _listed(value):
