@@ -20,12 +20,9 @@ int32_t BroadPhase::create_proxy(const AABB& fat_aabb, const AABB& ahead_aabb, u
 void BroadPhase::destroy_proxy(int32_t key) {
     if (move_set_.remove(key)) {
         // Blank the entry rather than erase it: the buffer's order is the pair order.
-        for (int32_t& moved : move_buffer_) {
-            if (moved == key) {
-                moved = null_index;
-                break;
-            }
-        }
+        int32_t& moved = move_slot(key);
+        move_buffer_[std::size_t(moved)] = null_index;
+        moved = null_index;
     }
     int32_t& slot = pending_slot(key);
     if (slot != null_index) {
@@ -47,11 +44,11 @@ void BroadPhase::shift_origin(Vec2 new_origin) {
     }
 }
 
-int32_t& BroadPhase::pending_slot(int32_t key) {
-    if (key >= int32_t(pending_slot_.size())) {
-        pending_slot_.resize(size_t(key) + 1, null_index);
+int32_t& BroadPhase::slot_of(std::vector<int32_t>& slots, int32_t key) {
+    if (key >= int32_t(slots.size())) {
+        slots.resize(size_t(key) + 1, null_index);
     }
-    return pending_slot_[key];
+    return slots[std::size_t(key)];
 }
 
 // Queries read the box ahead only after the commit, so it changes at once.
@@ -159,6 +156,7 @@ void BroadPhase::finish_commit() {
 
 void BroadPhase::buffer_move(int32_t key) {
     if (move_set_.insert(key)) {
+        move_slot(key) = int32_t(move_buffer_.size());
         move_buffer_.push_back(key);
     }
 }
@@ -209,6 +207,7 @@ void BroadPhase::end_pair_queries() {
     for (const int32_t key : move_buffer_) {
         if (key != null_index) {
             move_set_.remove(key);
+            move_slot_[std::size_t(key)] = null_index;
         }
     }
     move_buffer_.clear();

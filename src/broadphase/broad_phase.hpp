@@ -116,7 +116,10 @@ private:
     void set_ahead(int32_t key, const AABB& ahead_aabb);
     void order_pending_moves();
     void finish_commit();
-    int32_t& pending_slot(int32_t key);
+    int32_t& pending_slot(int32_t key) { return slot_of(pending_slot_, key); }
+    int32_t& move_slot(int32_t key) { return slot_of(move_slot_, key); }
+    /// slots[key], growing slots (with null_index) to hold it.
+    static int32_t& slot_of(std::vector<int32_t>& slots, int32_t key);
     // Storage order: re-insertions and pair queries are made in the order of the
     // proxies' leaves in the node array, which compact() keeps depth-first. In caller
     // order (random in space) a tree larger than the cache misses it at nearly every
@@ -141,6 +144,10 @@ private:
     std::vector<AABB> ahead_;           // dynamic proxy id -> its box ahead
     std::vector<int32_t> move_buffer_;  // proxy keys, in the order they moved
     BitSet move_set_;                   // the same keys, for "did the other one move too"
+    // key -> index in move_buffer_, or null_index: a proxy destroyed after it moved is
+    // blanked there at once, not searched for (a level torn down before its first step
+    // would take time quadratic in its size).
+    std::vector<int32_t> move_slot_;
     std::vector<MoveEntry> pending_moves_;  // re-insertions waiting for commit_moves
     std::vector<int32_t> pending_slot_;     // key -> index in pending_moves_, or null_index
     std::vector<MoveEntry> move_scratch_;

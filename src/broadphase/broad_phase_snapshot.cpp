@@ -192,6 +192,7 @@ void BroadPhase::load(LoadIo& io) {
 // are made again from the lists.
 void BroadPhase::check_loaded(LoadIo& io) {
     move_set_ = BitSet{};
+    move_slot_.clear();
     pending_slot_.clear();
     if (io.failed()) {
         return;
@@ -201,13 +202,15 @@ void BroadPhase::check_loaded(LoadIo& io) {
         return key >= 0 && kind < int32_t(ProxyKind::count) && proxy < int32_t(trees_[kind].proxy_slots()) &&
                trees_[kind].is_live_proxy(proxy);
     };
-    for (const int32_t key : move_buffer_) {
+    for (std::size_t k = 0; k < move_buffer_.size(); ++k) {
+        const int32_t key = move_buffer_[k];
         if (key == null_index) {
             continue;
         }
         if (!io.check(live(key) && move_set_.insert(key), "a broadphase's move buffer names a dead proxy or one twice")) {
             return;
         }
+        move_slot(key) = int32_t(k);
     }
     for (std::size_t k = 0; k < pending_moves_.size(); ++k) {
         const int32_t key = pending_moves_[k].key;

@@ -683,6 +683,47 @@ I2D_TEST(unit_broad_phase_destroyed_after_move_and_key_reused) {
     I2D_CHECK(same_box(bp.fat_aabb(e), {{0.5f, 0.5f}, {20.5f, 0.6f}}));
 }
 
+// Proxies destroyed oldest first before any update, as a level torn down and rebuilt
+// before its first step: each is blanked in the move buffer where it stands (its slot
+// kept by key), so the update queries exactly the survivors and the proxies made since,
+// some on reused keys.
+I2D_TEST(unit_broad_phase_many_destroyed_before_the_update_leave_only_survivors_queried) {
+    BroadPhase bp;
+    std::vector<ShapePairCandidate> out;
+    bp.create_proxy({{-1000.0f, -1.0f}, {1000.0f, 0.0f}}, 1, 0, ProxyKind::static_proxy, false);
+    constexpr int32_t count = 300;
+    std::vector<int32_t> keys;
+    for (int32_t i = 0; i < count; ++i) {
+        const float x = 2.0f * float(i);
+        keys.push_back(bp.create_proxy({{x, -0.5f}, {x + 1.0f, 0.5f}}, 1, 1 + i, ProxyKind::dynamic_proxy, true));
+    }
+    for (int32_t i = 0; i < count; i += 2) {
+        bp.destroy_proxy(keys[std::size_t(i)]);
+    }
+    for (int32_t i = 0; i < 10; ++i) {
+        const float x = 2.0f * float(i) + 0.25f;  // under the boxes, clear of them, on the ground
+        bp.create_proxy({{x, -0.95f}, {x + 0.5f, -0.9f}}, 1, 1000 + i, ProxyKind::dynamic_proxy, true);
+    }
+    std::vector<int32_t> queried;
+    bp.update_pairs(
+        [&](int32_t a, int32_t b) {
+            if (a == 0 || b == 0) {  // each box and ground pair: the moved proxies queried
+                queried.push_back(a == 0 ? b : a);
+            }
+            return true;
+        },
+        out);
+    std::sort(queried.begin(), queried.end());
+    std::vector<int32_t> expected;
+    for (int32_t i = 1; i < count; i += 2) {
+        expected.push_back(1 + i);
+    }
+    for (int32_t i = 0; i < 10; ++i) {
+        expected.push_back(1000 + i);
+    }
+    I2D_CHECK(queried == expected);
+}
+
 // The step's commit (a tree where many proxies moved is rebuilt where they moved) and the
 // one-by-one re-insertion find the same new pairs, and both the brute-force set: half the
 // proxies of a crowded world move a little, then all of them, then one in twenty.
