@@ -5,7 +5,8 @@
 #   1. `pip wheel` makes one py3-none-<platform> wheel holding impulse2d/libimpulse2d.so;
 #   2. that wheel, installed with --target, imports from elsewhere, loads its bundled
 #      library and drops a ball as v = g t says;
-#   3. `pip install` of the source directory does the same.
+#   3. `pip install` of the source directory does the same, together with
+#      bindings/box2d-compat in the same command, whose Box2D module then drops a body.
 # Compiling the library twice takes most of the time (about half a minute each on 2 cores).
 # Needs cmake, a C++ compiler, and a Python with pip, setuptools and wheel (Debian:
 # cmake g++ python3-pip python3-setuptools python3-wheel); no network.
@@ -106,6 +107,25 @@ EOF
   )
 }
 
+# The compat package's Box2D, installed beside impulse2d: a body falls under b2World's
+# default gravity of (0, -10) as v = g t.
+check_box2d_compat() {
+  local target=$1
+  (cd / && PYTHONPATH="$target" "$python" - <<'EOF'
+import Box2D
+
+world = Box2D.b2World()
+body = world.CreateDynamicBody(position=(0, 10))
+body.CreateCircleFixture(radius=0.5, density=1.0)
+for _ in range(30):
+    world.Step(1.0 / 60.0, 6, 2)
+vy = body.linearVelocity[1]
+assert abs(vy + 5.0) < 1e-3, "Box2D body velocity %r, expected -5" % vy
+print("Box2D from", Box2D.__file__, "- a body falls at %.4f m/s after 0.5 s" % vy)
+EOF
+  )
+}
+
 timed() {
   local start=$SECONDS
   "$@"
@@ -135,8 +155,10 @@ check_installed "$work/from_wheel"
 # From scratch again: without the wheel step's build directory (setuptools' build_temp in
 # bindings/python/build), which pip would otherwise reuse.
 rm -rf "$package/build"
-echo "== pip install of the source directory"
-timed pip_from_source "$work/install.log" install --target "$work/from_source" "$package"
+echo "== pip install of the source directory, with the Box2D compat package"
+timed pip_from_source "$work/install.log" install --target "$work/from_source" "$package" \
+  "$work/src/bindings/box2d-compat"
 check_installed "$work/from_source"
+check_box2d_compat "$work/from_source"
 
 echo "pip build from source: OK"

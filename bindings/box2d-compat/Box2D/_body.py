@@ -72,7 +72,7 @@ class b2Body(object):
     def _world(self):
         # Bodies refer to their world weakly: no cycle keeps a dropped world (LunarLander
         # makes a new one every reset) and its C world alive until the cyclic collector
-        # runs; impulse2d allows 256 live worlds. As in pybox2d, a body does not keep its
+        # runs; impulse2d allows 4096 live worlds. As in pybox2d, a body does not keep its
         # world: once the world is gone, using the body raises.
         world = self._world_ref()
         if world is None:
