@@ -150,3 +150,56 @@ def test_wheel_joint_spring_and_motor():
     assert joint.speed == pytest.approx(-2.0, rel=0.02)  # the motor turns the wheel clockwise...
     assert wheel.linearVelocity.x == pytest.approx(1.0, rel=0.05)  # ...and it rolls right at w r
     assert 0 < joint.translation < 0.1  # the chassis sags onto the wheel: B's anchor rises along the axis
+
+
+def test_a_joint_created_apart_is_closed_before_the_step_without_velocity():
+    # Two free bodies in zero gravity, a hinge between anchors 0.5 m apart: Box2D's
+    # position correction moves both by their inverse masses (the 3 kg body a third as
+    # far as the 1 kg one), so their centre of mass stays where it was, and gives them
+    # no velocity.
+    world = Box2D.b2World(gravity=(0, 0))
+    heavy = world.CreateDynamicBody(position=(0, 0))
+    heavy.CreatePolygonFixture(box=(0.5, 0.5), density=3.0)
+    light = world.CreateDynamicBody(position=(1.5, 0))
+    light.CreatePolygonFixture(box=(0.5, 0.5), density=1.0)
+    center_before = (heavy.mass * heavy.worldCenter + light.mass * light.worldCenter) / (heavy.mass + light.mass)
+    joint = world.CreateJoint(b2.revoluteJointDef(bodyA=heavy, bodyB=light, localAnchorA=(0.5, 0),
+                                                  localAnchorB=(-0.5, 0)))
+    assert (joint.anchorA - joint.anchorB).length == pytest.approx(0.5)
+    world.Step(1.0 / 60.0, 8, 3)
+    assert (joint.anchorA - joint.anchorB).length < 1e-3
+    center_after = (heavy.mass * heavy.worldCenter + light.mass * light.worldCenter) / (heavy.mass + light.mass)
+    assert (center_after - center_before).length < 1e-4
+    assert heavy.position.x == pytest.approx(0.125, abs=2e-3)  # a quarter of the gap
+    assert light.position.x == pytest.approx(1.125, abs=2e-3)  # three quarters
+    assert heavy.linearVelocity.length < 1e-3 and light.linearVelocity.length < 1e-3
+
+
+def test_a_joint_created_outside_its_limits_is_turned_back_inside():
+    world = Box2D.b2World(gravity=(0, 0))
+    base = world.CreateStaticBody(position=(0, 0))
+    arm = world.CreateDynamicBody(position=(1, 0))
+    arm.CreatePolygonFixture(box=(1, 0.1), density=1.0)
+    joint = world.CreateJoint(b2.revoluteJointDef(bodyA=base, bodyB=arm, localAnchorA=(0, 0), localAnchorB=(-1, 0),
+                                                  enableLimit=True, lowerAngle=0.5, upperAngle=1.0))
+    assert joint.angle == pytest.approx(0.0)
+    world.Step(1.0 / 60.0, 8, 60)
+    assert 0.5 - 1e-3 <= joint.angle <= 1.0
+    assert abs(arm.angularVelocity) < 0.01  # a soft limit closing 0.5 rad itself leaves it spinning
+
+
+def test_a_box_built_sunk_into_an_edge_is_pushed_out_before_the_step_without_velocity():
+    # Box2D's position iterations push a hinged box built 0.1 m into the ground back out
+    # (to within its slop) without giving it velocity; impulse2d alone pushes it out at
+    # its contact push speed.
+    world = Box2D.b2World(gravity=(0, 0))
+    ground = world.CreateStaticBody(position=(0, 0))
+    ground.CreateEdgeFixture(vertices=[(-5, 0), (5, 0)])
+    box = world.CreateDynamicBody(position=(0, 0.4))  # half height 0.5: 0.1 m sunk
+    box.CreatePolygonFixture(box=(0.5, 0.5), density=1.0)
+    arm = world.CreateDynamicBody(position=(0, 1.4))  # hinged on the box's top, free
+    arm.CreatePolygonFixture(box=(0.1, 0.5), density=1.0, maskBits=0)
+    world.CreateJoint(b2.revoluteJointDef(bodyA=box, bodyB=arm, localAnchorA=(0, 0.5), localAnchorB=(0, -0.5)))
+    world.Step(1.0 / 60.0, 8, 60)
+    assert box.position.y - 0.5 > -0.02  # out, but for Box2D's slops
+    assert box.linearVelocity.length < 0.1

@@ -2,7 +2,6 @@
 """b2World over an impulse2d.World: bodies, joints, stepping, the contact listener and
 the queries."""
 
-import math
 import struct
 
 import impulse2d
@@ -12,7 +11,8 @@ from ._callbacks import b2Contact
 from ._joints import (JOINT_CLASSES, b2DistanceJointDef, b2JointEdge, b2PrismaticJointDef,
                       b2RevoluteJointDef, b2WeldJointDef, b2WheelJointDef)
 from ._native import C, check, check_last, lib, structs
-from ._shapes import b2FixtureDef
+from ._settle import RevoluteSpec, settle
+from ._shapes import b2EdgeShape, b2FixtureDef, b2PolygonShape
 from ._vec import b2Vec2, as_pair
 
 Vec2 = structs.Vec2
@@ -118,6 +118,7 @@ class b2World(object):
         self._bodies = {}
         self._fixtures = {}
         self._joints = {}
+        self._settle_pending = False  # a revolute joint made since the last step
         self._touching = {}
         self._sensor_count = 0  # sensor fixtures: without any, a step reads no sensor events
         self._ray_capacity = 16
@@ -305,11 +306,13 @@ class b2World(object):
         body_a, body_b = defn.bodyA, defn.bodyB
         if body_a is None or body_b is None:
             raise ValueError("CreateJoint: bodyA and bodyB must both be set")
-        if kind == "revolute":
-            _close_gap(defn)
         w = self._w
         handle = w.create_joint(kind, impulse2d.Body(w, body_a._id), impulse2d.Body(w, body_b._id), **defn._settings())
         joint = JOINT_CLASSES[kind](self, handle.id, body_a, body_b, defn.userData)
+        if kind == "revolute":
+            # Closed, if apart, by Box2D's position iterations before the next step.
+            joint._settle_spec = RevoluteSpec(defn)
+            self._settle_pending = True
         self._joints[handle.id] = joint
         body_a._joint_edges.append(b2JointEdge(joint, body_b))
         body_b._joint_edges.append(b2JointEdge(joint, body_a))
@@ -342,13 +345,37 @@ class b2World(object):
     # ---- stepping ---------------------------------------------------------------------
     def Step(self, timeStep, velocityIterations=8, positionIterations=3):
         """Advances by timeStep in self.substeps impulse2d substeps (the iteration counts
-        are accepted and unused), then reports the step's contacts to the listener."""
+        are accepted and unused), then reports the step's contacts to the listener. After
+        a revolute joint's creation, positionIterations of Box2D's position correction
+        first close its gap (_settle.py)."""
+        if self._settle_pending:
+            self._settle_pending = False
+            specs = [j._settle_spec for j in self._joints.values() if getattr(j, "_settle_spec", None)]
+            settle(specs, positionIterations, _is_dynamic, self._polygons_touching_ground, self._static_edges())
         status = _step(self._wid, timeStep, self.substeps)
         if status:
             check(status)
         events = _contact_events(self._wid)
         if events.begin_count or events.end_count or self._sensor_count:
             self._report(events)
+
+    def _static_edges(self):
+        """The static edge fixtures' end points, world frame, for the settle's contacts."""
+        edges = []
+        for fixture in self._fixtures.values():
+            if fixture._body._type == b2_staticBody and isinstance(fixture._shape, b2EdgeShape) \
+                    and not fixture._sensor:
+                body = fixture._body
+                edges.append((tuple(body.GetWorldPoint(fixture._shape._v1)),
+                              tuple(body.GetWorldPoint(fixture._shape._v2))))
+        return edges
+
+    @staticmethod
+    def _polygons_touching_ground(body):
+        """The body's solid polygons (body frame points) that collide with static shapes
+        of category 1, the default ground; others (a lander's particles) keep out of it."""
+        return [fixture._shape._vertices for fixture in body._fixtures
+                if isinstance(fixture._shape, b2PolygonShape) and not fixture._sensor and fixture._filter[1] & 1]
 
     def _report(self, events):
         fixtures, touching, listener = self._fixtures, self._touching, self.contactListener
@@ -451,53 +478,8 @@ class b2World(object):
         return "b2World(bodies=%d, joints=%d)" % (len(self._bodies), len(self._joints))
 
 
-def _close_gap(defn):
-    """Moves a revolute joint's dynamic side so that its anchors meet.
-
-    Box2D's position iterations pull apart anchors together without adding velocity
-    (0.2 m per iteration; Gymnasium passes 60, so its walker, built with its joints 0.5 m
-    apart, and its lander's legs, 0.6 m apart, are joined in the first step). impulse2d's
-    soft joints close a gap with velocity: that walker would leave the ground at 8 m/s.
-    So the gap is closed at creation: body B and what hangs from it (bodies reached
-    through their joints, not through A) are moved by it; body A's side when B is not
-    dynamic. Nothing moves when the two sides are joined already (a loop)."""
-    body_a, body_b = defn.bodyA, defn.bodyB
-    anchor_a = body_a.GetWorldPoint(defn.localAnchorA)
-    anchor_b = body_b.GetWorldPoint(defn.localAnchorB)
-    gap = anchor_a - anchor_b
-    if gap.lengthSquared < 1e-12:
-        return
-    if body_b._type == b2_dynamicBody:
-        moved, fixed, shift = body_b, body_a, gap
-    elif body_a._type == b2_dynamicBody:
-        moved, fixed, shift = body_a, body_b, -gap
-    else:
-        return
-    # A list, not a set: the order bodies are moved in must not depend on their
-    # addresses, or a world would not replay bit for bit.
-    side, todo = [moved], [moved]
-    while todo:
-        for edge in todo.pop()._joint_edges:
-            other = edge.other
-            if other is fixed:
-                return  # a loop: moving one side would pull the other joints apart
-            if other not in side and other._type == b2_dynamicBody:
-                side.append(other)
-                todo.append(other)
-    for body in side:
-        body.position = body.position + shift
-    if getattr(defn, "enableLimit", False):
-        # Box2D's position iterations bring a joint angle outside its limits back too.
-        angle = body_b.angle - body_a.angle - defn.referenceAngle
-        turn = min(max(angle, defn.lowerAngle), defn.upperAngle) - angle
-        if turn:
-            if moved is body_a:
-                turn = -turn
-            pivot = body_a.GetWorldPoint(defn.localAnchorA)
-            c, s = math.cos(turn), math.sin(turn)
-            for body in side:
-                x, y = body.position - pivot
-                body.transform = ((pivot.x + c * x - s * y, pivot.y + s * x + c * y), body.angle + turn)
+def _is_dynamic(body):
+    return body._type == b2_dynamicBody
 
 
 def _listed(value):
