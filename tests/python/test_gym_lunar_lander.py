@@ -8,15 +8,22 @@ import pytest
 from impulse2d.gym import LunarLander, VectorLunarLander
 
 
-def pilot(obs):
-    """A PD pilot on the observation: lean so the main engine pushes toward the pad,
-    hold a height that falls as the lander nears it, cushion the touchdown."""
+def pd_commands(obs):
+    """A PD pilot's turn and lift on the observation: lean so the main engine pushes
+    toward the pad, hold a height that falls as the lander nears it, cushion the
+    touchdown."""
     x, y, vx, vy, angle, spin, left_down, right_down = obs
     lean = np.clip(0.5 * x + 1.0 * vx, -0.4, 0.4)
     turn = 0.5 * (lean - angle) - 1.0 * spin
     lift = 0.5 * (0.5 * abs(x) - y) - 0.5 * vy
     if left_down or right_down:
         turn, lift = 0.0, -0.5 * vy
+    return turn, lift
+
+
+def pilot(obs):
+    """The PD pilot's commands as discrete actions: the stronger one fires."""
+    turn, lift = pd_commands(obs)
     if lift > abs(turn) and lift > 0.05:
         return 2
     if turn < -0.05:
@@ -284,12 +291,7 @@ def test_many_sub_envs_keep_independent_streams():
 def continuous_pilot(obs):
     """The PD pilot's lift and turn as throttles: main engine from -1 (off) to 1, the
     lateral input's sign choosing the nozzle."""
-    x, y, vx, vy, angle, spin, left_down, right_down = obs
-    lean = np.clip(0.5 * x + 1.0 * vx, -0.4, 0.4)
-    turn = 0.5 * (lean - angle) - 1.0 * spin
-    lift = 0.5 * (0.5 * abs(x) - y) - 0.5 * vy
-    if left_down or right_down:
-        turn, lift = 0.0, -0.5 * vy
+    turn, lift = pd_commands(obs)
     return np.clip([20.0 * lift - 1.0, -20.0 * turn], -1.0, 1.0).astype(np.float32)
 
 
