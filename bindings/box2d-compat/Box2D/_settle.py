@@ -148,11 +148,18 @@ class CornerContact:
 
 
 def corner_contacts(pose, polygon_points, edges):
-    """The corners of a polygon (body frame) each paired with the edges near it."""
+    """The corners of a polygon (body frame) each paired with the edges near the
+    polygon: the edges are sifted once by the polygon's box, then its corners by theirs."""
+    corners = [(corner, pose.to_world(corner)) for corner in polygon_points]
+    xs = [p[0] for _, p in corners]
+    ys = [p[1] for _, p in corners]
+    low_x, high_x, low_y, high_y = min(xs) - REACH, max(xs) + REACH, min(ys) - REACH, max(ys) + REACH
+    near = [(e1, e2) for e1, e2 in edges
+            if min(e1[0], e2[0]) <= high_x and max(e1[0], e2[0]) >= low_x and
+            min(e1[1], e2[1]) <= high_y and max(e1[1], e2[1]) >= low_y]
     found = []
-    for corner in polygon_points:
-        px, py = pose.to_world(corner)
-        for e1, e2 in edges:
+    for corner, (px, py) in corners:
+        for e1, e2 in near:
             if (min(e1[0], e2[0]) - REACH <= px <= max(e1[0], e2[0]) + REACH and
                     min(e1[1], e2[1]) - REACH <= py <= max(e1[1], e2[1]) + REACH):
                 found.append(CornerContact(corner, e1, e2))

@@ -20,6 +20,13 @@ class b2Vec2(object):
         self.x = float(x)
         self.y = float(y)
 
+    @classmethod
+    def _raw(cls, x, y):
+        """From two floats, unchecked: for the per-hit and per-step paths."""
+        v = object.__new__(cls)
+        v.x, v.y = x, y
+        return v
+
     # ---- sequence protocol ---------------------------------------------------------
     def __len__(self):
         return 2

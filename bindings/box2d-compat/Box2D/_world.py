@@ -127,6 +127,7 @@ class b2World(object):
         self._id_capacity = 64
         self._id_buffer = (C.c_uint64 * self._id_capacity)()
         self._query_filter = structs.QueryFilter(category_bits=_ALL, mask_bits=_ALL)
+        self._ray_origin, self._ray_translation = Vec2(0.0, 0.0), Vec2(0.0, 0.0)
         self.substeps = DEFAULT_SUBSTEPS
         self.contactListener = None
         self.destructionListener = None
@@ -426,7 +427,10 @@ class b2World(object):
         -1 (ignore), 0 (stop), a fraction (clip) and 1 (go on)."""
         x1, y1 = point1
         x2, y2 = point2
-        origin, translation = Vec2(x1, y1), Vec2(x2 - x1, y2 - y1)
+        # Kept structs, refilled: making two ctypes structs a call costs more than the cast.
+        origin, translation = self._ray_origin, self._ray_translation
+        origin.x, origin.y = x1, y1
+        translation.x, translation.y = x2 - x1, y2 - y1
         total = _cast_ray_all(self._wid, origin, translation, self._query_filter, self._ray_address,
                               self._ray_capacity)
         if total <= 0:
@@ -440,7 +444,7 @@ class b2World(object):
             total = _cast_ray_all(self._wid, origin, translation, self._query_filter, self._ray_address, total)
         # One struct.unpack per hit reads the results faster than ctypes field access.
         buffer, unpack, size = self._ray_buffer, _RAY_RESULT.unpack_from, _RAY_RESULT_SIZE
-        fixtures, report, limit = self._fixtures, callback.ReportFixture, 1.0
+        fixtures, report, limit, vec = self._fixtures, callback.ReportFixture, 1.0, b2Vec2._raw
         for i in range(total):
             shape_id, px, py, nx, ny, fraction = unpack(buffer, i * size)
             if fraction > limit:
@@ -448,7 +452,7 @@ class b2World(object):
             fixture = fixtures.get(shape_id)
             if fixture is None:
                 continue
-            answer = report(fixture, b2Vec2(px, py), b2Vec2(nx, ny), fraction)
+            answer = report(fixture, vec(px, py), vec(nx, ny), fraction)
             if answer == 0:
                 break
             if 0 < answer < limit:
