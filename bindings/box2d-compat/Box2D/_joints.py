@@ -217,9 +217,10 @@ class b2Joint(object):
         return "%s(0x%016x)" % (type(self).__name__, self._id)
 
 
-def _accessor(kind, field):
+def _reading(kind, field, doc=None):
+    """A read-only property over i2d_<kind>_joint_get_<field> (a zero asks whether the
+    call failed)."""
     get = getattr(lib, "i2d_%s_joint_get_%s" % (kind, field))
-    put = getattr(lib, "i2d_%s_joint_set_%s" % (kind, field))
 
     def getter(self):
         value = get(self._id)
@@ -227,23 +228,23 @@ def _accessor(kind, field):
             check_last()
         return value
 
+    return property(getter, doc=doc)
+
+
+def _accessor(kind, field):
+    put = getattr(lib, "i2d_%s_joint_set_%s" % (kind, field))
+
     def setter(self, value):
         check(put(self._id, value))
 
-    return property(getter, setter)
+    return _reading(kind, field).setter(setter)
 
 
 class b2RevoluteJoint(b2Joint):
     type = e_revoluteJoint
 
-    @property
-    def angle(self):
-        """B's angle relative to A minus the reference angle, wound into (-pi, pi]
-        (Box2D 2.3 does not wind it)."""
-        value = lib.i2d_revolute_joint_get_angle(self._id)
-        if value == 0.0:
-            check_last()
-        return value
+    angle = _reading("revolute", "angle", """B's angle relative to A minus the reference angle,
+        wound into (-pi, pi] (Box2D 2.3 does not wind it).""")
 
     @property
     def speed(self):
@@ -256,7 +257,7 @@ class b2RevoluteJoint(b2Joint):
     limitEnabled = _accessor("revolute", "enable_limit")
     lowerLimit = _accessor("revolute", "lower_angle")
     upperLimit = _accessor("revolute", "upper_angle")
-    referenceAngle = property(_accessor("revolute", "reference_angle").fget)
+    referenceAngle = _reading("revolute", "reference_angle")
 
     @property
     def limits(self):
@@ -289,19 +290,9 @@ class b2RevoluteJoint(b2Joint):
 class b2PrismaticJoint(b2Joint):
     type = e_prismaticJoint
 
-    @property
-    def translation(self):
-        value = lib.i2d_prismatic_joint_get_translation(self._id)
-        if value == 0.0:
-            check_last()
-        return value
+    translation = _reading("prismatic", "translation")
 
-    @property
-    def speed(self):
-        value = lib.i2d_prismatic_joint_get_speed(self._id)
-        if value == 0.0:
-            check_last()
-        return value
+    speed = _reading("prismatic", "speed")
 
     motorSpeed = _accessor("prismatic", "motor_speed")
     maxMotorForce = _accessor("prismatic", "max_motor_force")
@@ -325,12 +316,7 @@ class b2WeldJoint(b2Joint):
 class b2WheelJoint(b2Joint):
     type = e_wheelJoint
 
-    @property
-    def translation(self):
-        value = lib.i2d_wheel_joint_get_translation(self._id)
-        if value == 0.0:
-            check_last()
-        return value
+    translation = _reading("wheel", "translation")
 
     @property
     def speed(self):
