@@ -90,7 +90,7 @@ static void usage(FILE* f) {
             "  --steps N      steps per run, N >= 2 (the first is untimed); default: each scene's own\n"
             "  --repeat R     runs per scene, each in a new world, 1..%d; default 3\n"
             "  --workers W    worker threads of each world, 1..64 (the built-in pool); default 1\n"
-            "  --simd PATH    contact kernels: automatic (default), scalar, sse2, avx2, avx512 or neon\n"
+            "  --simd PATH    contact kernels: automatic (default), scalar, sse2, avx2, avx512, neon or wasm128\n"
             "  --no-recycling make every manifold afresh at every step (enable_contact_recycling off)\n"
             "  --idle-hooks   set both contact hooks on every world, no shape opting in (their idle cost)\n"
             "  --csv, --json  machine-readable output instead of the table\n"
@@ -131,7 +131,7 @@ static bool choose_scenes(const char* list, options* opt) {
 
 /* Sets bench_simd_path from its name; false (with a message) for an unknown or unsupported one. */
 static bool parse_simd_path(const char* name) {
-    static const char* const names[] = {"automatic", "scalar", "sse2", "avx2", "avx512", "neon"};
+    static const char* const names[] = {"automatic", "scalar", "sse2", "avx2", "avx512", "neon", "wasm128"};
     int k;
     for (k = 0; k < 6; ++k) {
         if (strcmp(name, names[k]) == 0) {
@@ -143,7 +143,7 @@ static bool parse_simd_path(const char* name) {
             return true;
         }
     }
-    fprintf(stderr, "impulse2d_bench: --simd %s: expected automatic, scalar, sse2, avx2, avx512 or neon\n", name);
+    fprintf(stderr, "impulse2d_bench: --simd %s: expected automatic, scalar, sse2, avx2, avx512, neon or wasm128\n", name);
     return false;
 }
 
@@ -589,7 +589,7 @@ static void print_sleep_notes(const options* opt) {
 
 /* The name of the contact kernels the scenes' worlds use (bench_simd_path, automatic resolved). */
 static const char* simd_path_in_use(void) {
-    static const char* const names[] = {"automatic", "scalar", "sse2", "avx2", "avx512", "neon"};
+    static const char* const names[] = {"automatic", "scalar", "sse2", "avx2", "avx512", "neon", "wasm128"};
     i2d_world_def def = i2d_default_world_def();
     i2d_world_id world;
     i2d_simd_path path;

@@ -1,10 +1,14 @@
 // SPDX-License-Identifier: MIT
-// impulse2d.wasm side by side with Rapier2D, planck and matter-js in node: the same
-// scenes built by the same code, engines alternating within each round, a new world per
-// run, the first step untimed (as scenes.md times), median ms per step over the rounds
-// and each run's sanity figure. With --native PATH the native impulse2d_bench runs
-// large_pyramid in the same rounds (its AVX2 and scalar kernels), for the native/wasm ratio.
+// impulse2d.wasm (SIMD and scalar builds) side by side with Rapier2D (plain and SIMD
+// builds), planck and matter-js in node: the same scenes built by the same code, engines
+// alternating within each round, a new world per run, the first step untimed (as
+// scenes.md times), median ms per step over the rounds and each run's sanity figure. With
+// --native PATH the native impulse2d_bench runs large_pyramid in the same rounds (its
+// widest and scalar kernels), for the native/wasm ratios. --engines keeps the engines
+// whose names contain one of its comma-separated words (planck's large_pyramid alone takes
+// about 2 minutes a round).
 //   node bench.mjs [--rounds 3] [--steps-scale 1] [--native ../../build/bench/impulse2d_bench]
+//                  [--engines impulse2d,Rapier]
 import { execFileSync } from 'node:child_process';
 import { loadEngines } from './engines.mjs';
 import { SCENES } from './scenes.mjs';
@@ -26,6 +30,7 @@ function option(name, fallback) {
 const rounds = Number(option('--rounds', 3));
 const stepsScale = Number(option('--steps-scale', 1));
 const nativeBench = option('--native', null);
+const onlyEngines = option('--engines', '').split(',').filter((word) => word !== '');
 
 function runOnce(engine, scene, steps) {
   const world = engine.createWorld({ sleep: scene.sleep });
@@ -59,7 +64,7 @@ const median = (values) => {
   return sorted.length % 2 ? sorted[mid] : (sorted[mid - 1] + sorted[mid]) / 2;
 };
 
-const engines = await loadEngines();
+const engines = await loadEngines(onlyEngines);
 const results = new Map();  // "scene|engine" -> {ms: [], figure}
 const record = (scene, engine, run) => {
   const key = `${scene}|${engine}`;
@@ -100,10 +105,12 @@ for (const [key, entry] of results) {
 if (SCENES.some((scene) => scene.name === 'tumbler')) {
   console.log(`\ntumbler's drum: ${engines.map((engine) => `${engine.name} ${engine.drumDrive}`).join('; ')}`);
 }
-const wasm = results.get('large_pyramid|impulse2d.wasm');
-for (const simd of ['automatic', 'scalar']) {
-  const native = results.get(`large_pyramid|impulse2d native (${simd})`);
-  if (wasm && native) {
-    console.log(`\nlarge_pyramid wasm / native (${simd}): ${(median(wasm.ms) / median(native.ms)).toFixed(2)}x slower in wasm`);
+for (const build of ['SIMD', 'scalar']) {
+  const wasm = results.get(`large_pyramid|impulse2d.wasm ${build}`);
+  for (const simd of ['automatic', 'scalar']) {
+    const native = results.get(`large_pyramid|impulse2d native (${simd})`);
+    if (wasm && native) {
+      console.log(`large_pyramid wasm ${build} / native ${simd}: ${(median(wasm.ms) / median(native.ms)).toFixed(2)}x`);
+    }
   }
 }

@@ -3,15 +3,18 @@
 // dynamic boxes and circles, the tumbler's motor-driven drum, a step, and a body's
 // position and angle (metres and radians, y up, counter-clockwise).
 // Each engine runs at its own recommended settings for 60 Hz:
-//   impulse2d  1/60 s, 4 substeps (as Box2D v3's benchmark)
-//   Rapier2D   1/60 s, its defaults (4 solver iterations, 1 internal PGS iteration)
+//   impulse2d  1/60 s, 4 substeps (as Box2D v3's benchmark); its SIMD build (4-lane
+//              WebAssembly SIMD kernels) and its scalar build
+//   Rapier2D   1/60 s, its defaults (4 solver iterations, 1 internal PGS iteration); its
+//              plain build and its SIMD build (@dimforge/rapier2d-simd-compat)
 //   planck     1/60 s, 8 velocity and 3 position iterations (Box2D 2.x's defaults)
 //   matter-js  1000/60 ms, its defaults (6 position, 4 velocity iterations); 1 m = 20 px
 // The drum is a dynamic body on a revolute joint's motor in impulse2d, Rapier2D and planck;
 // matter-js has no joint motor, so its drum is static and turned by the adapter each step
 // (kinematic), which no load can slow: its drumDrive says so in the output.
 import { loadImpulse2d } from '../../bindings/js/src/index.js';
-import RAPIER from '@dimforge/rapier2d-compat';
+import RAPIER_PLAIN from '@dimforge/rapier2d-compat';
+import RAPIER_SIMD from '@dimforge/rapier2d-simd-compat';
 import * as planck from 'planck';
 import Matter from 'matter-js';
 
@@ -23,11 +26,11 @@ const FRICTION = 0.6;
 // motor of 1e8 N m.
 const RAPIER_MOTOR_FACTOR = 1e4;
 
-async function impulse2dEngine() {
-  const i2d = await loadImpulse2d();
+async function impulse2dEngine(simd) {
+  const i2d = await loadImpulse2d({ simd });
   const drumDrive = 'revolute motor';
   return {
-    name: 'impulse2d.wasm',
+    name: simd ? 'impulse2d.wasm SIMD' : 'impulse2d.wasm scalar',
     drumDrive,
     createWorld({ sleep }) {
       const world = i2d.createWorld({ gravity: [0, -10], enableSleep: sleep });
@@ -61,11 +64,11 @@ async function impulse2dEngine() {
   };
 }
 
-async function rapierEngine() {
+async function rapierEngine(RAPIER, build) {
   await RAPIER.init();
   const drumDrive = 'revolute motor';
   return {
-    name: `Rapier2D ${RAPIER.version()}`,
+    name: `Rapier2D ${build}${RAPIER.version()}`,
     drumDrive,
     createWorld({ sleep }) {
       const world = new RAPIER.World({ x: 0, y: -10 });
@@ -95,7 +98,9 @@ async function rapierEngine() {
           }
           const hinge = world.createImpulseJoint(RAPIER.JointData.revolute(center, { x: 0, y: 0 }), pivot, drum, true);
           hinge.configureMotorVelocity(speed, RAPIER_MOTOR_FACTOR);
-          hinge.setMotorMaxForce(maxTorque);
+          // Rapier's SIMD build (0.19) has no motor force limit: its motor is unbounded, as
+          // the 1e8 N m limit of the others is in effect.
+          if (typeof hinge.setMotorMaxForce === 'function') hinge.setMotorMaxForce(maxTorque);
           return { body: drum, drive: drumDrive };
         },
         step() { world.step(); },
@@ -185,6 +190,9 @@ async function matterEngine() {
   };
 }
 
-export async function loadEngines() {
-  return [await impulse2dEngine(), await rapierEngine(), await planckEngine(), await matterEngine()];
+/** The engines whose names contain one of `only`'s words (all of them without). */
+export async function loadEngines(only = []) {
+  const engines = [await impulse2dEngine(true), await impulse2dEngine(false), await rapierEngine(RAPIER_PLAIN, ''),
+                   await rapierEngine(RAPIER_SIMD, 'SIMD '), await planckEngine(), await matterEngine()];
+  return only.length === 0 ? engines : engines.filter((engine) => only.some((word) => engine.name.includes(word)));
 }

@@ -357,6 +357,13 @@ try {
   };
   const ctx = { page, evaluate, screenshot };
 
+  // Chromium has WebAssembly SIMD: the page must have loaded the SIMD build and say so.
+  const build = await evaluate('impulse2dPage.state()');
+  expect(build.simdBuild === true && build.simdPath === 'wasm128',
+         `the page runs the WebAssembly SIMD build (simd ${build.simdBuild}, path ${build.simdPath})`);
+  expect((await evaluate('impulse2dPage.readout()')).includes('wasm SIMD, wasm128 kernels'),
+         'the readout names the SIMD build and its kernels');
+
   for (const scene of scenes) {
     await evaluate(`impulse2dPage.loadScene(${JSON.stringify(scene)})`);
     await wait(LIVE_SECONDS * 1000);

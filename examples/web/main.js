@@ -4,7 +4,7 @@
 // backend, rewinds while the rewind button or R (or Backspace) is held, lets the
 // platformer's character be walked from the keys, and exposes window.impulse2dPage for
 // the browser test (scene choice, stepping, state read-back).
-import { loadImpulse2d } from '../../bindings/js/src/index.js';
+import { loadImpulse2d, SIMD_PATH_NAMES } from '../../bindings/js/src/index.js';
 import { BACKGROUND, CanvasDrawer } from './draw_canvas.js';
 import { makeDrawToggles } from './draw_flags.js';
 import { Keyboard } from './keyboard.js';
@@ -103,6 +103,11 @@ function msPerStep() {
   return sorted.length ? sorted[sorted.length >> 1] : 0;
 }
 
+/** Which WebAssembly build the page runs and the contact kernels its world solves with. */
+function buildName() {
+  return `${i2d.simd ? 'wasm SIMD' : 'wasm scalar'}, ${SIMD_PATH_NAMES[state.world.simdPath()]} kernels`;
+}
+
 function render() {
   drawFrame(drawer, state.world, drawFlags, (d) => {
     state.scene.drawExtras?.(d);
@@ -110,7 +115,8 @@ function render() {
   });
   const counters = state.world.counters();
   const rewind = state.rewind;
-  readout.textContent = `${msPerStep().toFixed(2)} ms/step (median of 60) · ${counters.bodyCount} bodies · ` +
+  readout.textContent = `${msPerStep().toFixed(2)} ms/step (median of 60, ${buildName()}) · ` +
+    `${counters.bodyCount} bodies · ` +
     `${counters.contactCount} contacts · step ${state.steps}${state.paused ? ' · paused' : ''} · ` +
     `${state.rewinding ? 'rewinding, ' : ''}rewind ${(rewind.frames * TIME_STEP).toFixed(1)} s ` +
     `(${rewind.frames} frames, ${(rewind.bytes / (1024 * 1024)).toFixed(1)} MiB)`;
@@ -221,6 +227,7 @@ window.impulse2dPage = {
       maxMove = Math.max(maxMove, d);
     }
     return { scene: state.name, steps: state.steps, msPerStep: msPerStep(), bodyCount: counters.bodyCount,
+             simdBuild: i2d.simd, simdPath: SIMD_PATH_NAMES[state.world.simdPath()],
              jointCount: state.world.jointCount(), moved, maxMove, paused: state.paused,
              rewindFrames: state.rewind.frames, rewindBytes: state.rewind.bytes, rewinding: state.rewinding,
              ...SCENES[state.name].check(state.world, state.scene, seconds) };

@@ -61,7 +61,8 @@ typedef enum i2d_simd_path {
     I2D_SIMD_SSE2,          /**< 4 contacts at a time: every x86-64 CPU */
     I2D_SIMD_AVX2,          /**< 8 contacts at a time: x86-64 CPUs with AVX2 */
     I2D_SIMD_AVX512,        /**< 16 contacts at a time: x86-64 CPUs with AVX-512F */
-    I2D_SIMD_NEON           /**< 4 contacts at a time: every AArch64 CPU */
+    I2D_SIMD_NEON,          /**< 4 contacts at a time: every AArch64 CPU */
+    I2D_SIMD_WASM128        /**< 4 contacts at a time: WebAssembly SIMD (the JavaScript package's SIMD module) */
 } i2d_simd_path;
 
 /** Most worlds alive at once; creating and destroying them is unlimited. */

@@ -537,7 +537,7 @@ I2D_TEST(api_errors_world_def_bad_values) {
     }
     /* Every path this machine supports is accepted; one it does not is refused. */
     static const i2d_simd_path paths[] = {I2D_SIMD_AUTOMATIC, I2D_SIMD_SCALAR, I2D_SIMD_SSE2, I2D_SIMD_AVX2,
-                                          I2D_SIMD_AVX512,    I2D_SIMD_NEON};
+                                          I2D_SIMD_AVX512,    I2D_SIMD_NEON, I2D_SIMD_WASM128};
     for (size_t i = 0; i < sizeof paths / sizeof paths[0]; ++i) {
         i2d_world_def def = i2d_default_world_def();
         def.simd_path = paths[i];

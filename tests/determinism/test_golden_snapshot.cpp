@@ -117,7 +117,7 @@ I2D_TEST(det_golden_snapshot_restored_in_place_reaches_the_golden_hash) {
 I2D_TEST(det_golden_snapshot_reaches_the_golden_hash_on_every_simd_path_and_worker_count) {
     const Golden& g = golden();
     I2D_REQUIRE(g.ok);
-    const i2d_simd_path paths[] = {I2D_SIMD_SCALAR, I2D_SIMD_SSE2, I2D_SIMD_AVX2, I2D_SIMD_AVX512, I2D_SIMD_NEON};
+    const i2d_simd_path paths[] = {I2D_SIMD_SCALAR, I2D_SIMD_SSE2, I2D_SIMD_AVX2, I2D_SIMD_AVX512, I2D_SIMD_NEON, I2D_SIMD_WASM128};
     for (const i2d_simd_path path : paths) {
         if (!i2d_simd_path_supported(path)) {
             continue;

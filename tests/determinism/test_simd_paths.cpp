@@ -49,9 +49,10 @@ std::vector<uint64_t> run(i2d_simd_path path, det::Scene scene = det::mixed_scen
 void check_every_path(det::Scene scene) {
     const std::vector<uint64_t> scalar = run(I2D_SIMD_SCALAR, scene);
     I2D_REQUIRE(scalar.size() == steps / hash_every);
-    const i2d_simd_path paths[] = {I2D_SIMD_SSE2, I2D_SIMD_AVX2, I2D_SIMD_AVX512, I2D_SIMD_NEON, I2D_SIMD_AUTOMATIC};
-    const char* names[] = {"sse2", "avx2", "avx512", "neon", "automatic"};
-    for (int p = 0; p < 5; ++p) {
+    const i2d_simd_path paths[] = {I2D_SIMD_SSE2, I2D_SIMD_AVX2,    I2D_SIMD_AVX512,
+                                   I2D_SIMD_NEON, I2D_SIMD_WASM128, I2D_SIMD_AUTOMATIC};
+    const char* names[] = {"sse2", "avx2", "avx512", "neon", "wasm128", "automatic"};
+    for (size_t p = 0; p < sizeof paths / sizeof paths[0]; ++p) {
         if (!i2d_simd_path_supported(paths[p])) {
             fprintf(stderr, "    %s: not supported on this machine, skipped\n", names[p]);
             continue;
@@ -110,7 +111,8 @@ I2D_TEST(det_same_path_twice_gives_the_same_bits) {
 }
 
 I2D_TEST(det_world_reports_the_path_it_uses) {
-    const i2d_simd_path paths[] = {I2D_SIMD_SCALAR, I2D_SIMD_SSE2, I2D_SIMD_AVX2, I2D_SIMD_AVX512, I2D_SIMD_NEON};
+    const i2d_simd_path paths[] = {I2D_SIMD_SCALAR, I2D_SIMD_SSE2, I2D_SIMD_AVX2,
+                                   I2D_SIMD_AVX512, I2D_SIMD_NEON, I2D_SIMD_WASM128};
     for (const i2d_simd_path path : paths) {
         i2d_world_def def = i2d_default_world_def();
         def.simd_path = path;

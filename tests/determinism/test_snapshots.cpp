@@ -120,7 +120,7 @@ I2D_TEST(det_snapshot_made_into_a_new_world_goes_on_as_the_saved_world) {
 // The host's wiring is not in the snapshot, and does not change the bits.
 I2D_TEST(det_snapshot_goes_on_alike_with_other_workers_and_simd_paths) {
     const Reference& ref = reference();
-    const i2d_simd_path paths[] = {I2D_SIMD_SCALAR, I2D_SIMD_SSE2, I2D_SIMD_AVX2, I2D_SIMD_AVX512, I2D_SIMD_NEON};
+    const i2d_simd_path paths[] = {I2D_SIMD_SCALAR, I2D_SIMD_SSE2, I2D_SIMD_AVX2, I2D_SIMD_AVX512, I2D_SIMD_NEON, I2D_SIMD_WASM128};
     for (const i2d_simd_path path : paths) {
         if (!i2d_simd_path_supported(path)) {
             continue;

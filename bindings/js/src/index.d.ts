@@ -29,7 +29,14 @@ export interface WorldOptions {
    *  every call on the world are in it, and the other defaults are scaled to it
    *  (i2d_default_world_def_in_units). */
   lengthUnitsPerMeter?: number;
+  /** The contact kernels (default 'automatic': 'wasm128' in the SIMD build, else
+   *  'scalar'); every path gives the same bits. One the build lacks is refused. */
+  simdPath?: SimdPathName | number;
 }
+
+/** i2d_simd_path's names, in its order. */
+export type SimdPathName = 'automatic' | 'scalar' | 'sse2' | 'avx2' | 'avx512' | 'neon' | 'wasm128';
+export const SIMD_PATH_NAMES: readonly SimdPathName[];
 
 /** A world's settings (i2d_world_def), lengths in its units. */
 export interface WorldSettings {
@@ -49,6 +56,7 @@ export interface WorldSettings {
   enableContinuous: boolean;
   hitEventThreshold: number;
   lengthUnitsPerMeter: number;
+  simdPath: SimdPathName;
 }
 
 /** kg, centre of mass in the body frame, kg m^2 about it. */
@@ -694,6 +702,8 @@ export class World {
 export class Impulse2d {
   /** (major << 16) | (minor << 8) | patch */
   readonly version: number;
+  /** Whether this is the WebAssembly SIMD build (4-lane contact kernels, 'wasm128'). */
+  readonly simd: boolean;
   createWorld(options?: WorldOptions): World;
   /** Steps the worlds in one call, each as world.step would; a bad one throws and none moves. */
   stepWorlds(worlds: Iterable<World>, timeStep?: number, substeps?: number): void;
@@ -711,4 +721,11 @@ export class Impulse2d {
   shapeDistance(a: DistanceShape, b: DistanceShape): DistanceResult;
 }
 
-export function loadImpulse2d(options?: { wasmBinary?: ArrayBuffer | Uint8Array; wasmUrl?: string | URL }): Promise<Impulse2d>;
+/** Loads the SIMD build where the engine has WebAssembly SIMD, else the scalar one;
+ *  simd: true or false forces one (true throws without SIMD). wasmBinary and wasmUrl
+ *  must be the chosen build's. */
+export function loadImpulse2d(options?: {
+  wasmBinary?: ArrayBuffer | Uint8Array; wasmUrl?: string | URL; simd?: 'auto' | boolean;
+}): Promise<Impulse2d>;
+/** Whether this JavaScript engine runs WebAssembly SIMD modules. */
+export function wasmSimdSupported(): boolean;

@@ -3,7 +3,6 @@
 // Shape and Joint classes. Load once, then make worlds:
 //   const i2d = await loadImpulse2d();
 //   const world = i2d.createWorld({ gravity: [0, -10] });
-import createImpulse2dModule from '../dist/impulse2d_wasm.mjs';
 import { Runtime } from './runtime.js';
 import { stepWorlds } from './batch.js';
 import { clipVector, defaultCharacterDef, solvePlanes } from './mover.js';
@@ -11,7 +10,7 @@ import { readWorldDef, World } from './world.js';
 import { vx, vy } from './vectors.js';
 
 export { Impulse2dError } from './errors.js';
-export { World } from './world.js';
+export { SIMD_PATH_NAMES, World } from './world.js';
 export { BodyMoves } from './body_moves.js';
 export { Body } from './body.js';
 export { Shape } from './shape.js';
@@ -20,26 +19,55 @@ export {
   Joint, RevoluteJoint, PrismaticJoint, DistanceJoint, WeldJoint, WheelJoint, MotorJoint, MouseJoint, FilterJoint,
 } from './joint.js';
 
+// The smallest module that uses a SIMD instruction (i8x16.splat, i8x16.popcnt): engines
+// that validate it run the SIMD build.
+const SIMD_PROBE = new Uint8Array([0, 97, 115, 109, 1, 0, 0, 0, 1, 5, 1, 96, 0, 1, 123, 3, 2, 1, 0, 10, 10, 1, 8,
+                                   0, 65, 0, 253, 15, 253, 98, 11]);
+
+/** Whether this JavaScript engine runs WebAssembly SIMD (128-bit) modules. */
+export function wasmSimdSupported() {
+  return typeof WebAssembly === 'object' && WebAssembly.validate(SIMD_PROBE);
+}
+
+/** The module's base name in dist/ for `simd` ('auto', true or false). */
+function moduleName(simd) {
+  if (simd !== 'auto' && typeof simd !== 'boolean') {
+    throw new TypeError(`impulse2d: simd is ${String(simd)}; it must be 'auto', true or false`);
+  }
+  const useSimd = simd === 'auto' ? wasmSimdSupported() : simd;
+  if (useSimd && !wasmSimdSupported()) {
+    throw new Error('impulse2d: simd: true, but this JavaScript engine has no WebAssembly SIMD');
+  }
+  return useSimd ? 'impulse2d_wasm_simd' : 'impulse2d_wasm';
+}
+
 /**
- * Instantiates the module. In node the .wasm is read from the package (or `wasmBinary`);
- * in a page it is fetched next to the loader (or from `wasmUrl`).
+ * Instantiates the module: the SIMD build (4-lane contact kernels) where the engine has
+ * WebAssembly SIMD, else the scalar one; both give the same bits. `simd` forces one
+ * (true, false; default 'auto'). In node the .wasm is read from the package (or
+ * `wasmBinary`, which must be the chosen build's); in a page it is fetched next to the
+ * loader (or from `wasmUrl`).
  */
 export async function loadImpulse2d(options = {}) {
-  let { wasmBinary, wasmUrl } = options;
-  const url = wasmUrl ?? new URL('../dist/impulse2d_wasm.wasm', import.meta.url);
+  let { wasmBinary, wasmUrl, simd = 'auto' } = options;
+  const name = moduleName(simd);
+  const { default: createImpulse2dModule } = await import(`../dist/${name}.mjs`);
+  const url = wasmUrl ?? new URL(`../dist/${name}.wasm`, import.meta.url);
   if (wasmBinary === undefined && typeof process === 'object' && process.versions?.node) {
     const { readFile } = await import('node:fs/promises');
     wasmBinary = await readFile(url);
   }
   const module = await createImpulse2dModule(wasmBinary !== undefined ? { wasmBinary }
                                                                       : { locateFile: () => String(url) });
-  return new Impulse2d(new Runtime(module));
+  return new Impulse2d(new Runtime(module), name === 'impulse2d_wasm_simd');
 }
 
 export class Impulse2d {
   /** @internal */
-  constructor(rt) {
+  constructor(rt, simd) {
     this.rt = rt;
+    /** Whether this is the WebAssembly SIMD build (worlds solve on I2D_SIMD_WASM128). */
+    this.simd = simd;
   }
 
   /** The library's version packed as (major << 16) | (minor << 8) | patch. */

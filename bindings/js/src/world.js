@@ -11,6 +11,10 @@ import { Shape } from './shape.js';
 import { rememberStructure, saveBytes, structureOf, withBytesInModule } from './snapshot.js';
 import { vx, vy } from './vectors.js';
 
+/** i2d_simd_path's values by name, in order: createWorld's simdPath takes a name or the
+ *  number. A path this build cannot run ('sse2' in WebAssembly) is refused. */
+export const SIMD_PATH_NAMES = Object.freeze(['automatic', 'scalar', 'sse2', 'avx2', 'avx512', 'neon', 'wasm128']);
+
 export class World {
   /** @internal Made by Impulse2d.createWorld and World.fromSnapshot. */
   constructor(rt, id) {
@@ -47,8 +51,8 @@ export class World {
    * bit for bit as the saved world would. Bytes that takeSnapshot returned bring new
    * Body, Shape and Joint objects for what the saved world held (same indices, userData
    * copied); other bytes (a file, another process) leave the world without objects.
-   * WebAssembly has no host wiring to choose (one thread, scalar kernels), so there are
-   * no options. A refused buffer throws I2D_ERR_INVALID_SNAPSHOT with the library's message.
+   * WebAssembly has no host wiring to choose (one thread, the module's widest kernels),
+   * so there are no options. A refused buffer throws I2D_ERR_INVALID_SNAPSHOT with the library's message.
    */
   static fromSnapshot(impulse2d, bytes) {
     const rt = impulse2d.rt;
@@ -304,7 +308,9 @@ export class World {
     return BigInt.asUintN(64, hash);
   }
 
-  /** The SIMD path solving contacts: 1 (scalar) in WebAssembly. */
+  /** The SIMD path solving contacts, as i2d_simd_path numbers it: 6 (wasm128) in the SIMD
+   *  build unless the world asked for 'scalar', 1 in the scalar build. SIMD_PATH_NAMES[path]
+   *  names it. */
   simdPath() { return this.rt.m._i2d_world_get_simd_path(this.id); }
 
   /**
@@ -523,6 +529,13 @@ function writeWorldDef(rt, def, options) {
     f[(def + rt.field('i2d_world_def.restitution_threshold')) >> 2] = options.restitutionThreshold;
   }
   if (options.enableSleep !== undefined) rt.u8[def + rt.field('i2d_world_def.enable_sleep')] = options.enableSleep ? 1 : 0;
+  if (options.simdPath !== undefined) {
+    const path = typeof options.simdPath === 'string' ? SIMD_PATH_NAMES.indexOf(options.simdPath) : options.simdPath;
+    if (!Number.isInteger(path) || path < 0) {
+      throw new TypeError(`simdPath is ${String(options.simdPath)}; it must be one of ${SIMD_PATH_NAMES.join(', ')}`);
+    }
+    rt.i32[(def + rt.field('i2d_world_def.simd_path')) >> 2] = path;
+  }
 }
 
 /** @internal An i2d_world_def at `at` as the settings object World.settings gives. */
@@ -547,6 +560,7 @@ export function readWorldDef(rt, at) {
     enableContinuous: flag('enable_continuous'),
     hitEventThreshold: float('hit_event_threshold'),
     lengthUnitsPerMeter: float('length_units_per_meter'),
+    simdPath: SIMD_PATH_NAMES[rt.i32[field('simd_path') >> 2]],
   };
 }
 

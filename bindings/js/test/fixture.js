@@ -4,11 +4,15 @@
 import assert from 'node:assert/strict';
 import { Impulse2dError, loadImpulse2d } from '../src/index.js';
 
+/** The build loadImpulse2d chooses here (the SIMD one on node >= 16). */
 export const i2d = await loadImpulse2d();
+/** Both builds, for the tests that compare them: every test file loads each at most once. */
+export const scalarBuild = await loadImpulse2d({ simd: false });
+export const simdBuild = await loadImpulse2d({ simd: true });
 
 /** A world whose ground box (half 20 x 1) has its top face at y = 0. */
-export function groundedWorld(options) {
-  const world = i2d.createWorld(options);
+export function groundedWorld(options, build = i2d) {
+  const world = build.createWorld(options);
   const ground = world.createBody({ position: [0, -1] });
   ground.createBox(20, 1);
   return { world, ground };

@@ -1,13 +1,14 @@
 // SPDX-License-Identifier: MIT
 // The golden snapshot saved by the native x86-64 build (tests/determinism/data, written by
 // tests/determinism/make_golden_snapshot.c) goes on in WebAssembly to the state hash
-// recorded beside it: the same bits on the scalar kernels as on the native SIMD ones. The
-// native suite checks the same file on x86-64 and AArch64 (test_golden_snapshot.cpp).
+// recorded beside it, in the scalar build and in the SIMD one: the same bits on the scalar
+// and the WebAssembly SIMD kernels as on the native SIMD ones. The native suite checks the
+// same file on x86-64 and AArch64 (test_golden_snapshot.cpp).
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
-import { World } from '../src/index.js';
-import { i2d, groundedWorld } from './fixture.js';
+import { SIMD_PATH_NAMES, World } from '../src/index.js';
+import { groundedWorld, scalarBuild, simdBuild } from './fixture.js';
 
 const DATA = new URL('../../../tests/determinism/data/', import.meta.url);
 const bytes = readFileSync(new URL('golden_snapshot.bin', DATA));
@@ -34,22 +35,24 @@ test('the golden file is what its record says', () => {
   assert.ok(golden.steps > 0);
 });
 
-test('the natively saved golden snapshot, made a world in wasm, reaches the recorded hash', () => {
-  const world = World.fromSnapshot(i2d, bytes);
-  assert.equal(world.simdPath(), 1);  // scalar kernels, whatever path saved it
-  stepOn(world);
-  world.destroy();
-});
+for (const [build, i2d, path] of [['scalar build', scalarBuild, 'scalar'], ['SIMD build', simdBuild, 'wasm128']]) {
+  test(`${build}: the natively saved golden snapshot, made a world in wasm, reaches the recorded hash`, () => {
+    const world = World.fromSnapshot(i2d, bytes);
+    assert.equal(SIMD_PATH_NAMES[world.simdPath()], path);  // whatever path saved it
+    stepOn(world);
+    world.destroy();
+  });
 
-test('restored in place, into a stepped world and an empty one, it reaches the recorded hash', () => {
-  const { world } = groundedWorld();
-  world.createBody({ type: 'dynamic', position: [0, 3] }).createCircle(0.5);
-  for (let s = 0; s < 20; s++) world.step(1 / 60, 4);
-  world.restoreSnapshot(bytes);
-  stepOn(world);
-  world.destroy();
-  const empty = i2d.createWorld();
-  empty.restoreSnapshot(bytes);
-  stepOn(empty);
-  empty.destroy();
-});
+  test(`${build}: restored in place, into a stepped world and an empty one, it reaches the recorded hash`, () => {
+    const { world } = groundedWorld(undefined, i2d);
+    world.createBody({ type: 'dynamic', position: [0, 3] }).createCircle(0.5);
+    for (let s = 0; s < 20; s++) world.step(1 / 60, 4);
+    world.restoreSnapshot(bytes);
+    stepOn(world);
+    world.destroy();
+    const empty = i2d.createWorld();
+    empty.restoreSnapshot(bytes);
+    stepOn(empty);
+    empty.destroy();
+  });
+}

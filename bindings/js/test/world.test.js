@@ -3,16 +3,18 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
+import { SIMD_PATH_NAMES } from '../src/index.js';
 import { i2d, groundedWorld, stepSeconds } from './fixture.js';
 
 // The package and the library it wraps carry one version.
 const packageVersion = JSON.parse(readFileSync(new URL('../package.json', import.meta.url))).version;
 
-test('the module reports the library version and solves contacts on the scalar path', () => {
+test('the module reports the library version and solves contacts on its widest path', () => {
   const [major, minor, patch] = packageVersion.split('.').map(Number);
   assert.equal(i2d.version, (major << 16) | (minor << 8) | patch);
   const world = i2d.createWorld();
-  assert.equal(world.simdPath(), 1);
+  assert.equal(SIMD_PATH_NAMES[world.simdPath()], i2d.simd ? 'wasm128' : 'scalar');
+  assert.equal(world.settings().simdPath, 'automatic');
   world.destroy();
 });
 

@@ -101,5 +101,7 @@ const ContactKernels* avx2_contact_kernels();
 const ContactKernels* avx512_contact_kernels();
 /// 4 lanes in NEON; null unless the library was built for AArch64 (where NEON is always there).
 const ContactKernels* neon_contact_kernels();
+/// 4 lanes in WebAssembly SIMD; null unless the library was built for wasm with -msimd128.
+const ContactKernels* wasm128_contact_kernels();
 
 }  // namespace i2d

@@ -15,6 +15,7 @@ bool simd_path_supported(SimdPath path) {
         case SimdPath::avx2: return avx2_contact_kernels() != nullptr && cpu_has_avx2();
         case SimdPath::avx512: return avx512_contact_kernels() != nullptr && cpu_has_avx512f();
         case SimdPath::neon: return neon_contact_kernels() != nullptr;
+        case SimdPath::wasm128: return wasm128_contact_kernels() != nullptr;
         case SimdPath::count: break;
     }
     return false;
@@ -30,6 +31,9 @@ SimdPath widest_simd_path() {
     if (simd_path_supported(SimdPath::neon)) {
         return SimdPath::neon;
     }
+    if (simd_path_supported(SimdPath::wasm128)) {
+        return SimdPath::wasm128;
+    }
     return simd_path_supported(SimdPath::sse2) ? SimdPath::sse2 : SimdPath::scalar;
 }
 
@@ -39,6 +43,7 @@ const ContactKernels& contact_kernels_for(SimdPath path) {
         case SimdPath::avx2: return *avx2_contact_kernels();
         case SimdPath::avx512: return *avx512_contact_kernels();
         case SimdPath::neon: return *neon_contact_kernels();
+        case SimdPath::wasm128: return *wasm128_contact_kernels();
         default: return scalar_contact_kernels();
     }
 }

@@ -10,7 +10,7 @@ namespace i2d {
 
 struct ContactKernels;
 
-enum class SimdPath : uint8_t { automatic, scalar, sse2, avx2, avx512, neon, count };
+enum class SimdPath : uint8_t { automatic, scalar, sse2, avx2, avx512, neon, wasm128, count };
 
 /// Whether this build and this CPU can run the path (automatic always can).
 bool simd_path_supported(SimdPath path);
