@@ -190,9 +190,20 @@ async function matterEngine() {
   };
 }
 
+// Each engine's name and its loader, so that only the engines asked for are loaded.
+const ENGINES = [
+  ['impulse2d.wasm SIMD', () => impulse2dEngine(true)],
+  ['impulse2d.wasm scalar', () => impulse2dEngine(false)],
+  ['Rapier2D', () => rapierEngine(RAPIER_PLAIN, '')],
+  ['Rapier2D SIMD', () => rapierEngine(RAPIER_SIMD, 'SIMD ')],
+  ['planck', planckEngine],
+  ['matter-js', matterEngine],
+];
+
 /** The engines whose names contain one of `only`'s words (all of them without). */
 export async function loadEngines(only = []) {
-  const engines = [await impulse2dEngine(true), await impulse2dEngine(false), await rapierEngine(RAPIER_PLAIN, ''),
-                   await rapierEngine(RAPIER_SIMD, 'SIMD '), await planckEngine(), await matterEngine()];
-  return only.length === 0 ? engines : engines.filter((engine) => only.some((word) => engine.name.includes(word)));
+  const wanted = ENGINES.filter(([name]) => only.length === 0 || only.some((word) => name.includes(word)));
+  const engines = [];
+  for (const [, load] of wanted) engines.push(await load());
+  return engines;
 }

@@ -46,7 +46,7 @@ link_module() {
   # -sFILESYSTEM=0: the library does no I/O.
   # -sALLOW_TABLE_GROWTH with addFunction and removeFunction: the contact hooks are JS
   # functions the library calls through its function table (World.setPreSolve).
-  emcc -O3 "$library" -o "$dist/$name.mjs" \
+  emcc -O3 -flto "$library" -o "$dist/$name.mjs" \
     -sMODULARIZE=1 -sEXPORT_ES6=1 -sEXPORT_NAME=createImpulse2dModule \
     -sENVIRONMENT=web -sWASM_BIGINT=1 -sALLOW_MEMORY_GROWTH=1 -sINITIAL_MEMORY=16MB \
     -sFILESYSTEM=0 -sTOTAL_STACK=1MB -sALLOW_TABLE_GROWTH=1 \
@@ -56,8 +56,11 @@ link_module() {
   echo "built $dist/$name.mjs and $dist/$name.wasm ($(stat -c %s "$dist/$name.wasm") bytes)"
 }
 
+# -flto: link-time optimisation inlines across the library's files, a few per cent faster
+# in wasm (large_pyramid 4.24 -> 3.98 ms a step in node); the bits are unchanged (no
+# contraction, no fast-math: the node tests compare the hashes).
 mkdir -p "$dist"
-build_library "$build" ""
+build_library "$build" "-flto"
 link_module "$build/capi/libimpulse2d.a" impulse2d_wasm
-build_library "$build/simd" "-msimd128"
+build_library "$build/simd" "-msimd128 -flto"
 link_module "$build/simd/capi/libimpulse2d.a" impulse2d_wasm_simd
