@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// impulse2d.wasm (SIMD and scalar builds) side by side with Rapier2D (plain and SIMD
+// impulse2d.wasm (SIMD, scalar and threads builds) side by side with Rapier2D (plain and SIMD
 // builds), planck and matter-js in node: the same scenes built by the same code, engines
 // alternating within each round, a new world per run, the first step untimed (as
 // scenes.md times), median ms per step over the rounds and each run's sanity figure. With
@@ -104,6 +104,10 @@ for (const [key, entry] of results) {
 }
 if (SCENES.some((scene) => scene.name === 'tumbler')) {
   console.log(`\ntumbler's drum: ${engines.map((engine) => `${engine.name} ${engine.drumDrive}`).join('; ')}`);
+}
+const threaded = ['1 worker', '2 workers'].map((w) => results.get(`large_pyramid|impulse2d.wasm threads ${w}`));
+if (threaded[0] && threaded[1]) {
+  console.log(`large_pyramid wasm threads, 1 worker / 2 workers: ${(median(threaded[0].ms) / median(threaded[1].ms)).toFixed(2)}x`);
 }
 for (const build of ['SIMD', 'scalar']) {
   const wasm = results.get(`large_pyramid|impulse2d.wasm ${build}`);

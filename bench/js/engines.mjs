@@ -4,7 +4,8 @@
 // position and angle (metres and radians, y up, counter-clockwise).
 // Each engine runs at its own recommended settings for 60 Hz:
 //   impulse2d  1/60 s, 4 substeps (as Box2D v3's benchmark); its SIMD build (4-lane
-//              WebAssembly SIMD kernels) and its scalar build
+//              WebAssembly SIMD kernels), its scalar build, and its threads build (SIMD
+//              kernels) on 1 and 2 workers
 //   Rapier2D   1/60 s, its defaults (4 solver iterations, 1 internal PGS iteration); its
 //              plain build and its SIMD build (@dimforge/rapier2d-simd-compat)
 //   planck     1/60 s, 8 velocity and 3 position iterations (Box2D 2.x's defaults)
@@ -26,14 +27,17 @@ const FRICTION = 0.6;
 // motor of 1e8 N m.
 const RAPIER_MOTOR_FACTOR = 1e4;
 
-async function impulse2dEngine(simd) {
-  const i2d = await loadImpulse2d({ simd });
+// The threads build is loaded once, for both of its worker counts.
+let threadsBuild = null;
+
+async function impulse2dEngine(name, { simd = true, threads = false, workerCount = 1 } = {}) {
+  const i2d = threads ? (threadsBuild ??= await loadImpulse2d({ threads: true })) : await loadImpulse2d({ simd });
   const drumDrive = 'revolute motor';
   return {
-    name: simd ? 'impulse2d.wasm SIMD' : 'impulse2d.wasm scalar',
+    name,
     drumDrive,
     createWorld({ sleep }) {
-      const world = i2d.createWorld({ gravity: [0, -10], enableSleep: sleep });
+      const world = i2d.createWorld({ gravity: [0, -10], enableSleep: sleep, workerCount });
       return {
         staticBox(x, y, hw, hh) { world.createBody({ position: [x, y] }).createBox(hw, hh, { friction: FRICTION }); },
         box(x, y, hw, hh) {
@@ -192,8 +196,10 @@ async function matterEngine() {
 
 // Each engine's name and its loader, so that only the engines asked for are loaded.
 const ENGINES = [
-  ['impulse2d.wasm SIMD', () => impulse2dEngine(true)],
-  ['impulse2d.wasm scalar', () => impulse2dEngine(false)],
+  ['impulse2d.wasm SIMD', (name) => impulse2dEngine(name)],
+  ['impulse2d.wasm scalar', (name) => impulse2dEngine(name, { simd: false })],
+  ['impulse2d.wasm threads 1 worker', (name) => impulse2dEngine(name, { threads: true })],
+  ['impulse2d.wasm threads 2 workers', (name) => impulse2dEngine(name, { threads: true, workerCount: 2 })],
   ['Rapier2D', () => rapierEngine(RAPIER_PLAIN, '')],
   ['Rapier2D SIMD', () => rapierEngine(RAPIER_SIMD, 'SIMD ')],
   ['planck', planckEngine],
@@ -204,6 +210,6 @@ const ENGINES = [
 export async function loadEngines(only = []) {
   const wanted = ENGINES.filter(([name]) => only.length === 0 || only.some((word) => name.includes(word)));
   const engines = [];
-  for (const [, load] of wanted) engines.push(await load());
+  for (const [name, load] of wanted) engines.push(await load(name));
   return engines;
 }

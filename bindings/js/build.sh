@@ -5,6 +5,13 @@
 #   dist/impulse2d_wasm_simd.{mjs,wasm}  built with -msimd128: the 4-lane WebAssembly SIMD
 #                                        kernels, for engines with SIMD (all current
 #                                        browsers and node >= 16), giving the same bits.
+#   dist/threads/impulse2d_wasm_threads.{js,wasm,worker.js}
+#                                        SIMD and -pthread: worlds with worker_count > 1
+#                                        step on Web Workers over shared memory (node, and
+#                                        pages that are cross-origin isolated). A classic
+#                                        script, not an ES module: emscripten 3.1.6's
+#                                        threads need require() in node and importScripts
+#                                        in its workers.
 # Each .mjs is an ES-module loader; src/index.js picks the module. Needs no network:
 # Debian ships emscripten's system libraries built.
 #   bindings/js/build.sh [build-dir]     (default: build-wasm at the repository root;
@@ -30,9 +37,11 @@ build_library() {
   cmake --build "$1" -j2 --target impulse2d
 }
 
-# link_module LIBRARY NAME: links LIBRARY into dist/NAME.mjs and dist/NAME.wasm.
+# link_module LIBRARY OUTPUT [EXTRA_FLAGS...]: links LIBRARY into dist/OUTPUT (the loader)
+# and the .wasm beside it.
 link_module() {
-  local library="$1" name="$2"
+  local library="$1" output="$2"
+  shift 2
   # Export every public i2d_ function of the library (the same set the shared library's
   # version script lets out), plus malloc and free for the binding's scratch memory. The
   # binding reads the struct layouts from the library itself (i2d_get_field_infos).
@@ -41,26 +50,41 @@ link_module() {
   [ -n "$exports" ] || { echo "build.sh: no i2d_ symbols found in $library" >&2; exit 1; }
   # -sWASM_BIGINT: 64-bit ids cross as BigInt instead of split halves.
   # -sALLOW_MEMORY_GROWTH: worlds grow; the binding re-reads the heap after every call.
-  # -sENVIRONMENT=web: the loader then needs neither require nor __dirname, which an ES
-  # module lacks in node; the binding hands node the .wasm bytes itself (wasmBinary).
   # -sFILESYSTEM=0: the library does no I/O.
   # -sALLOW_TABLE_GROWTH with addFunction and removeFunction: the contact hooks are JS
   # functions the library calls through its function table (World.setPreSolve).
-  emcc -O3 -flto "$library" -o "$dist/$name.mjs" \
-    -sMODULARIZE=1 -sEXPORT_ES6=1 -sEXPORT_NAME=createImpulse2dModule \
-    -sENVIRONMENT=web -sWASM_BIGINT=1 -sALLOW_MEMORY_GROWTH=1 -sINITIAL_MEMORY=16MB \
+  emcc -O3 -flto "$library" -o "$dist/$output" -sMODULARIZE=1 -sEXPORT_NAME=createImpulse2dModule \
+    -sWASM_BIGINT=1 -sALLOW_MEMORY_GROWTH=1 -sINITIAL_MEMORY=16MB \
     -sFILESYSTEM=0 -sTOTAL_STACK=1MB -sALLOW_TABLE_GROWTH=1 \
     -sEXPORTED_FUNCTIONS="[${exports}\"_malloc\",\"_free\"]" \
     -sEXPORTED_RUNTIME_METHODS='["UTF8ToString","addFunction","removeFunction"]' \
-    -sINCOMING_MODULE_JS_API='["wasmBinary","instantiateWasm","print","printErr","locateFile"]'
-  echo "built $dist/$name.mjs and $dist/$name.wasm ($(stat -c %s "$dist/$name.wasm") bytes)"
+    -sINCOMING_MODULE_JS_API='["wasmBinary","instantiateWasm","print","printErr","locateFile","mainScriptUrlOrBlob"]' \
+    "$@"
+  local wasm="$dist/${output%.*}.wasm"
+  echo "built $dist/$output and $wasm ($(stat -c %s "$wasm") bytes)"
 }
+
+# The single-threaded builds are ES modules for the web: -sENVIRONMENT=web needs neither
+# require nor __dirname, which an ES module lacks in node; the binding hands node the
+# .wasm bytes itself (wasmBinary).
+single_threaded=(-sEXPORT_ES6=1 -sENVIRONMENT=web)
+# The threaded build keeps up to THREAD_POOL_SIZE workers started with the module
+# (a page cannot start one while the step waits for it), so a world has at most
+# THREAD_POOL_SIZE + 1 workers; the binding hands them out.
+THREAD_POOL_SIZE=3
+threaded=(-pthread -sENVIRONMENT=web,worker,node -sPTHREAD_POOL_SIZE=$THREAD_POOL_SIZE)
 
 # -flto: link-time optimisation inlines across the library's files, a few per cent faster
 # in wasm (large_pyramid 4.24 -> 3.98 ms a step in node); the bits are unchanged (no
 # contraction, no fast-math: the node tests compare the hashes).
 mkdir -p "$dist"
 build_library "$build" "-flto"
-link_module "$build/capi/libimpulse2d.a" impulse2d_wasm
+link_module "$build/capi/libimpulse2d.a" impulse2d_wasm.mjs "${single_threaded[@]}"
 build_library "$build/simd" "-msimd128 -flto"
-link_module "$build/simd/capi/libimpulse2d.a" impulse2d_wasm_simd
+link_module "$build/simd/capi/libimpulse2d.a" impulse2d_wasm_simd.mjs "${single_threaded[@]}"
+build_library "$build/threads" "-msimd128 -pthread -flto"
+# In dist/threads/ with a package.json of its own: the package's "type": "module" would
+# make node read the loader and its worker script as ES modules.
+mkdir -p "$dist/threads"
+echo '{ "type": "commonjs" }' > "$dist/threads/package.json"
+link_module "$build/threads/capi/libimpulse2d.a" threads/impulse2d_wasm_threads.js "${threaded[@]}"

@@ -110,6 +110,11 @@ async function click(ctx, point) {
 }
 
 /** What each scene must show after its live seconds (state: impulse2dPage.state()). */
+/** Loads the tumbler, steps it TUMBLER_STEPS times at once (no frame between) and gives its hash. */
+const TUMBLER_STEPS = 120;
+const TUMBLER_HASH = `(() => { impulse2dPage.loadScene('tumbler'); impulse2dPage.runSteps(${TUMBLER_STEPS}); ` +
+                     'return impulse2dPage.hash(); })()';
+
 const SCENE_CHECKS = {
   pyramid: (state) => {
     expect(state.bodyCount > 100 && state.moved > 0, `pyramid: ${state.moved} of ${state.bodyCount} bodies moved`);
@@ -341,11 +346,14 @@ try {
     if (exceptionDetails) throw new Error(`${expression}: ${exceptionDetails.exception?.description ?? exceptionDetails.text}`);
     return result.value;
   };
-  const deadline = Date.now() + 30000;
-  while (!(await evaluate("document.body?.dataset.ready === 'true'"))) {
-    if (Date.now() > deadline || consoleErrors.length) throw new Error(`page not ready: ${consoleErrors.join('; ')}`);
-    await wait(100);
-  }
+  const waitReady = async () => {
+    const deadline = Date.now() + 30000;
+    while (!(await evaluate("document.body?.dataset.ready === 'true'"))) {
+      if (Date.now() > deadline || consoleErrors.length) throw new Error(`page not ready: ${consoleErrors.join('; ')}`);
+      await wait(100);
+    }
+  };
+  await waitReady();
   const scenes = await evaluate('impulse2dPage.scenes');
   expect(JSON.stringify(scenes) === JSON.stringify(SCENES), `the picker offers ${scenes.join(', ')}`);
   mkdirSync(OUT, { recursive: true });
@@ -357,12 +365,17 @@ try {
   };
   const ctx = { page, evaluate, screenshot };
 
-  // Chromium has WebAssembly SIMD: the page must have loaded the SIMD build and say so.
+  // Chromium has WebAssembly SIMD and threads, and serve.mjs isolates the page: it must
+  // have loaded the threads build (SIMD kernels). On this 2-core machine its scenes step
+  // on 1 worker; the end of the test asks for 2.
   const build = await evaluate('impulse2dPage.state()');
-  expect(build.simdBuild === true && build.simdPath === 'wasm128',
-         `the page runs the WebAssembly SIMD build (simd ${build.simdBuild}, path ${build.simdPath})`);
-  expect((await evaluate('impulse2dPage.readout()')).includes('wasm SIMD, wasm128 kernels'),
-         'the readout names the SIMD build and its kernels');
+  expect(build.isolated && build.threadsBuild && build.simdBuild && build.simdPath === 'wasm128',
+         `the page is cross-origin isolated and runs the threads build with SIMD kernels ` +
+         `(isolated ${build.isolated}, threads ${build.threadsBuild}, path ${build.simdPath})`);
+  const buildReadout = await evaluate('impulse2dPage.readout()');
+  expect(buildReadout.includes(`wasm threads, wasm128 kernels, ${build.workerCount} worker`),
+         `the readout names the build, its kernels and the worker count (${buildReadout})`);
+  const oneWorkerHash = await evaluate(TUMBLER_HASH);
 
   for (const scene of scenes) {
     await evaluate(`impulse2dPage.loadScene(${JSON.stringify(scene)})`);
@@ -475,6 +488,17 @@ try {
   await evaluate("document.getElementById('pause').click()");
   await wait(300);
   expect((await evaluate('impulse2dPage.state()')).steps > replayed.steps, 'running again resumes stepping');
+
+  // ?workers=2: the scenes step on 2 workers (Web Workers sharing the module's memory),
+  // to the same bits as on one.
+  await page('Page.navigate', { url: `${pageUrl}?workers=2` });
+  await waitReady();
+  const twoWorkerHash = await evaluate(TUMBLER_HASH);
+  const shared = await evaluate('impulse2dPage.state()');
+  expect(shared.workerCount === 2 && (await evaluate('impulse2dPage.readout()')).includes('2 workers'),
+         `?workers=2: the tumbler steps on ${shared.workerCount} workers and the readout says so`);
+  expect(twoWorkerHash === oneWorkerHash,
+         `the tumbler after ${TUMBLER_STEPS} steps: hash ${twoWorkerHash} on 2 workers, ${oneWorkerHash} on ${build.workerCount}`);
 
   expect(consoleErrors.length === 0, `no console errors${consoleErrors.length ? ': ' + consoleErrors.join('; ') : ''}`);
 } catch (error) {

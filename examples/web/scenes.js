@@ -116,7 +116,9 @@ export const SCENES = {
   platformer: {
     title: 'Platformer (arrows or A/D walk, Space/W/Up jump)',
     build: (world) => platformer(world),
-    worldOptions: {},
+    // Its one-way platform is a JavaScript pre-solve hook, which only a world stepped on
+    // this thread can call.
+    worldOptions: { workerCount: 1 },
     check: (world, scene) => platformerState(scene),
   },
   explosion: {

@@ -1,7 +1,9 @@
 #!/usr/bin/env node
 // SPDX-License-Identifier: MIT
 // A tiny static file server for the scene page: serves the repository (the page imports
-// the package from bindings/js), nothing from the network.
+// the package from bindings/js), nothing from the network. It makes the page cross-origin
+// isolated (the two headers below), which lets the page share memory with Web Workers
+// and so run the package's threads build.
 //   node examples/web/serve.mjs [port]     then open http://127.0.0.1:<port>/examples/web/
 import http from 'node:http';
 import { readFile, stat } from 'node:fs/promises';
@@ -27,7 +29,8 @@ export function startServer(port = 0) {
       if ((await stat(file)).isDirectory()) file = path.join(file, 'index.html');
       const body = await readFile(file);
       response.writeHead(200, { 'content-type': TYPES[path.extname(file)] ?? 'application/octet-stream',
-                                'cache-control': 'no-store' });
+                                'cache-control': 'no-store', 'cross-origin-opener-policy': 'same-origin',
+                                'cross-origin-embedder-policy': 'require-corp' });
       response.end(body);
     } catch {
       response.writeHead(404).end('not found');  // also a malformed path

@@ -26,6 +26,12 @@ export class ContactHooks {
     if (fn !== null && typeof fn !== 'function') {
       throw new TypeError(`World.${method} takes a function or null, not ${typeof fn}`);
     }
+    if (fn !== null && this.world.threads > 0) {
+      // The hooks run on the step's workers, and a Web Worker cannot call this thread's
+      // JavaScript functions.
+      throw new Error(`World.${method}: a world with ${this.world.workerCount} workers runs its hooks on Web ` +
+                      'Workers, which cannot call this function; use a world of one worker');
+    }
     const { m } = this.world.rt;
     const { signature, setter } = HOOKS[kind];
     const pointer = fn === null ? 0 : m.addFunction(this.trampoline(kind, fn), signature);

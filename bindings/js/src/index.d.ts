@@ -32,6 +32,10 @@ export interface WorldOptions {
   /** The contact kernels (default 'automatic': 'wasm128' in the SIMD build, else
    *  'scalar'); every path gives the same bits. One the build lacks is refused. */
   simdPath?: SimdPathName | number;
+  /** Workers stepping the world (default 1). Above 1 only in the threads build, whose
+   *  Impulse2d.threads workers all worlds share; such a world cannot have JavaScript
+   *  hooks. Same bits at every count. */
+  workerCount?: number;
 }
 
 /** i2d_simd_path's names, in its order. */
@@ -677,6 +681,8 @@ export class World {
   counters(): Counters;
   stateHash(): bigint;
   simdPath(): number;
+  /** Workers stepping the world (createWorld's workerCount). */
+  readonly workerCount: number;
   bodyMoves(): BodyMoves;
   contactEvents(): { begin: [Shape, Shape][]; end: [Shape | bigint, Shape | bigint][] };
   overlapAABB(minX: number, minY: number, maxX: number, maxY: number): Shape[];
@@ -702,8 +708,10 @@ export class World {
 export class Impulse2d {
   /** (major << 16) | (minor << 8) | patch */
   readonly version: number;
-  /** Whether this is the WebAssembly SIMD build (4-lane contact kernels, 'wasm128'). */
+  /** Whether this is a WebAssembly SIMD build (4-lane contact kernels, 'wasm128'). */
   readonly simd: boolean;
+  /** Worker threads the build lends worlds: 3 in the threads build, else 0. */
+  readonly threads: number;
   createWorld(options?: WorldOptions): World;
   /** Steps the worlds in one call, each as world.step would; a bad one throws and none moves. */
   stepWorlds(worlds: Iterable<World>, timeStep?: number, substeps?: number): void;
@@ -722,10 +730,14 @@ export class Impulse2d {
 }
 
 /** Loads the SIMD build where the engine has WebAssembly SIMD, else the scalar one;
- *  simd: true or false forces one (true throws without SIMD). wasmBinary and wasmUrl
- *  must be the chosen build's. */
+ *  simd: true or false forces one (true throws without SIMD); threads: true loads the
+ *  threads build. wasmBinary and wasmUrl must be the chosen build's. */
 export function loadImpulse2d(options?: {
   wasmBinary?: ArrayBuffer | Uint8Array; wasmUrl?: string | URL; simd?: 'auto' | boolean;
+  /** The threads build (default false; 'auto': where shared memory is available). */
+  threads?: 'auto' | boolean;
 }): Promise<Impulse2d>;
+/** Whether this engine can run the threads build (node, or a cross-origin isolated page). */
+export function wasmThreadsSupported(): boolean;
 /** Whether this JavaScript engine runs WebAssembly SIMD modules. */
 export function wasmSimdSupported(): boolean;

@@ -29,45 +29,104 @@ export function wasmSimdSupported() {
   return typeof WebAssembly === 'object' && WebAssembly.validate(SIMD_PROBE);
 }
 
-/** The module's base name in dist/ for `simd` ('auto', true or false). */
-function moduleName(simd) {
-  if (simd !== 'auto' && typeof simd !== 'boolean') {
-    throw new TypeError(`impulse2d: simd is ${String(simd)}; it must be 'auto', true or false`);
+/** Whether this engine can run the threads build: shared memory, and in a page cross-origin
+ *  isolation (the page's server sends Cross-Origin-Opener-Policy: same-origin and
+ *  Cross-Origin-Embedder-Policy: require-corp). */
+export function wasmThreadsSupported() {
+  const isolated = typeof crossOriginIsolated === 'undefined' || crossOriginIsolated;
+  return typeof SharedArrayBuffer === 'function' && isolated && wasmSimdSupported();
+}
+
+const isNode = typeof process === 'object' && process.versions?.node !== undefined;
+
+/** The build to load for the `simd` and `threads` options: its file names and what it has. */
+function chooseBuild(simd, threads) {
+  for (const [name, value] of [['simd', simd], ['threads', threads]]) {
+    if (value !== 'auto' && typeof value !== 'boolean') {
+      throw new TypeError(`impulse2d: ${name} is ${String(value)}; it must be 'auto', true or false`);
+    }
   }
-  const useSimd = simd === 'auto' ? wasmSimdSupported() : simd;
-  if (useSimd && !wasmSimdSupported()) {
+  if (threads === true && !wasmThreadsSupported()) {
+    throw new Error('impulse2d: threads: true, but this engine has no shared WebAssembly memory with SIMD ' +
+                    '(a page must be cross-origin isolated)');
+  }
+  if (simd === true && !wasmSimdSupported()) {
     throw new Error('impulse2d: simd: true, but this JavaScript engine has no WebAssembly SIMD');
   }
-  return useSimd ? 'impulse2d_wasm_simd' : 'impulse2d_wasm';
+  // The threads build has the SIMD kernels: it is only chosen with them.
+  if (threads === true || (threads === 'auto' && simd !== false && wasmThreadsSupported())) {
+    return { loader: 'threads/impulse2d_wasm_threads.js', wasm: 'threads/impulse2d_wasm_threads.wasm', simd: true,
+             threads: THREAD_POOL_SIZE };
+  }
+  const useSimd = simd === 'auto' ? wasmSimdSupported() : simd;
+  const name = useSimd ? 'impulse2d_wasm_simd' : 'impulse2d_wasm';
+  return { loader: `${name}.mjs`, wasm: `${name}.wasm`, simd: useSimd, threads: 0 };
+}
+
+/** The threads build's workers started with the module (build.sh's THREAD_POOL_SIZE). */
+const THREAD_POOL_SIZE = 3;
+
+/** The factory of a classic-script loader (the threads build): require in node, a script
+ *  element in a page (its workers load the same script by its URL). */
+async function loadClassicFactory(url) {
+  if (isNode) {
+    const { createRequire } = await import('node:module');
+    const { fileURLToPath } = await import('node:url');
+    return createRequire(import.meta.url)(fileURLToPath(url));
+  }
+  await new Promise((resolve, reject) => {
+    const script = document.createElement('script');
+    script.src = String(url);
+    script.onload = resolve;
+    script.onerror = () => reject(new Error(`impulse2d: could not load ${url}`));
+    document.head.appendChild(script);
+  });
+  return globalThis.createImpulse2dModule;
 }
 
 /**
- * Instantiates the module: the SIMD build (4-lane contact kernels) where the engine has
- * WebAssembly SIMD, else the scalar one; both give the same bits. `simd` forces one
- * (true, false; default 'auto'). In node the .wasm is read from the package (or
- * `wasmBinary`, which must be the chosen build's); in a page it is fetched next to the
- * loader (or from `wasmUrl`).
+ * Instantiates the module. Three builds, all giving the same bits:
+ * - SIMD (4-lane contact kernels), the default where the engine has WebAssembly SIMD;
+ * - scalar elsewhere (or with `simd: false`);
+ * - threads, with `threads: true` (or 'auto': where the engine has shared memory, that
+ *   is node and pages that are cross-origin isolated): the SIMD kernels, and worlds made
+ *   with createWorld({ workerCount: 2 }) step on Web Workers over shared memory. It
+ *   starts its 3 workers with the module; a world with more than one worker cannot have
+ *   JavaScript contact hooks (they would run on those workers).
+ * In node the .wasm is read from the package (or `wasmBinary`, which must be the chosen
+ * build's); in a page it is fetched next to the loader (or from `wasmUrl`).
  */
 export async function loadImpulse2d(options = {}) {
-  let { wasmBinary, wasmUrl, simd = 'auto' } = options;
-  const name = moduleName(simd);
-  const { default: createImpulse2dModule } = await import(`../dist/${name}.mjs`);
-  const url = wasmUrl ?? new URL(`../dist/${name}.wasm`, import.meta.url);
-  if (wasmBinary === undefined && typeof process === 'object' && process.versions?.node) {
+  let { wasmBinary } = options;
+  const { wasmUrl, simd = 'auto', threads = false } = options;
+  const build = chooseBuild(simd, threads);
+  const loaderUrl = new URL(`../dist/${build.loader}`, import.meta.url);
+  const createImpulse2dModule = build.threads > 0 ? await loadClassicFactory(loaderUrl)
+                                                   : (await import(loaderUrl)).default;
+  const url = wasmUrl ?? new URL(`../dist/${build.wasm}`, import.meta.url);
+  if (wasmBinary === undefined && isNode) {
     const { readFile } = await import('node:fs/promises');
     wasmBinary = await readFile(url);
   }
-  const module = await createImpulse2dModule(wasmBinary !== undefined ? { wasmBinary }
-                                                                      : { locateFile: () => String(url) });
-  return new Impulse2d(new Runtime(module), name === 'impulse2d_wasm_simd');
+  // locateFile also finds the threads build's worker script, beside its loader.
+  const locateFile = (file) => (file.endsWith('.wasm') ? String(url) : new URL(file, loaderUrl).href);
+  const module = await createImpulse2dModule(wasmBinary !== undefined ? { wasmBinary } : { locateFile });
+  if (build.threads > 0 && isNode) {
+    // The pool's workers idle between steps; they must not keep node's process alive.
+    for (const worker of module.PThread.unusedWorkers) worker.unref();
+  }
+  return new Impulse2d(new Runtime(module, undefined, build.threads), build.simd);
 }
 
 export class Impulse2d {
   /** @internal */
   constructor(rt, simd) {
     this.rt = rt;
-    /** Whether this is the WebAssembly SIMD build (worlds solve on I2D_SIMD_WASM128). */
+    /** Whether this is a WebAssembly SIMD build (worlds solve on I2D_SIMD_WASM128). */
     this.simd = simd;
+    /** Worker threads this build lends worlds (0 but in the threads build): a world may
+     *  have up to threads + 1 workers, and all worlds alive share them. */
+    this.threads = rt.threadPoolSize;
   }
 
   /** The library's version packed as (major << 16) | (minor << 8) | patch. */

@@ -16,9 +16,14 @@ const ARG0 = 512;          // by-value arguments, 64 bytes apart
 const ARG_STRIDE = 64;
 
 export class Runtime {
-  /** description overrides what the module reports (for tests). */
-  constructor(module, description = readDescription(module)) {
+  /** description overrides what the module reports (for tests); threadPoolSize is how
+   *  many worker threads the module's build keeps for worlds (0: none). */
+  constructor(module, description = readDescription(module), threadPoolSize = 0) {
     this.m = module;
+    this.threadPoolSize = threadPoolSize;
+    /** Of those, how many the worlds alive hold (World.create takes, destroy gives back). */
+    this.threadsLent = 0;
+    this.views = null;
     const problems = usageProblems(description).concat(scratchProblems(description));
     if (problems.length > 0) {
       throw new Error('impulse2d: the WebAssembly module\'s structs do not match this binding (rebuild dist/ ' +
@@ -52,13 +57,24 @@ export class Runtime {
     return value;
   }
 
-  // Views are taken afresh on each use: the heap may have grown (and its old buffer
-  // been detached) during the last call.
-  get f32() { return this.m.HEAPF32; }
-  get i32() { return this.m.HEAP32; }
-  get u32() { return this.m.HEAPU32; }
-  get u8() { return this.m.HEAPU8; }
-  get u64() { return this.m.HEAPU64; }
+  // The heap may have grown during the last call: a single-threaded module then detaches
+  // the old buffer and replaces its HEAP views, and in the threads build a worker may have
+  // grown the shared memory, which the module's own views on this thread do not follow.
+  // So the views are checked against the memory's buffer on each use.
+  heap() {
+    const buffer = this.m.wasmMemory?.buffer ?? this.m.HEAPU8.buffer;
+    if (this.views === null || this.views.u8.buffer !== buffer) {
+      this.views = { f32: new Float32Array(buffer), i32: new Int32Array(buffer), u32: new Uint32Array(buffer),
+                     u8: new Uint8Array(buffer), u64: new BigUint64Array(buffer) };
+    }
+    return this.views;
+  }
+
+  get f32() { return this.heap().f32; }
+  get i32() { return this.heap().i32; }
+  get u32() { return this.heap().u32; }
+  get u8() { return this.heap().u8; }
+  get u64() { return this.heap().u64; }
 
   result() { return this.scratch + RESULT; }
   arg(index) { return this.scratch + ARG0 + index * ARG_STRIDE; }

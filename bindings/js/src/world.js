@@ -28,10 +28,13 @@ export class World {
     this.jointById = new Map();
     /** @internal The custom filter and pre-solve functions set on the world. */
     this.hooks = new ContactHooks(this);
+    /** @internal The build's worker threads this world holds (workerCount - 1). */
+    this.threads = 0;
   }
 
   /** @internal A new world with the given options (Impulse2d.createWorld). */
   static create(rt, options = {}) {
+    const threads = threadsFor(rt, options.workerCount);
     const def = rt.defBlock('world');
     try {
       if (options.lengthUnitsPerMeter !== undefined) {
@@ -40,11 +43,18 @@ export class World {
         rt.checkLast();
       }
       writeWorldDef(rt, def, options);
-      return new World(rt, rt.checkId(rt.m._i2d_world_create(def)));
+      rt.i32[(def + rt.field('i2d_world_def.worker_count')) >> 2] = threads + 1;
+      const world = new World(rt, rt.checkId(rt.m._i2d_world_create(def)));
+      world.threads = threads;
+      rt.threadsLent += threads;
+      return world;
     } finally {
       rt.m._free(def);
     }
   }
+
+  /** How many workers step the world (createWorld's workerCount; 1 but in the threads build). */
+  get workerCount() { return this.threads + 1; }
 
   /**
    * A new world from a snapshot's bytes (i2d_world_create_from_snapshot): it steps on
@@ -394,6 +404,8 @@ export class World {
   /** Destroys the world and everything in it. */
   destroy() {
     this.rt.check(this.rt.m._i2d_world_destroy(this.id));
+    this.rt.threadsLent -= this.threads;
+    this.threads = 0;
     this.hooks.release();
     this.bodyByIndex = [undefined];
     this.freeIndices = [];
@@ -516,6 +528,27 @@ export class World {
     this.bodyByIndex[body.index] = undefined;
     this.freeIndices.push(body.index);
   }
+}
+
+/**
+ * The worker threads a world of `workerCount` workers takes from the build's pool. The
+ * threads build starts its workers with the module, since a page cannot start one while a
+ * step waits for it: a world asking for more than are free would wait forever, so it is
+ * refused here.
+ */
+function threadsFor(rt, workerCount = 1) {
+  if (!Number.isInteger(workerCount) || workerCount < 1) {
+    throw new TypeError(`workerCount is ${String(workerCount)}; it must be a whole number from 1`);
+  }
+  const threads = workerCount - 1;
+  if (threads > rt.threadPoolSize - rt.threadsLent) {
+    throw new RangeError(rt.threadPoolSize === 0
+      ? `workerCount ${workerCount}: this build has no threads; loadImpulse2d({ threads: true }) loads the one ` +
+        'that has (node, or a cross-origin isolated page)'
+      : `workerCount ${workerCount}: ${rt.threadPoolSize - rt.threadsLent} of the build's ${rt.threadPoolSize} ` +
+        'worker threads are free (the worlds alive hold the rest); destroy one first');
+  }
+  return threads;
 }
 
 function writeWorldDef(rt, def, options) {
