@@ -702,7 +702,30 @@ export class World {
    *  from then gave. Another world's state, one from before a structural change, and
    *  truncated or corrupted bytes throw I2D_ERR_INVALID_SNAPSHOT and change nothing. */
   restoreState(bytes: SnapshotBytes): void;
+  /** Records the world: each record to write as it is made, or all of it kept for
+   *  stopRecording. A write that throws is thrown by stopRecording. */
+  startRecording(write?: (record: Uint8Array) => void): void;
+  /** The recording's bytes when startRecording kept them, else undefined. */
+  stopRecording(): Uint8Array | undefined;
+  /** Throws for a replay's world: close the replay instead. */
   destroy(): void;
+}
+
+/** A recording replayed in a world of its own (Impulse2d.openReplay), every step's state
+ *  hash checked against the recorded one. */
+export class Replay {
+  /** The replay's world, to read as the replay goes (it has no Body objects). */
+  readonly world: World;
+  /** Replays up to count (default 1) more steps; returns how many ran. */
+  step(count?: number): number;
+  readonly currentStep: number;
+  readonly stepCount: number;
+  /** The first step whose hash differed from the recording's (1 for the first), or null. */
+  readonly divergentStep: number | null;
+  /** Goes to step (0 to stepCount), backwards too. */
+  seek(step: number): void;
+  /** Closes the replay and destroys its world; closing twice is harmless. */
+  close(): void;
 }
 
 export class Impulse2d {
@@ -717,6 +740,8 @@ export class Impulse2d {
   stepWorlds(worlds: Iterable<World>, timeStep?: number, substeps?: number): void;
   /** World.fromSnapshot(this, bytes). */
   worldFromSnapshot(bytes: SnapshotBytes): World;
+  /** Opens a recording (World.startRecording's bytes) to replay it, checking every hash. */
+  openReplay(bytes: SnapshotBytes): Replay;
   /** The default settings of a world in lengthUnitsPerMeter units (default 1). */
   defaultWorldSettings(lengthUnitsPerMeter?: number): WorldSettings;
   /** The character def's defaults, as World.moveCharacter takes them. */

@@ -3,6 +3,7 @@
 // Shape and Joint classes. Load once, then make worlds:
 //   const i2d = await loadImpulse2d();
 //   const world = i2d.createWorld({ gravity: [0, -10] });
+import { Replay } from './recording.js';
 import { Runtime } from './runtime.js';
 import { stepWorlds } from './batch.js';
 import { clipVector, defaultCharacterDef, solvePlanes } from './mover.js';
@@ -10,6 +11,7 @@ import { readWorldDef, World } from './world.js';
 import { vx, vy } from './vectors.js';
 
 export { Impulse2dError } from './errors.js';
+export { Replay } from './recording.js';
 export { SIMD_PATH_NAMES, World } from './world.js';
 export { BodyMoves } from './body_moves.js';
 export { Body } from './body.js';
@@ -145,6 +147,10 @@ export class Impulse2d {
 
   /** A new world from a snapshot's bytes: World.fromSnapshot(this, bytes). */
   worldFromSnapshot(bytes) { return World.fromSnapshot(this, bytes); }
+
+  /** Opens a recording (World.startRecording's bytes) to replay it in a world of its own,
+   *  checking every step's hash (i2d_replay_open): see Replay. */
+  openReplay(bytes) { return new Replay(this.rt, bytes, World); }
 
   /** The default world settings for a world in lengthUnitsPerMeter units per metre
    *  (i2d_default_world_def_in_units; [1e-3, 1e4]), as World.settings gives them. */

@@ -8,6 +8,7 @@ import { createJoint } from './joint.js';
 import { readManifold } from './manifold.js';
 import { castMover, collideMover, moveCharacter } from './mover.js';
 import { Shape } from './shape.js';
+import { Recorder } from './recording.js';
 import { rememberStructure, saveBytes, structureOf, withBytesInModule } from './snapshot.js';
 import { vx, vy } from './vectors.js';
 
@@ -30,6 +31,10 @@ export class World {
     this.hooks = new ContactHooks(this);
     /** @internal The build's worker threads this world holds (workerCount - 1). */
     this.threads = 0;
+    /** @internal The recording in progress (startRecording), or null. */
+    this.recorder = null;
+    /** @internal What owns the world and destroys it ('replay'), or null: the user's. */
+    this.owner = null;
   }
 
   /** @internal A new world with the given options (Impulse2d.createWorld). */
@@ -71,6 +76,27 @@ export class World {
     const structure = structureOf(bytes, rt);
     if (structure !== undefined) world.adoptStructure(structure);
     return world;
+  }
+
+  /**
+   * Starts recording the world (i2d_world_start_recording): a snapshot, then every call
+   * that changes it and every step with the state hash it produced, for Impulse2d.openReplay.
+   * With `write`, each record is handed to write(Uint8Array) as it is made (append it to a
+   * file or a buffer; the world is locked meanwhile, and an error write throws is kept and
+   * thrown by stopRecording); without, stopRecording returns the whole recording.
+   * Recording again starts a new recording.
+   */
+  startRecording(write) {
+    if (this.recorder) this.stopRecording();
+    this.recorder = new Recorder(this, write);
+  }
+
+  /** Stops recording: the recording's bytes if startRecording kept them, else undefined. */
+  stopRecording() {
+    const recorder = this.recorder;
+    if (!recorder) return undefined;
+    this.recorder = null;
+    return recorder.stop();
   }
 
   /** The world saved to portable bytes (i2d_world_save_snapshot), for restoreSnapshot,
@@ -403,10 +429,13 @@ export class World {
 
   /** Destroys the world and everything in it. */
   destroy() {
+    if (this.owner !== null) throw new Error(`this world belongs to its ${this.owner}: close that instead`);
     this.rt.check(this.rt.m._i2d_world_destroy(this.id));
     this.rt.threadsLent -= this.threads;
     this.threads = 0;
     this.hooks.release();
+    this.recorder?.release();
+    this.recorder = null;
     this.bodyByIndex = [undefined];
     this.freeIndices = [];
     this.shapeById.clear();
