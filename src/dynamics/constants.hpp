@@ -59,9 +59,10 @@ constexpr float friction_anchor_share = 1.0f;
 constexpr float continuous_safety_factor = 0.5f;
 
 /// Sweeps of the impact impulse (impact.hpp) where the continuous stage stops a fast
-/// body: one is exact for a ball; a box landing on two corners, or on one whose friction
-/// turns it, needs a few for its points to agree. Fewer leave part of the approach; more
-/// cost nothing per step (only per impact) but change nothing visible.
+/// body: one is exact for a ball, or a box landing flat without sliding (its two points
+/// are one block); friction that turns the body changes its normal speeds, and a few
+/// sweeps let the two agree. Fewer leave part of the approach or of the friction; more
+/// cost only per impact, never per contact or per step.
 constexpr int32_t impact_iterations = 8;
 
 // Threads. Handing work to other workers costs microseconds per stage, so a world
