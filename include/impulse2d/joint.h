@@ -142,8 +142,13 @@ typedef struct i2d_motor_joint_def {
 } i2d_motor_joint_def;
 
 /** Pulls B's anchor (base.local_anchor_b) toward a world point with a damped spring of
- *  at most max_force. body_a is any body of the world (often a static one); it is not
- *  moved. body_b must be dynamic. */
+ *  at most max_force: stiffness m (2 pi hertz)^2 and damping 2 m damping_ratio (2 pi
+ *  hertz), m the mass of B, the same wherever B is held, so B hangs g / (2 pi hertz)^2
+ *  below the target and a box dragged over a floor of friction mu stops within
+ *  mu g / (2 pi hertz)^2 of it. body_a is any body of the world (often a static one); it
+ *  is not moved. Like every joint it stops its two bodies colliding unless
+ *  base.collide_connected: make body_a a body without shapes, not the ground B lies on.
+ *  body_b must be dynamic. */
 typedef struct i2d_mouse_joint_def {
     i2d_joint_base base;
     i2d_vec2 target;            /**< m, world, within 1e9 */

@@ -158,8 +158,9 @@ typedef struct i2d_world_def {
     /** Continuous collision; default true. A dynamic body that moves far for its size in
      *  a step (more than half its thinnest shape's inner radius) is swept from where the
      *  step began against static and kinematic shapes (along their own motion) and, if
-     *  it would have passed through one, moved back to where it first touched, keeping
-     *  its velocity. Bullets (i2d_body_def.is_bullet) are swept against dynamic bodies
+     *  it would have passed through one, moved back to where it first touched, where
+     *  the impact is solved as a contact would (no approach left, or the restitution's
+     *  bounce; friction). Bullets (i2d_body_def.is_bullet) are swept against dynamic bodies
      *  too, other bullets included. Sensors report fast bodies that crossed them within
      *  a step (a begin and an end event in the same step). */
     bool enable_continuous;

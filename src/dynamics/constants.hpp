@@ -58,6 +58,13 @@ constexpr float friction_anchor_share = 1.0f;
 /// have stopped anyway; larger ones let thin bodies tunnel through thin walls.
 constexpr float continuous_safety_factor = 0.5f;
 
+/// Sweeps of the impact impulse (impact.hpp) where the continuous stage stops a fast
+/// body: one is exact for a ball, or a box landing flat without sliding (its two points
+/// are one block); friction that turns the body changes its normal speeds, and a few
+/// sweeps let the two agree. Fewer leave part of the approach or of the friction; more
+/// cost only per impact, never per contact or per step.
+constexpr int32_t impact_iterations = 8;
+
 // Threads. Handing work to other workers costs microseconds per stage, so a world
 // smaller than this runs its step on the calling thread alone (same bits either way);
 // and no worker claims less than a block of this many items at a time.

@@ -11,6 +11,7 @@
 #include <cstdint>
 
 #include "core/pool.hpp"
+#include "dynamics/constants.hpp"
 #include "math/vec2.hpp"
 
 namespace i2d {
@@ -89,5 +90,15 @@ struct alignas(64) Body {
     bool mass_overridden = false;   // mass, local_center and override_inertia set by the caller
     float override_inertia = 0.0f;  // about the centre of mass, kept while fixed_rotation zeroes inertia
 };
+
+/// Whether a dynamic body that travels this far in a step (its fastest point, m) is
+/// fast: then it may pass through something thin, and the continuous stage sweeps it.
+inline bool is_fast_travel(const Body& b, float travel) { return travel > continuous_safety_factor * b.min_extent; }
+
+/// Whether the continuous stage sweeps the fast body `fast` against `other`: a dynamic
+/// body against static and kinematic ones, a bullet against every other body.
+inline bool is_swept_against(const Body& fast, const Body& other) {
+    return fast.type == BodyType::dynamic && (other.type != BodyType::dynamic || fast.is_bullet);
+}
 
 }  // namespace i2d

@@ -52,8 +52,7 @@ bool is_fast(const Body& b, const BodyState& s, float time_step) {
     if (b.type != BodyType::dynamic) {
         return false;
     }
-    const float travel = length(s.delta_position) + time_step * std::fabs(s.angular_velocity) * b.max_extent;
-    return travel > continuous_safety_factor * b.min_extent;
+    return is_fast_travel(b, length(s.delta_position) + time_step * std::fabs(s.angular_velocity) * b.max_extent);
 }
 
 }  // namespace

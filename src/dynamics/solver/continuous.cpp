@@ -6,6 +6,7 @@
 #include "collision/manifold.hpp"
 #include "dynamics/constants.hpp"
 #include "dynamics/body/shape_bounds.hpp"
+#include "dynamics/solver/impact.hpp"
 #include "math/math.hpp"
 
 namespace i2d {
@@ -24,6 +25,12 @@ float impact_target(const ShapeProxy& a, const ShapeProxy& b, float slop) {
 
 /// How far short of its target a time of impact may stop, in slops.
 constexpr float impact_tolerance_share = 0.25f;
+
+/// Manifold points at the time of impact within this many slops of touching take the
+/// impact: the sweep stops a slop inside a rounded shape, or a slop apart, within a
+/// quarter slop (impact_target, impact_tolerance_share), and the manifold's distance
+/// differs from the sweep's by rounding. Farther points are speculative.
+constexpr float impact_touching_share = 1.5f;
 
 /// How close the shape's centre may come to what it touched at the start of the step,
 /// in slops: a centre that got this close is stopped there, so that it never passes
@@ -191,10 +198,18 @@ void Continuous::apply(const StepContext& step, int32_t body, const Impact& firs
         const Body& other = bodies_[first.body];
         // Two bullets meeting head-on both stop where they touch.
         const bool both_stop = other.is_bullet && other.type == BodyType::dynamic && other.awake_index != null_index;
+        const int32_t carrier = other.type == BodyType::kinematic ? first.body : null_index;
+        if (carrier == null_index) {
+            rewind_gravity(step, body, first.fraction);
+        }
+        if (both_stop) {
+            rewind_gravity(step, first.body, first.fraction);
+        }
+        resolve(step, body, first);
         if (both_stop) {
             move_to(step, first.body, first.fraction, null_index);
         }
-        move_to(step, body, first.fraction, other.type == BodyType::kinematic ? first.body : null_index);
+        move_to(step, body, first.fraction, carrier);
     }
 }
 
@@ -240,6 +255,8 @@ void Continuous::test_candidate(const FastShape& fast, int32_t other_index, Impa
         !pre_solve_refuses(fast, other_index, other_sweep, r.fraction)) {
         first.fraction = r.fraction;
         first.body = other.body;
+        first.shape = fast.shape;
+        first.other_shape = other_index;
     }
 }
 
@@ -263,13 +280,21 @@ bool Continuous::pre_solve_refuses(const FastShape& fast, int32_t other_index, c
                                   fast_first ? other_index : fast.shape, manifold);
 }
 
-// The body goes back to the fraction of its sweep, keeping its velocities: the next
-// step's speculative contact does the rest. A kinematic body it hit keeps moving to the
-// end of the step, so the body rides along with it from the impact (the carrier): the
-// two end the step as they were when they touched, rather than the wall passing the body
-// that waits at the impact point. A dynamic body it hit is not a carrier: it can be
-// stopped by the contact, and carrying a bullet along with a box that lands would push
-// the bullet into the floor.
+// A body going back to the time of impact takes back the gravity of the time it loses,
+// so that it meets what it hit at the speed it had there: a ball dropped on the ground
+// bounces with e times its impact speed, not the faster speed the step ended with. (A
+// body carried by a kinematic one loses no time: it ends the step where its carrier does.)
+void Continuous::rewind_gravity(const StepContext& step, int32_t body, float fraction) {
+    Body& b = bodies_[body];
+    b.linear_velocity -= ((1.0f - fraction) * step.time_step * b.gravity_scale) * step.settings.gravity;
+}
+
+// The body goes back to the fraction of its sweep, with the velocities resolve gave it.
+// A kinematic body it hit keeps moving to the end of the step, so the body rides along
+// with it from the impact (the carrier): the two end the step as they were when they
+// touched, rather than the wall passing the body that waits at the impact point. A
+// dynamic body it hit is not a carrier: it can be stopped by the contact, and carrying a
+// bullet along with a box that lands would push the bullet into the floor.
 void Continuous::move_to(const StepContext& step, int32_t body, float fraction, int32_t carrier) {
     Body& b = bodies_[body];
     Transform xf = sweep_transform(sweep_of(body), fraction);
@@ -283,6 +308,63 @@ void Continuous::move_to(const StepContext& step, int32_t body, float fraction, 
     update_shape_bounds(b, shapes_, broad_phase_, step.time_step * b.linear_velocity, true);
     if (b.move_event != null_index) {
         events_.current.body_moves[std::size_t(b.move_event)].transform = b.transform;
+    }
+}
+
+// The impact where the sweep stopped (impact.hpp): the two shapes' manifold at their poses
+// at the time of impact, and the impulse a rigid contact would give its touching points,
+// with the pair's mixed friction and restitution. A dynamic body met takes its share (a
+// bullet's hit pushes the box it hits); one asleep is left to the next step's contact,
+// which wakes it. The impact reports a hit event as a contact would (the next step's
+// contact, which starts without approach, reports none).
+void Continuous::resolve(const StepContext& step, int32_t body, const Impact& impact) {
+    Body& b = bodies_[body];
+    Body& o = bodies_[impact.body];
+    const bool other_moves = o.type == BodyType::dynamic;
+    if (other_moves && o.awake_index == null_index) {
+        return;
+    }
+    const Transform xf_b = sweep_transform(sweep_of(body), impact.fraction);
+    const Transform xf_a = sweep_transform(sweep_of(impact.body), impact.fraction);
+    const Shape& fast = shapes_[impact.shape];
+    const Shape& other = shapes_[impact.other_shape];
+    const Tolerances& tolerances = step.tolerances;
+    const Manifold manifold = collide_shapes(other.geometry, xf_a, fast.geometry, xf_b,
+                                             tolerances.speculative_distance, tolerances.linear_slop);
+    const WorldDef& settings = step.settings;
+    ImpactMaterial material;
+    material.friction = mix(settings.friction_mixing, fast.friction, other.friction);
+    material.restitution = mix(settings.restitution_mixing, fast.restitution, other.restitution);
+    material.restitution_threshold = settings.restitution_threshold;
+    // As a contact mixes it (contact_set.cpp): the same whichever shape is A.
+    material.tangent_speed = fast.tangent_speed + other.tangent_speed;
+    ImpactBody a{transform_point(xf_a, o.local_center), o.linear_velocity, o.angular_velocity,
+                 other_moves ? o.inv_mass : 0.0f, other_moves ? o.inv_inertia : 0.0f};
+    ImpactBody fast_body{transform_point(xf_b, b.local_center), b.linear_velocity, b.angular_velocity, b.inv_mass,
+                         b.inv_inertia};
+    const ImpactResult r = resolve_impact(manifold, impact_touching_share * tolerances.linear_slop, material, a,
+                                          fast_body);
+    if (r.point_index < 0) {
+        return;
+    }
+    const float max_spin = step.max_spin();
+    b.linear_velocity = fast_body.linear_velocity;
+    b.angular_velocity = clamp(fast_body.angular_velocity, -max_spin, max_spin);
+    if (other_moves) {
+        o.linear_velocity = a.linear_velocity;
+        o.angular_velocity = clamp(a.angular_velocity, -max_spin, max_spin);
+        // Its boxes ahead follow its new velocity (the fast body's follow in move_to).
+        update_shape_bounds(o, shapes_, broad_phase_, step.time_step * o.linear_velocity, true);
+    }
+    if ((fast.enable_hit_events || other.enable_hit_events) && r.approach_speed > settings.hit_event_threshold) {
+        // As a contact names them: the lower shape A, the normal from A to B.
+        const bool fast_first = impact.shape < impact.other_shape;
+        const int32_t shape_a = fast_first ? impact.shape : impact.other_shape;
+        const int32_t shape_b = fast_first ? impact.other_shape : impact.shape;
+        events_.current.contact_hits.push_back({events_.ids.shape_id(shape_a, shapes_.generation(shape_a)),
+                                                events_.ids.shape_id(shape_b, shapes_.generation(shape_b)),
+                                                manifold.points[r.point_index].point,
+                                                fast_first ? -manifold.normal : manifold.normal, r.approach_speed});
     }
 }
 

@@ -1,8 +1,10 @@
 // SPDX-License-Identifier: MIT
 // Continuous: the step's continuous collision stage. Fast bodies are swept from where
 // the step began to where the solver left them; one that would have passed through
-// something is moved back to its time of impact, keeping its velocity, and the next
-// step's speculative contact stops it (Box2D v3's scheme).
+// something is moved back to its time of impact, where the impact's impulse is solved
+// (impact.hpp): no approach is left into what it met, or its restitution's bounce, and
+// friction has acted, as a contact would have done. (Box2D v3 keeps the velocity and
+// leaves the impact to the next step's speculative contact.)
 //
 // Design note: every fast dynamic body is swept against static and kinematic shapes,
 // kinematic ones along their own motion over the step (the relative motion: a wall
@@ -11,6 +13,13 @@
 // head-on are both moved back to the time they touch. Sensors the fast body crossed
 // within the step are remembered, so that they report it. With nothing fast the stage
 // costs one empty loop (the solver's final pass already picked the fast bodies).
+//
+// A free body (one no joint holds) that starts a step fast meets what it is swept
+// against here and nowhere else: their contact keeps the world's speculative distance
+// instead of reaching as far as the step's approach (narrowphase.cpp), since a point
+// made that far off has the wrong normal and anchor for the impact (a fast ball ended
+// 14 cm short of a wall, or slid off its end still drifting into it). A jointed body
+// keeps the long reach: moving it back alone would pull its joints apart.
 //
 // Threads: a body that is not a bullet sweeps only against static and kinematic shapes,
 // which nothing in this stage moves, so those sweeps are independent and the workers
@@ -67,10 +76,12 @@ private:
         float slop = 0.0f;    // the world's linear slop (Tolerances): impacts stop within it
         float margin = 0.0f;  // the world's speculative distance: a manifold's reach
     };
-    // The earliest impact found so far.
+    // The earliest impact found so far: where along the sweep, and the fast body's shape
+    // and the other body and shape it met.
     struct Impact {
         float fraction = 1.0f;
         int32_t body = null_index;
+        int32_t shape = null_index, other_shape = null_index;
     };
     struct SensorCandidate {
         SensorCrossing crossing;
@@ -95,6 +106,8 @@ private:
     Sweep sweep_of(int32_t body) const;
     bool swept_against(const Body& fast, const Body& other, bool bullet_pass) const;
     void move_to(const StepContext& step, int32_t body, float fraction, int32_t carrier);
+    void resolve(const StepContext& step, int32_t body, const Impact& impact);
+    void rewind_gravity(const StepContext& step, int32_t body, float fraction);
 
     Pool<Body>& bodies_;
     Pool<Shape>& shapes_;
