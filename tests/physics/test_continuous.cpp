@@ -377,23 +377,29 @@ void report(const char* what, int shots, const ShotCounts& c) {
             "it but off its face\n", what, shots, c.crossed, c.moving, c.fastest, c.off_face);
 }
 
+// Fires the shots with continuous collision and again without (the control): with it
+// none crosses the wall, none is left moving across it and none ends beside it off its
+// face; without it, more than a tenth cross.
+void check_shots_stop_at_the_wall(int shots, const ShotSetup& with) {
+    ShotSetup without = with;
+    without.continuous = false;
+    const ShotCounts c = fire_shots(shots, with);
+    const ShotCounts control = fire_shots(shots, without);
+    report("with continuous collision", shots, c);
+    report("without", shots, control);
+    I2D_CHECK(c.crossed == 0);
+    I2D_CHECK(c.moving == 0);
+    I2D_CHECK(c.off_face == 0);
+    I2D_CHECK(control.crossed > shots / 10);
+}
+
 }  // namespace
 
 // Issue 43's 1,000 shots at 300 m/s at a static 2 cm x 4 m wall: none passes and every ball
 // ends with no speed across the wall (below 1 m/s; it was 1.3 to 24 m/s for 179 of them,
 // beyond the wall's ends). The control, without continuous collision, tunnels.
 I2D_TEST(phys_ccd_fast_balls_stop_where_they_hit_a_static_wall_and_slide_off_along_it) {
-    const ShotSetup with{true, I2D_BODY_STATIC, 0.0f, static_wall_ball_speed, false};
-    ShotSetup without = with;
-    without.continuous = false;
-    const ShotCounts c = fire_shots(static_wall_shots, with);
-    const ShotCounts control = fire_shots(static_wall_shots, without);
-    report("with continuous collision", static_wall_shots, c);
-    report("without", static_wall_shots, control);
-    I2D_CHECK(c.crossed == 0);
-    I2D_CHECK(c.moving == 0);
-    I2D_CHECK(c.off_face == 0);
-    I2D_CHECK(control.crossed > static_wall_shots / 10);
+    check_shots_stop_at_the_wall(static_wall_shots, {true, I2D_BODY_STATIC, 0.0f, static_wall_ball_speed, false});
 }
 
 // Issue 43's 200 bullets at 250 m/s into a kinematic 2 cm x 4 m wall moving at 50 m/s
@@ -401,17 +407,8 @@ I2D_TEST(phys_ccd_fast_balls_stop_where_they_hit_a_static_wall_and_slide_off_alo
 // 1 m/s relative to it), against its face while beside it; none passes. The control,
 // without continuous collision, tunnels.
 I2D_TEST(phys_ccd_bullets_hit_by_a_kinematic_wall_move_on_with_it) {
-    const ShotSetup with{true, I2D_BODY_KINEMATIC, oncoming_wall_speed, bullet_speed, true};
-    ShotSetup without = with;
-    without.continuous = false;
-    const ShotCounts c = fire_shots(kinematic_wall_shots, with);
-    const ShotCounts control = fire_shots(kinematic_wall_shots, without);
-    report("with continuous collision", kinematic_wall_shots, c);
-    report("without", kinematic_wall_shots, control);
-    I2D_CHECK(c.crossed == 0);
-    I2D_CHECK(c.moving == 0);
-    I2D_CHECK(c.off_face == 0);
-    I2D_CHECK(control.crossed > kinematic_wall_shots / 10);
+    check_shots_stop_at_the_wall(kinematic_wall_shots,
+                                 {true, I2D_BODY_KINEMATIC, oncoming_wall_speed, bullet_speed, true});
 }
 
 namespace {

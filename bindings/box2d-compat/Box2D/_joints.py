@@ -79,19 +79,19 @@ class b2RevoluteJointDef(b2JointDef):
         return s
 
 
+# A def's axis in world coordinates: localAxisA turned by bodyA, as Box2D 2.3's
+# prismatic and wheel defs take it.
+_world_axis = property(lambda s: s.bodyA.GetWorldVector(s.localAxisA),
+                       lambda s, v: setattr(s, "localAxisA", s.bodyA.GetLocalVector(v)))
+
+
 class b2PrismaticJointDef(b2JointDef):
     _kind = "prismatic"
     _reference = True
     _fields = dict(localAxisA=(1.0, 0.0), referenceAngle=0.0, enableLimit=False, lowerTranslation=0.0,
                    upperTranslation=0.0, enableMotor=False, maxMotorForce=0.0, motorSpeed=0.0)
 
-    @property
-    def axis(self):
-        return self.bodyA.GetWorldVector(self.localAxisA)
-
-    @axis.setter
-    def axis(self, value):
-        self.localAxisA = self.bodyA.GetLocalVector(value)
+    axis = _world_axis
 
     def _settings(self):
         s = b2JointDef._settings(self)
@@ -152,13 +152,7 @@ class b2WheelJointDef(b2JointDef):
     _fields = dict(localAxisA=(1.0, 0.0), enableMotor=False, maxMotorTorque=0.0, motorSpeed=0.0,
                    frequencyHz=2.0, dampingRatio=0.7)
 
-    @property
-    def axis(self):
-        return self.bodyA.GetWorldVector(self.localAxisA)
-
-    @axis.setter
-    def axis(self, value):
-        self.localAxisA = self.bodyA.GetLocalVector(value)
+    axis = _world_axis
 
     def _settings(self):
         s = b2JointDef._settings(self)

@@ -39,6 +39,9 @@ export function wasmThreadsSupported() {
   return typeof SharedArrayBuffer === 'function' && isolated && wasmSimdSupported();
 }
 
+/** The threads build's workers started with the module (build.sh's THREAD_POOL_SIZE). */
+const THREAD_POOL_SIZE = 3;
+
 const isNode = typeof process === 'object' && process.versions?.node !== undefined;
 
 /** The build to load for the `simd` and `threads` options: its file names and what it has. */
@@ -64,9 +67,6 @@ function chooseBuild(simd, threads) {
   const name = useSimd ? 'impulse2d_wasm_simd' : 'impulse2d_wasm';
   return { loader: `${name}.mjs`, wasm: `${name}.wasm`, simd: useSimd, threads: 0 };
 }
-
-/** The threads build's workers started with the module (build.sh's THREAD_POOL_SIZE). */
-const THREAD_POOL_SIZE = 3;
 
 /** The factory of a classic-script loader (the threads build): require in node, a script
  *  element in a page (its workers load the same script by its URL). */

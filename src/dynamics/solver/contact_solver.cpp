@@ -7,18 +7,12 @@
 
 #include "core/assert.hpp"
 #include "core/prefetch.hpp"
+#include "dynamics/solver/effective_mass.hpp"
 #include "math/math.hpp"
 
 namespace i2d {
 
 namespace {
-
-// 1 / (invMassA + invMassB + (rA x d)^2 invIA + (rB x d)^2 invIB), or 0 when nothing moves.
-float effective_mass(const BodyMotion& a, const BodyMotion& b, Vec2 r_a, Vec2 r_b, Vec2 direction) {
-    const float ra = cross(r_a, direction), rb = cross(r_b, direction);
-    const float k = a.inv_mass + b.inv_mass + a.inv_inertia * ra * ra + b.inv_inertia * rb * rb;
-    return k > 0.0f ? 1.0f / k : 0.0f;
-}
 
 // At the start of the step.
 Vec2 relative_velocity(const BodyMotion& a, const BodyMotion& b, Vec2 r_a, Vec2 r_b) {

@@ -3,25 +3,14 @@
 #include "dynamics/solver/impact.hpp"
 
 #include "dynamics/constants.hpp"
+#include "dynamics/solver/effective_mass.hpp"
 #include "math/math.hpp"
 
 namespace i2d {
 
 namespace {
 
-// w x r.
-Vec2 spin_velocity(float w, Vec2 r) { return Vec2{-w * r.y, w * r.x}; }
-
-Vec2 point_velocity(const ImpactBody& body, Vec2 r) {
-    return body.linear_velocity + spin_velocity(body.angular_velocity, r);
-}
-
-// 1 / (invMassA + invMassB + (rA x d)^2 invIA + (rB x d)^2 invIB), or 0 when nothing moves.
-float effective_mass(const ImpactBody& a, const ImpactBody& b, Vec2 r_a, Vec2 r_b, Vec2 direction) {
-    const float ra = cross(r_a, direction), rb = cross(r_b, direction);
-    const float k = a.inv_mass + b.inv_mass + a.inv_inertia * ra * ra + b.inv_inertia * rb * rb;
-    return k > 0.0f ? 1.0f / k : 0.0f;
-}
+Vec2 point_velocity(const ImpactBody& body, Vec2 r) { return body.linear_velocity + cross(body.angular_velocity, r); }
 
 // A takes -P at r_a, B takes +P at r_b.
 void apply_impulse(ImpactBody& a, ImpactBody& b, Vec2 r_a, Vec2 r_b, Vec2 impulse) {
