@@ -149,9 +149,10 @@ typedef struct i2d_world_def {
     /** Passed to enqueue_task and finish_task; default NULL. */
     void* user_task_context;
     /** Stiffness of the rigid parts of joints, Hz; default 60. Range [0.001, 1e5]. Like
-     *  contact_hertz, capped at a quarter of the substep rate. Joints that hang a tree of
-     *  bodies from a body that does not move, closing no loop, are solved exactly: for
-     *  them this is only how fast position errors are pulled back. */
+     *  contact_hertz, capped at a quarter of the substep rate. Joints that hang a group of
+     *  bodies from a body that does not move, closing at most four loops (a chain, a
+     *  bridge hung at both ends), are solved exactly: for them this is only how fast
+     *  position errors are pulled back. */
     float joint_hertz;
     /** Damping ratio of that stiffness; default 2. Range [0, 1e5]. */
     float joint_damping_ratio;

@@ -355,6 +355,13 @@ JointDef& join_at(JointDef& def, i2d_body_id a, i2d_body_id b, i2d_vec2 world_po
     return def;
 }
 
+/** How far apart a joint's two anchors are in the world, m: 0 for a joint that holds. */
+inline double joint_gap(i2d_joint_id joint) {
+    const i2d_vec2 a = i2d_body_get_world_point(i2d_joint_get_body_a(joint), i2d_joint_get_local_anchor_a(joint));
+    const i2d_vec2 b = i2d_body_get_world_point(i2d_joint_get_body_b(joint), i2d_joint_get_local_anchor_b(joint));
+    return distance(a, b);
+}
+
 /** Translational plus rotational kinetic energy, J (velocity is that of the centre of mass). */
 inline double kinetic_energy(i2d_body_id b) {
     const double v = speed(velocity(b)), w = double(i2d_body_get_angular_velocity(b));

@@ -32,12 +32,6 @@ constexpr double max_joint_gap = 0.1;  // m
 // How deep below the ground's top a body may be: the contact slop and soft push-out.
 constexpr double max_below_ground = 0.05;  // m
 
-double joint_gap(i2d_joint_id joint) {
-    const i2d_vec2 a = i2d_body_get_world_point(i2d_joint_get_body_a(joint), i2d_joint_get_local_anchor_a(joint));
-    const i2d_vec2 b = i2d_body_get_world_point(i2d_joint_get_body_b(joint), i2d_joint_get_local_anchor_b(joint));
-    return distance(a, b);
-}
-
 // Drops `count` ragdolls in layers of per_layer, each in its own filter group (so that a
 // ragdoll does not collide with itself but does with the others), and steps up to
 // `seconds` until every body sleeps.

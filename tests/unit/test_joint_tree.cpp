@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
-// JointTrees' choice of joints: the rigid rows of trees hung from one body that does not
-// move are solved exactly; free trees, loops and trees hung twice are left to the sweep,
-// and so are kinds without rigid rows and angle rows that no body can turn. The solving
+// JointTrees' choice of joints: the rigid rows of groups hung from a body that does not
+// move, trees or closing a few loops, are solved exactly; free groups and groups closing
+// more loops than the cuts allow (a grid) are left to the sweep, and so are kinds without
+// rigid rows and angle rows that no body can turn. The solving
 // itself is checked against closed forms by the physics suite (test_joints_chain.cpp,
 // test_joints_weld.cpp).
 #include <vector>
@@ -62,7 +63,7 @@ bool all_exact(const Layout& l, int32_t first, int32_t count, uint8_t rows = exa
 
 }  // namespace
 
-I2D_TEST(unit_joint_trees_take_hanging_trees_and_leave_the_rest_to_the_sweep) {
+I2D_TEST(unit_joint_trees_take_hung_trees_and_few_loops_and_leave_the_rest_to_the_sweep) {
     Layout l;
     const int32_t ceiling = l.body(BodyType::static_body);
     // A chain hung from the ceiling, with a branch: one tree.
@@ -72,12 +73,33 @@ I2D_TEST(unit_joint_trees_take_hanging_trees_and_leave_the_rest_to_the_sweep) {
     // A ragdoll-like free tree: no joint to anything fixed.
     const int32_t f0 = l.dynamic(), f1 = l.dynamic(), f2 = l.dynamic();
     const int32_t free_tree = chain(l, {f0, f1, f2});
-    // A bridge hung at both ends.
+    // A bridge hung at both ends: a tree and one cut (its second hold).
     const int32_t b0 = l.dynamic(), b1 = l.dynamic();
     const int32_t bridge = chain(l, {ceiling, b0, b1, ceiling});
-    // A hung loop: ceiling - l0, then l0 - l1 - l2 - l0.
+    // A hung loop: ceiling - l0, then l0 - l1 - l2 - l0: one cut.
     const int32_t l0 = l.dynamic(), l1 = l.dynamic(), l2 = l.dynamic();
     const int32_t loop = chain(l, {ceiling, l0, l1, l2, l0});
+    // A 4 x 4 grid of bodies hung by a corner: 24 joints among 16 bodies close 9 loops,
+    // more than the cuts allow.
+    int32_t grid[4][4];
+    for (auto& row : grid) {
+        for (int32_t& body : row) {
+            body = l.dynamic();
+        }
+    }
+    const int32_t grid_first = int32_t(l.constraints.size());
+    l.joint(JointType::revolute, ceiling, grid[0][0]);
+    for (int32_t i = 0; i < 4; ++i) {
+        for (int32_t j = 0; j < 4; ++j) {
+            if (j + 1 < 4) {
+                l.joint(JointType::revolute, grid[i][j], grid[i][j + 1]);
+            }
+            if (i + 1 < 4) {
+                l.joint(JointType::revolute, grid[i][j], grid[i + 1][j]);
+            }
+        }
+    }
+    const int32_t grid_joints = int32_t(l.constraints.size()) - grid_first;
     // Hung from a kinematic body, and from a sleeping one: both count as fixed.
     const int32_t crane = l.body(BodyType::kinematic, false), k0 = l.dynamic();
     const int32_t from_kinematic = chain(l, {crane, k0});
@@ -97,23 +119,27 @@ I2D_TEST(unit_joint_trees_take_hanging_trees_and_leave_the_rest_to_the_sweep) {
     trees.build(l.constraints, l.joints, l.bodies, l.states);
     I2D_CHECK(all_exact(l, hung, 4));
     I2D_CHECK(all_exact(l, free_tree, 2, 0));
-    I2D_CHECK(all_exact(l, bridge, 3, 0));
-    I2D_CHECK(all_exact(l, loop, 4, 0));
+    I2D_CHECK(all_exact(l, bridge, 3));
+    I2D_CHECK(all_exact(l, loop, 4));
+    I2D_CHECK(all_exact(l, grid_first, grid_joints, 0));
     I2D_CHECK(all_exact(l, from_kinematic, 1));
     I2D_CHECK(all_exact(l, from_sleeper, 1));
     I2D_CHECK(l.constraints[std::size_t(weld)].exact_rows == exact_angle_row);
     I2D_CHECK(l.constraints[std::size_t(distance)].exact_rows == 0);
     I2D_CHECK(l.constraints[std::size_t(mouse)].exact_rows == 0);
     I2D_CHECK(l.constraints[std::size_t(fixed_turn_weld)].exact_rows == exact_point_rows);
-    // The hung chain with its branch, the two single hangers and the two welds: five trees.
-    I2D_CHECK(trees.tree_count() == 5);
+    // The hung chain with its branch, the bridge, the hung loop, the two single hangers
+    // and the two welds: seven trees, two of them with a cut.
+    I2D_CHECK(trees.tree_count() == 7);
+    I2D_CHECK(trees.cut_count() == 2);
 
-    // The same layout again keeps the marks; the bridge's far end let go leaves a tree.
+    // The same layout again keeps the marks; the bridge's far end let go leaves it a
+    // tree without a cut.
     trees.build(l.constraints, l.joints, l.bodies, l.states);
-    I2D_CHECK(trees.tree_count() == 5 && all_exact(l, hung, 4));
+    I2D_CHECK(trees.tree_count() == 7 && trees.cut_count() == 2 && all_exact(l, hung, 4));
     l.joints[l.constraints[std::size_t(bridge + 2)].joint].def.type = JointType::filter;
     trees.build(l.constraints, l.joints, l.bodies, l.states);
     I2D_CHECK(all_exact(l, bridge, 2));
     I2D_CHECK(l.constraints[std::size_t(bridge + 2)].exact_rows == 0);
-    I2D_CHECK(trees.tree_count() == 6);
+    I2D_CHECK(trees.tree_count() == 7 && trees.cut_count() == 1);
 }

@@ -11,9 +11,16 @@
 // SIGGRAPH 1996). So each solve pass ends, after the colours' sweep over contacts and the
 // joints' other rows (limits, motors, springs), with that exact solve: the rigid rows
 // hold when the pass ends, with a bias that pulls position errors back at the world's
-// joint rate in the pushing pass and none when relaxing. A joint that would close a loop
-// among moving bodies is left to the sweep; a fixed body (static, kinematic, asleep)
-// closes no loop, so a bridge hung at both ends is one tree.
+// joint rate in the pushing pass and none when relaxing.
+//
+// A group of moving bodies joined by rigid rows is solved this way when a body that does
+// not move holds it (the tree is rooted at that joint). A group that closes a few loops
+// (a bridge hung at both ends, a second hanger, a ring) is solved exactly too: its
+// spanning tree is factored as above, and the joints that close the loops (the cuts) get
+// their impulses from the small dense system of their rows' compliance through the tree,
+// W = J_cut A^-1 J_cut^T, one tree solve per cut row (substructuring). A group with more
+// cuts than max_cut_joints (a grid), and a free group (a ragdoll, a vehicle), are left to
+// the sweep whole (joint_tree.cpp says why for free groups).
 //
 // Every node holds 3 unknowns: a body's (vx, vy, w), a joint's impulses on its rows
 // (point x, point y, angle), unused rows padded so that every block is 3 x 3. The matrix
@@ -42,15 +49,23 @@ enum ExactRows : uint8_t { exact_point_rows = 1, exact_angle_row = 2 };
 /// point, the weld's point and angle where their stiffness is 0 (rigid).
 uint8_t exact_rows_of(const JointDef& def);
 
+/// Joints that close loops in one group solved exactly; a group with more is left to the
+/// sweep. Each costs a tree solve per row in every pass, and a grid of N bodies closes
+/// about N loops.
+constexpr int32_t max_cut_joints = 4;
+constexpr int32_t max_cut_rows = 3 * max_cut_joints;
+
 class JointTrees {
 public:
-    /// Finds the trees among the step's joints (laid out: each constraint knows its joint)
-    /// and marks in each constraint the rows the exact solve takes from it. Rebuilt only
-    /// when a joint, its rows or its bodies' places changed. One thread, before the
-    /// joints are prepared.
+    /// Finds the trees among the step's joints (laid out: each constraint knows its joint),
+    /// each with the joints that close its loops, and marks in each constraint the rows
+    /// the exact solve takes from it. Rebuilt only when a joint, its rows or its bodies'
+    /// places changed. One thread, before the joints are prepared.
     void build(std::vector<JointConstraint>& constraints, const Pool<Joint>& joints, const Pool<Body>& bodies,
                int32_t state_count);
     int32_t tree_count() const { return int32_t(tree_starts_.size()) - 1; }
+    /// Joints that close loops, over all trees.
+    int32_t cut_count() const { return int32_t(cuts_.size()); }
 
     /// One exact pass over trees [begin, end): the rows' impulses that leave them at the
     /// bias (use_bias) or at rest, added to the joints and the bodies' velocities.
@@ -76,7 +91,22 @@ private:
     };
     // Per constraint: [joint, state A or null when A cannot move, the same for B, rows].
     static constexpr int32_t key_width = 4;
+    // A joint that closes a loop, with the nodes of its moving bodies (null for one that
+    // does not move).
+    struct Cut {
+        int32_t constraint;
+        int32_t node_a;
+        int32_t node_b;
+    };
+    void find_groups(int32_t state_count);
     void add_tree(int32_t root_joint);
+    int32_t cut_row_count(const std::vector<JointConstraint>& constraints, int32_t first_cut) const;
+    void set_right_side(int32_t tree, const std::vector<JointConstraint>& constraints, const BodyState* states,
+                        float bias_rate);
+    // Solves the factored tree for the right side in x (indexed from the tree's first node).
+    void substitute(int32_t tree, Vec3* x) const;
+    void solve_cuts(int32_t tree, const std::vector<JointConstraint>& constraints, const BodyState* states,
+                    float bias_rate);
     void apply(int32_t tree, std::vector<JointConstraint>& constraints, BodyState* states, const JointStep& step);
     // The exact pass's guard, over the body nodes [first, last) of one tree.
     void save_velocities(int32_t first, int32_t last, const BodyState* states);
@@ -92,11 +122,16 @@ private:
     std::vector<Mat33> gains_;           // per node: inverse pivot x the block to its parent
     std::vector<Vec3> work_;             // per node: right side, then solution
     std::vector<Vec3> saved_;            // per body node: its velocities before the pass
-    // Build scratch: union-find over states with each group's flags, and each state's
-    // exact joints.
-    enum GroupFlags : uint8_t { group_held = 1, group_looped = 2 };
+    std::vector<Cut> cuts_;              // tree by tree
+    std::vector<int32_t> cut_starts_;    // per tree its first cut; one more at the end
+    std::vector<Vec3> cut_impulses_;     // per cut: the pass's impulse on its rows
+    std::vector<int32_t> response_starts_;  // per tree: its first response in responses_
+    std::vector<Vec3> responses_;        // per tree, per cut row: the tree's answer to a unit impulse on it
+    // Build scratch: union-find over states with each group's holds (joints to a body
+    // that does not move) and loops, each state's exact joints, and the search's marks.
     std::vector<int32_t> set_of_, joint_starts_, joint_list_, queue_;
-    std::vector<uint8_t> group_flags_;
+    std::vector<int32_t> group_holds_, group_loops_, node_of_state_;
+    std::vector<uint8_t> group_started_, joint_seen_;
 };
 
 }  // namespace i2d
