@@ -2,9 +2,9 @@
 // JointTrees' choice of joints: the rigid rows of groups hung from a body that does not
 // move, trees or closing a few loops, are solved exactly; free groups and groups closing
 // more loops than the cuts allow (a grid) are left to the sweep, and so are kinds without
-// rigid rows and angle rows that no body can turn. The solving
-// itself is checked against closed forms by the physics suite (test_joints_chain.cpp,
-// test_joints_weld.cpp).
+// rigid rows and angle rows that no body can turn. The solving itself is checked against
+// closed forms by the physics suite (test_joints_chain.cpp, test_joints_weld.cpp,
+// test_joints_loops.cpp).
 #include <vector>
 
 #include "check.h"
