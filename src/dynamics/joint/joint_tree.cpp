@@ -115,6 +115,25 @@ Vec3 row_targets(const JointConstraint& c, const BodyState* states, float bias_r
     return target;
 }
 
+// The impulse on a joint's exact rows (point x, point y, angle), added to its own and
+// applied to its bodies through the anchors where they are now.
+void apply_impulse(JointConstraint& c, BodyState* states, const Vec3& impulse) {
+    JointBodies j = load_bodies(c, states);
+    if (c.exact_rows & exact_point_rows) {
+        const Vec2 linear{impulse.x, impulse.y};
+        c.impulses.linear += linear;
+        apply_linear(c, j, rotate(j.dqa, c.anchor_a), rotate(j.dqb, c.anchor_b), linear);
+    }
+    if (c.exact_rows & exact_angle_row) {
+        c.impulses.angular += impulse.z;
+        apply_angular(c, j, impulse.z);
+    }
+    store_bodies(c, j, states);
+}
+
+// Row r (0: point x, 1: point y, 2: angle) of a joint's three.
+float& row_of(Vec3& v, int32_t r) { return r == 0 ? v.x : r == 1 ? v.y : v.z; }
+
 // A cut row whose pivot falls below this fraction of the largest compliance among the
 // cut rows depends on the rows before it, or the tree holds it already (a joint doubling
 // another on the same anchors): it takes no impulse.
@@ -503,10 +522,9 @@ void JointTrees::solve_cuts(int32_t tree, const std::vector<JointConstraint>& co
         }
     }
     for (int32_t i = 0; i < row_count; ++i) {
-        const Vec3 target = row_targets(constraints[std::size_t(cuts_[std::size_t(rows[i].cut)].constraint)], states,
-                                        bias_rate);
-        const float row_target = rows[i].row == 0 ? target.x : rows[i].row == 1 ? target.y : target.z;
-        rhs[i] = -row_target - row_change(rows[i], base);
+        Vec3 target = row_targets(constraints[std::size_t(cuts_[std::size_t(rows[i].cut)].constraint)], states,
+                                  bias_rate);
+        rhs[i] = -row_of(target, rows[i].row) - row_change(rows[i], base);
     }
     float lambda[max_cut_rows];
     solve_dense(w, rhs, lambda, row_count);
@@ -518,8 +536,7 @@ void JointTrees::solve_cuts(int32_t tree, const std::vector<JointConstraint>& co
         for (int32_t n = 0; n < size; ++n) {
             add_to(base[n], answer[n], lambda[i]);
         }
-        Vec3& impulse = cut_impulses_[std::size_t(rows[i].cut)];
-        (rows[i].row == 0 ? impulse.x : rows[i].row == 1 ? impulse.y : impulse.z) = lambda[i];
+        row_of(cut_impulses_[std::size_t(rows[i].cut)], rows[i].row) = lambda[i];
     }
 }
 
@@ -540,32 +557,11 @@ void JointTrees::apply(int32_t tree, std::vector<JointConstraint>& constraints, 
             continue;
         }
         const Vec3& x = work_[std::size_t(n)];
-        JointConstraint& c = constraints[std::size_t(node.item)];
-        JointBodies j = load_bodies(c, states);
-        if (c.exact_rows & exact_point_rows) {
-            const Vec2 impulse{-x.x, -x.y};
-            c.impulses.linear += impulse;
-            apply_linear(c, j, rotate(j.dqa, c.anchor_a), rotate(j.dqb, c.anchor_b), impulse);
-        }
-        if (c.exact_rows & exact_angle_row) {
-            c.impulses.angular -= x.z;
-            apply_angular(c, j, -x.z);
-        }
-        store_bodies(c, j, states);
+        apply_impulse(constraints[std::size_t(node.item)], states, {-x.x, -x.y, -x.z});
     }
     for (int32_t k = cut_starts_[std::size_t(tree)]; k < cut_starts_[std::size_t(tree) + 1]; ++k) {
-        const Vec3& impulse = cut_impulses_[std::size_t(k)];
-        JointConstraint& c = constraints[std::size_t(cuts_[std::size_t(k)].constraint)];
-        JointBodies j = load_bodies(c, states);
-        if (c.exact_rows & exact_point_rows) {
-            c.impulses.linear += Vec2{impulse.x, impulse.y};
-            apply_linear(c, j, rotate(j.dqa, c.anchor_a), rotate(j.dqb, c.anchor_b), Vec2{impulse.x, impulse.y});
-        }
-        if (c.exact_rows & exact_angle_row) {
-            c.impulses.angular += impulse.z;
-            apply_angular(c, j, impulse.z);
-        }
-        store_bodies(c, j, states);
+        apply_impulse(constraints[std::size_t(cuts_[std::size_t(k)].constraint)], states,
+                      cut_impulses_[std::size_t(k)]);
     }
     if (!bodies_within_limits(first, last, states, step)) {
         undo_pass(first, last, constraints, states);
