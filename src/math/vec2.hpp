@@ -52,6 +52,15 @@ inline Vec2 unit_direction(Vec2 a) {
     return (1.0f / length(scaled)) * scaled;
 }
 
+/// (x, y), computed in double, scaled down to at most max_length and returned in float:
+/// no finite float sum that overflows float (a gravity near the float range times a
+/// step) reaches the caller as infinity.
+inline Vec2 held_to_length(double x, double y, float max_length) {
+    const double len = std::sqrt(x * x + y * y);
+    const double scale = len > double(max_length) ? double(max_length) / len : 1.0;
+    return {float(x * scale), float(y * scale)};
+}
+
 /// Rotation as cosine and sine; kept normalised.
 struct Rot {
     float c = 1.0f, s = 0.0f;

@@ -24,11 +24,7 @@ Vec2 limited_velocity(const BodyMotion& m, Vec2 v, Vec2 gravity, float h, float 
         ay = double(h) * (double(m.gravity_scale) * gravity.y + double(m.inv_mass) * m.force.y);
         damping_factor = 1.0 / (1.0 + double(h) * m.linear_damping);
     }
-    const double vx = (v.x + ax) * damping_factor;
-    const double vy = (v.y + ay) * damping_factor;
-    const double speed = std::sqrt(vx * vx + vy * vy);
-    const double scale = speed > max_speed ? max_speed / speed : 1.0;
-    return {float(vx * scale), float(vy * scale)};
+    return held_to_length((v.x + ax) * damping_factor, (v.y + ay) * damping_factor, max_speed);
 }
 
 // Gravity and force over mass of a body the solver moves; zero for fixed ones. Only the

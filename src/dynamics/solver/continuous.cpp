@@ -32,6 +32,10 @@ constexpr float impact_tolerance_share = 0.25f;
 /// differs from the sweep's by rounding. Farther points are speculative.
 constexpr float impact_touching_share = 1.5f;
 
+/// A body this close to the world's speed limit, as a share of it, was held there by the
+/// integration.
+constexpr float held_at_limit_share = 0.999f;
+
 /// How close the shape's centre may come to what it touched at the start of the step,
 /// in slops: a centre that got this close is stopped there, so that it never passes
 /// through.
@@ -284,9 +288,24 @@ bool Continuous::pre_solve_refuses(const FastShape& fast, int32_t other_index, c
 // so that it meets what it hit at the speed it had there: a ball dropped on the ground
 // bounces with e times its impact speed, not the faster speed the step ended with. (A
 // body carried by a kinematic one loses no time: it ends the step where its carrier does.)
+// A body at the speed limit was held there by the integration, which so gave it less than
+// the gravity of a step, or none: nothing is taken back (any finite gravity is accepted;
+// one of 1e6 m/s^2 sent a ball that hit a wall back at the limit, and one near the float
+// range left it -5.7e36 m/s, which the impact turned into NaN).
 void Continuous::rewind_gravity(const StepContext& step, int32_t body, float fraction) {
     Body& b = bodies_[body];
-    b.linear_velocity -= ((1.0f - fraction) * step.time_step * b.gravity_scale) * step.settings.gravity;
+    const float max_speed = step.settings.maximum_linear_speed;
+    const float held_speed = held_at_limit_share * max_speed;
+    if (length_squared(b.linear_velocity) >= held_speed * held_speed) {
+        return;
+    }
+    const float lost = (1.0f - fraction) * step.time_step * b.gravity_scale;
+    const Vec2 v = b.linear_velocity - lost * step.settings.gravity;
+    b.linear_velocity = length_squared(v) <= max_speed * max_speed
+                            ? v
+                            : held_to_length(double(b.linear_velocity.x) - double(lost) * double(step.settings.gravity.x),
+                                             double(b.linear_velocity.y) - double(lost) * double(step.settings.gravity.y),
+                                             max_speed);
 }
 
 // The body goes back to the fraction of its sweep, with the velocities resolve gave it.
