@@ -115,7 +115,7 @@ bool Replayed::settings_call(RecordedOp op) const {
         }
         case RecordedOp::set_world_settings: {
             WorldDef settings = world.settings();  // the host's wiring as it is
-            settings_fields(io, settings);
+            settings_fields(io, settings, recording_settings_versions);
             if (!read_whole(in)) {
                 return malformed(call);
             }

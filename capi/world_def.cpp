@@ -149,6 +149,7 @@ WorldDef to_core(const i2d_world_def& def) {
     core.tasks.finish = def.finish_task;
     core.tasks.user_context = def.user_task_context;
     core.enable_continuous = def.enable_continuous;
+    core.enable_impact_chains = def.enable_impact_chains;
     core.hit_event_threshold = def.hit_event_threshold;
     core.length_units_per_meter = def.length_units_per_meter;
     return core;
@@ -179,6 +180,7 @@ i2d_world_def to_public(const WorldDef& core) {
     def.finish_task = core.tasks.finish;
     def.user_task_context = core.tasks.user_context;
     def.enable_continuous = core.enable_continuous;
+    def.enable_impact_chains = core.enable_impact_chains;
     def.hit_event_threshold = core.hit_event_threshold;
     def.length_units_per_meter = core.length_units_per_meter;
     def.internal_cookie = def_cookie;

@@ -64,6 +64,11 @@ I2D_API i2d_status i2d_world_enable_continuous(i2d_world_id id, bool flag) {
                            [&](i2d_world_def& def) { def.enable_continuous = flag; });
 }
 
+I2D_API i2d_status i2d_world_enable_impact_chains(i2d_world_id id, bool flag) {
+    return change_settings("i2d_world_enable_impact_chains", id,
+                           [&](i2d_world_def& def) { def.enable_impact_chains = flag; });
+}
+
 I2D_API i2d_status i2d_world_set_contact_tuning(i2d_world_id id, float hertz, float damping_ratio,
                                                 float push_max_speed) {
     return change_settings("i2d_world_set_contact_tuning", id, [&](i2d_world_def& def) {

@@ -103,6 +103,7 @@ I2D_API i2d_world_def i2d_world_get_settings(i2d_world_id world);
 /** Turning sleep off wakes every body. */
 I2D_API i2d_status i2d_world_enable_sleeping(i2d_world_id world, bool flag);
 I2D_API i2d_status i2d_world_enable_continuous(i2d_world_id world, bool flag);
+I2D_API i2d_status i2d_world_enable_impact_chains(i2d_world_id world, bool flag);
 I2D_API i2d_status i2d_world_set_contact_tuning(i2d_world_id world, float hertz, float damping_ratio,
                                                 float push_max_speed);
 I2D_API i2d_status i2d_world_set_joint_tuning(i2d_world_id world, float hertz, float damping_ratio);

@@ -562,6 +562,10 @@ public:
     void enable_continuous(bool flag, Status& status) noexcept {
         i2d_world_enable_continuous(id_, flag); detail::record(status);
     }
+    void enable_impact_chains(bool flag) { i2d_world_enable_impact_chains(id_, flag); detail::throw_if_failed(); }
+    void enable_impact_chains(bool flag, Status& status) noexcept {
+        i2d_world_enable_impact_chains(id_, flag); detail::record(status);
+    }
     void set_contact_tuning(float hertz, float damping_ratio, float push_max_speed) {
         i2d_world_set_contact_tuning(id_, hertz, damping_ratio, push_max_speed); detail::throw_if_failed();
     }

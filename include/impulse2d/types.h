@@ -165,6 +165,16 @@ typedef struct i2d_world_def {
      *  too, other bullets included. Sensors report fast bodies that crossed them within
      *  a step (a begin and an end event in the same step). */
     bool enable_continuous;
+    /** Impacts passed from body to body within one step taken one at a time; default
+     *  true. A ball that strikes a row of balls standing a little apart (a Newton's
+     *  cradle) hits the first, which hits the next within the same step: solved together,
+     *  as the substeps solve every contact, the row shares the momentum; taken in the
+     *  order the gaps close, each impact resolved alone (-restitution times its approach,
+     *  Coulomb friction), the last ball leaves at the first one's speed. Only contacts of
+     *  restitution 0.5 and more approaching faster than restitution_threshold take part,
+     *  and only where an impact sets a neighbour moving into a third body: a lone bounce
+     *  and a resting stack step as they would without it. */
+    bool enable_impact_chains;
     /** Contact hit events are reported for impacts faster than this, m/s; default 1.
      *  Range [0, 1e5]. */
     float hit_event_threshold;

@@ -371,6 +371,7 @@ static void try_runtime_changes_while_locked(const fixture* f, const snapshot* b
     CHECK_RUNTIME_LOCKED(f, before, i2d_shape_enable_hit_events(ball_circle(f), true));
     CHECK_RUNTIME_LOCKED(f, before, i2d_world_enable_sleeping(f->world, false));
     CHECK_RUNTIME_LOCKED(f, before, i2d_world_enable_continuous(f->world, false));
+    CHECK_RUNTIME_LOCKED(f, before, i2d_world_enable_impact_chains(f->world, false));
     CHECK_RUNTIME_LOCKED(f, before, i2d_world_set_contact_tuning(f->world, 30.0f, 5.0f, 1.0f));
     CHECK_RUNTIME_LOCKED(f, before, i2d_world_set_joint_tuning(f->world, 30.0f, 1.0f));
     CHECK_RUNTIME_LOCKED(f, before, i2d_world_set_restitution_threshold(f->world, 2.0f));

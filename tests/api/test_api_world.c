@@ -125,6 +125,7 @@ static void cover_defaults(void) {
     I2D_CHECK_NEAR(w.sleep_speed_threshold, 0.05, 1e-9);
     I2D_CHECK(w.time_to_sleep == 0.5f);
     I2D_CHECK(w.enable_continuous);
+    I2D_CHECK(w.enable_impact_chains);
     I2D_CHECK(w.hit_event_threshold == 1.0f);
     I2D_CHECK(w.internal_cookie != 0);
 

@@ -197,12 +197,13 @@ I2D_TEST(cpp_runtime_world_settings) {
     I2D_CHECK(world.user_data() == &marker);
     world.enable_sleeping(false);
     world.enable_continuous(false);
+    world.enable_impact_chains(false);
     world.set_contact_tuning(20.0f, 5.0f, 2.0f);
     world.set_joint_tuning(30.0f, 1.5f);
     world.set_restitution_threshold(0.5f);
     world.set_hit_event_threshold(2.5f);
     const i2d_world_def s = world.settings();
-    I2D_CHECK(!s.enable_sleep && !s.enable_continuous);
+    I2D_CHECK(!s.enable_sleep && !s.enable_continuous && !s.enable_impact_chains);
     I2D_CHECK(s.contact_hertz == 20.0f && s.contact_damping_ratio == 5.0f && s.contact_push_max_speed == 2.0f);
     I2D_CHECK(s.joint_hertz == 30.0f && s.joint_damping_ratio == 1.5f);
     I2D_CHECK(s.restitution_threshold == 0.5f && s.hit_event_threshold == 2.5f);

@@ -148,10 +148,12 @@ void run_world_setting_call(FuzzInput& in, uint8_t op) {
         case 5: i2d_world_set_hit_event_threshold(w, in.real()); break;
         case 6: i2d_world_set_user_data(w, in.flag() ? g_held : nullptr); break;
         default: {
-            // The settings read back create a world like it (or are refused, for a bad id).
+            // The settings read back create a world like it (or are refused, for a bad id);
+            // the impact chains turn over (no input read: the corpus keeps its meaning).
             const i2d_world_def def = i2d_world_get_settings(w);
             const i2d_world_id twin = i2d_world_create(&def);
             i2d_world_destroy(twin);
+            i2d_world_enable_impact_chains(w, !def.enable_impact_chains);
             break;
         }
     }

@@ -98,12 +98,14 @@ def test_settings_after_creation_read_back(world):
     assert "internal_cookie" not in settings and "enqueue_task" not in settings
     world.enable_sleeping(False)
     world.enable_continuous(False)
+    assert world.settings["enable_impact_chains"]
+    world.enable_impact_chains(False)
     world.set_contact_tuning(30.0, 5.0, 2.0)
     world.set_joint_tuning(20.0, 1.5)
     world.set_restitution_threshold(2.5)
     world.set_hit_event_threshold(3.5)
     s = world.settings
-    assert not s["enable_sleep"] and not s["enable_continuous"]
+    assert not s["enable_sleep"] and not s["enable_continuous"] and not s["enable_impact_chains"]
     assert (s["contact_hertz"], s["contact_damping_ratio"], s["contact_push_max_speed"]) == (30.0, 5.0, 2.0)
     assert (s["joint_hertz"], s["joint_damping_ratio"]) == (20.0, 1.5)
     assert (s["restitution_threshold"], s["hit_event_threshold"]) == (2.5, 3.5)

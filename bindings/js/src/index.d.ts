@@ -58,6 +58,7 @@ export interface WorldSettings {
   jointHertz: number;
   jointDampingRatio: number;
   enableContinuous: boolean;
+  enableImpactChains: boolean;
   hitEventThreshold: number;
   lengthUnitsPerMeter: number;
   simdPath: SimdPathName;
@@ -655,6 +656,8 @@ export class World {
   /** Turning sleep off wakes every body. */
   enableSleeping(flag: boolean): void;
   enableContinuous(flag: boolean): void;
+  /** Impacts passed from body to body within a step taken one at a time (on by default). */
+  enableImpactChains(flag: boolean): void;
   setContactTuning(hertz: number, dampingRatio: number, pushMaxSpeed: number): void;
   setJointTuning(hertz: number, dampingRatio: number): void;
   setRestitutionThreshold(speed: number): void;

@@ -38,7 +38,8 @@ export const USES = {
     gravity: 'i2d_vec2', contact_slop: 'float', contact_hertz: 'float', contact_damping_ratio: 'float',
     contact_push_max_speed: 'float', restitution_threshold: 'float', maximum_linear_speed: 'float',
     enable_sleep: 'bool', sleep_speed_threshold: 'float', time_to_sleep: 'float', enable_contact_recycling: 'bool',
-    joint_hertz: 'float', joint_damping_ratio: 'float', enable_continuous: 'bool', hit_event_threshold: 'float',
+    joint_hertz: 'float', joint_damping_ratio: 'float', enable_continuous: 'bool',
+    enable_impact_chains: 'bool', hit_event_threshold: 'float',
     length_units_per_meter: 'float',
   },
   i2d_body_def: {

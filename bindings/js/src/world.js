@@ -249,6 +249,7 @@ export class World {
   /** Turning sleep off wakes every body. */
   enableSleeping(flag) { this.rt.check(this.rt.m._i2d_world_enable_sleeping(this.id, flag ? 1 : 0)); }
   enableContinuous(flag) { this.rt.check(this.rt.m._i2d_world_enable_continuous(this.id, flag ? 1 : 0)); }
+  enableImpactChains(flag) { this.rt.check(this.rt.m._i2d_world_enable_impact_chains(this.id, flag ? 1 : 0)); }
   setContactTuning(hertz, dampingRatio, pushMaxSpeed) {
     this.rt.check(this.rt.m._i2d_world_set_contact_tuning(this.id, hertz, dampingRatio, pushMaxSpeed));
   }
@@ -620,6 +621,7 @@ export function readWorldDef(rt, at) {
     jointHertz: float('joint_hertz'),
     jointDampingRatio: float('joint_damping_ratio'),
     enableContinuous: flag('enable_continuous'),
+    enableImpactChains: flag('enable_impact_chains'),
     hitEventThreshold: float('hit_event_threshold'),
     lengthUnitsPerMeter: float('length_units_per_meter'),
     simdPath: SIMD_PATH_NAMES[rt.i32[field('simd_path') >> 2]],

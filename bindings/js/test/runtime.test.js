@@ -169,12 +169,14 @@ test('world settings round trip, and shiftOrigin moves every position', () => {
   const { world } = groundedWorld();
   world.enableSleeping(false);
   world.enableContinuous(false);
+  assert.equal(world.settings().enableImpactChains, true);
+  world.enableImpactChains(false);
   world.setContactTuning(20, 5, 2);
   world.setJointTuning(30, 1.5);
   world.setRestitutionThreshold(0.5);
   world.setHitEventThreshold(2.5);
   const s = world.settings();
-  assert.deepEqual([s.enableSleep, s.enableContinuous], [false, false]);
+  assert.deepEqual([s.enableSleep, s.enableContinuous, s.enableImpactChains], [false, false, false]);
   assert.deepEqual([s.contactHertz, s.contactDampingRatio, s.contactPushMaxSpeed], [20, 5, 2]);
   assert.deepEqual([s.jointHertz, s.jointDampingRatio, s.restitutionThreshold, s.hitEventThreshold], [30, 1.5, 0.5, 2.5]);
   assert.equal(s.lengthUnitsPerMeter, 1);

@@ -92,6 +92,7 @@ def signatures(S: _structs.Structs) -> Dict[str, Tuple[Any, List[Any]]]:
         "i2d_world_get_settings": (WorldDef, [_ID]),
         "i2d_world_enable_sleeping": (_STATUS, [_ID, C.c_bool]),
         "i2d_world_enable_continuous": (_STATUS, [_ID, C.c_bool]),
+        "i2d_world_enable_impact_chains": (_STATUS, [_ID, C.c_bool]),
         "i2d_world_set_contact_tuning": (_STATUS, [_ID, C.c_float, C.c_float, C.c_float]),
         "i2d_world_set_joint_tuning": (_STATUS, [_ID, C.c_float, C.c_float]),
         "i2d_world_set_restitution_threshold": (_STATUS, [_ID, C.c_float]),

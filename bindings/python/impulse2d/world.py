@@ -242,6 +242,11 @@ class World:
         """Turns continuous collision on or off (enable_continuous)."""
         check(lib.i2d_world_enable_continuous(self._id, flag))
 
+    def enable_impact_chains(self, flag: bool) -> None:
+        """Turns impacts passed from body to body within a step, taken one at a time, on or
+        off (enable_impact_chains)."""
+        check(lib.i2d_world_enable_impact_chains(self._id, flag))
+
     def set_contact_tuning(self, hertz: float, damping_ratio: float, push_max_speed: float) -> None:
         """Contact stiffness (contact_hertz), damping (contact_damping_ratio) and the
         speed at which overlap is pushed out (contact_push_max_speed)."""

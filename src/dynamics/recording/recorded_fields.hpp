@@ -111,6 +111,6 @@ inline void save_recorded(SaveIo& io, const Filter& f) { filter_fields(io, f); }
 inline void save_recorded(SaveIo& io, const ChainDef& d) { save_chain_def(io, d); }
 inline void save_recorded(SaveIo& io, const JointDef& d) { joint_def_fields(io, d); }
 inline void save_recorded(SaveIo& io, const SurfaceMaterial& m) { surface_material_fields(io, m); }
-inline void save_recorded(SaveIo& io, const WorldDef& s) { settings_fields(io, s); }
+inline void save_recorded(SaveIo& io, const WorldDef& s) { settings_fields(io, s, recording_settings_versions); }
 
 }  // namespace i2d

@@ -79,8 +79,9 @@ enum class RecordedOp : uint8_t {
 /// Receives a recording's bytes, a record at a time.
 using RecordWriter = void (*)(const void* bytes, std::size_t size, void* context);
 
-// 2 added the shape def's opt-ins to the contact hooks (off in older recordings).
-constexpr uint32_t recording_format_version = 2;
+// 2 added the shape def's opt-ins to the contact hooks (off in older recordings). 3 added
+// the world's enable_impact_chains to its recorded settings (on in older recordings).
+constexpr uint32_t recording_format_version = 3;
 constexpr std::size_t recording_header_size = 16;
 constexpr std::size_t record_header_size = 13;
 constexpr std::size_t record_header_size_v1 = 9;  // format 1: no size check

@@ -27,10 +27,19 @@ namespace i2d {
 
 enum class SnapshotPart : uint8_t { whole, state };
 
+/// The format versions that added settings fields, in the numbering of the format that
+/// holds them: snapshots and recordings count their versions apart.
+struct SettingsVersions {
+    uint32_t length_unit;
+    uint32_t impact_chains;
+};
+constexpr SettingsVersions snapshot_settings_versions{2, 4};
+constexpr SettingsVersions recording_settings_versions{2, 3};
+
 /// The simulation's settings; not the host's wiring (workers, task callbacks, SIMD path,
 /// profiling), which a world keeps as its own.
 template <class Io, class Def>
-void settings_fields(Io& io, Def& s) {
+void settings_fields(Io& io, Def& s, const SettingsVersions& added) {
     io(s.gravity);
     io(s.contact_slop);
     io(s.contact_hertz);
@@ -48,10 +57,15 @@ void settings_fields(Io& io, Def& s) {
     io(s.enable_contact_recycling);
     io(s.enable_continuous);
     io(s.hit_event_threshold);
-    if (io.has_version(2)) {
+    if (io.has_version(added.length_unit)) {
         io(s.length_units_per_meter);
     } else if constexpr (Io::loading) {
         s.length_units_per_meter = 1.0f;
+    }
+    if (io.has_version(added.impact_chains)) {
+        io(s.enable_impact_chains);
+    } else if constexpr (Io::loading) {
+        s.enable_impact_chains = true;
     }
 }
 

@@ -20,7 +20,7 @@ void World::transfer(Io& io, Self& world) {
     auto& bytes = io.bytes();
     {
         SectionOf<Io> s(bytes, settings_section);
-        settings_fields(io, world.settings_);
+        settings_fields(io, world.settings_, snapshot_settings_versions);
     }
     {
         SectionOf<Io> s(bytes, bodies_section);

@@ -109,7 +109,7 @@ void ConstraintGraph::color_contacts(int32_t share_count, BodyShares& shares, Sh
     const Pool<Contact>& contacts = links_.contacts.pool();
     colored_contacts_.clear();
     body_starts_.assign(std::size_t(colored_body_count_) + 2, 0);
-    any_elastic_contact_ = false;
+    max_restitution_ = 0.0f;
     // The list jumps through the contact pool: ask for contacts ahead.
     constexpr std::size_t contacts_ahead = 32;
     for (std::size_t k = 0; k < solvable.size(); ++k) {
@@ -121,7 +121,7 @@ void ConstraintGraph::color_contacts(int32_t share_count, BodyShares& shares, Sh
         const int32_t color =
             colors_.assign((contact.flags & contact_moves_a) ? contact.state_a : ConstraintColors::null_state,
                            (contact.flags & contact_moves_b) ? contact.state_b : ConstraintColors::null_state);
-        any_elastic_contact_ = any_elastic_contact_ || contact.restitution != 0.0f;
+        max_restitution_ = max_of(max_restitution_, contact.restitution);
         const bool single_after_pairs = color != ConstraintColors::overflow && contact.point_count == 1;
         const int32_t a = (contact.flags & contact_moves_a) ? contact.state_a : colored_body_count_;
         const int32_t b = (contact.flags & contact_moves_b) ? contact.state_b : colored_body_count_;

@@ -94,7 +94,9 @@ public:
     /// color_parts); empty when the colours are kept whole.
     const std::vector<int32_t>& color_parts() const { return color_parts_; }
     /// Some coloured contact is elastic: the restitution pass may run.
-    bool any_elastic_contact() const { return any_elastic_contact_; }
+    bool any_elastic_contact() const { return max_restitution_ != 0.0f; }
+    /// The largest restitution among the coloured contacts.
+    float max_restitution() const { return max_restitution_; }
 
 private:
     struct ColoredContact {
@@ -125,7 +127,7 @@ private:
     std::vector<int32_t> ordered_contacts_;         // the contacts to solve, colour by colour
     std::vector<int32_t> scratch_starts_;
     std::vector<int32_t> color_parts_;
-    bool any_elastic_contact_ = false;  // among the coloured contacts
+    float max_restitution_ = 0.0f;  // among the coloured contacts
     // What the contacts were last coloured for.
     bool colored_ = false;
     uint64_t colored_version_ = 0;

@@ -35,6 +35,10 @@ void Solver::step(const StepContext& step) {
     if (graph_.update(plan_.parallel ? workers : 1, workers, plan_.parallel, shares_, balance_)) {
         contact_solver_.lay_out(contact_layout());
     }
+    if (step.settings.enable_impact_chains && graph_.max_restitution() >= chain_min_restitution) {
+        // Before the bodies are gathered: the substeps start from the chains' velocities.
+        impact_chains_.run(step, links_.bodies, links_.contacts);
+    }
     const std::vector<int32_t>& ordered_joints = graph_.ordered_joints();
     joint_solver_.lay_out(ordered_joints.data(), int32_t(ordered_joints.size()));
     if (graph_.joints_regathered()) {

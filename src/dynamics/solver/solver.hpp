@@ -35,6 +35,7 @@
 #include "dynamics/solver/body_shares.hpp"
 #include "dynamics/solver/constraint_graph.hpp"
 #include "dynamics/solver/contact_solver.hpp"
+#include "dynamics/solver/impact_chain.hpp"
 #include "dynamics/solver/joint_solver.hpp"
 #include "dynamics/solver/move_events.hpp"
 #include "dynamics/solver/simd/simd_path.hpp"
@@ -163,6 +164,7 @@ private:
     SolverLinks links_;
     SimdPath simd_path_;
     ContactSolver contact_solver_;
+    ImpactChains impact_chains_;
     JointSolver joint_solver_;
     BodyShares shares_;     // each worker's bodies: every stage is split where they are
     ShareBalance balance_;  // how much of the work each share gets

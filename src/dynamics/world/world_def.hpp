@@ -30,6 +30,7 @@ struct WorldDef {
     int32_t worker_count = 1;                  // in [1, max_worker_count]
     TaskCallbacks tasks;                       // both null: the built-in pool
     bool enable_continuous = true;             // sweep fast bodies (continuous.hpp)
+    bool enable_impact_chains = true;          // impacts within a step one at a time (impact_chain.hpp)
     float hit_event_threshold = 1.0f;          // m/s: slower impacts report no hit event
     float length_units_per_meter = 1.0f;       // the world's length unit (tolerances scale with it)
 };
