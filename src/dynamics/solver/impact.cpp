@@ -1,6 +1,9 @@
 // SPDX-License-Identifier: MIT
-// resolve_impact: the rigid contact impulse of one impact, by sequential impulses.
+// resolve_impact, resolve_impacts: the rigid contact impulses of one impact, or of several at
+// once, by sequential impulses.
 #include "dynamics/solver/impact.hpp"
+
+#include <limits>
 
 #include "dynamics/constants.hpp"
 #include "dynamics/solver/effective_mass.hpp"
@@ -77,6 +80,60 @@ void solve_normal_point(ImpactPoint& p, Vec2 normal, ImpactBody& a, ImpactBody& 
     p.normal_impulse = total;
 }
 
+// The point's normal impulse and its target, from the approach where it is now: -e times
+// an approach faster than the threshold, else no approach.
+ImpactPoint make_point(Vec2 point, const ImpactBody& a, const ImpactBody& b, Vec2 normal,
+                       const ImpactMaterial& material, float& approach) {
+    ImpactPoint p;
+    p.r_a = point - a.center;
+    p.r_b = point - b.center;
+    p.normal_mass = effective_mass(a, b, p.r_a, p.r_b, normal);
+    p.tangent_mass = effective_mass(a, b, p.r_a, p.r_b, left_perp(normal));
+    approach = -dot(point_velocity(b, p.r_b) - point_velocity(a, p.r_a), normal);
+    p.target_speed = approach > material.restitution_threshold ? material.restitution * approach : 0.0f;
+    return p;
+}
+
+// One sweep over a contact's points: the normal impulses (two points as one block where
+// it is well conditioned), then Coulomb friction per point.
+void sweep_contact(ImpactPoint (&points)[2], int32_t count, Vec2 normal, const ImpactMaterial& material,
+                   ImpactBody& a, ImpactBody& b) {
+    const Vec2 tangent = left_perp(normal);
+    if (count < 2 || !solve_normal_pair(points, normal, a, b)) {
+        for (int32_t i = 0; i < count; ++i) {
+            solve_normal_point(points[i], normal, a, b);
+        }
+    }
+    for (int32_t i = 0; i < count; ++i) {
+        ImpactPoint& p = points[i];
+        const float vt = dot(point_velocity(b, p.r_b) - point_velocity(a, p.r_a), tangent) - material.tangent_speed;
+        const float limit = material.friction * p.normal_impulse;
+        const float total = clamp(p.tangent_impulse - p.tangent_mass * vt, -limit, limit);
+        apply_impulse(a, b, p.r_a, p.r_b, (total - p.tangent_impulse) * tangent);
+        p.tangent_impulse = total;
+    }
+}
+
+// A contact's points that take part (separation at most `touching`), and the fastest
+// approach among them.
+int32_t gather_points(const Manifold& manifold, float touching, const ImpactMaterial& material, const ImpactBody& a,
+                      const ImpactBody& b, ImpactPoint (&points)[2], ImpactResult& result) {
+    int32_t count = 0;
+    for (int32_t i = 0; i < manifold.point_count; ++i) {
+        const ManifoldPoint& mp = manifold.points[i];
+        if (-mp.penetration > touching) {
+            continue;  // a speculative point: the next step's contact has it
+        }
+        float approach = 0.0f;
+        points[count++] = make_point(mp.point, a, b, manifold.normal, material, approach);
+        if (approach > result.approach_speed) {
+            result.approach_speed = approach;
+            result.point_index = i;
+        }
+    }
+    return count;
+}
+
 }  // namespace
 
 // Box2D's contact solve without softness or bias (contact_solver.hpp): the normal
@@ -87,47 +144,42 @@ void solve_normal_point(ImpactPoint& p, Vec2 normal, ImpactBody& a, ImpactBody& 
 // -e v_approach for an approach faster than the threshold, else no approach.
 ImpactResult resolve_impact(const Manifold& manifold, float touching, const ImpactMaterial& material, ImpactBody& a,
                             ImpactBody& b) {
-    const Vec2 normal = manifold.normal;
-    const Vec2 tangent = left_perp(normal);
     ImpactPoint points[2];
-    int32_t count = 0;
     ImpactResult result;
-    for (int32_t i = 0; i < manifold.point_count; ++i) {
-        const ManifoldPoint& mp = manifold.points[i];
-        if (-mp.penetration > touching) {
-            continue;  // a speculative point: the next step's contact has it
-        }
-        ImpactPoint& p = points[count++];
-        p.r_a = mp.point - a.center;
-        p.r_b = mp.point - b.center;
-        p.normal_mass = effective_mass(a, b, p.r_a, p.r_b, normal);
-        p.tangent_mass = effective_mass(a, b, p.r_a, p.r_b, tangent);
-        const float approach = -dot(point_velocity(b, p.r_b) - point_velocity(a, p.r_a), normal);
-        p.target_speed = approach > material.restitution_threshold ? material.restitution * approach : 0.0f;
-        if (approach > result.approach_speed) {
-            result.approach_speed = approach;
-            result.point_index = i;
-        }
-    }
+    const int32_t count = gather_points(manifold, touching, material, a, b, points, result);
     if (result.point_index < 0) {
         return result;  // nothing touching approaches
     }
     for (int32_t iteration = 0; iteration < impact_iterations; ++iteration) {
-        if (count < 2 || !solve_normal_pair(points, normal, a, b)) {
-            for (int32_t i = 0; i < count; ++i) {
-                solve_normal_point(points[i], normal, a, b);
-            }
-        }
-        for (int32_t i = 0; i < count; ++i) {
-            ImpactPoint& p = points[i];
-            const float vt = dot(point_velocity(b, p.r_b) - point_velocity(a, p.r_a), tangent) - material.tangent_speed;
-            const float limit = material.friction * p.normal_impulse;
-            const float total = clamp(p.tangent_impulse - p.tangent_mass * vt, -limit, limit);
-            apply_impulse(a, b, p.r_a, p.r_b, (total - p.tangent_impulse) * tangent);
-            p.tangent_impulse = total;
-        }
+        sweep_contact(points, count, manifold.normal, material, a, b);
     }
     return result;
+}
+
+// The same sweeps over every contact in turn, until the contacts that share a body agree:
+// each sweep passes on what the others left, so a ball struck by two at once takes both
+// impulses together, as the simultaneous solution has them (two balls meeting the apex of
+// a rack at the same time leave it mirror images of each other).
+void resolve_impacts(const ImpactContact* contacts, int32_t count, ImpactBody* bodies, ImpactResult* results) {
+    constexpr int32_t most_contacts = max_simultaneous_impacts;
+    ImpactPoint points[most_contacts][2];
+    int32_t point_counts[most_contacts];
+    for (int32_t k = 0; k < count; ++k) {
+        const ImpactContact& c = contacts[k];
+        results[k] = ImpactResult{};
+        point_counts[k] = gather_points(c.manifold, std::numeric_limits<float>::max(), c.material,
+                                        bodies[c.body_a], bodies[c.body_b], points[k], results[k]);
+    }
+    const int32_t iterations = count == 1 ? impact_iterations : simultaneous_impact_iterations;
+    for (int32_t iteration = 0; iteration < iterations; ++iteration) {
+        for (int32_t k = 0; k < count; ++k) {
+            const ImpactContact& c = contacts[k];
+            if (results[k].point_index >= 0) {
+                sweep_contact(points[k], point_counts[k], c.manifold.normal, c.material, bodies[c.body_a],
+                              bodies[c.body_b]);
+            }
+        }
+    }
 }
 
 }  // namespace i2d

@@ -56,4 +56,22 @@ struct ImpactResult {
 ImpactResult resolve_impact(const Manifold& manifold, float touching, const ImpactMaterial& material, ImpactBody& a,
                             ImpactBody& b);
 
+/// The most contacts one simultaneous impact solves together.
+constexpr int32_t max_simultaneous_impacts = 8;
+/// Sweeps over a simultaneous impact's contacts: a ball struck at two points converges
+/// by the square of their coupling each sweep (1/16 for a rack's apex), so 32 leave
+/// nothing of it in float.
+constexpr int32_t simultaneous_impact_iterations = 32;
+
+/// One contact of a simultaneous impact: all its manifold's points take part.
+struct ImpactContact {
+    Manifold manifold;  // normal from A to B
+    ImpactMaterial material;
+    int32_t body_a, body_b;  // in the bodies array
+};
+
+/// Solves several contacts' impacts together (count at most max_simultaneous_impacts), the
+/// bodies' velocities changed in place; one result per contact.
+void resolve_impacts(const ImpactContact* contacts, int32_t count, ImpactBody* bodies, ImpactResult* results);
+
 }  // namespace i2d

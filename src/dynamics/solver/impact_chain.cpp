@@ -60,13 +60,21 @@ void ImpactChains::run(const StepContext& step, Pool<Body>& bodies, ContactSet& 
         }
     }
     while (!heap_.empty()) {
-        const Candidate c = pop();
-        if (taken_[std::size_t(c.contact)]) {
-            continue;  // each contact takes one impact a step; the substeps take the rest
+        // The impacts of one moment, each contact once a step (the substeps take the rest).
+        group_.clear();
+        const float moment = heap_.front().time;
+        while (!heap_.empty() && heap_.front().time <= moment + simultaneous_time &&
+               int32_t(group_.size()) < max_simultaneous_impacts) {
+            const Candidate c = pop();
+            if (!taken_[std::size_t(c.contact)]) {
+                taken_[std::size_t(c.contact)] = 1;
+                taken_list_.push_back(c.contact);
+                group_.push_back(c);
+            }
         }
-        taken_[std::size_t(c.contact)] = 1;
-        taken_list_.push_back(c.contact);
-        resolve(step, bodies, contacts, c);
+        if (!group_.empty()) {
+            resolve(step, bodies, contacts);
+        }
     }
     for (const int32_t contact : taken_list_) {
         taken_[std::size_t(contact)] = 0;
@@ -108,78 +116,98 @@ ImpactChains::Candidate ImpactChains::pop() {
     return c;
 }
 
-// The contact's impact alone, on all its points (the gap is taken as closed). An impact
-// that starts no chain (no other contact of its bodies newly closes within the step) is
-// undone, bit for bit, and left to the substeps; false then, or when nothing approached.
-bool ImpactChains::resolve(const StepContext& step, Pool<Body>& bodies, ContactSet& contacts, const Candidate& c) {
-    Contact& k = contacts.pool()[c.contact];
-    Body& body_a = bodies[k.edges[0].body];
-    Body& body_b = bodies[k.edges[1].body];
-    const bool moves_a = moved_by_solver(k, 0), moves_b = moved_by_solver(k, 1);
-    ImpactBody a = impact_body(body_a, moves_a), b = impact_body(body_b, moves_b);
-    Manifold manifold;
-    manifold.normal = k.normal;
-    manifold.point_count = k.point_count;
-    for (int32_t i = 0; i < k.point_count; ++i) {
-        manifold.points[i].point = body_a.center + k.points[i].anchor_a;
-        manifold.points[i].penetration = -k.points[i].separation;
+// The group's impacts together, on all their contacts' points (the gaps taken as closed).
+// A group that starts no chain (no other contact of its bodies newly closes within the
+// step), unless a chain made it, is undone, bit for bit, and left to the substeps.
+void ImpactChains::resolve(const StepContext& step, Pool<Body>& bodies, ContactSet& contacts) {
+    impact_bodies_.clear();
+    body_of_slot_.clear();
+    const auto slot_of = [&](int32_t body, bool moves) {
+        for (std::size_t s = 0; s < body_of_slot_.size(); ++s) {
+            if (body_of_slot_[s] == body) {
+                return int32_t(s);
+            }
+        }
+        body_of_slot_.push_back(body);
+        impact_bodies_.push_back(impact_body(bodies[body], moves));
+        return int32_t(body_of_slot_.size()) - 1;
+    };
+    impacts_.clear();
+    bool in_chain = false;
+    for (const Candidate& c : group_) {
+        const Contact& k = contacts.pool()[c.contact];
+        ImpactContact impact;
+        impact.manifold.normal = k.normal;
+        impact.manifold.point_count = k.point_count;
+        for (int32_t i = 0; i < k.point_count; ++i) {
+            impact.manifold.points[i].point = bodies[k.edges[0].body].center + k.points[i].anchor_a;
+            impact.manifold.points[i].penetration = -k.points[i].separation;
+        }
+        impact.material = {k.friction, k.restitution, step.settings.restitution_threshold, k.tangent_speed};
+        impact.body_a = slot_of(k.edges[0].body, moved_by_solver(k, 0));
+        impact.body_b = slot_of(k.edges[1].body, moved_by_solver(k, 1));
+        impacts_.push_back(impact);
+        in_chain = in_chain || c.in_chain;
     }
-    const ImpactMaterial material{k.friction, k.restitution, step.settings.restitution_threshold, k.tangent_speed};
-    const ImpactResult r = resolve_impact(manifold, std::numeric_limits<float>::max(), material, a, b);
-    if (r.point_index < 0) {
-        return false;
-    }
-    find_neighbours(step, bodies, contacts, c.contact);
-    const Vec2 saved_va = body_a.linear_velocity, saved_vb = body_b.linear_velocity;
-    const float saved_wa = body_a.angular_velocity, saved_wb = body_b.angular_velocity;
+    results_.resize(impacts_.size());
+    resolve_impacts(impacts_.data(), int32_t(impacts_.size()), impact_bodies_.data(), results_.data());
+    find_neighbours(step, bodies, contacts);
+    // Swapped in: the impact's velocities on the moving bodies, theirs kept to go back to.
     const float max_spin = step.max_spin();
-    if (moves_a) {
-        body_a.linear_velocity = a.linear_velocity;
-        body_a.angular_velocity = clamp(a.angular_velocity, -max_spin, max_spin);
-    }
-    if (moves_b) {
-        body_b.linear_velocity = b.linear_velocity;
-        body_b.angular_velocity = clamp(b.angular_velocity, -max_spin, max_spin);
+    for (std::size_t s = 0; s < body_of_slot_.size(); ++s) {
+        ImpactBody& v = impact_bodies_[s];
+        if (v.inv_mass == 0.0f) {
+            continue;  // a body the solver does not move
+        }
+        Body& body = bodies[body_of_slot_[s]];
+        std::swap(body.linear_velocity, v.linear_velocity);
+        const float spin = clamp(v.angular_velocity, -max_spin, max_spin);
+        v.angular_velocity = body.angular_velocity;
+        body.angular_velocity = spin;
     }
     started_.clear();
+    const float moment = group_.front().time;
     for (const Neighbour& n : neighbours_) {
         Candidate next;  // its time from now
         if (!n.was_closing && candidate_of(step, bodies, contacts, n.contact, next)) {
-            started_.push_back({c.time + next.time, n.contact, true});
+            started_.push_back({moment + next.time, n.contact, true});
         }
     }
-    if (!c.in_chain && started_.empty()) {
-        body_a.linear_velocity = saved_va;
-        body_a.angular_velocity = saved_wa;
-        body_b.linear_velocity = saved_vb;
-        body_b.angular_velocity = saved_wb;
-        return false;
+    if (!in_chain && started_.empty()) {
+        for (std::size_t s = 0; s < body_of_slot_.size(); ++s) {
+            const ImpactBody& v = impact_bodies_[s];
+            if (v.inv_mass != 0.0f) {
+                bodies[body_of_slot_[s]].linear_velocity = v.linear_velocity;
+                bodies[body_of_slot_[s]].angular_velocity = v.angular_velocity;
+            }
+        }
+        return;
     }
     for (const Candidate& next : started_) {
         push(next);
     }
-    if ((k.flags & contact_hit_events) != 0 && r.approach_speed > k.hit_speed) {
-        k.hit_speed = r.approach_speed;  // the hit event the substeps would have given
-        k.hit_point = r.point_index;
+    for (std::size_t g = 0; g < group_.size(); ++g) {
+        Contact& k = contacts.pool()[group_[g].contact];
+        const ImpactResult& r = results_[g];
+        if ((k.flags & contact_hit_events) != 0 && r.point_index >= 0 && r.approach_speed > k.hit_speed) {
+            k.hit_speed = r.approach_speed;  // the hit event the substeps would have given
+            k.hit_point = r.point_index;
+        }
     }
-    return true;
 }
 
-// The other contacts of the impact's moving bodies not yet taken, each once, and whether
+// The other contacts of the group's moving bodies not yet taken, each once, and whether
 // they were closing before the impact.
-void ImpactChains::find_neighbours(const StepContext& step, const Pool<Body>& bodies, const ContactSet& contacts,
-                                   int32_t contact) {
+void ImpactChains::find_neighbours(const StepContext& step, const Pool<Body>& bodies, const ContactSet& contacts) {
     neighbours_.clear();
-    const Contact& k = contacts.pool()[contact];
-    for (int32_t edge = 0; edge < 2; ++edge) {
-        if (!moved_by_solver(k, edge)) {
+    for (std::size_t s = 0; s < body_of_slot_.size(); ++s) {
+        if (impact_bodies_[s].inv_mass == 0.0f) {
             continue;
         }
-        const int32_t other_body = k.edges[edge ^ 1].body;
-        contacts.visit_contacts(k.edges[edge].body, [&](int32_t next, int32_t other) {
-            // Between the impact's two bodies: listed once, from A.
-            const bool seen = edge == 1 && other == other_body && moved_by_solver(k, 0);
-            if (next == contact || taken_[std::size_t(next)] || seen) {
+        contacts.visit_contacts(body_of_slot_[s], [&](int32_t next, int32_t) {
+            if (taken_[std::size_t(next)] ||
+                std::any_of(neighbours_.begin(), neighbours_.end(),
+                            [next](const Neighbour& n) { return n.contact == next; })) {
                 return;
             }
             Candidate before;

@@ -11,7 +11,10 @@
 // chain is solved as the rigid-body model of sequential impacts does: an impact is
 // resolved alone (impact.hpp: -e times the approach, Coulomb friction), which sets the
 // struck body moving into its neighbour, whose contact then takes its own impact, and so
-// on, each contact at most once per step, earliest closing gap first.
+// on, each contact at most once per step, earliest closing gap first. Impacts of the same
+// moment are solved together (impact.hpp's resolve_impacts): a ball struck by two at once
+// takes both, so a rack struck on its axis breaks as mirror images, where one impact after
+// the other would send its apex off to the side of the first.
 //
 // Only chains are taken. An impact whose bodies then meet nothing new within the step is
 // undone and left to the substeps, whose restitution pass follows the pair's approach
@@ -30,6 +33,7 @@
 
 #include "core/pool.hpp"
 #include "dynamics/body/body.hpp"
+#include "dynamics/solver/impact.hpp"
 #include "dynamics/step_context.hpp"
 
 namespace i2d {
@@ -42,6 +46,10 @@ class ContactSet;
 /// spinner's 12,000 contacts at e = 0.1 took a quarter more instructions a step for
 /// chains that moved little.
 constexpr float chain_min_restitution = 0.5f;
+/// Impacts whose gaps close this close in time (s) are one moment, solved together: a
+/// ball meeting two at once is struck by both (the order of two simultaneous impacts,
+/// taken one after the other, would send a rack's apex off to one side).
+constexpr float simultaneous_time = 1e-5f;
 
 class ImpactChains {
 public:
@@ -61,9 +69,8 @@ private:
                       int32_t contact, Candidate& out) const;
     void push(const Candidate& c);
     Candidate pop();
-    bool resolve(const StepContext& step, Pool<Body>& bodies, ContactSet& contacts, const Candidate& c);
-    void find_neighbours(const StepContext& step, const Pool<Body>& bodies, const ContactSet& contacts,
-                         int32_t contact);
+    void resolve(const StepContext& step, Pool<Body>& bodies, ContactSet& contacts);
+    void find_neighbours(const StepContext& step, const Pool<Body>& bodies, const ContactSet& contacts);
 
     // A contact of an impact's bodies, and whether it was closing before the impact.
     struct Neighbour {
@@ -73,6 +80,13 @@ private:
     std::vector<Candidate> heap_;
     std::vector<Neighbour> neighbours_;
     std::vector<Candidate> started_;  // the chains an impact starts
+    // The impacts of one moment, solved together: their contacts, the bodies they move
+    // (each once, with the pool index it came from) and what each contact did.
+    std::vector<Candidate> group_;
+    std::vector<ImpactContact> impacts_;
+    std::vector<ImpactBody> impact_bodies_;
+    std::vector<int32_t> body_of_slot_;
+    std::vector<ImpactResult> results_;
     std::vector<uint8_t> taken_;  // per contact in the pool: resolved (or left) this step
     std::vector<int32_t> taken_list_;
 };
