@@ -72,14 +72,55 @@ void ImpactChains::run(const StepContext& step, Pool<Body>& bodies, ContactSet& 
                 group_.push_back(c);
             }
         }
-        if (!group_.empty()) {
-            resolve(step, bodies, contacts);
-        }
+        resolve_by_bodies(step, bodies, contacts);
     }
     for (const int32_t contact : taken_list_) {
         taken_[std::size_t(contact)] = 0;
     }
     taken_list_.clear();
+}
+
+// The moment's impacts that share a moving body, directly or through others, are solved
+// together; the others apart, each kept or undone on its own.
+void ImpactChains::resolve_by_bodies(const StepContext& step, Pool<Body>& bodies, ContactSet& contacts) {
+    const int32_t count = int32_t(group_.size());
+    int32_t part_of[max_simultaneous_impacts];
+    for (int32_t i = 0; i < count; ++i) {
+        part_of[i] = i;
+    }
+    const auto moving_bodies_meet = [&](int32_t i, int32_t j) {
+        const Contact& x = contacts.pool()[group_[std::size_t(i)].contact];
+        const Contact& y = contacts.pool()[group_[std::size_t(j)].contact];
+        for (int32_t ex = 0; ex < 2; ++ex) {
+            for (int32_t ey = 0; ey < 2; ++ey) {
+                if (moved_by_solver(x, ex) && moved_by_solver(y, ey) && x.edges[ex].body == y.edges[ey].body) {
+                    return true;
+                }
+            }
+        }
+        return false;
+    };
+    for (int32_t i = 0; i < count; ++i) {
+        for (int32_t j = i + 1; j < count; ++j) {
+            if (part_of[j] != part_of[i] && moving_bodies_meet(i, j)) {
+                const int32_t from = part_of[j];
+                for (int32_t k = 0; k < count; ++k) {
+                    part_of[k] = part_of[k] == from ? part_of[i] : part_of[k];
+                }
+            }
+        }
+    }
+    for (int32_t part = 0; part < count; ++part) {
+        part_.clear();
+        for (int32_t i = 0; i < count; ++i) {
+            if (part_of[i] == part) {
+                part_.push_back(group_[std::size_t(i)]);
+            }
+        }
+        if (!part_.empty()) {
+            resolve(step, bodies, contacts);
+        }
+    }
 }
 
 bool ImpactChains::candidate_of(const StepContext& step, const Pool<Body>& bodies, const ContactSet& contacts,
@@ -116,8 +157,8 @@ ImpactChains::Candidate ImpactChains::pop() {
     return c;
 }
 
-// The group's impacts together, on all their contacts' points (the gaps taken as closed).
-// A group that starts no chain (no other contact of its bodies newly closes within the
+// A part's impacts together, on all their contacts' points (the gaps taken as closed).
+// A part that starts no chain (no other contact of its bodies newly closes within the
 // step), unless a chain made it, is undone, bit for bit, and left to the substeps.
 void ImpactChains::resolve(const StepContext& step, Pool<Body>& bodies, ContactSet& contacts) {
     impact_bodies_.clear();
@@ -134,7 +175,7 @@ void ImpactChains::resolve(const StepContext& step, Pool<Body>& bodies, ContactS
     };
     impacts_.clear();
     bool in_chain = false;
-    for (const Candidate& c : group_) {
+    for (const Candidate& c : part_) {
         const Contact& k = contacts.pool()[c.contact];
         ImpactContact impact;
         impact.manifold.normal = k.normal;
@@ -166,7 +207,7 @@ void ImpactChains::resolve(const StepContext& step, Pool<Body>& bodies, ContactS
         body.angular_velocity = spin;
     }
     started_.clear();
-    const float moment = group_.front().time;
+    const float moment = part_.front().time;
     for (const Neighbour& n : neighbours_) {
         Candidate next;  // its time from now
         if (!n.was_closing && candidate_of(step, bodies, contacts, n.contact, next)) {
@@ -186,8 +227,8 @@ void ImpactChains::resolve(const StepContext& step, Pool<Body>& bodies, ContactS
     for (const Candidate& next : started_) {
         push(next);
     }
-    for (std::size_t g = 0; g < group_.size(); ++g) {
-        Contact& k = contacts.pool()[group_[g].contact];
+    for (std::size_t g = 0; g < part_.size(); ++g) {
+        Contact& k = contacts.pool()[part_[g].contact];
         const ImpactResult& r = results_[g];
         if ((k.flags & contact_hit_events) != 0 && r.point_index >= 0 && r.approach_speed > k.hit_speed) {
             k.hit_speed = r.approach_speed;  // the hit event the substeps would have given
@@ -196,7 +237,7 @@ void ImpactChains::resolve(const StepContext& step, Pool<Body>& bodies, ContactS
     }
 }
 
-// The other contacts of the group's moving bodies not yet taken, each once, and whether
+// The other contacts of the part's moving bodies not yet taken, each once, and whether
 // they were closing before the impact.
 void ImpactChains::find_neighbours(const StepContext& step, const Pool<Body>& bodies, const ContactSet& contacts) {
     neighbours_.clear();

@@ -69,6 +69,7 @@ private:
                       int32_t contact, Candidate& out) const;
     void push(const Candidate& c);
     Candidate pop();
+    void resolve_by_bodies(const StepContext& step, Pool<Body>& bodies, ContactSet& contacts);
     void resolve(const StepContext& step, Pool<Body>& bodies, ContactSet& contacts);
     void find_neighbours(const StepContext& step, const Pool<Body>& bodies, const ContactSet& contacts);
 
@@ -83,6 +84,7 @@ private:
     // The impacts of one moment, solved together: their contacts, the bodies they move
     // (each once, with the pool index it came from) and what each contact did.
     std::vector<Candidate> group_;
+    std::vector<Candidate> part_;  // those of them joined by their moving bodies
     std::vector<ImpactContact> impacts_;
     std::vector<ImpactBody> impact_bodies_;
     std::vector<int32_t> body_of_slot_;
