@@ -12,9 +12,10 @@
 // resolved alone (impact.hpp: -e times the approach, Coulomb friction), which sets the
 // struck body moving into its neighbour, whose contact then takes its own impact, and so
 // on, each contact at most once per step, earliest closing gap first. Impacts of the same
-// moment are solved together (impact.hpp's resolve_impacts): a ball struck by two at once
-// takes both, so a rack struck on its axis breaks as mirror images, where one impact after
-// the other would send its apex off to the side of the first.
+// moment that share a moving body are solved together (impact.hpp's resolve_impacts),
+// the others apart: a ball struck by two at once takes both, so a rack struck on its axis
+// breaks as mirror images, where one impact after the other would send its apex off to
+// the side of the first.
 //
 // Only chains are taken. An impact whose bodies then meet nothing new within the step is
 // undone and left to the substeps, whose restitution pass follows the pair's approach
