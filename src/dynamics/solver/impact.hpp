@@ -1,5 +1,7 @@
 // SPDX-License-Identifier: MIT
-// The impulse of one impact, solved at once where the continuous stage stopped a fast body.
+// The impulse of one impact, solved at once where the continuous stage stopped a fast body;
+// and of several contacts' impacts together, for the chains of impacts within a step
+// (impact_chain.hpp).
 //
 // Design note: the continuous stage moves a fast body back to where its sweep first met
 // something. It used to keep the body's velocity and leave the impact to the next step's
