@@ -124,6 +124,8 @@ public:
             key = next;
         }
     }
+    /// The contact's manifold as it stands: world points where A's anchors are.
+    Manifold manifold_of(const Contact& contact) const;
     /// Calls visit(other_body) for each contact that links the body into its island.
     template <class Visit>
     void visit_links(int32_t body, Visit&& visit) const {
@@ -185,7 +187,6 @@ private:
                           int32_t worker);
     void report_touch_changes(const Contact& contact, bool touching_now);
     void report_hit(const Contact& contact);
-    Manifold manifold_of(const Contact& contact) const;
     /// Contact events name the pair in shape order; sensor events name the sensor first.
     PendingEnd pair_of(const Contact& contact) const;
     ShapePairEvent event_of(const Contact& contact) const;

@@ -178,12 +178,7 @@ void ImpactChains::resolve(const StepContext& step, Pool<Body>& bodies, ContactS
     for (const Candidate& c : part_) {
         const Contact& k = contacts.pool()[c.contact];
         ImpactContact impact;
-        impact.manifold.normal = k.normal;
-        impact.manifold.point_count = k.point_count;
-        for (int32_t i = 0; i < k.point_count; ++i) {
-            impact.manifold.points[i].point = bodies[k.edges[0].body].center + k.points[i].anchor_a;
-            impact.manifold.points[i].penetration = -k.points[i].separation;
-        }
+        impact.manifold = contacts.manifold_of(k);
         impact.material = {k.friction, k.restitution, step.settings.restitution_threshold, k.tangent_speed};
         impact.body_a = slot_of(k.edges[0].body, moved_by_solver(k, 0));
         impact.body_b = slot_of(k.edges[1].body, moved_by_solver(k, 1));
