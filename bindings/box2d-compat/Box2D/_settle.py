@@ -147,16 +147,15 @@ class CornerContact:
         self.corner, self.e1, self.e2 = corner, e1, e2
 
 
-def corner_contacts(pose, polygon_points, edges):
+def corner_contacts(pose, polygon_points, edges_near):
     """The corners of a polygon (body frame) each paired with the edges near the
-    polygon: the edges are sifted once by the polygon's box, then its corners by theirs."""
+    polygon: edges_near(low_x, low_y, high_x, high_y) lists the static edges (world end
+    point pairs) within the polygon's box grown by REACH, then its corners are sifted
+    by theirs."""
     corners = [(corner, pose.to_world(corner)) for corner in polygon_points]
     xs = [p[0] for _, p in corners]
     ys = [p[1] for _, p in corners]
-    low_x, high_x, low_y, high_y = min(xs) - REACH, max(xs) + REACH, min(ys) - REACH, max(ys) + REACH
-    near = [(e1, e2) for e1, e2 in edges
-            if min(e1[0], e2[0]) <= high_x and max(e1[0], e2[0]) >= low_x and
-            min(e1[1], e2[1]) <= high_y and max(e1[1], e2[1]) >= low_y]
+    near = edges_near(min(xs) - REACH, min(ys) - REACH, max(xs) + REACH, max(ys) + REACH)
     found = []
     for corner, (px, py) in corners:
         for e1, e2 in near:
@@ -198,12 +197,12 @@ def _correct_contact(contact, pose):
     return separation
 
 
-def settle(specs, iterations, is_dynamic, polygons_of, static_edges):
+def settle(specs, iterations, is_dynamic, polygons_of, edges_near):
     """Runs up to iterations rounds of the corrections over specs, then the corner
     contacts, in order, as Box2D does; stops once every gap is closed and no corner is
     deeper than Box2D accepts. polygons_of(body) lists a body's polygons (body frame
-    points) that touch static edges; static_edges are world end point pairs. Writes back
-    the bodies moved."""
+    points) that touch static edges; edges_near lists the static edges in a box (see
+    corner_contacts). Writes back the bodies moved."""
     poses = {}
 
     def pose(body):
@@ -215,7 +214,7 @@ def settle(specs, iterations, is_dynamic, polygons_of, static_edges):
     joints = [(spec, pose(spec.body_a), pose(spec.body_b)) for spec in specs]
     states = [_limit_state(spec, pa, pb) for spec, pa, pb in joints]
     contacts = [(contact, p) for p in list(poses.values()) if p.inv_mass > 0.0
-                for points in polygons_of(p.body) for contact in corner_contacts(p, points, static_edges)]
+                for points in polygons_of(p.body) for contact in corner_contacts(p, points, edges_near)]
     for _ in range(iterations):
         worst_gap = worst_turn = deepest = 0.0
         for (spec, pa, pb), state in zip(joints, states):

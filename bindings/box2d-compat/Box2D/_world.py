@@ -269,7 +269,7 @@ class b2World(object):
         destroys its joints, then the body."""
         if body._world is not self:
             raise impulse2d.InvalidArgument("DestroyBody: the body belongs to another world")
-        if not lib.i2d_body_is_valid(body._id):
+        if self._bodies.get(body._id) is not body:  # destroyed already: the world keeps its live ones
             check(lib.i2d_body_destroy(body._id))  # raises the library's InvalidHandle
         for fixture in body._fixtures:
             self._fixture_ending(fixture)
@@ -352,7 +352,7 @@ class b2World(object):
         if self._settle_pending:
             self._settle_pending = False
             specs = [j._settle_spec for j in self._joints.values() if getattr(j, "_settle_spec", None)]
-            settle(specs, positionIterations, _is_dynamic, self._polygons_touching_ground, self._static_edges())
+            settle(specs, positionIterations, _is_dynamic, self._polygons_touching_ground, self._static_edges_near)
         status = _step(self._wid, timeStep, self.substeps)
         if status:
             check(status)
@@ -360,13 +360,17 @@ class b2World(object):
         if events.begin_count or events.end_count or self._sensor_count:
             self._report(events)
 
-    def _static_edges(self):
-        """The static edge fixtures' end points, world frame, for the settle's contacts."""
+    def _static_edges_near(self, low_x, low_y, high_x, high_y):
+        """The end points (world frame) of the static edge fixtures whose shapes overlap
+        the box, for the settle's contacts: the world's tree finds them, so a course of
+        hundreds of edges costs what the few under the walker cost."""
         edges = []
-        for fixture in self._fixtures.values():
-            if fixture._body._type == b2_staticBody and isinstance(fixture._shape, b2EdgeShape) \
-                    and not fixture._sensor:
-                body = fixture._body
+        for shape_id in self._shape_ids_in(structs.AABB(min=Vec2(low_x, low_y), max=Vec2(high_x, high_y))):
+            fixture = self._fixtures.get(shape_id)
+            if fixture is None or fixture._sensor or not isinstance(fixture._shape, b2EdgeShape):
+                continue
+            body = fixture._body
+            if body._type == b2_staticBody:
                 edges.append((tuple(body.GetWorldPoint(fixture._shape._v1)),
                               tuple(body.GetWorldPoint(fixture._shape._v2))))
         return edges
@@ -458,11 +462,8 @@ class b2World(object):
             if 0 < answer < limit:
                 limit = answer
 
-    def QueryAABB(self, callback, aabb):
-        """Reports each fixture whose shape overlaps the box to callback.ReportFixture
-        until it returns False."""
-        lo, hi = aabb.lowerBound, aabb.upperBound
-        box = structs.AABB(min=Vec2(lo[0], lo[1]), max=Vec2(hi[0], hi[1]))
+    def _shape_ids_in(self, box):
+        """The ids of the shapes whose boxes overlap box (a C AABB), from the world's tree."""
         while True:
             total = lib.i2d_world_overlap_aabb_ids(self._wid, box, self._query_filter,
                                                    C.addressof(self._id_buffer), self._id_capacity)
@@ -472,8 +473,13 @@ class b2World(object):
                 break
             self._id_capacity = total
             self._id_buffer = (C.c_uint64 * total)()
-        ids = self._id_buffer[:total]
-        for shape_id in ids:
+        return self._id_buffer[:total]
+
+    def QueryAABB(self, callback, aabb):
+        """Reports each fixture whose shape overlaps the box to callback.ReportFixture
+        until it returns False."""
+        lo, hi = aabb.lowerBound, aabb.upperBound
+        for shape_id in self._shape_ids_in(structs.AABB(min=Vec2(lo[0], lo[1]), max=Vec2(hi[0], hi[1]))):
             fixture = self._fixtures.get(shape_id)
             if fixture is not None and not callback.ReportFixture(fixture):
                 break
