@@ -1,7 +1,10 @@
 # SPDX-License-Identifier: MIT
 """Box2D contact listener, sensors as contacts, DestroyBody's EndContact, ray casts
-(ignore / clip / terminate) and QueryAABB."""
+(ignore / clip / terminate; the compiled loop and the Python one) and QueryAABB."""
 
+import os
+
+import impulse2d
 import pytest
 
 from box2d_compat_fixture import Box2D, Recorder, b2, ground, step
@@ -130,6 +133,69 @@ def test_ray_cast_fractions_follow_the_closed_form():
     missed = _Collect(lambda f: 1)
     world.RayCast(missed, (0, 5), (10, 5))
     assert missed.hits == []
+
+
+def test_ray_cast_runs_the_loop_this_test_run_asks_for():
+    # CTest runs this file with the compiled loop (IMPULSE2D_COMPAT_RAYCAST, where Python's
+    # headers were found) and again with IMPULSE2D_COMPAT_PURE: a loader that fell back to
+    # Python silently would leave the compiled loop untested.
+    import Box2D._world as world_module
+
+    compiled = bool(os.environ.get("IMPULSE2D_COMPAT_RAYCAST")) and not os.environ.get("IMPULSE2D_COMPAT_PURE")
+    assert (world_module._ray_cast is not None) == compiled
+
+
+def test_ray_cast_reports_every_one_of_many_hits_nearest_first():
+    # 100 walls: more results than a cast keeps on the stack.
+    world = Box2D.b2World()
+    for i in range(100):
+        world.CreateStaticBody(position=(2.0 + i, 0), userData=i, shapes=b2.polygonShape(box=(0.25, 1)))
+    every = _Collect(lambda f: 1)
+    world.RayCast(every, (0, 0), (110, 0))
+    assert [h[0] for h in every.hits] == list(range(100))
+    assert [h[3] for h in every.hits] == pytest.approx([(1.75 + i) / 110 for i in range(100)])
+
+
+def test_ray_cast_callback_may_cast_again_and_destroy_bodies():
+    world = Box2D.b2World()
+    _wall_row(world)
+    inner = _Collect(lambda f: 1)
+    seen = []
+
+    class CastsAgain(b2.rayCastCallback):
+        def ReportFixture(self, fixture, point, normal, fraction):
+            seen.append(fixture.body.userData)
+            if fixture.body.userData == "wall0":
+                world.RayCast(inner, (0, 0.5), (10, 0.5))  # its results must not overwrite this cast's
+                world.DestroyBody(fixture.body)
+            return 1
+
+    world.RayCast(CastsAgain(), (0, 0), (10, 0))
+    assert seen == ["wall0", "wall1", "wall2"]
+    assert [h[0] for h in inner.hits] == ["wall0", "wall1", "wall2"]
+    assert world.bodyCount == 2
+
+
+def test_ray_cast_callback_errors_reach_the_caller():
+    world = Box2D.b2World()
+    _wall_row(world)
+
+    class Fails(b2.rayCastCallback):
+        def ReportFixture(self, fixture, point, normal, fraction):
+            raise KeyError("from the callback")
+
+    with pytest.raises(KeyError, match="from the callback"):
+        world.RayCast(Fails(), (0, 0), (10, 0))
+
+    class NoNumber(b2.rayCastCallback):
+        def ReportFixture(self, fixture, point, normal, fraction):
+            return None
+
+    with pytest.raises(TypeError):
+        world.RayCast(NoNumber(), (0, 0), (10, 0))
+    with pytest.raises(impulse2d.InvalidArgument) as error:
+        world.RayCast(_Collect(lambda f: 1), (0, 0), (float("nan"), 0))
+    assert "i2d_world_cast_ray_all" in str(error.value)
 
 
 def test_query_aabb_reports_fixtures_until_false():

@@ -6,10 +6,11 @@
 #   2. that wheel, installed with --target, imports from elsewhere, loads its bundled
 #      library and drops a ball as v = g t says;
 #   3. `pip install` of the source directory does the same, together with
-#      bindings/box2d-compat in the same command, whose Box2D module then drops a body.
+#      bindings/box2d-compat in the same command, whose Box2D module (with its compiled
+#      ray cast loop) then drops a body.
 # Compiling the library twice takes most of the time (about half a minute each on 2 cores).
-# Needs cmake, a C++ compiler, and a Python with pip, setuptools and wheel (Debian:
-# cmake g++ python3-pip python3-setuptools python3-wheel); no network.
+# Needs cmake, a C++ compiler, and a Python with pip, setuptools, wheel and its headers
+# (Debian: cmake g++ python3-pip python3-setuptools python3-wheel python3-dev); no network.
 #
 # usage: tests/tools/check_pip_build.sh      (PYTHON=/usr/bin/python3 to choose the Python)
 set -euo pipefail
@@ -113,7 +114,10 @@ check_box2d_compat() {
   local target=$1
   (cd / && PYTHONPATH="$target" "$python" - <<'EOF'
 import Box2D
+import Box2D._world
 
+# pip built the compiled ray cast loop (Python's headers are a prerequisite here).
+assert Box2D._world._ray_cast is not None, "pip installed Box2D without Box2D._raycast"
 world = Box2D.b2World()
 body = world.CreateDynamicBody(position=(0, 10))
 body.CreateCircleFixture(radius=0.5, density=1.0)
@@ -121,7 +125,7 @@ for _ in range(30):
     world.Step(1.0 / 60.0, 6, 2)
 vy = body.linearVelocity[1]
 assert abs(vy + 5.0) < 1e-3, "Box2D body velocity %r, expected -5" % vy
-print("Box2D from", Box2D.__file__, "- a body falls at %.4f m/s after 0.5 s" % vy)
+print("Box2D from", Box2D.__file__, "- a body falls at %.4f m/s after 0.5 s; RayCast compiled" % vy)
 EOF
   )
 }
@@ -138,6 +142,11 @@ check_prerequisites() {
   if ! "$python" -c "import setuptools, wheel" 2>/dev/null; then
     echo "FAIL: $python lacks setuptools or wheel (apt-get install python3-setuptools python3-wheel," \
       "and PYTHON=/usr/bin/python3)" >&2
+    exit 1
+  fi
+  if ! "$python" -c "import os, sysconfig; assert os.path.exists(sysconfig.get_paths()['include'] + '/Python.h')" \
+    2>/dev/null; then
+    echo "FAIL: $python has no headers to build Box2D._raycast with (apt-get install python3-dev)" >&2
     exit 1
   fi
 }

@@ -2,6 +2,8 @@
 """b2World over an impulse2d.World: bodies, joints, stepping, the contact listener and
 the queries."""
 
+import importlib.util
+import os
 import struct
 
 import impulse2d
@@ -61,6 +63,32 @@ def _ray_result_struct():
 
 _RAY_RESULT, _RAY_RESULT_SIZE = _ray_result_struct()
 _cast_ray_all = lib.i2d_world_cast_ray_all
+
+
+def _compiled_ray_cast():
+    """Box2D._raycast (RayCast's loop in C, built by pip where a compiler and Python's
+    headers are) bound to the library ctypes loaded; None without it, or with
+    IMPULSE2D_COMPAT_PURE set, and RayCast runs its Python loop. IMPULSE2D_COMPAT_RAYCAST
+    names a module built elsewhere (a source tree's CMake build)."""
+    if os.environ.get("IMPULSE2D_COMPAT_PURE"):
+        return None
+    path = os.environ.get("IMPULSE2D_COMPAT_RAYCAST")
+    try:
+        if path:
+            spec = importlib.util.spec_from_file_location(__package__ + "._raycast", path)
+            module = importlib.util.module_from_spec(spec)
+            spec.loader.exec_module(module)
+        else:
+            from . import _raycast as module
+    except ImportError:
+        if path:
+            raise
+        return None
+    module.bind(C.cast(_cast_ray_all, C.c_void_p).value)
+    return module.ray_cast
+
+
+_ray_cast = _compiled_ray_cast()
 _step = lib.i2d_world_step
 _contact_events = lib.i2d_world_get_contact_events
 _sensor_events = lib.i2d_world_get_sensor_events
@@ -431,6 +459,10 @@ class b2World(object):
         -1 (ignore), 0 (stop), a fraction (clip) and 1 (go on)."""
         x1, y1 = point1
         x2, y2 = point2
+        if _ray_cast is not None:
+            if _ray_cast(self._wid, x1, y1, x2, y2, _ALL, _ALL, self._fixtures, callback.ReportFixture, b2Vec2) < 0:
+                check_last()
+            return
         # Kept structs, refilled: making two ctypes structs a call costs more than the cast.
         origin, translation = self._ray_origin, self._ray_translation
         origin.x, origin.y = x1, y1
