@@ -80,6 +80,9 @@ def print_header(Box2D, gym, np):
     where = Box2D.__file__ or ", ".join(getattr(Box2D, "__path__", [])) or "?"
     print(f"Box2D module: {os.path.abspath(where) if os.path.exists(where) else where}")
     print(f"Box2D version: {getattr(Box2D, '__version__', '?')}")
+    compat_world = sys.modules.get("Box2D._world")
+    if compat_world is not None:  # the compat module: is its ray cast loop compiled?
+        print(f"RayCast loop: {'compiled (Box2D._raycast)' if compat_world._ray_cast else 'Python'}")
     print(f"gymnasium: {gym.__version__} at {os.path.dirname(os.path.abspath(gym.__file__))}")
     print(f"python: {platform.python_version()} ({sys.executable}), numpy {np.__version__}")
     print(f"date (UTC): {time.strftime('%Y-%m-%d %H:%M:%S', time.gmtime())}")
