@@ -166,13 +166,15 @@ def test_ray_cast_callback_may_cast_again_and_destroy_bodies():
         def ReportFixture(self, fixture, point, normal, fraction):
             seen.append(fixture.body.userData)
             if fixture.body.userData == "wall0":
-                world.RayCast(inner, (0, 0.5), (10, 0.5))  # its results must not overwrite this cast's
+                # From the other side: had it overwritten this cast's results, this loop
+                # would go on with wall1 and then the destroyed wall0.
+                world.RayCast(inner, (10, 0.5), (0, 0.5))
                 world.DestroyBody(fixture.body)
             return 1
 
     world.RayCast(CastsAgain(), (0, 0), (10, 0))
     assert seen == ["wall0", "wall1", "wall2"]
-    assert [h[0] for h in inner.hits] == ["wall0", "wall1", "wall2"]
+    assert [h[0] for h in inner.hits] == ["wall2", "wall1", "wall0"]
     assert world.bodyCount == 2
 
 

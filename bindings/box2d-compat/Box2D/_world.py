@@ -89,6 +89,7 @@ def _compiled_ray_cast():
 
 
 _ray_cast = _compiled_ray_cast()
+
 _step = lib.i2d_world_step
 _contact_events = lib.i2d_world_get_contact_events
 _sensor_events = lib.i2d_world_get_sensor_events
@@ -478,11 +479,12 @@ class b2World(object):
             self._ray_buffer = (structs.RayResult * total)()
             self._ray_address = C.addressof(self._ray_buffer)
             total = _cast_ray_all(self._wid, origin, translation, self._query_filter, self._ray_address, total)
-        # One struct.unpack per hit reads the results faster than ctypes field access.
+        # All read before any callback, which may cast again into the same buffer; one
+        # struct.unpack per hit reads them faster than ctypes field access.
         buffer, unpack, size = self._ray_buffer, _RAY_RESULT.unpack_from, _RAY_RESULT_SIZE
+        hits = [unpack(buffer, i * size) for i in range(total)]
         fixtures, report, limit, vec = self._fixtures, callback.ReportFixture, 1.0, b2Vec2._raw
-        for i in range(total):
-            shape_id, px, py, nx, ny, fraction = unpack(buffer, i * size)
+        for shape_id, px, py, nx, ny, fraction in hits:
             if fraction > limit:
                 break
             fixture = fixtures.get(shape_id)
