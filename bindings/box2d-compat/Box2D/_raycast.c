@@ -58,7 +58,7 @@ static PyObject* new_vec(PyTypeObject* vec_type, float x, float y) {
 
 /* Reports the hits nearest first to report(fixture, point, normal, fraction), honouring
  * its answer: -1 ignores the fixture, 0 stops, a fraction clips the ray there, 1 goes on.
- * Returns -1 (when the library refused the cast, which then holds the reason) or 0. */
+ * Returns 0, or -1 with a Python exception set (the callback's, or a bad answer's). */
 static int report_hits(const i2d_ray_result* hits, int32_t count, PyObject* fixtures, PyObject* report,
                        PyTypeObject* vec_type) {
     double limit = 1.0;
