@@ -13,6 +13,7 @@
 #endif
 
 #include "boundary.hpp"
+#include "bulk_checks.hpp"
 #include "convert.hpp"
 #include "limits.hpp"
 #include "geometry_checks.hpp"
@@ -67,27 +68,6 @@ bool valid_bodies(Call& call, i2d_world_id world_id, const i2d_body_id* bodies, 
     for (int32_t i = 0; i < count; ++i) {
         if (body_slot(w, bodies[i]) < 0) {
             return explain_bad_body(call, w, bodies[i], i);
-        }
-    }
-    return true;
-}
-
-// "<array>[i]" for messages; built only once an element is known to be bad, since
-// formatting it costs far more than checking it.
-struct ElementName {
-    char text[48];
-    ElementName(const char* array, int32_t i) { std::snprintf(text, sizeof text, "%s[%d]", array, i); }
-};
-
-bool valid_velocities(Call& call, int32_t count, const i2d_vec2* linear, const float* angular) {
-    for (int32_t i = 0; linear != nullptr && i < count; ++i) {
-        if (!(std::isfinite(linear[i].x) && std::isfinite(linear[i].y))) {
-            return call.finite(linear[i], ElementName("linear", i).text);
-        }
-    }
-    for (int32_t i = 0; angular != nullptr && i < count; ++i) {
-        if (!std::isfinite(angular[i])) {
-            return call.finite(angular[i], ElementName("angular", i).text);
         }
     }
     return true;

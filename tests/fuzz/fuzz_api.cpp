@@ -579,6 +579,45 @@ void step_batch(FuzzInput& in) {
     }
 }
 
+// Bodies of up to four worlds read and given velocities in one call each, and the
+// worlds' event counts (bad ids, non-finite velocities, NULL arrays and negative counts
+// among them): refused whole, or every body left finite.
+void batch_state(FuzzInput& in) {
+    constexpr int max_items = 4;
+    i2d_body_id bodies[max_items];
+    i2d_world_id worlds[max_items];
+    i2d_vec2 linear[max_items];
+    float angular[max_items];
+    const int count = in.byte() % (max_items + 1);
+    for (int i = 0; i < count; ++i) {
+        bodies[i] = pick_body(in);
+        worlds[i] = pick_world(in);
+        linear[i] = in.vec2();
+        angular[i] = in.real();
+    }
+    // Never more than the arrays hold: a count past them is the caller's overrun.
+    const int32_t listed = in.byte() < 250 ? count : -static_cast<int32_t>(in.byte());
+    i2d_transform transforms[max_items];
+    i2d_vec2 linear_read[max_items];
+    float angular_read[max_items];
+    bool awake[max_items];
+    int32_t begins[max_items], ends[max_items];
+    i2d_worlds_get_body_states(in.byte() < 8 ? nullptr : bodies, listed, in.flag() ? transforms : nullptr,
+                               in.flag() ? linear_read : nullptr, in.flag() ? angular_read : nullptr,
+                               in.flag() ? awake : nullptr);
+    const i2d_status written = i2d_worlds_set_body_velocities(
+        in.byte() < 8 ? nullptr : bodies, listed, in.flag() ? linear : nullptr, in.flag() ? angular : nullptr);
+    if (g_trace) {
+        std::fprintf(stderr, "  velocities of %d bodies (count %d): %s\n", count, int(listed),
+                     i2d_status_string(written));
+    }
+    if (written == I2D_OK) {
+        check_all_finite();
+    }
+    i2d_worlds_get_contact_event_counts(in.byte() < 8 ? nullptr : worlds, listed, in.flag() ? begins : nullptr,
+                                        in.flag() ? ends : nullptr);
+}
+
 void run_world_call(FuzzInput& in, uint8_t op) {
     switch (op) {
         case 0: {
@@ -627,6 +666,10 @@ void run_world_call(FuzzInput& in, uint8_t op) {
         default: {
             if (in.byte() < 128) {
                 step_batch(in);
+                break;
+            }
+            if (in.byte() < 64) {
+                batch_state(in);
                 break;
             }
             int32_t path = 0, status = 0;
