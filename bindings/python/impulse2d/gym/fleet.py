@@ -2,7 +2,8 @@
 """N lunar landers, each alone in its own impulse2d world, advanced a frame at a time
 together: the engines of all are computed with NumPy, the worlds are stepped in one
 library call (impulse2d.WorldBatch over i2d_worlds_step, GIL released, on worker
-threads), and the state each policy sees is read with one bulk call per world.
+threads), and the state each policy sees is read with one bulk call for all the worlds
+(i2d_worlds_get_body_states), the engines' kicks written with another.
 
 This is the simulation shared by VectorLunarLander and LunarLander; episodes,
 autoreset and time limits are theirs."""
@@ -70,8 +71,15 @@ class LanderFleet:
         self.angular = np.zeros(n, dtype=np.float32)
         self._new_linear = np.zeros((n, 2), dtype=np.float32)
         self._new_angular = np.zeros(n, dtype=np.float32)
-        self._addresses = [a.ctypes.data for a in (self.hull_ids, self.transforms, self.linear, self.angular,
-                                                   self._new_linear, self._new_angular)]
+        self._addresses = [a.ctypes.data for a in (self.hull_ids, self.transforms, self.linear, self.angular)]
+        self._kick_addresses = [a.ctypes.data for a in (self.hull_ids, self._new_linear, self._new_angular)]
+        self._world_id_array = np.zeros(n, dtype=np.uint64)
+        self._awake = np.zeros(n, dtype=np.bool_)
+        self._begin_counts = np.zeros(n, dtype=np.int32)
+        self._end_counts = np.zeros(n, dtype=np.int32)
+        # Read once: an array's .ctypes.data costs about as much as the call it feeds.
+        self._event_addresses = [a.ctypes.data for a in (self._world_id_array, self._awake, self._begin_counts,
+                                                         self._end_counts)]
         self.angle = np.zeros(n, dtype=np.float64)
         self.leg_touches = np.zeros((n, 2), dtype=np.int32)
         self.crashed = np.zeros(n, dtype=bool)
@@ -112,6 +120,7 @@ class LanderFleet:
         self.worlds[index], self.landers[index], self.terrains[index] = world, lander, terrain
         self.hull_ids[index] = lander.hull.id
         self._world_ids[index] = world.id
+        self._world_id_array[index] = world.id
         self.pad_height[index] = terrain.pad_height
         self.angle[index] = 0.0
         self.leg_touches[index] = 0
@@ -160,31 +169,35 @@ class LanderFleet:
         dv, dw = velocity_change(throttles, self.transforms, dispersion, mass, inertia, center)
         self._new_linear[:] = self.linear + dv
         self._new_angular[:] = self.angular + dw
-        ids, _, _, _, new_linear, new_angular = self._addresses
-        for index in np.flatnonzero((throttles.main > 0.0) | (throttles.side > 0.0)):
-            index = int(index)
-            check(lib.i2d_world_set_body_velocities(
-                self._world_ids[index], ids + 8 * index, 1, new_linear + 8 * index, new_angular + 4 * index))
+        firing = (throttles.main > 0.0) | (throttles.side > 0.0)
+        count = int(np.count_nonzero(firing))
+        if count == 0:
+            return
+        # One library call for all the firing landers: every row, or copies of theirs.
+        if count == self.count:
+            addresses = self._kick_addresses
+        else:
+            rows = (self.hull_ids[firing], self._new_linear[firing], self._new_angular[firing])
+            addresses = [a.ctypes.data for a in rows]
+        ids, linear, angular = addresses
+        check(lib.i2d_worlds_set_body_velocities(ids, count, linear, angular))
 
     def _read_all(self) -> None:
-        """Every hull's motion, contacts and sleep after a frame: four library calls per
-        world, in a loop kept tight because it runs count times a frame."""
-        ids, transforms, linear, angular, _, _ = self._addresses
-        get_transforms, get_velocities = lib.i2d_world_get_body_transforms, lib.i2d_world_get_body_velocities
-        get_events, is_awake = lib.i2d_world_get_contact_events, lib.i2d_body_is_awake
-        at_rest = self.at_rest
-        for index, (world_id, hull_id) in enumerate(zip(self._world_ids, self.hull_ids.tolist())):
-            status = get_transforms(world_id, ids + 8 * index, 1, transforms + 16 * index) or get_velocities(
-                world_id, ids + 8 * index, 1, linear + 8 * index, angular + 4 * index)
-            if status:
-                check(status)
-            events = get_events(world_id)
-            if events.begin_count or events.end_count:
-                self._count_contacts(index, events)
-            at_rest[index] = not is_awake(hull_id)
+        """Every hull's motion and sleep after a frame in one library call for all the
+        worlds, their contact event counts in another, and the events of the few worlds
+        that have some."""
+        ids, transforms, linear, angular = self._addresses
+        worlds, awake, begins, ends = self._event_addresses
+        n = self.count
+        check(lib.i2d_worlds_get_body_states(ids, n, transforms, linear, angular, awake))
+        np.logical_not(self._awake, out=self.at_rest)
+        check(lib.i2d_worlds_get_contact_event_counts(worlds, n, begins, ends))
+        get_events = lib.i2d_world_get_contact_events
+        for index in np.flatnonzero(self._begin_counts | self._end_counts).tolist():  # counts are >= 0
+            self._count_contacts(index, get_events(self._world_ids[index]))
 
     def _read_motion(self, index: int) -> None:
-        ids, transforms, linear, angular, _, _ = self._addresses
+        ids, transforms, linear, angular = self._addresses
         world_id = self._world_ids[index]
         check(lib.i2d_world_get_body_transforms(world_id, ids + 8 * index, 1, transforms + 16 * index))
         check(lib.i2d_world_get_body_velocities(world_id, ids + 8 * index, 1, linear + 8 * index, angular + 4 * index))
