@@ -56,7 +56,6 @@ class LanderFleet:
         self.substeps, self.workers = int(substeps), int(workers)
         self.rngs: List[np.random.Generator] = [np.random.default_rng() for _ in range(count)]
         self.worlds: List[Optional[World]] = [None] * count
-        self._world_ids: List[int] = [0] * count
         self.landers: List[Optional[Lander]] = [None] * count
         self.terrains: List[Optional[Terrain]] = [None] * count
         self._batch: Optional[WorldBatch] = None
@@ -73,12 +72,12 @@ class LanderFleet:
         self._new_angular = np.zeros(n, dtype=np.float32)
         self._addresses = [a.ctypes.data for a in (self.hull_ids, self.transforms, self.linear, self.angular)]
         self._kick_addresses = [a.ctypes.data for a in (self.hull_ids, self._new_linear, self._new_angular)]
-        self._world_id_array = np.zeros(n, dtype=np.uint64)
+        self._world_ids = np.zeros(n, dtype=np.uint64)
         self._awake = np.zeros(n, dtype=np.bool_)
         self._begin_counts = np.zeros(n, dtype=np.int32)
         self._end_counts = np.zeros(n, dtype=np.int32)
         # Read once: an array's .ctypes.data costs about as much as the call it feeds.
-        self._event_addresses = [a.ctypes.data for a in (self._world_id_array, self._awake, self._begin_counts,
+        self._event_addresses = [a.ctypes.data for a in (self._world_ids, self._awake, self._begin_counts,
                                                          self._end_counts)]
         self.angle = np.zeros(n, dtype=np.float64)
         self.leg_touches = np.zeros((n, 2), dtype=np.int32)
@@ -120,7 +119,6 @@ class LanderFleet:
         self.worlds[index], self.landers[index], self.terrains[index] = world, lander, terrain
         self.hull_ids[index] = lander.hull.id
         self._world_ids[index] = world.id
-        self._world_id_array[index] = world.id
         self.pad_height[index] = terrain.pad_height
         self.angle[index] = 0.0
         self.leg_touches[index] = 0
@@ -194,11 +192,11 @@ class LanderFleet:
         check(lib.i2d_worlds_get_contact_event_counts(worlds, n, begins, ends))
         get_events = lib.i2d_world_get_contact_events
         for index in np.flatnonzero(self._begin_counts | self._end_counts).tolist():  # counts are >= 0
-            self._count_contacts(index, get_events(self._world_ids[index]))
+            self._count_contacts(index, get_events(int(self._world_ids[index])))
 
     def _read_motion(self, index: int) -> None:
         ids, transforms, linear, angular = self._addresses
-        world_id = self._world_ids[index]
+        world_id = int(self._world_ids[index])
         check(lib.i2d_world_get_body_transforms(world_id, ids + 8 * index, 1, transforms + 16 * index))
         check(lib.i2d_world_get_body_velocities(world_id, ids + 8 * index, 1, linear + 8 * index, angular + 4 * index))
 
