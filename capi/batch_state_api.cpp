@@ -16,13 +16,6 @@ using namespace i2d::capi;
 
 namespace {
 
-bool valid_count(Call& call, int32_t count, const void* ids, const char* ids_name) {
-    if (count < 0) {
-        return call.fail(I2D_ERR_INVALID_ARGUMENT, "count is %d; it must be >= 0", count);
-    }
-    return count == 0 || call.not_null(ids, ids_name);
-}
-
 // Every id a live body of a live world (and, to write, of an unlocked one).
 bool valid_bodies(Call& call, const i2d_body_id* bodies, int32_t count, bool writing) {
     if (!valid_count(call, count, bodies, "bodies")) {

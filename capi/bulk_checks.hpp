@@ -17,6 +17,14 @@ struct ElementName {
     ElementName(const char* array, int32_t i) { std::snprintf(text, sizeof text, "%s[%d]", array, i); }
 };
 
+/// A count of at least 0, with its array when it is above 0.
+inline bool valid_count(Call& call, int32_t count, const void* items, const char* items_name) {
+    if (count < 0) {
+        return call.fail(I2D_ERR_INVALID_ARGUMENT, "count is %d; it must be >= 0", count);
+    }
+    return count == 0 || call.not_null(items, items_name);
+}
+
 /// Every given velocity finite (either array may be NULL).
 inline bool valid_velocities(Call& call, int32_t count, const i2d_vec2* linear, const float* angular) {
     for (int32_t i = 0; linear != nullptr && i < count; ++i) {

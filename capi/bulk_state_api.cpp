@@ -56,13 +56,7 @@ inline int32_t checked_slot(i2d_body_id id) { return decode_id(id.bits).index; }
 
 // The world, a sane count and array, and every id live in that world.
 bool valid_bodies(Call& call, i2d_world_id world_id, const i2d_body_id* bodies, int32_t count, WorldRef& w) {
-    if (!call.world(world_id, w)) {
-        return false;
-    }
-    if (count < 0) {
-        return call.fail(I2D_ERR_INVALID_ARGUMENT, "count is %d; it must be >= 0", count);
-    }
-    if (count > 0 && !call.not_null(bodies, "bodies")) {
+    if (!call.world(world_id, w) || !valid_count(call, count, bodies, "bodies")) {
         return false;
     }
     for (int32_t i = 0; i < count; ++i) {
