@@ -6,6 +6,7 @@ import numpy as np
 import pytest
 
 from impulse2d.gym import LunarLander, VectorLunarLander
+from impulse2d.gym.streams import BLOCK_FRAMES, LanderStreams
 
 
 def pd_commands(obs):
@@ -278,6 +279,29 @@ def test_wind_and_gravity_options_change_the_flight():
     assert light[-1, 3] > calm[-1, 3] + 0.5              # lower gravity, slower fall
     repeat = trajectory(enable_wind=True, wind_power=20.0, turbulence_power=2.0)
     assert repeat.tobytes() == windy.tobytes()           # wind is seeded too
+
+
+def test_dispersion_drawn_ahead_leaves_each_stream_as_gymnasium_draws_it():
+    # Frames across a block's end, a reset's draws, more frames: the same numbers, in the
+    # same order, as one generator drawing two per frame and the reset's in between.
+    first, then, reset_draws = BLOCK_FRAMES + 6, 5, 13
+    streams = LanderStreams(2)
+    streams.seed(0, 40)
+    streams.seed(1, 41)
+    taken = [streams.dispersion() for _ in range(first)]
+    lander_0_reset = streams.for_episode(0).uniform(0.0, 1.0, size=reset_draws)
+    taken += [streams.dispersion() for _ in range(then)]
+    lander_1_reset = streams.for_episode(1).uniform(0.0, 1.0, size=reset_draws)
+    gymnasium_0, gymnasium_1 = np.random.default_rng(40), np.random.default_rng(41)
+    expected_0 = [gymnasium_0.uniform(-1.0, 1.0, size=(first, 2)), gymnasium_0.uniform(0.0, 1.0, size=reset_draws),
+                  gymnasium_0.uniform(-1.0, 1.0, size=(then, 2))]
+    expected_1 = [gymnasium_1.uniform(-1.0, 1.0, size=(first + then, 2)), gymnasium_1.uniform(0.0, 1.0, size=reset_draws)]
+    taken = np.array(taken)
+    assert taken[:first, 0].tobytes() == expected_0[0].tobytes()
+    assert lander_0_reset.tobytes() == expected_0[1].tobytes()
+    assert taken[first:, 0].tobytes() == expected_0[2].tobytes()
+    assert taken[:, 1].tobytes() == expected_1[0].tobytes()
+    assert lander_1_reset.tobytes() == expected_1[1].tobytes()
 
 
 def test_many_sub_envs_keep_independent_streams():

@@ -49,13 +49,26 @@ def make_filter(value: Any) -> Filter:
     return Filter(category_bits=parts[0], mask_bits=parts[1], group_index=parts[2] if len(parts) > 2 else 0)
 
 
+# A job system of C callbacks is for C and C++ callers; from Python, worker_count alone
+# starts the library's own threads.
+_HIDDEN_FIELDS = ("internal_cookie", "user_data", "enqueue_task", "finish_task", "user_task_context")
+# Per def struct class, the fields settings may name, with their types: built once per
+# class (a world's reset builds dozens of shapes, each through apply_settings).
+_SETTABLE_FIELDS: Dict[type, Dict[str, Any]] = {}
+
+
+def _settable_fields(struct_class: type) -> Dict[str, Any]:
+    fields = _SETTABLE_FIELDS.get(struct_class)
+    if fields is None:
+        fields = {name: ctype for name, ctype in struct_class._fields_ if name not in _HIDDEN_FIELDS}
+        _SETTABLE_FIELDS[struct_class] = fields
+    return fields
+
+
 def apply_settings(def_struct: C.Structure, settings: Dict[str, Any], kind: str) -> None:
     """Copies keyword settings into a def's fields of the same name, converting pairs
     to vectors; unknown names are a TypeError that lists the known ones."""
-    # A job system of C callbacks is for C and C++ callers; from Python, worker_count
-    # alone starts the library's own threads.
-    hidden = ("internal_cookie", "user_data", "enqueue_task", "finish_task", "user_task_context")
-    fields = {name: ctype for name, ctype in def_struct._fields_ if name not in hidden}
+    fields = _settable_fields(type(def_struct))
     for name, value in settings.items():
         if name not in fields:
             raise TypeError(

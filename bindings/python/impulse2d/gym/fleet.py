@@ -20,7 +20,8 @@ from .engines import Throttles, fuel_cost, velocity_change
 from .lander import Lander, build_lander
 from .observation import state_of, unwrap_angle
 from .reward import episode_end, frame_reward, shaping
-from .terrain import Terrain, build_terrain, random_terrain
+from .streams import LanderStreams
+from .terrain import Terrain, build_moon, random_terrain, shape_moon
 from .wind import gust, random_start
 
 # impulse2d's solver takes substeps within each frame instead of Box2D 2.3's iterations
@@ -54,11 +55,13 @@ class LanderFleet:
         self.gravity, self.enable_wind = float(gravity), bool(enable_wind)
         self.wind_power, self.turbulence_power = float(wind_power), float(turbulence_power)
         self.substeps, self.workers = int(substeps), int(workers)
-        self.rngs: List[np.random.Generator] = [np.random.default_rng() for _ in range(count)]
+        self.streams = LanderStreams(count)
         self.worlds: List[Optional[World]] = [None] * count
         self.landers: List[Optional[Lander]] = [None] * count
         self.terrains: List[Optional[Terrain]] = [None] * count
         self._batch: Optional[WorldBatch] = None
+        self._new_episode: Optional[bytes] = None  # the snapshot every reset restores
+        self._surfaces: List[Optional[List[object]]] = [None] * count  # each world's moon segments
         self._allocate_state()
 
     def _allocate_state(self) -> None:
@@ -94,38 +97,59 @@ class LanderFleet:
     def seed(self, index: int, seed: Optional[int]) -> None:
         """A new random stream for lander index (NumPy's default generator, PCG64, as
         Gymnasium's np_random; None draws fresh entropy)."""
-        self.rngs[index] = np.random.default_rng(seed)
+        self.streams.seed(index, seed)
 
     def rebuild(self, index: int) -> None:
-        """Starts lander index's episode in a new world: terrain, lander, initial push and
-        wind counters drawn from its random stream in Gymnasium's order. A fresh world
-        (not a cleared one) makes an episode depend on its seed alone. The episode's first
-        frame is the caller's (a frame with no engines, as Gymnasium's reset takes)."""
-        rng = self.rngs[index]
-        if self.worlds[index] is not None:
-            self.worlds[index].destroy()
-        world = World(gravity=(0.0, self.gravity))
+        """Starts lander index's episode: its world brought back to the fleet's new
+        episode (the moon, laid flat, and the lander; the same bytes for every lander and
+        episode, so an episode depends on its seed alone), then the terrain, initial push
+        and wind counters drawn from its random stream in Gymnasium's order. The world
+        keeps its id, so the batch that steps it stands. The episode's first frame is the
+        caller's (a frame with no engines, as Gymnasium's reset takes)."""
+        rng = self.streams.for_episode(index)
+        world = self.worlds[index]
+        if world is None:
+            world = self._new_world(index)
+        world.restore_snapshot(self._new_episode)
+        lander = self.landers[index]
         terrain = random_terrain(rng)
-        build_terrain(world, terrain)
-        lander = build_lander(world)
+        shape_moon(self._surfaces[index], terrain)
         push = (rng.uniform(-K.INITIAL_PUSH, K.INITIAL_PUSH), rng.uniform(-K.INITIAL_PUSH, K.INITIAL_PUSH))
         lander.hull.apply_force(push)  # acts during the first frame only
         if self.enable_wind:
             self.wind_counter[index] = random_start(rng)
             self.turbulence_counter[index] = random_start(rng)
-        if self._hull_mass is None:
-            mass_data = lander.hull.mass_data
-            self._hull_mass = (mass_data.mass, mass_data.rotational_inertia, mass_data.center)
-        self.worlds[index], self.landers[index], self.terrains[index] = world, lander, terrain
-        self.hull_ids[index] = lander.hull.id
-        self._world_ids[index] = world.id
+        self.terrains[index] = terrain
         self.pad_height[index] = terrain.pad_height
         self.angle[index] = 0.0
         self.leg_touches[index] = 0
         self.crashed[index] = self.at_rest[index] = False
         self.previous_potential[index] = np.nan
         self._read_motion(index)
-        self._batch = None  # its id list names the old world
+
+    def _new_world(self, index: int) -> World:
+        """Lander index's world, made once: the first builds the new episode's world and
+        saves it for every reset; the others are made from those bytes."""
+        if self._new_episode is None:
+            world = World(gravity=(0.0, self.gravity))
+            self._template_surface = [shape.id for shape in build_moon(world)]
+            lander = build_lander(world)
+            self._template_lander = (lander.hull.id, [leg.id for leg in lander.legs])
+            mass_data = lander.hull.mass_data
+            self._hull_mass = (mass_data.mass, mass_data.rotational_inertia, mass_data.center)
+            self._new_episode = world.save_snapshot()
+        else:
+            world = World.from_snapshot(self._new_episode)
+        hull_id, leg_ids = self._template_lander
+        hull, legs = world.body(hull_id), tuple(world.body(leg) for leg in leg_ids)
+        hull_shape, leg_shapes = hull.shapes[0], tuple(leg.shapes[0] for leg in legs)
+        self.landers[index] = Lander(hull, legs, hull_shape.id, tuple(shape.id for shape in leg_shapes))
+        self._surfaces[index] = [world.shape(shape) for shape in self._template_surface]
+        self.worlds[index] = world
+        self.hull_ids[index] = hull.id
+        self._world_ids[index] = world.id
+        self._batch = None  # its id list lacks the new world
+        return world
 
     def close(self) -> None:
         for world in self.worlds:
@@ -139,7 +163,7 @@ class LanderFleet:
     def frame(self, throttles: Throttles) -> FrameResult:
         """Fires the engines as throttles say, advances every world by 1/50 s and reads
         what the landers see."""
-        dispersion = np.stack([rng.uniform(-1.0, 1.0, size=2) for rng in self.rngs])
+        dispersion = self.streams.dispersion()
         if self.enable_wind:
             self._blow()
         self._fire_engines(throttles, dispersion)

@@ -2,7 +2,7 @@
 """The moon's surface: random heights smoothed into a chain of segments, with a flat
 landing pad in the middle at a quarter of the screen's height."""
 
-from typing import NamedTuple
+from typing import List, NamedTuple, Sequence
 
 import numpy as np
 
@@ -35,13 +35,20 @@ def random_terrain(rng: np.random.Generator) -> Terrain:
     return Terrain(xs, ys, float(xs[middle - 1]), float(xs[middle + 1]), pad_height)
 
 
-def build_terrain(world, terrain: Terrain):
+def build_moon(world) -> List[object]:
     """Adds the moon to world as one static body: a floor along y = 0 under the whole
-    screen and the surface segments above it."""
+    screen and the surface's segments above it, laid flat at the pad's height until
+    shape_moon gives them a terrain. Returns the surface segments, left to right."""
     moon = world.create_body(BodyType.STATIC)
     surface = dict(friction=K.TERRAIN_FRICTION, density=0.0)
     moon.create_segment((0.0, 0.0), (K.SCREEN_WIDTH, 0.0), **surface)
+    xs = [K.SCREEN_WIDTH / (K.TERRAIN_CHUNKS - 1) * i for i in range(K.TERRAIN_CHUNKS)]
+    flat = K.SCREEN_HEIGHT / 4
+    return [moon.create_segment((x0, flat), (x1, flat), **surface) for x0, x1 in zip(xs[:-1], xs[1:])]
+
+
+def shape_moon(surface: Sequence[object], terrain: Terrain) -> None:
+    """Lays the surface segments build_moon made along the terrain's points."""
     points = list(zip(terrain.xs.tolist(), terrain.ys.tolist()))
-    for start, end in zip(points[:-1], points[1:]):
-        moon.create_segment(start, end, **surface)
-    return moon
+    for segment, start, end in zip(surface, points[:-1], points[1:]):
+        segment.set_segment(start, end)
