@@ -118,6 +118,15 @@ void DynamicTree::move_proxy_in_place_at(int32_t leaf, const AABB& fat_aabb) {
 // cost plus the child's own growth plus the leaf's perimeter, which prunes the search.
 // The search may start below the root at a node that already contains the box: nothing
 // above it grows, so the costs inside it compare the same as from the root.
+// The same box inserted again and again (bodies made at one spot, or made at the origin
+// and then placed) leaves the surface-area heuristic indifferent: a node whose box is the
+// inserted box costs the same as anything below it. Taking that node made each insertion
+// its sibling, a chain as deep as the boxes are many, through which every later removal
+// refits: placing 16,000 bodies made at the origin took 0.77 s, and destroying half of
+// 16,000 at one spot 0.27 s. So from such a node the search goes on down, always into the
+// lower child, to a leaf, which keeps those boxes in a balanced subtree (9 ms and 1.4 ms).
+// Boxes that differ by a bit are placed as before: the pairs, and every scene's bits, are
+// unchanged.
 int32_t DynamicTree::find_best_sibling(const AABB& box, int32_t start) const {
     const float box_perimeter = perimeter(box);
     int32_t best = start;
@@ -149,6 +158,10 @@ int32_t DynamicTree::find_best_sibling(const AABB& box, int32_t start) const {
             break;
         }
         index = children[k];
+    }
+    while (!nodes_[best].is_leaf() && nodes_[best].aabb.lower == box.lower && nodes_[best].aabb.upper == box.upper) {
+        const TreeNode& twin = nodes_[best];
+        best = nodes_[twin.child1()].height <= nodes_[twin.child2()].height ? twin.child1() : twin.child2();
     }
     return best;
 }

@@ -1054,3 +1054,58 @@ static void run_heights(i2d_world_id world) {
 }
 
 I2D_TEST(api_cast_ray_tree_heights) { run_in_world(0.0f, run_heights); }
+
+/* Bodies made at one spot (a loader that makes them at the origin and places them after,
+ * an emitter) share one box: the trees must stay as shallow as for spread bodies, through
+ * placing, stepping and destroying, and still find each body where it was placed. */
+enum { SPOT_BODIES = 2000, SPOT_COLUMNS = 50 };
+
+static i2d_vec2 spot_place(int i) { return v2(2.0f * (float)(i % SPOT_COLUMNS), 2.0f * (float)(i / SPOT_COLUMNS)); }
+
+static void check_spot_heights(i2d_world_id world, int statics, int dynamics, const char* when) {
+    i2d_world_counters c = i2d_world_get_counters(world);
+    printf("tree heights, bodies made at one spot, %s: static %d (%d shapes), dynamic %d (%d)\n", when,
+           (int)c.static_tree_height, statics, (int)c.dynamic_tree_height, dynamics);
+    I2D_CHECK(c.static_tree_height <= height_bound(statics));
+    I2D_CHECK(c.dynamic_tree_height <= height_bound(dynamics));
+}
+
+static void run_bodies_made_at_one_spot(i2d_world_id world) {
+    static i2d_body_id statics[SPOT_BODIES], dynamics[SPOT_BODIES];
+    i2d_shape_def def = i2d_default_shape_def();
+    def.filter.group_index = -1; /* the dynamic ones never collide with each other */
+    for (int i = 0; i < SPOT_BODIES; ++i) {
+        i2d_body_def bd = i2d_default_body_def();
+        statics[i] = i2d_body_create(world, &bd);
+        I2D_REQUIRE(!I2D_IS_NULL(i2d_shape_create_box(statics[i], &def, 0.5f, 0.5f)));
+        bd.type = I2D_BODY_DYNAMIC;
+        bd.position = v2(0.0f, -50.0f);
+        dynamics[i] = i2d_body_create(world, &bd);
+        i2d_circle circle = {{0.0f, 0.0f}, 0.25f};
+        I2D_REQUIRE(!I2D_IS_NULL(i2d_shape_create_circle(dynamics[i], &def, &circle)));
+    }
+    check_spot_heights(world, SPOT_BODIES, SPOT_BODIES, "as made");
+    for (int i = 0; i < SPOT_BODIES; ++i) {
+        I2D_CHECK_STATUS(i2d_body_set_transform(statics[i], spot_place(i), i2d_make_rot(0.0f)), I2D_OK);
+    }
+    check_spot_heights(world, SPOT_BODIES, SPOT_BODIES, "with the static ones placed");
+    I2D_REQUIRE(i2d_world_step(world, k_dt, 4) == I2D_OK);
+    for (int i = 0; i < SPOT_BODIES; i += 2) {
+        i2d_body_destroy(dynamics[i]);
+    }
+    I2D_REQUIRE(i2d_world_step(world, k_dt, 4) == I2D_OK);
+    check_spot_heights(world, SPOT_BODIES, SPOT_BODIES / 2, "after a step, half the dynamic ones destroyed");
+    int misplaced = 0;
+    for (int i = 0; i < SPOT_BODIES; i += 37) {
+        const i2d_vec2 p = spot_place(i);
+        const i2d_aabb inside = {{p.x - 0.1f, p.y - 0.1f}, {p.x + 0.1f, p.y + 0.1f}};
+        i2d_shape_id found[4];
+        const int32_t count = i2d_world_overlap_aabb_ids(world, inside, i2d_default_query_filter(), found, 4);
+        misplaced += count == 1 && I2D_ID_EQUALS(i2d_shape_get_body(found[0]), statics[i]) ? 0 : 1;
+    }
+    I2D_CHECK(misplaced == 0);
+}
+
+I2D_TEST(api_cast_ray_bodies_made_at_one_spot_keep_the_trees_shallow) {
+    run_in_world(0.0f, run_bodies_made_at_one_spot);
+}

@@ -854,6 +854,41 @@ I2D_TEST(unit_tree_quality_random_insertion_vs_rebuild) {
     I2D_CHECK(p_inc <= 1.5f * p_reb);
 }
 
+// The same box inserted thousands of times (bodies made at one spot) costs the same
+// wherever it goes: the tree must still stay within the height bound, through removals
+// and moves away, or every removal refits through a chain as deep as the boxes are many.
+I2D_TEST(unit_tree_coincident_boxes_stay_shallow) {
+    const int32_t n = 4096;
+    const AABB spot{{-0.1f, -0.1f}, {0.1f, 0.1f}};
+    DynamicTree tree;
+    std::vector<int32_t> proxies;
+    for (int32_t i = 0; i < n; ++i) {
+        proxies.push_back(tree.create_proxy(spot, 1, i));
+    }
+    tree.validate();
+    I2D_CHECK(height_ok(tree, "after inserting one box 4096 times"));
+    for (int32_t i = 0; i < n; i += 2) {
+        tree.destroy_proxy(proxies[std::size_t(i)]);
+    }
+    tree.validate();
+    I2D_CHECK(height_ok(tree, "after destroying every other coincident box"));
+    // Placed one by one on a grid, as a loader places bodies it made at the origin.
+    for (int32_t i = 1; i < n; i += 2) {
+        const float x = float(i % 64), y = float(i / 64);
+        tree.move_proxy(proxies[std::size_t(i)], {{x, y}, {x + 0.5f, y + 0.5f}});
+    }
+    tree.validate();
+    I2D_CHECK(height_ok(tree, "after moving the coincident boxes apart"));
+    // A cluster at one spot beside boxes elsewhere: the cluster's subtree stays shallow too.
+    DynamicTree mixed;
+    for (int32_t i = 0; i < n; ++i) {
+        const float x = float(i % 64) * 3.0f, y = float(i / 64) * 3.0f;
+        mixed.create_proxy(i % 2 == 0 ? spot : AABB{{x, y}, {x + 1.0f, y + 1.0f}}, 1, i);
+    }
+    mixed.validate();
+    I2D_CHECK(height_ok(mixed, "with half the boxes at one spot"));
+}
+
 // Insertion in sorted order (a row-by-row grid, as scenes are built) is the classic way to
 // unbalance an incremental tree; rotations must keep it within the height bound.
 I2D_TEST(unit_tree_quality_sorted_insertion_stays_shallow) {
