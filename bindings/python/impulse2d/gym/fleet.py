@@ -8,7 +8,7 @@ threads), and the state each policy sees is read with one bulk call for all the 
 This is the simulation shared by VectorLunarLander and LunarLander; episodes,
 autoreset and time limits are theirs."""
 
-from typing import List, Optional
+from typing import List, Optional, Tuple
 
 import numpy as np
 
@@ -60,7 +60,11 @@ class LanderFleet:
         self.landers: List[Optional[Lander]] = [None] * count
         self.terrains: List[Optional[Terrain]] = [None] * count
         self._batch: Optional[WorldBatch] = None
-        self._new_episode: Optional[bytes] = None  # the snapshot every reset restores
+        # The new episode every reset restores, and the ids in it (those of the world it
+        # was saved from) of the moon's surface segments, the hull and the legs.
+        self._new_episode: Optional[bytes] = None
+        self._template_surface: List[int] = []
+        self._template_lander: Tuple[int, List[int]] = (0, [])
         self._surfaces: List[Optional[List[object]]] = [None] * count  # each world's moon segments
         self._allocate_state()
 

@@ -18,13 +18,18 @@ class Terrain(NamedTuple):
     pad_height: float     # ... at this nominal height (observations measure from it)
 
 
+def _surface_xs() -> List[float]:
+    """The x of each surface point, evenly across the screen, m."""
+    return [K.SCREEN_WIDTH / (K.TERRAIN_CHUNKS - 1) * i for i in range(K.TERRAIN_CHUNKS)]
+
+
 def random_terrain(rng: np.random.Generator) -> Terrain:
     """Draws a terrain. It takes TERRAIN_CHUNKS + 1 uniform draws from rng in one call,
     the first draws of an episode, as Gymnasium does, so one seed gives one moon here
     and there."""
     chunks = K.TERRAIN_CHUNKS
     heights = rng.uniform(0, K.SCREEN_HEIGHT / 2, size=(chunks + 1,))
-    xs = np.array([K.SCREEN_WIDTH / (chunks - 1) * i for i in range(chunks)])
+    xs = np.array(_surface_xs())
     middle = chunks // 2
     pad_height = K.SCREEN_HEIGHT / 4
     # Five heights around the middle are the pad, so that smoothing keeps it flat.
@@ -42,7 +47,7 @@ def build_moon(world) -> List[object]:
     moon = world.create_body(BodyType.STATIC)
     surface = dict(friction=K.TERRAIN_FRICTION, density=0.0)
     moon.create_segment((0.0, 0.0), (K.SCREEN_WIDTH, 0.0), **surface)
-    xs = [K.SCREEN_WIDTH / (K.TERRAIN_CHUNKS - 1) * i for i in range(K.TERRAIN_CHUNKS)]
+    xs = _surface_xs()
     flat = K.SCREEN_HEIGHT / 4
     return [moon.create_segment((x0, flat), (x1, flat), **surface) for x0, x1 in zip(xs[:-1], xs[1:])]
 
