@@ -12,6 +12,10 @@
  * - contact solve: box_grid and large_pyramid from the scene table, stepped past their first
  *   second, then the profile's solve time per touching contact per substep (and per velocity
  *   iteration), the collide time per pair per substep and the bounds time per body per substep.
+ * - edits: what a level loader or an editor does in bulk, at 1,000 and 16,000 items, in ns per
+ *   item (the same figure at both sizes means linear time): boxes added to one static body
+ *   and every other one destroyed (a tile map), bodies made at the origin then placed with
+ *   i2d_body_set_transform, and every other one of bodies made at one spot destroyed.
  *
  * Each figure is the median (and minimum) of R samples. Times are never asserted on. */
 
@@ -539,6 +543,87 @@ static bool bench_solve(const options* opt, const char* scene_name) {
     return true;
 }
 
+/* ---- Edits in bulk ------------------------------------------------------------------------------- */
+
+enum { EDIT_KINDS = 4 };
+static const char* const g_edit_names[EDIT_KINDS] = {
+    "static body: boxes added", "static body: every other box destroyed",
+    "bodies made at the origin, then placed", "bodies at one spot: every other destroyed"};
+
+static i2d_vec2 grid_place(int32_t i) { return vec2(2.0f * (float)(i % 128), 2.0f * (float)(i / 128)); }
+
+/* One sample of each edit at `count` items, ns per item, in a world of its own. */
+static bool sample_edits(int32_t count, double ns[EDIT_KINDS]) {
+    i2d_world_def world_def = i2d_default_world_def();
+    i2d_world_id world = i2d_world_create(&world_def);
+    i2d_body_def static_def = i2d_default_body_def(), dynamic_def = i2d_default_body_def();
+    i2d_shape_def shape_def = i2d_default_shape_def();
+    i2d_shape_id* shapes = (i2d_shape_id*)malloc((size_t)count * sizeof *shapes);
+    i2d_body_id* bodies = (i2d_body_id*)malloc((size_t)count * sizeof *bodies);
+    i2d_body_id map;
+    double start;
+    int32_t i;
+    bool ok = !I2D_IS_NULL(world) && shapes && bodies;
+    dynamic_def.type = I2D_BODY_DYNAMIC;
+    shape_def.filter.group_index = -1; /* the bodies at one spot never collide with each other */
+    map = ok ? i2d_body_create(world, &static_def) : (i2d_body_id){0};
+    start = bench_nanoseconds_now();
+    for (i = 0; ok && i < count; ++i) {
+        shapes[i] = i2d_shape_create_offset_box(map, &shape_def, 0.5f, 0.5f, grid_place(i), i2d_make_rot(0.0f));
+        ok = !I2D_IS_NULL(shapes[i]);
+    }
+    ns[0] = (bench_nanoseconds_now() - start) / (double)count;
+    start = bench_nanoseconds_now();
+    for (i = 0; ok && i < count; i += 2) {
+        ok = i2d_shape_destroy(shapes[i]) == I2D_OK;
+    }
+    ns[1] = (bench_nanoseconds_now() - start) / (double)((count + 1) / 2);
+    for (i = 0; ok && i < count; ++i) {
+        bodies[i] = i2d_body_create(world, i % 2 == 0 ? &static_def : &dynamic_def);
+        ok = !I2D_IS_NULL(bodies[i]) && !I2D_IS_NULL(i2d_shape_create_circle(bodies[i], &shape_def, &g_circle));
+    }
+    start = bench_nanoseconds_now();
+    for (i = 0; ok && i < count; i += 2) {
+        ok = i2d_body_set_transform(bodies[i], grid_place(i), i2d_make_rot(0.0f)) == I2D_OK;
+    }
+    ns[2] = (bench_nanoseconds_now() - start) / (double)((count + 1) / 2);
+    start = bench_nanoseconds_now();
+    for (i = 1; ok && i < count; i += 2) {
+        ok = i2d_body_destroy(bodies[i]) == I2D_OK;
+    }
+    ns[3] = (bench_nanoseconds_now() - start) / (double)(count / 2);
+    free(shapes);
+    free(bodies);
+    if (!I2D_IS_NULL(world)) {
+        i2d_world_destroy(world);
+    }
+    return ok;
+}
+
+static bool bench_edits(const options* opt) {
+    const int32_t sizes[2] = {opt->quick ? 100 : 1000, opt->quick ? 400 : 16000};
+    double ns[EDIT_KINDS][MAX_REPEATS];
+    int32_t size, kind, r;
+    for (size = 0; size < 2; ++size) {
+        for (r = 0; r < opt->repeats; ++r) {
+            double sample[EDIT_KINDS];
+            if (!sample_edits(sizes[size], sample)) {
+                return false;
+            }
+            for (kind = 0; kind < EDIT_KINDS; ++kind) {
+                ns[kind][r] = sample[kind];
+            }
+        }
+        for (kind = 0; kind < EDIT_KINDS; ++kind) {
+            char detail[64];
+            const double median = bench_sort_median(ns[kind], opt->repeats);
+            snprintf(detail, sizeof detail, "%d items", (int)sizes[size]);
+            print_row("edits", g_edit_names[kind], median, ns[kind][0], "ns/item", detail);
+        }
+    }
+    return true;
+}
+
 /* ---- Main ---------------------------------------------------------------------------------------- */
 
 static void usage(FILE* f) {
@@ -608,7 +693,7 @@ int main(int argc, char** argv) {
         }
     }
     ok = bench_manifolds(&opt) && bench_queries(&opt, &agreed) && bench_solve(&opt, "box_grid") &&
-         (opt.quick || bench_solve(&opt, "large_pyramid"));
+         (opt.quick || bench_solve(&opt, "large_pyramid")) && bench_edits(&opt);
     if (opt.format == FORMAT_JSON) {
         printf("\n ], \"queries_agree_with_brute_force\": %s}\n", agreed ? "true" : "false");
     }

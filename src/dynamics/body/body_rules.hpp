@@ -15,7 +15,8 @@ namespace i2d {
 /// Mass, centre of mass, rotational inertia and extents from the body's shapes, and its
 /// centre in the world. Static and kinematic bodies have infinite mass and inertia
 /// (inverses 0); a dynamic body with no mass gets 1 kg at its origin so that it still
-/// responds, rather than an infinite mass that would make it static in disguise.
+/// responds, rather than an infinite mass that would make it static in disguise. A
+/// static body's extents are 0 and cost nothing: the time is constant in its shapes.
 /// `slop`: the world's linear slop (Tolerances), the least thickness a shape counts with
 /// in min_extent.
 void update_mass_from_shapes(Body& body, const Pool<Shape>& shapes, float slop);

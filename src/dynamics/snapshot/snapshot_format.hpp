@@ -45,8 +45,10 @@ struct SnapshotHeader {
 // 2 added the world's length unit and each body's sleep threshold, enabled flag and mass
 // override; a version 1 snapshot loads with the values a world then had. 3 added each
 // shape's opt-ins to the contact hooks (off in older snapshots). 4 added the world's
-// enable_impact_chains (on in older snapshots, as in a new world).
-constexpr uint32_t snapshot_format_version = 4;
+// enable_impact_chains (on in older snapshots, as in a new world). 5 gives static bodies
+// extents of 0 (older snapshots hold the ones their shapes gave, which nothing read: they
+// load as 0).
+constexpr uint32_t snapshot_format_version = 5;
 constexpr std::size_t snapshot_header_size = 48;
 
 /// Writes the header into the first snapshot_header_size bytes of `out`.

@@ -94,6 +94,11 @@ void body_fields(Io& io, B& b, SnapshotPart part) {
     io(b.quarantined);
     io(b.max_extent);
     io(b.min_extent);
+    if constexpr (Io::loading) {
+        if (!io.has_version(5) && b.type == BodyType::static_body) {
+            b.max_extent = b.min_extent = 0.0f;  // format 5 made them 0
+        }
+    }
     io(b.inv_mass);
     io(b.inv_inertia);
     io(b.mass);
