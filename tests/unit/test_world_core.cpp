@@ -35,6 +35,25 @@ I2D_TEST(unit_world_static_and_kinematic_have_no_mass) {
     I2D_CHECK(world.bodies()[k].mass == 0.0f && world.bodies()[k].inv_mass == 0.0f);
 }
 
+// Extents bound how fast a body's points move when it turns; a static body never moves,
+// so it has none, and adding or taking away its shapes costs the same however many it
+// has. A kinematic body's follow its shapes (a spinning drum is not resting), and it
+// keeps them when it is made static and gets them back when made kinematic again.
+I2D_TEST(unit_world_static_bodies_have_no_extents) {
+    World world{WorldDef{}};
+    const int32_t s = add_box_body(world, BodyType::static_body, {}, 1.0f, 1.0f);
+    const int32_t k = add_box_body(world, BodyType::kinematic, {}, 1.0f, 1.0f);
+    add_circle(world, s, {5.0f, 0.0f}, 0.5f);
+    add_circle(world, k, {5.0f, 0.0f}, 0.5f);
+    I2D_CHECK(world.bodies()[s].max_extent == 0.0f && world.bodies()[s].min_extent == 0.0f);
+    I2D_CHECK_NEAR(world.bodies()[k].max_extent, 5.5, 1e-6);
+    I2D_CHECK_NEAR(world.bodies()[k].min_extent, 0.5, 1e-6);
+    world.set_type(k, BodyType::static_body);
+    I2D_CHECK(world.bodies()[k].max_extent == 0.0f && world.bodies()[k].min_extent == 0.0f);
+    world.set_type(k, BodyType::kinematic);
+    I2D_CHECK_NEAR(world.bodies()[k].max_extent, 5.5, 1e-6);
+}
+
 I2D_TEST(unit_world_destroying_shapes_keeps_lists_consistent) {
     World world{WorldDef{}};
     const int32_t body = add_body(world, BodyType::dynamic, {});
