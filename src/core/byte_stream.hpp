@@ -16,6 +16,8 @@
 #include <cstring>
 #include <vector>
 
+#include "core/assert.hpp"
+
 namespace i2d {
 
 /// An unsigned integer's bytes in little-endian order, as the host holds them: unchanged
@@ -34,17 +36,12 @@ U to_little_endian(U v) {
 #endif
 }
 
-class ByteWriter {
+/// The encodings a writer offers, each value as its little-endian bytes, over the
+/// derived writer's put(data, size).
+template <class Derived>
+class LittleEndianWriter {
 public:
-    /// Counts the bytes only.
-    ByteWriter() = default;
-    /// Writes into [buffer, buffer + capacity); past the end it only counts, and
-    /// overflowed() says so.
-    ByteWriter(void* buffer, std::size_t capacity) : out_(static_cast<unsigned char*>(buffer)), capacity_(capacity) {}
-    /// Appends to `grow`, which grows as needed (a recording's records).
-    explicit ByteWriter(std::vector<unsigned char>& grow) : grow_(&grow) {}
-
-    void u8(uint8_t v) { put(&v, 1); }
+    void u8(uint8_t v) { self().put(&v, 1); }
     void u16(uint16_t v) { put_little_endian(v); }
     void u32(uint32_t v) { put_little_endian(v); }
     void u64(uint64_t v) { put_little_endian(v); }
@@ -55,7 +52,26 @@ public:
         u32(bits);
     }
     void boolean(bool v) { u8(v ? 1 : 0); }
-    void bytes(const void* data, std::size_t size) { put(data, size); }
+    void bytes(const void* data, std::size_t size) { self().put(data, size); }
+
+private:
+    Derived& self() { return static_cast<Derived&>(*this); }
+    template <class U>
+    void put_little_endian(U v) {
+        v = to_little_endian(v);
+        self().put(&v, sizeof v);
+    }
+};
+
+class ByteWriter : public LittleEndianWriter<ByteWriter> {
+public:
+    /// Counts the bytes only.
+    ByteWriter() = default;
+    /// Writes into [buffer, buffer + capacity); past the end it only counts, and
+    /// overflowed() says so.
+    ByteWriter(void* buffer, std::size_t capacity) : out_(static_cast<unsigned char*>(buffer)), capacity_(capacity) {}
+    /// Appends to `grow`, which grows as needed (a recording's records).
+    explicit ByteWriter(std::vector<unsigned char>& grow) : grow_(&grow) {}
 
     /// Bytes written (or counted) so far.
     std::size_t size() const { return size_; }
@@ -68,13 +84,6 @@ public:
         return out_ != nullptr && offset < capacity_ ? out_ + offset : nullptr;
     }
 
-private:
-    template <class U>
-    void put_little_endian(U v) {
-        v = to_little_endian(v);
-        put(&v, sizeof v);
-    }
-
     void put(const void* data, std::size_t size) {
         if (out_ != nullptr && size_ + size <= capacity_) {
             std::memcpy(out_ + size_, data, size);
@@ -85,9 +94,30 @@ private:
         size_ += size;
     }
 
+private:
     unsigned char* out_ = nullptr;
     std::vector<unsigned char>* grow_ = nullptr;
     std::size_t capacity_ = 0;
+    std::size_t size_ = 0;
+};
+
+/// Up to Capacity bytes kept in the writer itself, for one struct's fields, handed on
+/// whole. A byte written through ByteWriter's pointer may, for all the compiler knows,
+/// change the writer's own size, so each field reloaded it; bytes written into this
+/// writer's own array cannot, and its size stays in a register.
+template <std::size_t Capacity>
+class StagedBytes : public LittleEndianWriter<StagedBytes<Capacity>> {
+public:
+    void put(const void* data, std::size_t size) {
+        I2D_ASSERT(size <= Capacity - size_);
+        std::memcpy(bytes_ + size_, data, size);
+        size_ += size;
+    }
+    const unsigned char* data() const { return bytes_; }
+    std::size_t size() const { return size_; }
+
+private:
+    unsigned char bytes_[Capacity];
     std::size_t size_ = 0;
 };
 

@@ -19,10 +19,12 @@
 
 namespace i2d {
 
-class SaveIo {
+/// The fields of a save, each through the writer Out's encodings (LittleEndianWriter).
+template <class Out>
+class FieldWriter {
 public:
     static constexpr bool loading = false;
-    explicit SaveIo(ByteWriter& out) : out_(out) {}
+    explicit FieldWriter(Out& out) : out_(out) {}
 
     /// Whether the bytes have the fields a format version added: a save writes the newest.
     bool has_version(uint32_t) const { return true; }
@@ -61,11 +63,27 @@ public:
     /// The one check a save has: none (what a world holds is valid); for symmetry.
     bool check(bool, const char*) { return true; }
     bool failed() const { return false; }
-    ByteWriter& bytes() { return out_; }
 
-private:
-    ByteWriter& out_;
+protected:
+    Out& out_;
 };
+
+class SaveIo : public FieldWriter<ByteWriter> {
+public:
+    explicit SaveIo(ByteWriter& out) : FieldWriter<ByteWriter>(out) {}
+    ByteWriter& bytes() { return out_; }
+};
+
+/// Saves one struct of at most Capacity bytes through fields(staged_io), staged in the
+/// stack (StagedBytes) and handed to `io` whole: the hot loops of a save (a contact's
+/// forty fields) then keep their place in a register.
+template <std::size_t Capacity, class Fields>
+void save_staged(SaveIo& io, Fields&& fields) {
+    StagedBytes<Capacity> staged;
+    FieldWriter<StagedBytes<Capacity>> staged_io(staged);
+    fields(staged_io);
+    io.bytes().bytes(staged.data(), staged.size());
+}
 
 class LoadIo {
 public:

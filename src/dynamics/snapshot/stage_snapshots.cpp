@@ -17,6 +17,9 @@ namespace i2d {
 
 namespace {
 
+// Room for one contact's fields (contact_fields writes 199 bytes; the stage asserts it).
+constexpr std::size_t contact_saved_bytes = 256;
+
 // Each entry of an awake list is a live item that knows its place.
 template <class T>
 bool check_awake_list(LoadIo& io, const std::vector<int32_t>& list, const Pool<T>& pool, const char* problem) {
@@ -57,7 +60,9 @@ void JointSet::swap_state(JointSet& other) noexcept {
 }
 
 void ContactSet::save(SaveIo& io) const {
-    pool_.save(io, [](SaveIo& out, const Contact& c) { contact_fields(out, c); });
+    pool_.save(io, [](SaveIo& out, const Contact& c) {
+        save_staged<contact_saved_bytes>(out, [&c](auto& staged) { contact_fields(staged, c); });
+    });
     list_fields(io, awake_, 0, "");
 }
 

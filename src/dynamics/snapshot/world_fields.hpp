@@ -20,6 +20,7 @@
 #include "dynamics/island/island.hpp"
 #include "dynamics/joint/joint.hpp"
 #include "core/field_io.hpp"
+#include "core/force_inline.hpp"
 #include "dynamics/world/events.hpp"
 #include "dynamics/world/world_def.hpp"
 
@@ -273,7 +274,7 @@ void joint_fields(Io& io, J& j, SnapshotPart part) {
 }
 
 template <class Io, class C>
-void contact_fields(Io& io, C& c) {
+I2D_FORCE_INLINE void contact_fields(Io& io, C& c) {
     io(c.normal);
     io(c.point_count);
     io.check(c.point_count >= 0 && c.point_count <= 2, "a contact has more than two points");
