@@ -273,6 +273,8 @@ void joint_fields(Io& io, J& j, SnapshotPart part) {
     }
 }
 
+// Inlined so that a save stages it (save_staged, field_io.hpp) with the stage's size in
+// a register: called, each field reloaded it (326 against 142 us for pile_1k's state).
 template <class Io, class C>
 I2D_FORCE_INLINE void contact_fields(Io& io, C& c) {
     io(c.normal);
