@@ -92,22 +92,16 @@ void DynamicTree::enlarge_proxy(int32_t proxy, const AABB& fat_aabb) {
     }
 }
 
-// Every ancestor is marked, not only those that grew, so that the rebuild finds each
-// marked node by descending from the root through marked nodes alone.
+// Every ancestor is marked, so that the rebuild finds each marked node by descending from
+// the root through marked nodes alone; marking stops at a marked ancestor, whose own
+// ancestors are marked already. The rebuild frees the marked nodes and makes their boxes
+// anew, so they are not grown here: in the tumbler, where nearly every leaf moves each
+// step, growing each path to the root was 2.5 % of the step.
 void DynamicTree::move_proxy_in_place_at(int32_t leaf, const AABB& fat_aabb) {
     I2D_ASSERT(nodes_[leaf].is_leaf());
     nodes_[leaf].aabb = fat_aabb;
-    int32_t index = nodes_[leaf].parent;
-    for (; index != null_index; index = nodes_[index].parent) {
-        TreeNode& node = nodes_[index];
-        node.grown = true;
-        if (contains(node.aabb, fat_aabb)) {
-            index = node.parent;
-            break;
-        }
-        node.aabb = union_of(node.aabb, fat_aabb);
-    }
-    for (; index != null_index && !nodes_[index].grown; index = nodes_[index].parent) {
+    for (int32_t index = nodes_[leaf].parent; index != null_index && !nodes_[index].grown;
+         index = nodes_[index].parent) {
         nodes_[index].grown = true;
     }
 }
@@ -336,9 +330,10 @@ void DynamicTree::validate() const {
         I2D_ASSERT(c1.parent == i && c2.parent == i);
         I2D_ASSERT(n.height == 1 + std::max(c1.height, c2.height));
         // Exactly the union, not just containing it: a box left loose costs every query.
-        // Only a node marked for the rebuild may hold more, and its parent is marked too.
+        // A node marked for the rebuild holds a box of before the moves (the rebuild makes
+        // it anew), and its parent is marked too.
         const AABB both = union_of(c1.aabb, c2.aabb);
-        I2D_ASSERT(n.grown ? contains(n.aabb, both) : n.aabb.lower == both.lower && n.aabb.upper == both.upper);
+        I2D_ASSERT(n.grown || (n.aabb.lower == both.lower && n.aabb.upper == both.upper));
         I2D_ASSERT(!n.grown || n.parent == null_index || nodes_[n.parent].grown);
     }
     I2D_ASSERT(leaves == proxy_count_);

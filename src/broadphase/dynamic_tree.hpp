@@ -86,9 +86,9 @@ public:
     /// Grows the leaf's box in place (ancestors grow to contain it); cheaper than a move
     /// when the box only gets bigger. The box must contain the old one.
     void enlarge_proxy(int32_t proxy, const AABB& fat_aabb);
-    /// Gives the leaf a new box where it is, for many moves at once: its ancestors grow to
-    /// hold it and are marked, and rebuild_grown() then rebuilds them. Queries stay exact
-    /// meanwhile (internal boxes are only looser); any other change rebuilds first.
+    /// Gives the leaf a new box where it is, for many moves at once: its ancestors are
+    /// marked, and rebuild_grown() then rebuilds them. Their boxes are left as they were,
+    /// so the tree answers no query until then; any other change rebuilds first.
     void move_proxy_in_place_at(int32_t order, const AABB& fat_aabb);
     /// Rebuilds every node marked by move_proxy_in_place_at, keeping the unmarked subtrees
     /// below them as they are; returns how many internal nodes it made.
@@ -160,6 +160,8 @@ public:
     void validate() const;
 
 private:
+    /// No leaf has moved in place since the last rebuild_grown(): every box is current.
+    bool answers_queries() const { return root_ == null_index || !nodes_[root_].grown; }
     void prefetch_node(int32_t node) const {
 #if defined(__GNUC__)
         __builtin_prefetch(&nodes_[node]);

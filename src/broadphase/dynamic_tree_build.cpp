@@ -32,6 +32,7 @@ int32_t DynamicTree::rebuild_grown() { return rebuild_marked(Split::midpoint); }
 // single leaf pair, keeping the order, until there are enough parts or none can expand.
 void DynamicTree::split_self_overlaps(int32_t target, std::vector<TreeNodePair>& out) {
     out.clear();
+    I2D_ASSERT(answers_queries());
     if (root_ == null_index) {
         return;
     }

@@ -2,6 +2,7 @@
 // DynamicTree's traversals, templated on the visitor so that the per-leaf call inlines.
 #pragma once
 
+#include "core/assert.hpp"
 #include "core/growable_stack.hpp"
 
 namespace i2d {
@@ -12,6 +13,7 @@ namespace i2d {
 // order a plain stack traversal gives.
 template <class Visit>
 void DynamicTree::query(const AABB& box, Visit&& visit) const {
+    I2D_ASSERT(answers_queries());
     if (root_ == null_index || !overlaps(nodes_[root_].aabb, box)) {
         return;
     }
@@ -126,6 +128,7 @@ void DynamicTree::self_overlaps(TreeNodePair part, Visit&& visit) const {
 
 template <class Visit>
 void DynamicTree::query(const AABB& box, uint64_t mask_bits, Visit&& visit) const {
+    I2D_ASSERT(answers_queries());
     query(box, [&](int32_t proxy, int32_t user_value) {
         return (proxy_categories_[proxy] & mask_bits) == 0 || visit(proxy, user_value);
     });
@@ -164,6 +167,7 @@ inline bool segment_touches(Vec2 origin, Vec2 d, float max_t, const AABB& box) {
 
 template <class Visit>
 void DynamicTree::ray_cast(const TreeRayInput& input, uint64_t mask_bits, Visit&& visit) const {
+    I2D_ASSERT(answers_queries());
     if (root_ == null_index) {
         return;
     }
