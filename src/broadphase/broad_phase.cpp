@@ -145,12 +145,7 @@ void BroadPhase::commit_moves_in_place() {
 
 void BroadPhase::finish_commit() {
     for (DynamicTree& t : trees_) {
-        t.rebuild_grown();
-        // Once a quarter of a tree has been rebuilt or re-inserted its nodes are scattered
-        // again; the O(n) compaction is then cheaper than the cache misses it saves.
-        if (t.proxy_count() > 0 && 4 * t.moves_since_compact() > t.proxy_count()) {
-            t.compact();
-        }
+        t.commit_in_place_moves();
     }
 }
 

@@ -93,6 +93,9 @@ public:
     /// Rebuilds every node marked by move_proxy_in_place_at, keeping the unmarked subtrees
     /// below them as they are; returns how many internal nodes it made.
     int32_t rebuild_grown();
+    /// What the broadphase calls after a batch of moves: rebuild_grown(), and compact()
+    /// once a quarter of the tree has been rebuilt or re-inserted since the last one.
+    void commit_in_place_moves();
     /// Every box seen from `new_origin` (relative_to): the same tree, each internal box
     /// still exactly the union of its children.
     void shift_origin(Vec2 new_origin);
@@ -197,8 +200,16 @@ private:
     enum class Split : uint8_t { sah, midpoint };
     /// Builds a tree over build_items_ (leaves and whole subtrees); returns its root.
     int32_t build_top_down(Split rule);
-    int32_t split_items(int32_t begin, int32_t end, int32_t depth, Split rule, AABB& bounds);
+    int32_t split_items(int32_t begin, int32_t end, int32_t depth, Split rule);
     int32_t rebuild_marked(Split rule);
+    void collect_marked();
+    int32_t finish_build(Split rule);
+    void build_compacted(Split rule);
+    void set_built_boxes_and_heights(std::vector<TreeNode>& nodes) const;
+    bool scattered(int32_t moves) const;
+    void copy_in_preorder(int32_t old_root, int32_t new_parent);
+    void link_placed(int32_t index, int32_t parent);
+    void adopt_compacted();
     template <class Left>
     int32_t partition_items(int32_t begin, int32_t end, Left&& left);
 

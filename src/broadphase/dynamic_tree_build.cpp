@@ -22,11 +22,38 @@ void DynamicTree::rebuild() {
     for (TreeNode& node : nodes_) {
         node.grown = node.height > 0;
     }
-    rebuild_marked(Split::sah);
-    compact();
+    if (root_ != null_index && nodes_[root_].grown) {
+        collect_marked();
+        build_compacted(Split::sah);
+    } else {
+        compact();
+    }
 }
 
 int32_t DynamicTree::rebuild_grown() { return rebuild_marked(Split::midpoint); }
+
+// Where most leaves moved (the tumbler, a rain of bodies) the rebuild is due every step
+// and so is the compaction after it, which copied every node once more: when both are
+// due, the build writes the nodes where compaction would have put them. The same tree,
+// the same array, one pass fewer.
+void DynamicTree::commit_in_place_moves() {
+    if (root_ != null_index && nodes_[root_].grown) {
+        collect_marked();
+        const int32_t built = int32_t(build_items_.size()) - 1;
+        if (scattered(moves_since_compact_ + built)) {
+            build_compacted(Split::midpoint);
+            return;
+        }
+        finish_build(Split::midpoint);
+    }
+    if (scattered(moves_since_compact_)) {
+        compact();
+    }
+}
+
+// Once a quarter of a tree has been rebuilt or re-inserted its nodes are scattered again;
+// the O(n) compaction is then cheaper than the cache misses it saves.
+bool DynamicTree::scattered(int32_t moves) const { return proxy_count_ > 0 && 4 * moves > proxy_count_; }
 
 // Level by level from the root with itself: each round expands every part that is not a
 // single leaf pair, keeping the order, until there are enough parts or none can expand.
@@ -54,12 +81,17 @@ void DynamicTree::split_self_overlaps(int32_t target, std::vector<TreeNodePair>&
     }
 }
 
-// The marked nodes are freed; what hangs below them unmarked (leaves, and subtrees no
-// moved leaf reached) becomes the items of one build.
 int32_t DynamicTree::rebuild_marked(Split rule) {
     if (root_ == null_index || !nodes_[root_].grown) {
         return 0;
     }
+    collect_marked();
+    return finish_build(rule);
+}
+
+// The marked nodes are freed; what hangs below them unmarked (leaves, and subtrees no
+// moved leaf reached) becomes the items of one build.
+void DynamicTree::collect_marked() {
     build_items_.clear();
     collect_stack_.clear();
     collect_stack_.push_back(root_);
@@ -76,6 +108,10 @@ int32_t DynamicTree::rebuild_marked(Split rule) {
             build_items_.push_back({node.aabb, center(node.aabb), index, 0});
         }
     }
+}
+
+// The collected items built in place of the freed nodes; returns how many it made.
+int32_t DynamicTree::finish_build(Split rule) {
     root_ = build_top_down(rule);
     nodes_[root_].parent = null_index;
     const int32_t built = int32_t(built_nodes_.size());
@@ -87,38 +123,98 @@ int32_t DynamicTree::rebuild_marked(Split rule) {
 // one contiguous run of the array and a traversal reads memory mostly forwards.
 void DynamicTree::compact() {
     rebuild_grown();
-    moves_since_compact_ = 0;
     compact_scratch_.clear();
     compact_scratch_.reserve(size_t(2 * proxy_count_));
     if (root_ != null_index) {
-        // Each stacked node carries its new parent, so links are set as nodes are placed:
-        // no second pass through the old array to translate indices.
-        compact_stack_.clear();
-        compact_stack_.push_back({root_, null_index});
-        while (!compact_stack_.empty()) {
-            const CompactItem item = compact_stack_.back();
-            compact_stack_.pop_back();
-            const int32_t new_index = int32_t(compact_scratch_.size());
-            compact_scratch_.push_back(nodes_[item.old_index]);
-            TreeNode& node = compact_scratch_.back();
-            node.parent = item.new_parent;
-            if (item.new_parent != null_index) {
-                TreeNode& parent = compact_scratch_[item.new_parent];
-                // The first child is placed right after its parent.
-                (new_index == item.new_parent + 1 ? parent.child1() : parent.child2()) = new_index;
-            }
-            if (node.is_leaf()) {
-                proxy_nodes_[node.proxy()] = new_index;
-            } else {
-                compact_stack_.push_back({node.child2(), new_index});
-                compact_stack_.push_back({node.child1(), new_index});
-            }
-        }
+        copy_in_preorder(root_, null_index);
         root_ = 0;
     }
+    adopt_compacted();
+}
+
+// Appends the subtree below `old_root` to compact_scratch_ in preorder, its root a child
+// of `new_parent` there (the first child if placed right after it). Each stacked node
+// carries its new parent, so links are set as nodes are placed: no second pass through
+// the old array to translate indices.
+void DynamicTree::copy_in_preorder(int32_t old_root, int32_t new_parent) {
+    compact_stack_.clear();
+    compact_stack_.push_back({old_root, new_parent});
+    while (!compact_stack_.empty()) {
+        const CompactItem item = compact_stack_.back();
+        compact_stack_.pop_back();
+        const int32_t new_index = int32_t(compact_scratch_.size());
+        compact_scratch_.push_back(nodes_[item.old_index]);
+        TreeNode& node = compact_scratch_.back();
+        link_placed(new_index, item.new_parent);
+        if (node.is_leaf()) {
+            proxy_nodes_[node.proxy()] = new_index;
+        } else {
+            compact_stack_.push_back({node.child2(), new_index});
+            compact_stack_.push_back({node.child1(), new_index});
+        }
+    }
+}
+
+// A node just placed in compact_scratch_ at `index` and its parent there: in preorder the
+// first child comes right after its parent.
+void DynamicTree::link_placed(int32_t index, int32_t parent) {
+    compact_scratch_[std::size_t(index)].parent = parent;
+    if (parent != null_index) {
+        TreeNode& p = compact_scratch_[std::size_t(parent)];
+        (index == parent + 1 ? p.child1() : p.child2()) = index;
+    }
+}
+
+// The compacted array becomes the tree: no free nodes, nothing scattered.
+void DynamicTree::adopt_compacted() {
     nodes_.swap(compact_scratch_);
     free_list_ = null_index;
+    moves_since_compact_ = 0;
     validate();
+}
+
+// build_top_down's tree written straight into compact_scratch_ in preorder, as compact()
+// would lay it out: the build already makes a node before its first subtree and that
+// before its second, so each item (a leaf, or a subtree no moved leaf reached, copied
+// whole) and each new node takes the next place.
+void DynamicTree::build_compacted(Split rule) {
+    compact_scratch_.clear();
+    compact_scratch_.reserve(size_t(2 * proxy_count_));  // no reallocation: split_items writes into it
+    built_nodes_.clear();
+    build_tasks_.clear();
+    build_tasks_.push_back({0, int32_t(build_items_.size()), null_index, 0, true});
+    while (!build_tasks_.empty()) {
+        const BuildTask task = build_tasks_.back();
+        build_tasks_.pop_back();
+        if (task.end - task.begin == 1) {
+            copy_in_preorder(build_items_[std::size_t(task.begin)].node, task.parent);
+            continue;
+        }
+        const int32_t index = int32_t(compact_scratch_.size());
+        compact_scratch_.emplace_back();
+        built_nodes_.push_back(index);
+        const int32_t split = split_items(task.begin, task.end, task.depth, rule);
+        link_placed(index, task.parent);
+        build_tasks_.push_back({split, task.end, index, task.depth + 1, false});
+        build_tasks_.push_back({task.begin, split, index, task.depth + 1, true});
+    }
+    set_built_boxes_and_heights(compact_scratch_);
+    root_ = 0;
+    adopt_compacted();
+}
+
+// Each made node's box and height from its children's, children first (the nodes were
+// made parents first). The union of the children's boxes is the union of the node's
+// items' boxes, bit for bit (a minimum and a maximum are exact in any order): unions made
+// here, once per node, rather than in split_items over every item of every level.
+void DynamicTree::set_built_boxes_and_heights(std::vector<TreeNode>& nodes) const {
+    for (auto it = built_nodes_.rbegin(); it != built_nodes_.rend(); ++it) {
+        TreeNode& n = nodes[std::size_t(*it)];
+        const TreeNode& c1 = nodes[std::size_t(n.child1())];
+        const TreeNode& c2 = nodes[std::size_t(n.child2())];
+        n.aabb = union_of(c1.aabb, c2.aabb);
+        n.height = int16_t(1 + std::max(c1.height, c2.height));
+    }
 }
 
 // Top-down over build_items_, depth first: each internal node is made before its
@@ -137,7 +233,7 @@ int32_t DynamicTree::build_top_down(Split rule) {
         } else {
             node = allocate_node();
             built_nodes_.push_back(node);
-            const int32_t split = split_items(task.begin, task.end, task.depth, rule, nodes_[node].aabb);
+            const int32_t split = split_items(task.begin, task.end, task.depth, rule);
             build_tasks_.push_back({split, task.end, node, task.depth + 1, false});
             build_tasks_.push_back({task.begin, split, node, task.depth + 1, true});
         }
@@ -148,10 +244,7 @@ int32_t DynamicTree::build_top_down(Split rule) {
             nodes_[node].parent = task.parent;
         }
     }
-    for (auto it = built_nodes_.rbegin(); it != built_nodes_.rend(); ++it) {
-        TreeNode& n = nodes_[*it];
-        n.height = int16_t(1 + std::max(nodes_[n.child1()].height, nodes_[n.child2()].height));
-    }
+    set_built_boxes_and_heights(nodes_);
     return root;
 }
 
@@ -163,17 +256,15 @@ constexpr AABB empty_box{{FLT_MAX, FLT_MAX}, {-FLT_MAX, -FLT_MAX}};
 
 // Along the axis where the items' centres spread most, binned SAH over the centres (the
 // split that minimises perimeter(left) * count(left) + perimeter(right) * count(right))
-// or the middle of the spread. Partitions [begin, end), writes the union of the items'
-// boxes to `bounds` and returns where the second half starts.
-int32_t DynamicTree::split_items(int32_t begin, int32_t end, int32_t depth, Split rule, AABB& bounds) {
+// or the middle of the spread. Partitions [begin, end) and returns where the second half
+// starts.
+int32_t DynamicTree::split_items(int32_t begin, int32_t end, int32_t depth, Split rule) {
     BuildItem* items = build_items_.data();
     const int32_t count = end - begin;
     AABB centres{items[begin].centre, items[begin].centre};
-    bounds = items[begin].box;
     for (int32_t i = begin + 1; i < end; ++i) {
         centres.lower = min(centres.lower, items[i].centre);
         centres.upper = max(centres.upper, items[i].centre);
-        bounds = union_of(bounds, items[i].box);
     }
     if (count == 2) {
         return begin + 1;
