@@ -109,7 +109,7 @@ void BroadPhase::commit_moves() {
         tree(proxy_kind(e.key)).move_proxy_at(int32_t(e.order), e.box);
     }
     pending_moves_.clear();
-    finish_commit();
+    finish_commit(nullptr);
 }
 
 namespace {
@@ -124,7 +124,7 @@ constexpr int32_t rebuild_share_denominator = 8;
 
 }  // namespace
 
-void BroadPhase::commit_moves_in_place() {
+void BroadPhase::commit_moves_in_place(TaskSystem* tasks) {
     order_pending_moves();
     int32_t moves[int32_t(ProxyKind::count)] = {};
     for (const MoveEntry& e : pending_moves_) {
@@ -140,12 +140,28 @@ void BroadPhase::commit_moves_in_place() {
         }
     }
     pending_moves_.clear();
-    finish_commit();
+    finish_commit(tasks);
 }
 
-void BroadPhase::finish_commit() {
+// A tree's commit leaves parts of its rebuild for the workers when there are several.
+void BroadPhase::finish_commit(TaskSystem* tasks) {
+    const int32_t workers = tasks != nullptr ? tasks->worker_count() : 1;
     for (DynamicTree& t : trees_) {
-        t.commit_in_place_moves();
+        const int32_t parts = t.begin_commit(workers);
+        if (parts == 0) {
+            continue;
+        }
+        stages_.clear();
+        stages_.push_back(make_stage<&BroadPhase::build_tree_parts>(t, NoStageArg{}, parts, workers, true, 1));
+        runner_.run(*tasks, stages_, true, this);
+        t.finish_commit_parts();
+    }
+}
+
+void BroadPhase::build_tree_parts(const BroadPhase&, DynamicTree& tree, const NoStageArg&, int32_t begin, int32_t end,
+                                  int32_t worker) {
+    for (int32_t part = begin; part < end; ++part) {
+        tree.build_part(part, worker);
     }
 }
 

@@ -26,6 +26,7 @@
 #include "broadphase/proxy_key.hpp"
 #include "core/bit_set.hpp"
 #include "core/radix_sort.hpp"
+#include "core/stage_runner.hpp"
 
 namespace i2d {
 
@@ -56,8 +57,9 @@ public:
     /// caller placing bodies one by one).
     void commit_moves();
     /// The same for the many moves of a step: in a tree where many proxies moved, each
-    /// leaf takes its box where it is and the grown part of the tree is rebuilt once.
-    void commit_moves_in_place();
+    /// leaf takes its box where it is and the grown part of the tree is rebuilt once, its
+    /// lower parts shared by the workers of `tasks` when given.
+    void commit_moves_in_place(TaskSystem* tasks = nullptr);
     /// Grows the fat box in place (or the queued box of a pending move), and the box
     /// ahead with it, and queues the proxy for pair finding.
     void enlarge_proxy(int32_t key, const AABB& fat_aabb);
@@ -115,7 +117,9 @@ private:
     void check_loaded(LoadIo& io);
     void set_ahead(int32_t key, const AABB& ahead_aabb);
     void order_pending_moves();
-    void finish_commit();
+    void finish_commit(TaskSystem* tasks);
+    static void build_tree_parts(const BroadPhase& self, DynamicTree& tree, const NoStageArg& arg, int32_t begin,
+                                 int32_t end, int32_t worker);
     int32_t& pending_slot(int32_t key) { return slot_of(pending_slot_, key); }
     int32_t& move_slot(int32_t key) { return slot_of(move_slot_, key); }
     /// slots[key], growing slots (with null_index) to hold it.
@@ -156,6 +160,9 @@ private:
     // Set by begin_pair_queries when the dynamic tree's pairs come from self_pairs.
     bool dynamic_pairs_by_self_search_ = false;
     std::vector<TreeNodePair> self_parts_;
+    // The commit's shared tree builds.
+    StageRunner runner_;
+    std::vector<Stage> stages_;
 };
 
 }  // namespace i2d

@@ -96,6 +96,13 @@ public:
     /// What the broadphase calls after a batch of moves: rebuild_grown(), and compact()
     /// once a quarter of the tree has been rebuilt or re-inserted since the last one.
     void commit_in_place_moves();
+    /// The same in three calls, for workers to share: begin_commit does what one thread
+    /// must and returns how many parts are left to build (0: the commit is done); then
+    /// build_part(part, worker) for each part, on workers in [0, worker_count), in any
+    /// order or at once; then finish_commit_parts(). The tree is the same whoever builds.
+    int32_t begin_commit(int32_t worker_count);
+    void build_part(int32_t part, int32_t worker);
+    void finish_commit_parts();
     /// Every box seen from `new_origin` (relative_to): the same tree, each internal box
     /// still exactly the union of its children.
     void shift_origin(Vec2 new_origin);
@@ -204,10 +211,15 @@ private:
     int32_t rebuild_marked(Split rule);
     void collect_marked();
     int32_t finish_build(Split rule);
-    void build_compacted(Split rule);
-    void set_built_boxes_and_heights(std::vector<TreeNode>& nodes) const;
+    int32_t begin_compacted_build(Split rule, int32_t worker_count);
+    void count_item_nodes();
+    static void set_from_children(std::vector<TreeNode>& nodes, int32_t index);
     bool scattered(int32_t moves) const;
-    void copy_in_preorder(int32_t old_root, int32_t new_parent);
+    struct CompactItem {
+        int32_t old_index;
+        int32_t new_parent;
+    };
+    int32_t copy_in_preorder(int32_t old_root, int32_t new_parent, int32_t place, std::vector<CompactItem>& stack);
     void link_placed(int32_t index, int32_t parent);
     void adopt_compacted();
     template <class Left>
@@ -218,10 +230,6 @@ private:
     std::vector<uint64_t> proxy_categories_;  // proxy id -> category bits
     std::vector<int32_t> free_proxies_;
     std::vector<TreeNode> compact_scratch_;
-    struct CompactItem {
-        int32_t old_index;
-        int32_t new_parent;
-    };
     std::vector<CompactItem> compact_stack_;
     int32_t root_ = null_index;
     int32_t free_list_ = null_index;
@@ -232,14 +240,33 @@ private:
         AABB box;
         Vec2 centre;
         int32_t node;
-        int32_t bin;  // scratch of split_items
+        int32_t bin;         // scratch of split_items
+        int32_t node_count;  // nodes in the item's subtree, when the build is shared
     };
     struct BuildTask {
         int32_t begin, end;  // a range of build_items_
         int32_t parent;      // null_index for the root
         int32_t depth;
         bool first_child;
+        int32_t place = null_index;  // in a compacted build: where its first node goes
     };
+    // A shared compacted build: its rule, the parts left for the workers, the places of
+    // the nodes made above them (breadth first), and each worker's own scratch.
+    // Trees of fewer items are built by one thread; each worker gets a few parts, so that
+    // one that runs slow leaves the others something to take.
+    static constexpr int32_t min_items_to_share = 256;
+    static constexpr int32_t min_nodes_to_split = 128;
+    static constexpr int32_t parts_per_worker = 4;
+    struct PartScratch {
+        std::vector<BuildTask> tasks;
+        std::vector<CompactItem> copies;
+        std::vector<int32_t> built;
+    };
+    Split build_rule_ = Split::midpoint;
+    std::vector<BuildTask> parts_;
+    std::vector<int32_t> top_nodes_;
+    std::vector<int32_t> task_nodes_;  // per task while the top is split: its node count
+    std::vector<PartScratch> part_scratch_;
     std::vector<BuildItem> build_items_;
     std::vector<BuildTask> build_tasks_;
     std::vector<int32_t> built_nodes_;  // internal nodes in the order the build made them

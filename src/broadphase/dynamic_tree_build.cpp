@@ -24,7 +24,7 @@ void DynamicTree::rebuild() {
     }
     if (root_ != null_index && nodes_[root_].grown) {
         collect_marked();
-        build_compacted(Split::sah);
+        begin_compacted_build(Split::sah, 1);  // one part, built at once
     } else {
         compact();
     }
@@ -37,18 +37,24 @@ int32_t DynamicTree::rebuild_grown() { return rebuild_marked(Split::midpoint); }
 // due, the build writes the nodes where compaction would have put them. The same tree,
 // the same array, one pass fewer.
 void DynamicTree::commit_in_place_moves() {
+    if (begin_commit(1) > 0) {
+        finish_commit_parts();
+    }
+}
+
+int32_t DynamicTree::begin_commit(int32_t worker_count) {
     if (root_ != null_index && nodes_[root_].grown) {
         collect_marked();
         const int32_t built = int32_t(build_items_.size()) - 1;
         if (scattered(moves_since_compact_ + built)) {
-            build_compacted(Split::midpoint);
-            return;
+            return begin_compacted_build(Split::midpoint, worker_count);
         }
         finish_build(Split::midpoint);
     }
     if (scattered(moves_since_compact_)) {
         compact();
     }
+    return 0;
 }
 
 // Once a quarter of a tree has been rebuilt or re-inserted its nodes are scattered again;
@@ -105,7 +111,7 @@ void DynamicTree::collect_marked() {
             free_node(index);
         } else {
             node.parent = null_index;
-            build_items_.push_back({node.aabb, center(node.aabb), index, 0});
+            build_items_.push_back({node.aabb, center(node.aabb), index, 0, 0});
         }
     }
 }
@@ -123,36 +129,37 @@ int32_t DynamicTree::finish_build(Split rule) {
 // one contiguous run of the array and a traversal reads memory mostly forwards.
 void DynamicTree::compact() {
     rebuild_grown();
-    compact_scratch_.clear();
-    compact_scratch_.reserve(size_t(2 * proxy_count_));
+    compact_scratch_.resize(root_ != null_index ? std::size_t(2 * proxy_count_ - 1) : 0);
     if (root_ != null_index) {
-        copy_in_preorder(root_, null_index);
+        copy_in_preorder(root_, null_index, 0, compact_stack_);
         root_ = 0;
     }
     adopt_compacted();
 }
 
-// Appends the subtree below `old_root` to compact_scratch_ in preorder, its root a child
-// of `new_parent` there (the first child if placed right after it). Each stacked node
+// Copies the subtree below `old_root` into compact_scratch_ in preorder from `place`, its
+// root a child of `new_parent` there; returns the place after it. Each stacked node
 // carries its new parent, so links are set as nodes are placed: no second pass through
 // the old array to translate indices.
-void DynamicTree::copy_in_preorder(int32_t old_root, int32_t new_parent) {
-    compact_stack_.clear();
-    compact_stack_.push_back({old_root, new_parent});
-    while (!compact_stack_.empty()) {
-        const CompactItem item = compact_stack_.back();
-        compact_stack_.pop_back();
-        const int32_t new_index = int32_t(compact_scratch_.size());
-        compact_scratch_.push_back(nodes_[item.old_index]);
-        TreeNode& node = compact_scratch_.back();
+int32_t DynamicTree::copy_in_preorder(int32_t old_root, int32_t new_parent, int32_t place,
+                                      std::vector<CompactItem>& stack) {
+    stack.clear();
+    stack.push_back({old_root, new_parent});
+    while (!stack.empty()) {
+        const CompactItem item = stack.back();
+        stack.pop_back();
+        const int32_t new_index = place++;
+        TreeNode& node = compact_scratch_[std::size_t(new_index)];
+        node = nodes_[item.old_index];
         link_placed(new_index, item.new_parent);
         if (node.is_leaf()) {
             proxy_nodes_[node.proxy()] = new_index;
         } else {
-            compact_stack_.push_back({node.child2(), new_index});
-            compact_stack_.push_back({node.child1(), new_index});
+            stack.push_back({node.child2(), new_index});
+            stack.push_back({node.child1(), new_index});
         }
     }
+    return place;
 }
 
 // A node just placed in compact_scratch_ at `index` and its parent there: in preorder the
@@ -174,47 +181,138 @@ void DynamicTree::adopt_compacted() {
 }
 
 // build_top_down's tree written straight into compact_scratch_ in preorder, as compact()
-// would lay it out: the build already makes a node before its first subtree and that
-// before its second, so each item (a leaf, or a subtree no moved leaf reached, copied
-// whole) and each new node takes the next place.
-void DynamicTree::build_compacted(Split rule) {
-    compact_scratch_.clear();
-    compact_scratch_.reserve(size_t(2 * proxy_count_));  // no reallocation: split_items writes into it
-    built_nodes_.clear();
+// would lay it out: each node (made, a leaf, or a subtree no moved leaf reached, copied
+// whole) takes its place in preorder, the array's size known from the leaf count.
+// With more than one worker the top of the tree is built here, a few levels by the
+// places its ranges will fill, and what hangs below is left in parts that build_part
+// builds depth first, each from its own place: parts share nothing but their items'
+// disjoint ranges and their places, so any worker may build any part, in any order, to
+// the same array.
+int32_t DynamicTree::begin_compacted_build(Split rule, int32_t worker_count) {
+    compact_scratch_.resize(std::size_t(2 * proxy_count_ - 1));
+    build_rule_ = rule;
+    const int32_t item_count = int32_t(build_items_.size());
+    const bool split_up = worker_count > 1 && item_count >= min_items_to_share;
+    if (split_up) {
+        count_item_nodes();
+    }
     build_tasks_.clear();
-    build_tasks_.push_back({0, int32_t(build_items_.size()), null_index, 0, true});
-    while (!build_tasks_.empty()) {
-        const BuildTask task = build_tasks_.back();
-        build_tasks_.pop_back();
-        if (task.end - task.begin == 1) {
-            copy_in_preorder(build_items_[std::size_t(task.begin)].node, task.parent);
+    build_tasks_.push_back({0, item_count, null_index, 0, true, 0});
+    task_nodes_.assign(1, 2 * proxy_count_ - 1);
+    top_nodes_.clear();
+    // The part with the most nodes is split until there are enough: parts of a size, in
+    // nodes rather than items, since an item may be a whole subtree to copy.
+    const int32_t target_parts = parts_per_worker * worker_count;
+    while (split_up && int32_t(build_tasks_.size()) < target_parts) {
+        std::size_t largest = build_tasks_.size();  // of those with two items or more
+        for (std::size_t k = 0; k < build_tasks_.size(); ++k) {
+            const bool splits = build_tasks_[k].end - build_tasks_[k].begin > 1;
+            if (splits && (largest == build_tasks_.size() || task_nodes_[k] > task_nodes_[largest])) {
+                largest = k;
+            }
+        }
+        if (largest == build_tasks_.size() || task_nodes_[largest] < min_nodes_to_split) {
+            break;
+        }
+        const BuildTask task = build_tasks_[largest];
+        const int32_t split = split_items(task.begin, task.end, task.depth, rule);
+        top_nodes_.push_back(task.place);
+        compact_scratch_[std::size_t(task.place)] = TreeNode{};
+        link_placed(task.place, task.parent);
+        int32_t left_nodes = -1;  // a range of k items and n nodes below them: n + k - 1
+        for (int32_t i = task.begin; i < split; ++i) {
+            left_nodes += build_items_[std::size_t(i)].node_count + 1;
+        }
+        const int32_t right_nodes = task_nodes_[largest] - 1 - left_nodes;
+        build_tasks_[largest] = {task.begin, split, task.place, task.depth + 1, true, task.place + 1};
+        task_nodes_[largest] = left_nodes;
+        build_tasks_.push_back({split, task.end, task.place, task.depth + 1, false, task.place + 1 + left_nodes});
+        task_nodes_.push_back(right_nodes);
+    }
+    parts_.assign(build_tasks_.begin(), build_tasks_.end());
+    part_scratch_.resize(std::size_t(worker_count));
+    if (parts_.size() == 1) {
+        build_part(0, 0);
+        finish_commit_parts();
+        return 0;
+    }
+    return int32_t(parts_.size());
+}
+
+// Each item's node count, for the places of the ranges at the top: a leaf is one node, a
+// subtree no moved leaf reached is counted through.
+void DynamicTree::count_item_nodes() {
+    for (BuildItem& item : build_items_) {
+        if (nodes_[item.node].is_leaf()) {
+            item.node_count = 1;
             continue;
         }
-        const int32_t index = int32_t(compact_scratch_.size());
-        compact_scratch_.emplace_back();
-        built_nodes_.push_back(index);
-        const int32_t split = split_items(task.begin, task.end, task.depth, rule);
-        link_placed(index, task.parent);
-        build_tasks_.push_back({split, task.end, index, task.depth + 1, false});
-        build_tasks_.push_back({task.begin, split, index, task.depth + 1, true});
+        int32_t count = 0;
+        collect_stack_.clear();
+        collect_stack_.push_back(item.node);
+        while (!collect_stack_.empty()) {
+            const TreeNode& node = nodes_[collect_stack_.back()];
+            collect_stack_.pop_back();
+            ++count;
+            if (!node.is_leaf()) {
+                collect_stack_.push_back(node.child1());
+                collect_stack_.push_back(node.child2());
+            }
+        }
+        item.node_count = count;
     }
-    set_built_boxes_and_heights(compact_scratch_);
+}
+
+// Depth first from the part's place, a cursor giving each node the next place: a node is
+// made before its first range and that range's nodes before the second's, as preorder
+// lays them out. The part's made nodes take their boxes and heights here, children first.
+void DynamicTree::build_part(int32_t part, int32_t worker) {
+    PartScratch& scratch = part_scratch_[std::size_t(worker)];
+    scratch.built.clear();
+    std::vector<BuildTask>& tasks = scratch.tasks;
+    tasks.clear();
+    tasks.push_back(parts_[std::size_t(part)]);
+    int32_t cursor = parts_[std::size_t(part)].place;
+    while (!tasks.empty()) {
+        const BuildTask task = tasks.back();
+        tasks.pop_back();
+        if (task.end - task.begin == 1) {
+            cursor = copy_in_preorder(build_items_[std::size_t(task.begin)].node, task.parent, cursor, scratch.copies);
+            continue;
+        }
+        const int32_t place = cursor++;
+        compact_scratch_[std::size_t(place)] = TreeNode{};
+        scratch.built.push_back(place);
+        const int32_t split = split_items(task.begin, task.end, task.depth, build_rule_);
+        link_placed(place, task.parent);
+        tasks.push_back({split, task.end, place, task.depth + 1, false, null_index});
+        tasks.push_back({task.begin, split, place, task.depth + 1, true, null_index});
+    }
+    for (auto it = scratch.built.rbegin(); it != scratch.built.rend(); ++it) {
+        set_from_children(compact_scratch_, *it);
+    }
+}
+
+// The top's nodes from their children, the deepest first (they were made breadth first),
+// and the array becomes the tree.
+void DynamicTree::finish_commit_parts() {
+    for (auto it = top_nodes_.rbegin(); it != top_nodes_.rend(); ++it) {
+        set_from_children(compact_scratch_, *it);
+    }
     root_ = 0;
     adopt_compacted();
 }
 
-// Each made node's box and height from its children's, children first (the nodes were
-// made parents first). The union of the children's boxes is the union of the node's
-// items' boxes, bit for bit (a minimum and a maximum are exact in any order): unions made
-// here, once per node, rather than in split_items over every item of every level.
-void DynamicTree::set_built_boxes_and_heights(std::vector<TreeNode>& nodes) const {
-    for (auto it = built_nodes_.rbegin(); it != built_nodes_.rend(); ++it) {
-        TreeNode& n = nodes[std::size_t(*it)];
-        const TreeNode& c1 = nodes[std::size_t(n.child1())];
-        const TreeNode& c2 = nodes[std::size_t(n.child2())];
-        n.aabb = union_of(c1.aabb, c2.aabb);
-        n.height = int16_t(1 + std::max(c1.height, c2.height));
-    }
+// A made node's box and height from its children's. The union of the children's boxes
+// is the union of the node's items' boxes, bit for bit (a minimum and a maximum are exact
+// in any order): unions made once per node, not in split_items over every item of every
+// level.
+void DynamicTree::set_from_children(std::vector<TreeNode>& nodes, int32_t index) {
+    TreeNode& n = nodes[std::size_t(index)];
+    const TreeNode& c1 = nodes[std::size_t(n.child1())];
+    const TreeNode& c2 = nodes[std::size_t(n.child2())];
+    n.aabb = union_of(c1.aabb, c2.aabb);
+    n.height = int16_t(1 + std::max(c1.height, c2.height));
 }
 
 // Top-down over build_items_, depth first: each internal node is made before its
@@ -244,7 +342,10 @@ int32_t DynamicTree::build_top_down(Split rule) {
             nodes_[node].parent = task.parent;
         }
     }
-    set_built_boxes_and_heights(nodes_);
+    // Children first: the nodes were made parents first.
+    for (auto it = built_nodes_.rbegin(); it != built_nodes_.rend(); ++it) {
+        set_from_children(nodes_, *it);
+    }
     return root;
 }
 

@@ -701,6 +701,7 @@ I2D_TEST(unit_tree_moves_in_place_then_rebuild_match_brute_force) {
 // layout when a compaction is due: the array it leaves is the one a rebuild of the grown
 // nodes followed by compact() leaves (every leaf at the same place with the same box, the
 // same height and internal boxes), and where no compaction is due it is the plain rebuild.
+// Shared by three workers, its parts built in reverse order, it leaves the same array.
 I2D_TEST(unit_tree_commit_lays_out_the_nodes_as_rebuild_then_compact) {
     const struct {
         uint32_t seed;
@@ -714,13 +715,23 @@ I2D_TEST(unit_tree_commit_lays_out_the_nodes_as_rebuild_then_compact) {
             m.create(random_box(rng, 50.0f), pick(rng, category_choices, 8));
         }
         m.tree.compact();
-        int32_t differences = 0, compactions = 0;
+        int32_t differences = 0, compactions = 0, shared_builds = 0;
         for (int32_t round = 0; round < 5; ++round) {
             for (int32_t i = m.live / c.share_denominator; i > 0; --i) {
                 const int32_t u = m.random_live(rng);
                 m.move_in_place(u, moved(rng, m.entries[u].box, 50.0f));
             }
             DynamicTree separate = m.tree;
+            DynamicTree shared = m.tree;
+            const int32_t parts = shared.begin_commit(3);
+            for (int32_t part = parts - 1; part >= 0; --part) {
+                shared.build_part(part, part % 3);
+            }
+            if (parts > 0) {
+                shared.finish_commit_parts();
+                ++shared_builds;
+            }
+            shared.validate();
             const bool due = 4 * (separate.moves_since_compact() + separate.rebuild_grown()) > separate.proxy_count();
             if (due) {
                 separate.compact();
@@ -728,8 +739,9 @@ I2D_TEST(unit_tree_commit_lays_out_the_nodes_as_rebuild_then_compact) {
             }
             m.tree.commit_in_place_moves();
             m.tree.validate();
-            differences += m.tree.height() == separate.height() ? 0 : 1;
+            differences += m.tree.height() == separate.height() && m.tree.height() == shared.height() ? 0 : 1;
             differences += m.tree.total_perimeter() == separate.total_perimeter() ? 0 : 1;
+            differences += m.tree.total_perimeter() == shared.total_perimeter() ? 0 : 1;
             differences += m.tree.moves_since_compact() == separate.moves_since_compact() ? 0 : 1;
             for (const auto& e : m.entries) {
                 if (!e.alive) {
@@ -737,15 +749,19 @@ I2D_TEST(unit_tree_commit_lays_out_the_nodes_as_rebuild_then_compact) {
                 }
                 const int32_t order = m.tree.storage_order(e.proxy);
                 differences += order == separate.storage_order(e.proxy) ? 0 : 1;
+                differences += order == shared.storage_order(e.proxy) ? 0 : 1;
                 const AABB a = m.tree.fat_aabb_at(order), b = separate.fat_aabb_at(order);
+                const AABB c = shared.fat_aabb_at(order);
                 differences += a.lower == b.lower && a.upper == b.upper ? 0 : 1;
+                differences += a.lower == c.lower && a.upper == c.upper ? 0 : 1;
             }
             differences += check_queries(m, rng, 50.0f, 10);
         }
-        std::printf("commit, seed %u: 1/%d moved per batch, %d of 5 commits compacted, %d differences\n", c.seed,
-                    c.share_denominator, compactions, differences);
+        std::printf("commit, seed %u: 1/%d moved per batch, %d of 5 commits compacted (%d shared), %d differences\n",
+                    c.seed, c.share_denominator, compactions, shared_builds, differences);
         I2D_CHECK(differences == 0);
         I2D_CHECK(c.compacts ? compactions == 5 : compactions < 5);
+        I2D_CHECK(shared_builds == compactions);
     }
 }
 

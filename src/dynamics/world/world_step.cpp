@@ -65,7 +65,7 @@ void World::run_step(float time_step, int32_t substep_count) {
         stages_->continuous.run(step, stages_->solver.fast_bodies());
     }
     profile_.continuous += timer.lap_ms();
-    stages_->broad_phase.commit_moves_in_place();
+    stages_->broad_phase.commit_moves_in_place(&stages_->tasks);
     profile_.update_bounds += timer.lap_ms();
 
     stages_->contacts.end_step(step);
