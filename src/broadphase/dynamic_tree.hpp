@@ -251,7 +251,8 @@ private:
         int32_t place = null_index;  // in a compacted build: where its first node goes
     };
     // A shared compacted build: its rule, the parts left for the workers, the places of
-    // the nodes made above them (breadth first), and each worker's own scratch.
+    // the nodes made above them (in the order they were made), and each worker's own
+    // scratch.
     // Trees of fewer items are built by one thread; each worker gets a few parts, so that
     // one that runs slow leaves the others something to take.
     static constexpr int32_t min_items_to_share = 256;

@@ -183,8 +183,8 @@ void DynamicTree::adopt_compacted() {
 // build_top_down's tree written straight into compact_scratch_ in preorder, as compact()
 // would lay it out: each node (made, a leaf, or a subtree no moved leaf reached, copied
 // whole) takes its place in preorder, the array's size known from the leaf count.
-// With more than one worker the top of the tree is built here, a few levels by the
-// places its ranges will fill, and what hangs below is left in parts that build_part
+// With more than one worker the top of the tree is built here, each split placing its
+// halves by their node counts, and what hangs below is left in parts that build_part
 // builds depth first, each from its own place: parts share nothing but their items'
 // disjoint ranges and their places, so any worker may build any part, in any order, to
 // the same array.
@@ -219,7 +219,7 @@ int32_t DynamicTree::begin_compacted_build(Split rule, int32_t worker_count) {
         top_nodes_.push_back(task.place);
         compact_scratch_[std::size_t(task.place)] = TreeNode{};
         link_placed(task.place, task.parent);
-        int32_t left_nodes = -1;  // a range of k items and n nodes below them: n + k - 1
+        int32_t left_nodes = -1;  // k items of n nodes in all take n + k - 1 places: k - 1 made above them
         for (int32_t i = task.begin; i < split; ++i) {
             left_nodes += build_items_[std::size_t(i)].node_count + 1;
         }
@@ -293,8 +293,8 @@ void DynamicTree::build_part(int32_t part, int32_t worker) {
     }
 }
 
-// The top's nodes from their children, the deepest first (they were made breadth first),
-// and the array becomes the tree.
+// The top's nodes from their children, in the reverse of the order they were made (a
+// node is split before its halves are), and the array becomes the tree.
 void DynamicTree::finish_commit_parts() {
     for (auto it = top_nodes_.rbegin(); it != top_nodes_.rend(); ++it) {
         set_from_children(compact_scratch_, *it);
