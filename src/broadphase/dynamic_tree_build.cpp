@@ -32,16 +32,13 @@ void DynamicTree::rebuild() {
 
 int32_t DynamicTree::rebuild_grown() { return rebuild_marked(Split::midpoint); }
 
+// With one worker the build is one part, which begin_commit builds and finishes itself.
+void DynamicTree::commit_in_place_moves() { begin_commit(1); }
+
 // Where most leaves moved (the tumbler, a rain of bodies) the rebuild is due every step
 // and so is the compaction after it, which copied every node once more: when both are
 // due, the build writes the nodes where compaction would have put them. The same tree,
 // the same array, one pass fewer.
-void DynamicTree::commit_in_place_moves() {
-    if (begin_commit(1) > 0) {
-        finish_commit_parts();
-    }
-}
-
 int32_t DynamicTree::begin_commit(int32_t worker_count) {
     if (root_ != null_index && nodes_[root_].grown) {
         collect_marked();
