@@ -21,7 +21,7 @@
 //
 // ragdoll_heap drops 60 of the bench's ragdolls (bench/ragdoll.c: 660 bodies, 600 revolute
 // joints with limits, springs and motors) onto a ground in overlapping layers, so that
-// joints are solved in every stage the workers share.
+// joints are solved in every stage the workers share; ragdoll_crowd drops 100.
 //
 // hinge_net is made of revolute joints, which the hinge kernels solve W at a time: a net
 // of 280 boxes and circles hung from a static bar and a moving kinematic one, some of its
@@ -443,8 +443,9 @@ inline i2d_world_id hinge_net(const i2d_world_def& wd) {
     return world;
 }
 
-inline i2d_world_id ragdoll_heap(const i2d_world_def& wd) {
-    constexpr int count = 60, per_layer = 12;
+// `count` ragdolls in layers of 12 (ragdoll_heap, ragdoll_crowd).
+inline i2d_world_id ragdoll_layers(const i2d_world_def& wd, int count) {
+    constexpr int per_layer = 12;
     const i2d_world_id world = i2d_world_create(&wd);
     if (I2D_IS_NULL(world)) {
         return world;
@@ -463,6 +464,12 @@ inline i2d_world_id ragdoll_heap(const i2d_world_def& wd) {
     }
     return world;
 }
+
+inline i2d_world_id ragdoll_heap(const i2d_world_def& wd) { return ragdoll_layers(wd, 60); }
+
+// 100 ragdolls, 1100 bodies: enough awake bodies that the workers share gathering the
+// joints to solve (constraint_graph.cpp).
+inline i2d_world_id ragdoll_crowd(const i2d_world_def& wd) { return ragdoll_layers(wd, 100); }
 
 // The contact hooks' table for one hooked_bin world: its shapes' ghost groups and its
 // one-way platforms, by id. The hooks read it and nothing else (every call on the world

@@ -116,7 +116,7 @@ I2D_TEST(unit_joint_trees_take_hung_trees_and_few_loops_and_leave_the_rest_to_th
     const int32_t fixed_turn_weld = l.joint(JointType::weld, ceiling, slider);
 
     JointTrees trees;
-    trees.build(l.constraints, l.joints, l.bodies, l.states);
+    trees.build(l.constraints, l.joints, l.bodies, l.states, true);
     I2D_CHECK(all_exact(l, hung, 4));
     I2D_CHECK(all_exact(l, free_tree, 2, 0));
     I2D_CHECK(all_exact(l, bridge, 3));
@@ -135,11 +135,37 @@ I2D_TEST(unit_joint_trees_take_hung_trees_and_few_loops_and_leave_the_rest_to_th
 
     // The same layout again keeps the marks; the bridge's far end let go leaves it a
     // tree without a cut.
-    trees.build(l.constraints, l.joints, l.bodies, l.states);
+    trees.build(l.constraints, l.joints, l.bodies, l.states, true);
     I2D_CHECK(trees.tree_count() == 7 && trees.cut_count() == 2 && all_exact(l, hung, 4));
     l.joints[l.constraints[std::size_t(bridge + 2)].joint].def.type = JointType::filter;
-    trees.build(l.constraints, l.joints, l.bodies, l.states);
+    trees.build(l.constraints, l.joints, l.bodies, l.states, true);
     I2D_CHECK(all_exact(l, bridge, 2));
     I2D_CHECK(l.constraints[std::size_t(bridge + 2)].exact_rows == 0);
     I2D_CHECK(trees.tree_count() == 7 && trees.cut_count() == 1);
+}
+
+// Without a hold nothing is exact, whether the trees find that from the key (free groups
+// only) or are told so (may_hold false), and the marks a build with trees left are
+// cleared. Told so, the trees read nothing, so the next build with a hold does not take
+// the key it last built for as still standing: the marks come back.
+I2D_TEST(unit_joint_trees_without_a_hold_clear_their_marks_and_build_again_after) {
+    Layout l;
+    const int32_t ceiling = l.body(BodyType::static_body);
+    const int32_t hung = chain(l, {ceiling, l.dynamic(), l.dynamic()});
+    const int32_t free_tree = chain(l, {l.dynamic(), l.dynamic(), l.dynamic()});
+    JointTrees trees;
+    trees.build(l.constraints, l.joints, l.bodies, l.states, true);
+    I2D_CHECK(trees.tree_count() == 1 && all_exact(l, hung, 2) && all_exact(l, free_tree, 2, 0));
+
+    trees.build(l.constraints, l.joints, l.bodies, l.states, false);
+    I2D_CHECK(trees.tree_count() == 0 && trees.cut_count() == 0);
+    I2D_CHECK(all_exact(l, hung, 2, 0) && all_exact(l, free_tree, 2, 0));
+    trees.build(l.constraints, l.joints, l.bodies, l.states, true);
+    I2D_CHECK(trees.tree_count() == 1 && all_exact(l, hung, 2));
+
+    // The hung chain's hold let go: only free groups are left, found from the key.
+    l.joints[l.constraints[std::size_t(hung)].joint].def.type = JointType::filter;
+    trees.build(l.constraints, l.joints, l.bodies, l.states, true);
+    I2D_CHECK(trees.tree_count() == 0 && trees.cut_count() == 0);
+    I2D_CHECK(all_exact(l, hung, 2, 0) && all_exact(l, free_tree, 2, 0));
 }

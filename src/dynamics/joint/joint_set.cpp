@@ -80,7 +80,12 @@ bool JointSet::keeps_apart(int32_t body_a, int32_t body_b) const {
 // An awake body is enabled; the other end may not be, and then the joint waits for it.
 void JointSet::gather_awake(const std::vector<int32_t>& awake_bodies, std::vector<int32_t>& out) const {
     out.clear();
-    for (const int32_t body : awake_bodies) {
+    gather_awake(awake_bodies.data(), awake_bodies.data() + awake_bodies.size(), out);
+}
+
+void JointSet::gather_awake(const int32_t* first, const int32_t* last, std::vector<int32_t>& out) const {
+    for (const int32_t* it = first; it != last; ++it) {
+        const int32_t body = *it;
         for (int32_t key = bodies_[body].head_joint_key; key != null_index;) {
             const Joint& j = pool_[key >> 1];
             const int32_t side = key & 1;

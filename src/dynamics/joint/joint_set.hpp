@@ -74,6 +74,9 @@ public:
     /// order; filter joints, joints with no moving body and joints to a disabled body
     /// are left out.
     void gather_awake(const std::vector<int32_t>& awake_bodies, std::vector<int32_t>& out) const;
+    /// The same for the awake bodies [first, last) of that order, appended to `out`: the
+    /// parts of a split awake list, joined in order, gather what the whole list does.
+    void gather_awake(const int32_t* first, const int32_t* last, std::vector<int32_t>& out) const;
 
     JointMeasures measure(int32_t joint) const;
 

@@ -182,12 +182,20 @@ uint8_t exact_rows_of(const JointDef& def) {
 }
 
 void JointTrees::build(std::vector<JointConstraint>& constraints, const Pool<Joint>& joints,
-                       const Pool<Body>& bodies, int32_t state_count) {
+                       const Pool<Body>& bodies, int32_t state_count, bool may_hold) {
+    if (!may_hold) {
+        // The caller saw no joint between a moving body and one that does not move: the
+        // key need not be read to know that no group is held.
+        built_key_.clear();
+        forget_trees(constraints);
+        return;
+    }
     const int32_t count = int32_t(constraints.size());
     key_scratch_.resize(std::size_t(key_width) * std::size_t(count));
     const auto state_if_moving = [](const Body& b) {
         return b.type == BodyType::dynamic && b.awake_index != null_index ? b.awake_index : null_index;
     };
+    bool any_hold = false;
     for (int32_t k = 0; k < count; ++k) {
         const JointDef& d = joints[constraints[std::size_t(k)].joint].def;
         const Body& a = bodies[d.body_a];
@@ -200,11 +208,21 @@ void JointTrees::build(std::vector<JointConstraint>& constraints, const Pool<Joi
         const bool turns =
             (key[1] != null_index && a.inv_inertia > 0.0f) || (key[2] != null_index && b.inv_inertia > 0.0f);
         key[3] = exact_rows_of(d) & (turns ? 0xff : ~uint8_t(exact_angle_row));
+        any_hold = any_hold || (key[3] != 0 && (key[1] == null_index) != (key[2] == null_index));
     }
     if (key_scratch_ == built_key_ && !tree_starts_.empty()) {
         return;  // the same joints between the same states: the trees and marks hold
     }
     built_key_.swap(key_scratch_);
+    if (!any_hold) {
+        // No candidate joint holds a moving body to one that does not move, so every group
+        // is free and none is solved exactly: the grouping below would find that at a cost
+        // in the awake bodies, every step the awake list changes (rain's ragdolls, as they
+        // land and fall asleep: 0.9 % of its step).
+        forget_trees(constraints);
+        return;
+    }
+    rows_cleared_ = false;
     find_groups(state_count);
     // A group's rows are exact when a body that does not move holds it and it closes no
     // more loops than the cuts allow (each hold past the first closes one through the
@@ -250,11 +268,7 @@ void JointTrees::build(std::vector<JointConstraint>& constraints, const Pool<Joi
     }
     // The trees, each rooted at its group's first joint (in solve order) to a body that
     // does not move.
-    nodes_.clear();
-    tree_starts_.clear();
-    cuts_.clear();
-    cut_starts_.clear();
-    response_starts_.clear();
+    clear_trees();
     group_started_.assign(std::size_t(state_count), 0);
     joint_seen_.assign(std::size_t(count), 0);
     node_of_state_.assign(std::size_t(state_count), null_index);
@@ -276,6 +290,33 @@ void JointTrees::build(std::vector<JointConstraint>& constraints, const Pool<Joi
         add_tree(k);
         responses += cut_row_count(constraints, cut_starts_.back()) * (int32_t(nodes_.size()) - first_node);
     }
+    finish_trees(responses);
+}
+
+// No trees, and no rows marked exact. The marks are cleared once: only a build that finds
+// trees sets them, and lay_out keeps each slot's mark (new slots start cleared).
+void JointTrees::forget_trees(std::vector<JointConstraint>& constraints) {
+    if (!rows_cleared_) {
+        for (JointConstraint& c : constraints) {
+            c.exact_rows = 0;
+        }
+        rows_cleared_ = true;
+    }
+    clear_trees();
+    finish_trees(0);
+}
+
+void JointTrees::clear_trees() {
+    nodes_.clear();
+    tree_starts_.clear();
+    cuts_.clear();
+    cut_starts_.clear();
+    response_starts_.clear();
+}
+
+// Closes the lists of the trees added since clear_trees, which hold `responses` in all,
+// and sizes the factors' room for their nodes.
+void JointTrees::finish_trees(int32_t responses) {
     tree_starts_.push_back(int32_t(nodes_.size()));
     cut_starts_.push_back(int32_t(cuts_.size()));
     response_starts_.push_back(responses);

@@ -61,8 +61,10 @@ public:
     /// each with the joints that close its loops, and marks in each constraint the rows
     /// the exact solve takes from it. Rebuilt only when a joint, its rows or its bodies'
     /// places changed. One thread, before the joints are prepared.
+    /// `may_hold`: false when the caller knows that no joint joins a moving body to one
+    /// that does not move (then nothing is solved exactly, and nothing is read).
     void build(std::vector<JointConstraint>& constraints, const Pool<Joint>& joints, const Pool<Body>& bodies,
-               int32_t state_count);
+               int32_t state_count, bool may_hold);
     int32_t tree_count() const { return int32_t(tree_starts_.size()) - 1; }
     /// Joints that close loops, over all trees.
     int32_t cut_count() const { return int32_t(cuts_.size()); }
@@ -99,6 +101,9 @@ private:
         int32_t node_b;
     };
     void find_groups(int32_t state_count);
+    void forget_trees(std::vector<JointConstraint>& constraints);
+    void clear_trees();
+    void finish_trees(int32_t responses);
     void add_tree(int32_t root_joint);
     int32_t cut_row_count(const std::vector<JointConstraint>& constraints, int32_t first_cut) const;
     void set_right_side(int32_t tree, const std::vector<JointConstraint>& constraints, const BodyState* states,
@@ -132,6 +137,7 @@ private:
     std::vector<int32_t> set_of_, joint_starts_, joint_list_, queue_;
     std::vector<int32_t> group_holds_, group_loops_, node_of_state_;
     std::vector<uint8_t> group_started_, joint_seen_;
+    bool rows_cleared_ = false;  // every constraint's exact_rows is 0 (forget_trees)
 };
 
 }  // namespace i2d

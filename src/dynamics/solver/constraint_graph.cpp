@@ -12,6 +12,16 @@
 
 namespace i2d {
 
+namespace {
+
+// An awake list is gathered in parts when it is at least this long and several workers
+// share the step: rain's 9,500 awake ragdoll bodies took 0.16 ms on one thread, every step
+// that a ragdoll fell asleep or woke.
+constexpr int32_t min_bodies_to_share_gathering = 1024;
+constexpr int32_t gathering_parts_per_worker = 4;
+
+}  // namespace
+
 bool AwakeJoints::gather(const GraphLinks& links) {
     const uint64_t joint_version = links.joint_set.version(), awake_version = links.islands.awake_version();
     if (gathered_ && joint_version == joint_version_ && awake_version == awake_version_) {
@@ -20,22 +30,59 @@ bool AwakeJoints::gather(const GraphLinks& links) {
     gathered_ = true;
     joint_version_ = joint_version;
     awake_version_ = awake_version;
-    links.joint_set.gather_awake(links.islands.awake_bodies(), joints_);
+    const int32_t workers = links.tasks.worker_count();
+    const bool shared = workers > 1 && int32_t(links.islands.awake_bodies().size()) >= min_bodies_to_share_gathering;
+    const int32_t part_count = shared ? workers * gathering_parts_per_worker : 1;
+    parts_.resize(std::size_t(part_count));
+    if (shared) {
+        stages_.assign(1, make_stage<&AwakeJoints::gather_parts>(*this, NoStageArg{}, part_count, workers, true, 1));
+        runner_.run(links.tasks, stages_, true, &links);
+    } else {
+        gather_part(links, 0);
+    }
+    key_.clear();
+    any_joint_to_fixed_ = false;
+    for (const Part& part : parts_) {
+        key_.insert(key_.end(), part.key.begin(), part.key.end());
+        any_joint_to_fixed_ = any_joint_to_fixed_ || part.any_joint_to_fixed;
+    }
     return true;
 }
 
-bool AwakeJoints::take_changed_key(const GraphLinks& links) {
-    key_.clear();
-    for (const int32_t joint : joints_) {
+void AwakeJoints::gather_parts(const GraphLinks& links, AwakeJoints& self, const NoStageArg&, int32_t begin,
+                               int32_t end, int32_t) {
+    for (int32_t part = begin; part < end; ++part) {
+        self.gather_part(links, part);
+    }
+}
+
+// The joints of one part of the awake list, and their key.
+void AwakeJoints::gather_part(const GraphLinks& links, int32_t part) {
+    const std::vector<int32_t>& awake = links.islands.awake_bodies();
+    const int64_t count = int64_t(awake.size()), parts = int64_t(parts_.size());
+    const int32_t* first = awake.data() + count * part / parts;
+    const int32_t* last = awake.data() + count * (part + 1) / parts;
+    Part& p = parts_[std::size_t(part)];
+    p.joints.clear();
+    links.joint_set.gather_awake(first, last, p.joints);
+    p.key.clear();
+    p.any_joint_to_fixed = false;
+    for (const int32_t joint : p.joints) {
         const JointDef& d = links.joints[joint].def;
         const Body& a = links.bodies[d.body_a];
         const Body& b = links.bodies[d.body_b];
         const bool a_moves = d.type != JointType::mouse && a.type == BodyType::dynamic;
         const bool b_moves = b.type == BodyType::dynamic;
-        key_.push_back(joint);
-        key_.push_back(a_moves ? a.awake_index : null_index);
-        key_.push_back(b_moves ? b.awake_index : null_index);
+        const int32_t state_a = a_moves ? a.awake_index : null_index;
+        const int32_t state_b = b_moves ? b.awake_index : null_index;
+        p.key.push_back(joint);
+        p.key.push_back(state_a);
+        p.key.push_back(state_b);
+        p.any_joint_to_fixed = p.any_joint_to_fixed || ((state_a == null_index) != (state_b == null_index));
     }
+}
+
+bool AwakeJoints::take_changed_key() {
     if (key_ == colored_key_) {
         return false;
     }
@@ -47,7 +94,7 @@ bool ConstraintGraph::update(int32_t share_count, int32_t workers, bool parts, B
                              ShareBalance& balance) {
     // The joints to solve change only with the joints or the awake list.
     joints_regathered_ = awake_joints_.gather(links_);
-    const bool joints_differ = joints_regathered_ && awake_joints_.take_changed_key(links_);
+    const bool joints_differ = joints_regathered_ && awake_joints_.take_changed_key();
     const uint64_t version = links_.contacts.layout_version();
     const int32_t awake_bodies = int32_t(links_.islands.awake_bodies().size());
     if (colored_ && version == colored_version_ && awake_bodies == colored_body_count_ && !joints_differ &&

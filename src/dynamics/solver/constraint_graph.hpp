@@ -17,6 +17,8 @@
 #include <vector>
 
 #include "core/pool.hpp"
+#include "core/stage_runner.hpp"
+#include "core/task_system.hpp"
 #include "dynamics/body/body.hpp"
 #include "dynamics/joint/joint.hpp"
 #include "dynamics/solver/constraint_colors.hpp"
@@ -36,6 +38,7 @@ struct GraphLinks {
     const JointSet& joint_set;
     const ContactSet& contacts;
     const Islands& islands;
+    TaskSystem& tasks;
 };
 
 /// The joints to solve this step (those with an awake body), gathered again only when the
@@ -43,23 +46,38 @@ struct GraphLinks {
 class AwakeJoints {
 public:
     /// Gathers the joints again if the joints or the awake list changed since the last
-    /// step; returns whether it did.
+    /// step; returns whether it did. A long awake list is gathered in parts by the workers
+    /// and the parts joined in order: the same list as one pass over it.
     bool gather(const GraphLinks& links);
     /// Whether what the joints' colours depend on (which joint, and the states each
-    /// moves) differs from what was last coloured; if so it becomes what is coloured.
-    bool take_changed_key(const GraphLinks& links);
+    /// moves), as gathered, differs from what was last coloured; if so it becomes what is
+    /// coloured.
+    bool take_changed_key();
     void forget() {
         gathered_ = false;
         colored_key_.clear();
     }
     /// Per awake joint: the joint, then the states it moves on sides A and B, or -1.
     const std::vector<int32_t>& colored_key() const { return colored_key_; }
+    /// Whether a joint gathered last moves one of its bodies and not the other.
+    bool any_joint_to_fixed() const { return any_joint_to_fixed_; }
 
 private:
-    std::vector<int32_t> joints_;
+    struct Part {
+        std::vector<int32_t> joints, key;
+        bool any_joint_to_fixed = false;
+    };
+    static void gather_parts(const GraphLinks& links, AwakeJoints& self, const NoStageArg&, int32_t begin,
+                             int32_t end, int32_t worker);
+    void gather_part(const GraphLinks& links, int32_t part);
+
     bool gathered_ = false;
+    bool any_joint_to_fixed_ = false;
     uint64_t joint_version_ = 0, awake_version_ = 0;
+    std::vector<Part> parts_;
     std::vector<int32_t> key_, colored_key_;
+    StageRunner runner_;
+    std::vector<Stage> stages_;
 };
 
 class ConstraintGraph {
@@ -82,6 +100,9 @@ public:
     bool is_colored() const { return colored_; }
     /// Whether the last update gathered the joints again (their trees must be found again).
     bool joints_regathered() const { return joints_regathered_; }
+    /// Whether a joint to solve moves one of its bodies and not the other (the only kind
+    /// that can hold a group of joints for the exact solve).
+    bool any_joint_to_fixed() const { return awake_joints_.any_joint_to_fixed(); }
 
     /// The joints to solve, colour by colour; per colour, where its joints begin (count +
     /// 1 entries).

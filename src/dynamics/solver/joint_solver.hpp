@@ -46,8 +46,8 @@ public:
     /// The trees whose rigid rows are solved exactly (joint_tree.hpp): found after
     /// lay_out, before prepare (one thread); one exact pass after each sweep, over ranges
     /// of trees.
-    void build_trees(const Pool<Joint>& joints, const Pool<Body>& bodies, int32_t state_count) {
-        trees_.build(constraints_, joints, bodies, state_count);
+    void build_trees(const Pool<Joint>& joints, const Pool<Body>& bodies, int32_t state_count, bool may_hold) {
+        trees_.build(constraints_, joints, bodies, state_count, may_hold);
     }
     int32_t tree_count() const { return trees_.tree_count(); }
     void solve_trees(const JointStep& step, int32_t begin, int32_t end, BodyState* states, const BodyMotion* motions,

@@ -13,7 +13,7 @@ namespace i2d {
 Solver::Solver(const SolverLinks& links, SimdPath simd_path)
     : links_(links),
       simd_path_(simd_path == SimdPath::automatic ? widest_simd_path() : simd_path),
-      graph_(GraphLinks{links.joints, links.bodies, links.joint_set, links.contacts, links.islands}),
+      graph_(GraphLinks{links.joints, links.bodies, links.joint_set, links.contacts, links.islands, links.tasks}),
       body_pass_(BodyPassLinks{links.bodies, links.shapes, links.islands, links.contacts, links.joint_set,
                                links.broad_phase}),
       move_events_(MoveEventLinks{links.bodies, links.islands, links.events, body_pass_, shares_}) {
@@ -44,7 +44,7 @@ void Solver::step(const StepContext& step) {
     if (graph_.joints_regathered()) {
         // What the trees depend on (the joints, their settings, their bodies' types, masses
         // and places) moves the joint set's or the islands' version.
-        joint_solver_.build_trees(links_.joints, links_.bodies, awake);
+        joint_solver_.build_trees(links_.joints, links_.bodies, awake, graph_.any_joint_to_fixed());
     }
     lay_out_color_runs();
     split_runs_by_share();
