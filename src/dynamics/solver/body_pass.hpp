@@ -66,8 +66,14 @@ public:
     static void finalize(const StepContext& step, BodyPass& pass, const NoStageArg&, int32_t begin, int32_t end,
                          int32_t worker);
 
-    /// After finalize, on one thread in awake order: proxies to move, rest times to share
-    /// with the islands, the fast and the broken bodies listed.
+    /// After finalize: the proxies it enlarged, in parts of the awake list (move_parts of
+    /// them, whichever worker takes which part), for finish() to hand on in awake order.
+    static void gather_moves(const StepContext& step, BodyPass& pass, const NoStageArg&, int32_t begin, int32_t end,
+                             int32_t worker);
+    static constexpr int32_t move_parts = 16;
+
+    /// After gather_moves, on one thread in awake order: proxies to move, rest times to
+    /// share with the islands, the fast and the broken bodies listed.
     void finish(const StepContext& step);
     /// The dynamic bodies the last step moved far for their size, in awake order: the
     /// continuous stage sweeps them.
@@ -103,6 +109,12 @@ private:
         non_finite_state = 16
     };
 
+    // An enlarged proxy's move, as move_proxy takes it.
+    struct ProxyMove {
+        int32_t key;
+        AABB fat_aabb, ahead_aabb;
+    };
+
     BodyPassLinks links_;
     std::vector<BodyState> states_;    // per awake body, then the fixed state
     std::vector<BodyMotion> motions_;  // the same, the fixed one all zero
@@ -111,6 +123,7 @@ private:
     std::vector<float> rest_times_;
     std::vector<int32_t> fast_bodies_;
     std::vector<int32_t> non_finite_bodies_;
+    std::vector<ProxyMove> moves_[move_parts];  // per part of the awake list, in awake order
 };
 
 }  // namespace i2d

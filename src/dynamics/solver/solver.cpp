@@ -234,6 +234,7 @@ void Solver::build_stages(const StepContext& step) {
         add_stage<&Solver::store_joints>(*this, NoStageArg{}, joint_solver_.count(), joints_per_work_block);
     }
     add_body_stage<&BodyPass::finalize>(body_pass_);
+    add_stage<&BodyPass::gather_moves>(body_pass_, NoStageArg{}, BodyPass::move_parts, 1);
     add_stage<&MoveEvents::count>(move_events_, NoStageArg{}, shares_.count(), 1);
     add_stage<&MoveEvents::place>(move_events_, NoStageArg{}, 1, 1);
     add_body_stage<&MoveEvents::write>(move_events_);
