@@ -89,9 +89,4 @@ void ShareBalance::cut_made() {
     runs_since_cut_ = 0;
 }
 
-int32_t BodyShares::share_of(int32_t body) const {
-    const auto after = std::upper_bound(starts_.begin() + 1, starts_.end() - 1, body);
-    return int32_t(after - (starts_.begin() + 1));
-}
-
 }  // namespace i2d

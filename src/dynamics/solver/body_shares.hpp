@@ -32,7 +32,15 @@ public:
 
     int32_t count() const { return int32_t(starts_.size()) - 1; }
     /// The share that holds state `body`; a state past the last body is in the last share.
-    int32_t share_of(int32_t body) const;
+    /// Asked for every coloured contact: inline, and a scan, since shares are few.
+    int32_t share_of(int32_t body) const {
+        int32_t share = 0;
+        const int32_t last = count() - 1;
+        while (share < last && starts_[std::size_t(share) + 1] <= body) {
+            ++share;
+        }
+        return share;
+    }
     /// Where each share begins: count() + 1 states, the last the body count.
     const int32_t* starts() const { return starts_.data(); }
 
