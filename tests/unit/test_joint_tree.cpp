@@ -144,8 +144,8 @@ I2D_TEST(unit_joint_trees_take_hung_trees_and_few_loops_and_leave_the_rest_to_th
     I2D_CHECK(trees.tree_count() == 7 && trees.cut_count() == 1);
 }
 
-// Without a hold nothing is exact, whether the trees find that from the key (free groups
-// only) or are told so (may_hold false), and the marks a build with trees left are
+// Without a hold nothing is exact, whether the trees find that in their grouping (free
+// groups only) or are told so (may_hold false), and the marks a build with trees left are
 // cleared. Told so, the trees read nothing, so the next build with a hold does not take
 // the key it last built for as still standing: the marks come back.
 I2D_TEST(unit_joint_trees_without_a_hold_clear_their_marks_and_build_again_after) {
@@ -163,7 +163,7 @@ I2D_TEST(unit_joint_trees_without_a_hold_clear_their_marks_and_build_again_after
     trees.build(l.constraints, l.joints, l.bodies, l.states, true);
     I2D_CHECK(trees.tree_count() == 1 && all_exact(l, hung, 2));
 
-    // The hung chain's hold let go: only free groups are left, found from the key.
+    // The hung chain's hold let go: only free groups are left, found by the grouping.
     l.joints[l.constraints[std::size_t(hung)].joint].def.type = JointType::filter;
     trees.build(l.constraints, l.joints, l.bodies, l.states, true);
     I2D_CHECK(trees.tree_count() == 0 && trees.cut_count() == 0);

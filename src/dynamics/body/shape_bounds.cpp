@@ -59,13 +59,9 @@ bool refit_shape_bounds(const Body& body, Pool<Shape>& shapes, Vec2 displacement
 }
 
 void move_enlarged_proxies(const Body& body, Pool<Shape>& shapes, BroadPhase& broad_phase) {
-    for (int32_t s = body.head_shape; s != null_index; s = shapes[s].next_in_body) {
-        Shape& shape = shapes[s];
-        if (shape.enlarged) {
-            shape.enlarged = false;
-            broad_phase.move_proxy(shape.proxy_key, shape.fat_aabb, shape.ahead_aabb);
-        }
-    }
+    take_enlarged_shapes(body, shapes, [&broad_phase](const Shape& shape) {
+        broad_phase.move_proxy(shape.proxy_key, shape.fat_aabb, shape.ahead_aabb);
+    });
 }
 
 void update_tight_boxes(const Body& body, Pool<Shape>& shapes) {

@@ -73,6 +73,19 @@ void update_shape_bounds(const Body& body, Pool<Shape>& shapes, BroadPhase& broa
 bool refit_shape_bounds(const Body& body, Pool<Shape>& shapes, Vec2 displacement, bool ahead, float reach = 0.0f);
 void move_enlarged_proxies(const Body& body, Pool<Shape>& shapes, BroadPhase& broad_phase);
 
+/// The body's shapes marked `enlarged`, each unmarked and handed to take(shape): what
+/// move_enlarged_proxies moves, for a caller that hands the moves on later.
+template <class Take>
+void take_enlarged_shapes(const Body& body, Pool<Shape>& shapes, Take&& take) {
+    for (int32_t s = body.head_shape; s != null_index; s = shapes[s].next_in_body) {
+        Shape& shape = shapes[s];
+        if (shape.enlarged) {
+            shape.enlarged = false;
+            take(static_cast<const Shape&>(shape));
+        }
+    }
+}
+
 /// Only the tight boxes, from the body's transform: the shapes of a disabled body, which
 /// have no proxies (their fat boxes are made when it is enabled).
 void update_tight_boxes(const Body& body, Pool<Shape>& shapes);

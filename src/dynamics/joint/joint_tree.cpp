@@ -184,8 +184,10 @@ uint8_t exact_rows_of(const JointDef& def) {
 void JointTrees::build(std::vector<JointConstraint>& constraints, const Pool<Joint>& joints,
                        const Pool<Body>& bodies, int32_t state_count, bool may_hold) {
     if (!may_hold) {
-        // The caller saw no joint between a moving body and one that does not move: the
-        // key need not be read to know that no group is held.
+        // The caller saw no joint between a moving body and one that does not move, so
+        // every group is free and none is solved exactly: the key and the grouping below
+        // would find that at a cost in the joints and awake bodies, every step the awake
+        // list changes (rain's ragdolls, as they land and fall asleep).
         built_key_.clear();
         forget_trees(constraints);
         return;
@@ -195,7 +197,6 @@ void JointTrees::build(std::vector<JointConstraint>& constraints, const Pool<Joi
     const auto state_if_moving = [](const Body& b) {
         return b.type == BodyType::dynamic && b.awake_index != null_index ? b.awake_index : null_index;
     };
-    bool any_hold = false;
     for (int32_t k = 0; k < count; ++k) {
         const JointDef& d = joints[constraints[std::size_t(k)].joint].def;
         const Body& a = bodies[d.body_a];
@@ -208,20 +209,11 @@ void JointTrees::build(std::vector<JointConstraint>& constraints, const Pool<Joi
         const bool turns =
             (key[1] != null_index && a.inv_inertia > 0.0f) || (key[2] != null_index && b.inv_inertia > 0.0f);
         key[3] = exact_rows_of(d) & (turns ? 0xff : ~uint8_t(exact_angle_row));
-        any_hold = any_hold || (key[3] != 0 && (key[1] == null_index) != (key[2] == null_index));
     }
     if (key_scratch_ == built_key_ && !tree_starts_.empty()) {
         return;  // the same joints between the same states: the trees and marks hold
     }
     built_key_.swap(key_scratch_);
-    if (!any_hold) {
-        // No candidate joint holds a moving body to one that does not move, so every group
-        // is free and none is solved exactly: the grouping below would find that at a cost
-        // in the awake bodies, every step the awake list changes (rain's ragdolls, as they
-        // land and fall asleep: 0.9 % of its step).
-        forget_trees(constraints);
-        return;
-    }
     rows_cleared_ = false;
     find_groups(state_count);
     // A group's rows are exact when a body that does not move holds it and it closes no
@@ -293,8 +285,8 @@ void JointTrees::build(std::vector<JointConstraint>& constraints, const Pool<Joi
     finish_trees(responses);
 }
 
-// No trees, and no rows marked exact. The marks are cleared once: only a build that finds
-// trees sets them, and lay_out keeps each slot's mark (new slots start cleared).
+// No trees, and no rows marked exact. The marks are cleared once: only a full build sets
+// them, and lay_out keeps each slot's mark (new slots start cleared).
 void JointTrees::forget_trees(std::vector<JointConstraint>& constraints) {
     if (!rows_cleared_) {
         for (JointConstraint& c : constraints) {

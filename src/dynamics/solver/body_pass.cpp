@@ -238,22 +238,16 @@ void BodyPass::gather_moves(const StepContext&, BodyPass& pass, const NoStageArg
                             int32_t) {
     const std::vector<int32_t>& awake = pass.links_.islands.awake_bodies();
     const int64_t count = int64_t(awake.size());
-    Pool<Shape>& shapes = pass.links_.shapes;
     for (int32_t part = begin; part < end; ++part) {
         std::vector<ProxyMove>& moves = pass.moves_[part];
         moves.clear();
         const int64_t last = count * (part + 1) / move_parts;
         for (int64_t k = count * part / move_parts; k < last; ++k) {
-            if ((pass.final_flags_[std::size_t(k)] & proxies_enlarged) == 0) {
-                continue;
-            }
-            const Body& body = pass.links_.bodies[awake[std::size_t(k)]];
-            for (int32_t s = body.head_shape; s != null_index; s = shapes[s].next_in_body) {
-                Shape& shape = shapes[s];
-                if (shape.enlarged) {
-                    shape.enlarged = false;
-                    moves.push_back({shape.proxy_key, shape.fat_aabb, shape.ahead_aabb});
-                }
+            if (pass.final_flags_[std::size_t(k)] & proxies_enlarged) {
+                take_enlarged_shapes(pass.links_.bodies[awake[std::size_t(k)]], pass.links_.shapes,
+                                     [&moves](const Shape& shape) {
+                                         moves.push_back({shape.proxy_key, shape.fat_aabb, shape.ahead_aabb});
+                                     });
             }
         }
     }
