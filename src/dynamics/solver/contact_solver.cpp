@@ -124,18 +124,6 @@ I2D_FORCE_INLINE void prefetch_ahead(const ContactLayout& layout, const int32_t*
     }
 }
 
-// Separation of a lane's point where the substeps left the bodies, m.
-template <int W>
-float final_separation(const ContactBlock<W>& block, int lane, int i, const BodyState* states) {
-    const ContactPointLanes<W>& p = block.points[i];
-    const BodyState& a = states[block.state_a[lane]];
-    const BodyState& b = states[block.state_b[lane]];
-    const Vec2 anchor_a{p.anchor_ax[lane], p.anchor_ay[lane]}, anchor_b{p.anchor_bx[lane], p.anchor_by[lane]};
-    const Vec2 moved = (b.delta_position - a.delta_position) +
-                       (rotate(b.delta_rotation, anchor_b) - rotate(a.delta_rotation, anchor_a));
-    return dot(moved, Vec2{block.normal_x[lane], block.normal_y[lane]}) + p.base_separation[lane];
-}
-
 }  // namespace
 
 template <>
@@ -372,56 +360,65 @@ bool ContactSolver::any_bounce(float threshold) const {
     return colored || bounces(overflow_.data(), overflow_uses_.data(), overflow_.size(), threshold);
 }
 
+// The touching test reads each point's final separation, which the kernels compute a
+// block at a time in lanes (the same arithmetic, so the same bits): computed here one lane
+// at a time, it took half of large_pyramid's store.
 template <int W>
-void ContactSolver::store_range(const ContactBlock<W>* blocks, const int32_t* contacts_of_lanes, int32_t lane_begin,
-                                int32_t lane_end, Pool<Contact>& contacts, const BodyState* states,
-                                float slop) const {
-    for (int32_t k = lane_begin; k < lane_end; ++k) {
-        const int32_t index = contacts_of_lanes[k];
-        if (index < 0) {
-            continue;
-        }
-        const int32_t ahead = k + prefetch_contacts_ahead;
-        if (ahead < lane_end && contacts_of_lanes[ahead] >= 0) {
-            prefetch_solver_data(contacts[contacts_of_lanes[ahead]]);
-        }
-        const ContactBlock<W>& block = blocks[k / W];
-        const int lane = int(k % W);
-        Contact& contact = contacts[index];
-        const bool hits = (contact.flags & contact_hit_events) != 0;
-        for (int32_t i = 0; i < contact.point_count; ++i) {
-            contact.points[i].normal_impulse = block.points[i].normal_impulse[lane];
-            contact.points[i].tangent_impulse = block.points[i].tangent_impulse[lane];
-            if (final_separation(block, lane, i, states) <= slop) {
-                contact.flags |= contact_touching;
+void ContactSolver::store_range(const ContactKernels& kernels, const ContactBlock<W>* blocks,
+                                const int32_t* contacts_of_lanes, int32_t first, int32_t end, Pool<Contact>& contacts,
+                                const BodyState* states, float slop) const {
+    alignas(64) float separations[2 * W];
+    const int32_t lane_end = end * W;
+    for (int32_t b = first; b < end; ++b) {
+        const ContactBlock<W>& block = blocks[b];
+        kernels.final_separations(&block, 1, states, separations);
+        for (int lane = 0; lane < W; ++lane) {
+            const int32_t k = b * W + lane;
+            const int32_t index = contacts_of_lanes[k];
+            if (index < 0) {
+                continue;
             }
-            // A point that pushed met at its impact speed (the speed the restitution
-            // pass uses: the free approach speed when the surfaces met).
-            const float approach = -block.points[i].relative_velocity[lane];
-            if (hits && block.points[i].max_normal_impulse[lane] > 0.0f && approach > contact.hit_speed) {
-                contact.hit_speed = approach;
-                contact.hit_point = i;
+            const int32_t ahead = k + prefetch_contacts_ahead;
+            if (ahead < lane_end && contacts_of_lanes[ahead] >= 0) {
+                prefetch_solver_data(contacts[contacts_of_lanes[ahead]]);
             }
+            Contact& contact = contacts[index];
+            const bool hits = (contact.flags & contact_hit_events) != 0;
+            for (int32_t i = 0; i < contact.point_count; ++i) {
+                contact.points[i].normal_impulse = block.points[i].normal_impulse[lane];
+                contact.points[i].tangent_impulse = block.points[i].tangent_impulse[lane];
+                if (separations[i * W + lane] <= slop) {
+                    contact.flags |= contact_touching;
+                }
+                // A point that pushed met at its impact speed (the speed the restitution
+                // pass uses: the free approach speed when the surfaces met).
+                const float approach = -block.points[i].relative_velocity[lane];
+                if (hits && block.points[i].max_normal_impulse[lane] > 0.0f && approach > contact.hit_speed) {
+                    contact.hit_speed = approach;
+                    contact.hit_point = i;
+                }
+            }
+            contact.rolling_impulse = block.rolling_impulse[lane];
         }
-        contact.rolling_impulse = block.rolling_impulse[lane];
     }
 }
 
 void ContactSolver::store(Pool<Contact>& contacts, const BodyState* states, float slop, int32_t run, int32_t begin,
                           int32_t end) const {
     if (run_is_sequential(run)) {
-        store_range(overflow_.data(), overflow_contacts_.data(), begin, end, contacts, states, slop);
+        store_range(scalar_contact_kernels(), overflow_.data(), overflow_contacts_.data(), begin, end, contacts, states,
+                    slop);
         return;
     }
     const int32_t* lanes = lane_contacts_.data();
-    const int32_t W = kernels_->width;
+    const ContactKernels& k = *kernels_;
     for_each_piece(run, begin, end, [&](int32_t block, int32_t count) {
-        const int32_t lane_begin = block * W, lane_end = (block + count) * W;
-        switch (W) {
-            case 16: store_range(blocks16_.data(), lanes, lane_begin, lane_end, contacts, states, slop); break;
-            case 8: store_range(blocks8_.data(), lanes, lane_begin, lane_end, contacts, states, slop); break;
-            case 4: store_range(blocks4_.data(), lanes, lane_begin, lane_end, contacts, states, slop); break;
-            default: store_range(blocks1_.data(), lanes, lane_begin, lane_end, contacts, states, slop); break;
+        const int32_t last = block + count;
+        switch (k.width) {
+            case 16: store_range(k, blocks16_.data(), lanes, block, last, contacts, states, slop); break;
+            case 8: store_range(k, blocks8_.data(), lanes, block, last, contacts, states, slop); break;
+            case 4: store_range(k, blocks4_.data(), lanes, block, last, contacts, states, slop); break;
+            default: store_range(k, blocks1_.data(), lanes, block, last, contacts, states, slop); break;
         }
     });
 }

@@ -106,9 +106,10 @@ private:
     void lay_out_colors(const ContactLayout& layout);
     template <int W>
     void pack_range(const ContactLayout& layout, int32_t begin, int32_t end);
+    // Blocks [first, end): their lanes' impulses into their contacts.
     template <int W>
-    void store_range(const ContactBlock<W>* blocks, const int32_t* contacts_of_lanes, int32_t lane_begin,
-                     int32_t lane_end, Pool<Contact>& contacts, const BodyState* states, float slop) const;
+    void store_range(const ContactKernels& kernels, const ContactBlock<W>* blocks, const int32_t* contacts_of_lanes,
+                     int32_t first, int32_t end, Pool<Contact>& contacts, const BodyState* states, float slop) const;
     template <int W>
     bool bounces(const ContactBlock<W>* blocks, const uint8_t* uses, std::size_t count, float threshold) const;
     // The kernels and the address of a block.

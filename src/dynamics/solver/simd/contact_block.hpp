@@ -86,6 +86,9 @@ struct ContactKernels {
     void (*warm_start)(void* blocks, const uint8_t* uses, int32_t count, BodyState* states);
     void (*solve)(void* blocks, const uint8_t* uses, int32_t count, BodyState* states, const SolvePass& pass);
     void (*restitution)(void* blocks, int32_t count, BodyState* states, float threshold);
+    // Each point's separation where the substeps left the bodies, m: 2 W floats per block,
+    // point 0's lanes then point 1's (store sets touching from them).
+    void (*final_separations)(const void* blocks, int32_t count, const BodyState* states, float* separations);
     HingeKernel warm_start_hinges;
     HingeKernel solve_hinges;
 };

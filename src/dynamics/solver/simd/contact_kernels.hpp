@@ -492,6 +492,19 @@ I2D_FORCE_INLINE void restitution_block(ContactBlock<W>& c, BodyState* states, f
     b.scatter(states, c.state_b);
 }
 
+// The separation the store's touching test reads, for both points of every lane (a lane
+// without a second point gives a value no one reads), with the solve pass's arithmetic.
+template <class L, int W>
+I2D_FORCE_INLINE void final_separations_block(const ContactBlock<W>& c, const BodyState* states, float* out) {
+    const BodyLanes<L> a = BodyLanes<L>::gather(states, c.state_a);
+    const BodyLanes<L> b = BodyLanes<L>::gather(states, c.state_b);
+    const PairLanes<L> pair = PairLanes<L>::load(c);
+    for (int i = 0; i < 2; ++i) {
+        const AnchorOffset<L> offset = AnchorOffset<L>::of(a, b, PointLanes<L>::load(c.points[i]));
+        L::store(out + i * W, offset.separation(pair, L::load(c.points[i].base_separation)));
+    }
+}
+
 /// The table entries of one lane type.
 template <class L>
 struct KernelsOf {
@@ -512,6 +525,12 @@ struct KernelsOf {
         ContactBlock<W>* c = static_cast<ContactBlock<W>*>(blocks);
         for (int32_t k = 0; k < count; ++k) {
             restitution_block<L, W>(c[k], states, threshold);
+        }
+    }
+    static void final_separations(const void* blocks, int32_t count, const BodyState* states, float* separations) {
+        const ContactBlock<W>* c = static_cast<const ContactBlock<W>*>(blocks);
+        for (int32_t k = 0; k < count; ++k) {
+            final_separations_block<L, W>(c[k], states, separations + 2 * W * k);
         }
     }
 };

@@ -19,6 +19,7 @@ const ContactKernels* avx2_contact_kernels() {
                                         &KernelsOf<LanesAvx2>::warm_start,
                                         &KernelsOf<LanesAvx2>::solve,
                                         &KernelsOf<LanesAvx2>::restitution,
+                                        &KernelsOf<LanesAvx2>::final_separations,
                                         &HingeKernelsOf<LanesAvx2>::warm_start,
                                         &HingeKernelsOf<LanesAvx2>::solve};
     return &kernels;

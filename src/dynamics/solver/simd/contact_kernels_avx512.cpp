@@ -22,6 +22,7 @@ const ContactKernels* avx512_contact_kernels() {
                                         &KernelsOf<LanesAvx512>::warm_start,
                                         &KernelsOf<LanesAvx512>::solve,
                                         &KernelsOf<LanesAvx512>::restitution,
+                                        &KernelsOf<LanesAvx512>::final_separations,
                                         &HingeKernelsOf<LanesAvx512>::warm_start,
                                         &HingeKernelsOf<LanesAvx512>::solve};
     return &kernels;

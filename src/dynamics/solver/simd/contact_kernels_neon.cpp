@@ -15,6 +15,7 @@ const ContactKernels* neon_contact_kernels() {
                                         &KernelsOf<LanesNeon>::warm_start,
                                         &KernelsOf<LanesNeon>::solve,
                                         &KernelsOf<LanesNeon>::restitution,
+                                        &KernelsOf<LanesNeon>::final_separations,
                                         &HingeKernelsOf<LanesNeon>::warm_start,
                                         &HingeKernelsOf<LanesNeon>::solve};
     return &kernels;

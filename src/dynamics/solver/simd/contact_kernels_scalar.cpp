@@ -13,6 +13,7 @@ const ContactKernels& scalar_contact_kernels() {
                                         &KernelsOf<Lanes1>::warm_start,
                                         &KernelsOf<Lanes1>::solve,
                                         &KernelsOf<Lanes1>::restitution,
+                                        &KernelsOf<Lanes1>::final_separations,
                                         &HingeKernelsOf<Lanes1>::warm_start,
                                         &HingeKernelsOf<Lanes1>::solve};
     return kernels;

@@ -15,6 +15,7 @@ const ContactKernels* sse2_contact_kernels() {
                                         &KernelsOf<LanesSse2>::warm_start,
                                         &KernelsOf<LanesSse2>::solve,
                                         &KernelsOf<LanesSse2>::restitution,
+                                        &KernelsOf<LanesSse2>::final_separations,
                                         &HingeKernelsOf<LanesSse2>::warm_start,
                                         &HingeKernelsOf<LanesSse2>::solve};
     return &kernels;

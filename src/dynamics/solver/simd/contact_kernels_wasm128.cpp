@@ -17,6 +17,7 @@ const ContactKernels* wasm128_contact_kernels() {
                                         &KernelsOf<LanesWasm128>::warm_start,
                                         &KernelsOf<LanesWasm128>::solve,
                                         &KernelsOf<LanesWasm128>::restitution,
+                                        &KernelsOf<LanesWasm128>::final_separations,
                                         &HingeKernelsOf<LanesWasm128>::warm_start,
                                         &HingeKernelsOf<LanesWasm128>::solve};
     return &kernels;
