@@ -34,6 +34,37 @@ JointFrame frame_of(const JointDef& d) {
 // asked for a few joints ahead.
 constexpr int32_t prefetch_settings_ahead = 4;
 
+// Prepare and store read each constraint's joint (its first two lines: joint.hpp), and
+// prepare reads the first two lines of its bodies, in solve order, which jumps through
+// both pools: in rain, prepare stalled on those misses for 6 % of the step.
+constexpr int32_t prefetch_joints_ahead = 8;
+constexpr int32_t prefetch_joint_bodies_ahead = 4;
+
+I2D_FORCE_INLINE void prefetch_two_lines(const void* object) {
+    prefetch_line(object);
+    prefetch_line(static_cast<const char*>(object) + 64);
+}
+
+I2D_FORCE_INLINE void prefetch_joint(const std::vector<JointConstraint>& constraints, const Pool<Joint>& joints,
+                                     int32_t k, int32_t end) {
+    const int32_t ahead = k + prefetch_joints_ahead;
+    if (ahead < end) {
+        prefetch_two_lines(&joints[constraints[std::size_t(ahead)].joint]);
+    }
+}
+
+// The joint was asked for prefetch_joints_ahead constraints earlier, so it is close.
+I2D_FORCE_INLINE void prefetch_joint_bodies(const std::vector<JointConstraint>& constraints,
+                                            const Pool<Joint>& joints, const Pool<Body>& bodies, int32_t k,
+                                            int32_t end) {
+    const int32_t ahead = k + prefetch_joint_bodies_ahead;
+    if (ahead < end) {
+        const JointDef& d = joints[constraints[std::size_t(ahead)].joint].def;
+        prefetch_two_lines(&bodies[d.body_a]);
+        prefetch_two_lines(&bodies[d.body_b]);
+    }
+}
+
 // The address only: the kind comes from the constraint, so that asking ahead reads
 // nothing from the joint pool itself.
 I2D_FORCE_INLINE const void* kind_settings(const JointConstraint& c) {
@@ -218,6 +249,8 @@ void JointSolver::prepare_one(const JointStep& step, JointConstraint& c, const J
 void JointSolver::prepare(const JointStep& step, const Pool<Joint>& joints, const Pool<Body>& bodies,
                           int32_t fixed_state, int32_t begin, int32_t end) {
     for (int32_t k = begin; k < end; ++k) {
+        prefetch_joint(constraints_, joints, k, end);
+        prefetch_joint_bodies(constraints_, joints, bodies, k, end);
         JointConstraint& c = constraints_[std::size_t(k)];
         prepare_one(step, c, joints[c.joint], bodies, fixed_state);
         const bool hinge = is_lane_hinge(c);
@@ -331,6 +364,7 @@ void JointSolver::store(const JointStep& step, Pool<Joint>& joints, const BodySt
                         int32_t end) {
     bool breaking = false;
     for (int32_t k = begin; k < end; ++k) {
+        prefetch_joint(constraints_, joints, k, end);
         JointConstraint& c = constraints_[std::size_t(k)];
         if (lane_hinge_[std::size_t(k)] != 0) {
             take_hinge_impulses(k, c);
