@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "core/prefetch.hpp"
 #include "dynamics/body/shape_bounds.hpp"
 #include "dynamics/constants.hpp"
 #include "dynamics/contact/contact_set.hpp"
@@ -14,6 +15,38 @@
 namespace i2d {
 
 namespace {
+
+// The awake list jumps through the body pool: gather and finalize ask for the bodies this
+// far ahead, and finalize, once a body is close, for its first shape, which refitting its
+// bounds reads (in rain, 40 % of the refit waited for that shape).
+constexpr int32_t prefetch_bodies_ahead = 8;
+constexpr int32_t prefetch_shapes_ahead = 4;
+// A body's lines as far as gather and finalize read them, and a shape's as far as a
+// polygon's vertices.
+constexpr std::size_t body_lines_read = 3, shape_lines_read = 4;
+
+I2D_FORCE_INLINE void prefetch_lines(const void* object, std::size_t lines) {
+    for (std::size_t line = 0; line < lines; ++line) {
+        prefetch_line(static_cast<const char*>(object) + 64 * line);
+    }
+}
+
+I2D_FORCE_INLINE void prefetch_awake_body(const Pool<Body>& bodies, const std::vector<int32_t>& awake, int32_t k,
+                                          int32_t end) {
+    if (k + prefetch_bodies_ahead < end) {
+        prefetch_lines(&bodies[awake[std::size_t(k + prefetch_bodies_ahead)]], body_lines_read);
+    }
+}
+
+I2D_FORCE_INLINE void prefetch_first_shape(const Pool<Body>& bodies, const Pool<Shape>& shapes,
+                                           const std::vector<int32_t>& awake, int32_t k, int32_t end) {
+    if (k + prefetch_shapes_ahead < end) {
+        const int32_t shape = bodies[awake[std::size_t(k + prefetch_shapes_ahead)]].head_shape;
+        if (shape != null_index) {
+            prefetch_lines(&shapes[shape], shape_lines_read);
+        }
+    }
+}
 
 // The float update overflowed or broke the speed limit: redo it in double, where no
 // finite float input can overflow, then scale down to the limit. Rare, so off the fast path.
@@ -77,6 +110,7 @@ void BodyPass::gather(const StepContext& step, BodyPass& pass, const NoStageArg&
     const float h = step.substep;
     const IntegrationTerms terms = integration_terms(step);
     for (int32_t k = begin; k < end; ++k) {
+        prefetch_awake_body(pass.links_.bodies, awake, k, end);
         const Body& b = pass.links_.bodies[awake[std::size_t(k)]];
         const bool dynamic = b.type == BodyType::dynamic;
         pass.states_[std::size_t(k)] =
@@ -152,7 +186,10 @@ void BodyPass::finalize(const StepContext& step, BodyPass& pass, const NoStageAr
                         int32_t) {
     const WorldDef& settings = step.settings;
     const FinalTerms terms{step.time_step, settings.enable_sleep, settings.enable_continuous};
+    const std::vector<int32_t>& awake = pass.links_.islands.awake_bodies();
     for (int32_t k = begin; k < end; ++k) {
+        prefetch_awake_body(pass.links_.bodies, awake, k, end);
+        prefetch_first_shape(pass.links_.bodies, pass.links_.shapes, awake, k, end);
         pass.finalize_body(terms, k);
     }
 }
