@@ -2,7 +2,10 @@
 // JointSet: edges, gathering, the collision filter, measures.
 #include "dynamics/joint/joint_set.hpp"
 
+#include <cstddef>
+
 #include "core/assert.hpp"
+#include "core/prefetch.hpp"
 #include "dynamics/joint/joint_constraint.hpp"
 #include "math/math.hpp"
 
@@ -83,8 +86,23 @@ void JointSet::gather_awake(const std::vector<int32_t>& awake_bodies, std::vecto
     gather_awake(awake_bodies.data(), awake_bodies.data() + awake_bodies.size(), out);
 }
 
+// The awake list jumps through the body pool and each body's joints through the joint
+// pool: in rain, 80 % of the gathering waited on those reads. The bodies' joint lists
+// are asked for this far ahead, and once a body is close, its first joint's edges.
+constexpr std::ptrdiff_t gather_bodies_ahead = 8, gather_joints_ahead = 4;
+
 void JointSet::gather_awake(const int32_t* first, const int32_t* last, std::vector<int32_t>& out) const {
     for (const int32_t* it = first; it != last; ++it) {
+        if (last - it > gather_bodies_ahead) {
+            prefetch_line(reinterpret_cast<const char*>(&bodies_[it[gather_bodies_ahead]]) +
+                          offsetof(Body, head_joint_key));
+        }
+        if (last - it > gather_joints_ahead) {
+            const int32_t key = bodies_[it[gather_joints_ahead]].head_joint_key;
+            if (key != null_index) {
+                prefetch_line(reinterpret_cast<const char*>(&pool_[key >> 1]) + offsetof(Joint, edges));
+            }
+        }
         const int32_t body = *it;
         for (int32_t key = bodies_[body].head_joint_key; key != null_index;) {
             const Joint& j = pool_[key >> 1];
