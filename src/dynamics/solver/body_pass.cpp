@@ -21,20 +21,13 @@ namespace {
 // bounds reads (in rain, 40 % of the refit waited for that shape).
 constexpr int32_t prefetch_bodies_ahead = 8;
 constexpr int32_t prefetch_shapes_ahead = 4;
-// A body's lines as far as gather and finalize read them, and a shape's as far as a
-// polygon's vertices.
-constexpr std::size_t body_lines_read = 3, shape_lines_read = 4;
-
-I2D_FORCE_INLINE void prefetch_lines(const void* object, std::size_t lines) {
-    for (std::size_t line = 0; line < lines; ++line) {
-        prefetch_line(static_cast<const char*>(object) + 64 * line);
-    }
-}
+// A shape's lines as far as a polygon's vertices (a body is read whole).
+constexpr std::size_t shape_lines_read = 4;
 
 I2D_FORCE_INLINE void prefetch_awake_body(const Pool<Body>& bodies, const std::vector<int32_t>& awake, int32_t k,
                                           int32_t end) {
     if (k + prefetch_bodies_ahead < end) {
-        prefetch_lines(&bodies[awake[std::size_t(k + prefetch_bodies_ahead)]], body_lines_read);
+        prefetch_object(bodies[awake[std::size_t(k + prefetch_bodies_ahead)]]);
     }
 }
 

@@ -40,16 +40,11 @@ constexpr int32_t prefetch_settings_ahead = 4;
 constexpr int32_t prefetch_joints_ahead = 8;
 constexpr int32_t prefetch_joint_bodies_ahead = 4;
 
-I2D_FORCE_INLINE void prefetch_two_lines(const void* object) {
-    prefetch_line(object);
-    prefetch_line(static_cast<const char*>(object) + 64);
-}
-
 I2D_FORCE_INLINE void prefetch_joint(const std::vector<JointConstraint>& constraints, const Pool<Joint>& joints,
                                      int32_t k, int32_t end) {
     const int32_t ahead = k + prefetch_joints_ahead;
     if (ahead < end) {
-        prefetch_two_lines(&joints[constraints[std::size_t(ahead)].joint]);
+        prefetch_lines(&joints[constraints[std::size_t(ahead)].joint], 2);
     }
 }
 
@@ -60,8 +55,8 @@ I2D_FORCE_INLINE void prefetch_joint_bodies(const std::vector<JointConstraint>& 
     const int32_t ahead = k + prefetch_joint_bodies_ahead;
     if (ahead < end) {
         const JointDef& d = joints[constraints[std::size_t(ahead)].joint].def;
-        prefetch_two_lines(&bodies[d.body_a]);
-        prefetch_two_lines(&bodies[d.body_b]);
+        prefetch_lines(&bodies[d.body_a], 2);
+        prefetch_lines(&bodies[d.body_b], 2);
     }
 }
 
