@@ -130,9 +130,11 @@ public:
 
     /// The search for every two leaves whose boxes overlap, cut into independent parts:
     /// node pairs that between them hold each such leaf pair once, at least `target` of
-    /// them where the tree has that many. The same tree gives the same parts in the same
-    /// order, so results put together part by part do not depend on who searched which.
-    void split_self_overlaps(int32_t target, std::vector<TreeNodePair>& out);
+    /// them where the tree has that many, none of more than about 1 / max_share of the
+    /// tree's leaves unless it cannot be cut. The same tree gives the same parts in the
+    /// same order, so results put together part by part do not depend on who searched
+    /// which; `max_share` changes the cut but not the order of the pairs found.
+    void split_self_overlaps(int32_t target, int32_t max_share, std::vector<TreeNodePair>& out);
     /// Calls visit(proxy_a, user_a, proxy_b, user_b) for each two distinct leaves of
     /// `part` whose boxes overlap (touching included), each pair once.
     template <class Visit>
@@ -184,6 +186,9 @@ private:
     /// with each other; two nodes give the taller one's children with the other.
     template <class Push>
     void expand_pair(TreeNodePair pair, Push&& push) const;
+    void refine_parts(int32_t max_share, std::vector<TreeNodePair>& parts);
+    void refine_part(TreeNodePair part, int64_t max_weight, std::vector<TreeNodePair>& out) const;
+    int64_t leaf_weight(TreeNodePair part) const;
     /// Two distinct leaves: a pair to report, not to expand.
     bool is_leaf_pair(TreeNodePair pair) const {
         return pair.a != pair.b && nodes_[pair.a].is_leaf() && nodes_[pair.b].is_leaf();
@@ -258,6 +263,9 @@ private:
     static constexpr int32_t min_items_to_share = 256;
     static constexpr int32_t min_nodes_to_split = 128;
     static constexpr int32_t parts_per_worker = 4;
+    // A part of the self search this light (in leaves by height) is never cut: its
+    // search costs about what claiming it does.
+    static constexpr int64_t min_part_weight = 16;
     struct PartScratch {
         std::vector<BuildTask> tasks;
         std::vector<CompactItem> copies;

@@ -60,7 +60,7 @@ bool DynamicTree::scattered(int32_t moves) const { return proxy_count_ > 0 && 4 
 
 // Level by level from the root with itself: each round expands every part that is not a
 // single leaf pair, keeping the order, until there are enough parts or none can expand.
-void DynamicTree::split_self_overlaps(int32_t target, std::vector<TreeNodePair>& out) {
+void DynamicTree::split_self_overlaps(int32_t target, int32_t max_share, std::vector<TreeNodePair>& out) {
     out.clear();
     I2D_ASSERT(answers_queries());
     if (root_ == null_index) {
@@ -82,6 +82,51 @@ void DynamicTree::split_self_overlaps(int32_t target, std::vector<TreeNodePair>&
         }
         out.swap(next);
     }
+    refine_parts(max_share, out);
+}
+
+// The level split leaves parts of very unequal weight: a node with itself beside two
+// nodes that barely overlap, and a worker that drew the heavy one holds the stage up
+// while the other waits. Each part heavier than 1 / max_share of the tree is cut into the
+// pairs its own traversal visits, in the order it visits them (its leaf pairs at once,
+// then its other pairs, the last pushed first): the leaf pairs come out in the same order
+// as from the whole part, so the cut changes no result.
+void DynamicTree::refine_parts(int32_t max_share, std::vector<TreeNodePair>& parts) {
+    if (parts.empty()) {
+        return;
+    }
+    std::vector<TreeNodePair>& refined = split_scratch_;
+    refined.clear();
+    const int64_t max_weight = std::max(leaf_weight({root_, root_}) / max_share, min_part_weight);
+    for (const TreeNodePair part : parts) {
+        refine_part(part, max_weight, refined);
+    }
+    parts.swap(refined);
+}
+
+void DynamicTree::refine_part(TreeNodePair part, int64_t max_weight, std::vector<TreeNodePair>& out) const {
+    if (is_leaf_pair(part) || leaf_weight(part) <= max_weight) {
+        out.push_back(part);
+        return;
+    }
+    TreeNodePair inner[4];
+    int32_t inner_count = 0;
+    expand_pair(part, [&](TreeNodePair child) {
+        if (is_leaf_pair(child)) {
+            out.push_back(child);
+        } else {
+            inner[inner_count++] = child;
+        }
+    });
+    for (int32_t i = inner_count - 1; i >= 0; --i) {
+        refine_part(inner[i], max_weight, out);
+    }
+}
+
+// About how many leaves a part's search walks: 2^height per node.
+int64_t DynamicTree::leaf_weight(TreeNodePair part) const {
+    const int64_t a = int64_t(1) << nodes_[part.a].height;
+    return part.a == part.b ? a : a + (int64_t(1) << nodes_[part.b].height);
 }
 
 int32_t DynamicTree::rebuild_marked(Split rule) {

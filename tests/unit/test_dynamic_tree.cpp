@@ -987,3 +987,60 @@ I2D_TEST(unit_tree_quality_sorted_insertion_stays_shallow) {
     I2D_CHECK(double(grid.height()) <= height_bound(n));
     I2D_CHECK(double(line.height()) <= height_bound(n));
 }
+
+// The self search cut finer finds the same pairs in the same order: split_self_overlaps
+// with its heavy parts cut (a 64th and a 1024th of the tree at most) gives, part after
+// part, the pairs the level split alone gives (max_share 1 cuts nothing), and those are
+// every two overlapping boxes once (brute force). The workers' results are put together
+// part by part, so a cut that changed the order would change a world's bits.
+I2D_TEST(unit_tree_self_search_cut_finer_finds_the_same_pairs_in_the_same_order) {
+    constexpr int32_t count = 3000, level_parts = 32;
+    TestRng rng(404);
+    DynamicTree tree;
+    std::vector<AABB> boxes;
+    for (int32_t i = 0; i < count; ++i) {
+        boxes.push_back(random_box(rng, 40.0f));
+        tree.create_proxy(boxes.back(), 1, i);
+    }
+    tree.rebuild();  // balanced, as the step's rebuilds leave the tree
+    struct Search {
+        std::vector<std::pair<int32_t, int32_t>> pairs;
+        std::size_t parts = 0, most_in_a_part = 0;
+    };
+    const auto search = [&](int32_t max_share) {
+        Search s;
+        std::vector<TreeNodePair> parts;
+        tree.split_self_overlaps(level_parts, max_share, parts);
+        s.parts = parts.size();
+        for (const TreeNodePair part : parts) {
+            const std::size_t before = s.pairs.size();
+            tree.self_overlaps(part, [&](int32_t, int32_t a, int32_t, int32_t b) { s.pairs.push_back({a, b}); });
+            s.most_in_a_part = std::max(s.most_in_a_part, s.pairs.size() - before);
+        }
+        return s;
+    };
+    const Search level = search(1), fine = search(64), finest = search(1024);
+    std::printf("self search of %d boxes (height %d): %zu pairs; parts %zu / %zu / %zu, most pairs in one part %zu / %zu / %zu\n",
+                count, tree.height(), level.pairs.size(), level.parts, fine.parts, finest.parts, level.most_in_a_part,
+                fine.most_in_a_part, finest.most_in_a_part);
+    I2D_CHECK(fine.pairs == level.pairs);
+    I2D_CHECK(finest.pairs == level.pairs);
+    I2D_CHECK(level.parts >= std::size_t(level_parts) && fine.parts > level.parts && finest.parts > fine.parts);
+    I2D_CHECK(fine.most_in_a_part < level.most_in_a_part);
+    std::size_t overlapping = 0;
+    for (int32_t i = 0; i < count; ++i) {
+        for (int32_t j = i + 1; j < count; ++j) {
+            overlapping += boxes_overlap(boxes[std::size_t(i)], boxes[std::size_t(j)]) ? 1 : 0;
+        }
+    }
+    std::vector<std::pair<int32_t, int32_t>> unique = level.pairs;
+    for (auto& p : unique) {
+        p = {std::min(p.first, p.second), std::max(p.first, p.second)};
+    }
+    std::sort(unique.begin(), unique.end());
+    I2D_CHECK(std::unique(unique.begin(), unique.end()) == unique.end());
+    I2D_CHECK(unique.size() == overlapping);
+    for (const auto& p : unique) {
+        I2D_CHECK(boxes_overlap(boxes[std::size_t(p.first)], boxes[std::size_t(p.second)]));
+    }
+}
