@@ -123,10 +123,14 @@ void DynamicTree::refine_part(TreeNodePair part, int64_t max_weight, std::vector
     }
 }
 
-// About how many leaves a part's search walks: 2^height per node.
+// About how many leaves a part's search walks: 2^height per node (a balanced tree's;
+// heights past 61 count as 61, which keeps the sum in range).
 int64_t DynamicTree::leaf_weight(TreeNodePair part) const {
-    const int64_t a = int64_t(1) << nodes_[part.a].height;
-    return part.a == part.b ? a : a + (int64_t(1) << nodes_[part.b].height);
+    constexpr int32_t max_counted_height = 61;
+    const auto leaves = [&](int32_t node) {
+        return int64_t(1) << std::min<int32_t>(nodes_[node].height, max_counted_height);
+    };
+    return part.a == part.b ? leaves(part.a) : leaves(part.a) + leaves(part.b);
 }
 
 int32_t DynamicTree::rebuild_marked(Split rule) {

@@ -98,6 +98,8 @@ constexpr int32_t joint_trees_per_work_block = 8;
 constexpr int32_t proxies_per_work_block = 16;
 // A continuous sweep takes microseconds (tree queries and times of impact).
 constexpr int32_t fast_bodies_per_work_block = 4;
-constexpr int32_t self_search_parts_per_work_block = 2;
+// The self search's parts are cut to comparable weights and are each a block of their
+// own (not 8 blocks a worker as other stages): a worker done early takes parts over.
+constexpr int32_t self_search_parts_per_work_block = 1;
 
 }  // namespace i2d

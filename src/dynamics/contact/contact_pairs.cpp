@@ -62,9 +62,7 @@ void ContactSet::find_new_contacts(const StepContext& step, BroadPhase& broad_ph
     stages_.push_back(make_stage<&ContactSet::pair_range<true>>(*this, PairStage{0}, self_parts, workers, parallel,
                                                                 self_search_parts_per_work_block));
     if (parallel) {
-        // The parts differ in weight (DynamicTree::refine_parts): one a block, so that a
-        // worker that finishes early takes over parts, not runs of them.
-        stages_[0].items_per_block = 1;
+        stages_[0].items_per_block = self_search_parts_per_work_block;
     }
     stages_.push_back(make_stage<&ContactSet::pair_range<false>>(*this, PairStage{1}, queries, workers, parallel,
                                                                  proxies_per_work_block));
