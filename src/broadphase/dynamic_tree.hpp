@@ -263,8 +263,9 @@ private:
     static constexpr int32_t min_items_to_share = 256;
     static constexpr int32_t min_nodes_to_split = 128;
     static constexpr int32_t parts_per_worker = 4;
-    // A part of the self search this light (in leaves by height) is never cut: its
-    // search costs about what claiming it does.
+    // A part of the self search this light (in leaves by height) is never cut, whatever
+    // the share: in a small tree a 64th would be under a leaf, and every overlapping leaf
+    // pair would become a part of its own.
     static constexpr int64_t min_part_weight = 16;
     struct PartScratch {
         std::vector<BuildTask> tasks;

@@ -1020,7 +1020,8 @@ I2D_TEST(unit_tree_self_search_cut_finer_finds_the_same_pairs_in_the_same_order)
         return s;
     };
     const Search level = search(1), fine = search(64), finest = search(1024);
-    std::printf("self search of %d boxes (height %d): %zu pairs; parts %zu / %zu / %zu, most pairs in one part %zu / %zu / %zu\n",
+    std::printf("self search of %d boxes (height %d): %zu pairs; parts %zu / %zu / %zu, "
+                "most pairs in one part %zu / %zu / %zu\n",
                 count, tree.height(), level.pairs.size(), level.parts, fine.parts, finest.parts, level.most_in_a_part,
                 fine.most_in_a_part, finest.most_in_a_part);
     I2D_CHECK(fine.pairs == level.pairs);
