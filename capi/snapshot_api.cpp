@@ -29,14 +29,13 @@ WorldDef holder_of(const WorldDef& host) {
 
 // Turns the failure a value check left (I2D_ERR_INVALID_ARGUMENT, naming the field) into
 // the snapshot's refusal, keeping its message.
-std::unique_ptr<World> refuse_values(Call& call, const char* what) {
+void refuse_values(Call& call, const char* buffer_kind, const char* what) {
     // The message starts with this call's name; it is said once.
     const char* message = i2d_last_error_message();
     const char* after_name = std::strstr(message, ": ");
     char detail[256];
     std::snprintf(detail, sizeof detail, "%s", after_name != nullptr ? after_name + 2 : message);
-    call.fail(I2D_ERR_INVALID_SNAPSHOT, "snapshot refused: %s (%s)", what, detail);
-    return nullptr;
+    call.fail(I2D_ERR_INVALID_SNAPSHOT, "%s refused: %s (%s)", buffer_kind, what, detail);
 }
 
 // Every body, shape and joint under the rules of the calls that make and change them.
@@ -74,10 +73,12 @@ std::unique_ptr<World> load_checked(Call& call, const void* buffer, std::size_t 
     }
     const i2d_world_def settings = to_public(loaded->settings());
     if (!validate_world_def(call, &settings)) {
-        return refuse_values(call, "its settings are out of range");
+        refuse_values(call, "snapshot", "its settings are out of range");
+        return nullptr;
     }
     if (!valid_loaded_values(call, *loaded)) {
-        return refuse_values(call, "it holds a value no call could have set");
+        refuse_values(call, "snapshot", World::state_values_refused);
+        return nullptr;
     }
     return loaded;
 }
@@ -205,8 +206,14 @@ I2D_API i2d_status i2d_world_restore_state(i2d_world_id world, const void* buffe
             call.fail(I2D_ERR_INVALID_ARGUMENT, "buffer is NULL and size is %zu", size);
             return last_status();
         }
-        if (const char* problem = w.world->restore_state(buffer, size)) {
+        const char* problem =
+            w.world->restore_state(buffer, size, [&](const World& loaded) { return valid_loaded_values(call, loaded); });
+        if (problem == World::state_values_refused) {
+            refuse_values(call, "rollback state", problem);
+        } else if (problem != nullptr) {
             call.fail(I2D_ERR_INVALID_SNAPSHOT, "rollback state refused: %s", problem);
+        }
+        if (problem != nullptr) {
             return last_status();
         }
         return I2D_OK;

@@ -100,6 +100,17 @@ void fix_checksum(Bytes& bytes) {
     }
 }
 
+// Snapshot values are little-endian on every platform.
+uint32_t read_u32(const Bytes& bytes, std::size_t at) {
+    return uint32_t(bytes[at]) | uint32_t(bytes[at + 1]) << 8 | uint32_t(bytes[at + 2]) << 16 | uint32_t(bytes[at + 3]) << 24;
+}
+
+void write_u32(Bytes& bytes, std::size_t at, uint32_t value) {
+    for (std::size_t i = 0; i < 4; ++i) {
+        bytes[at + i] = (unsigned char)(value >> (8 * i));
+    }
+}
+
 }  // namespace
 
 // Bytes changed at random (1 to 4 of them, to random values or to values an index field
@@ -254,5 +265,90 @@ I2D_TEST(unit_snapshot_values_no_call_could_set_are_refused) {
         I2D_CHECK(I2D_IS_NULL(i2d_world_create_from_snapshot(bad.data(), bad.size(), nullptr)));
     }
     I2D_CHECK(i2d_world_restore_snapshot(world, good.data(), good.size()) == I2D_OK);  // the smallest box too
+    i2d_world_destroy(world);
+}
+
+namespace {
+
+// Where the content of the section tagged `tag` starts (after its tag and its size).
+std::size_t section_content_at(const Bytes& bytes, uint32_t tag) {
+    std::size_t at = i2d::snapshot_header_size;
+    while (at + 12 <= bytes.size() && read_u32(bytes, at) != tag) {
+        at += 12 + std::size_t(read_u32(bytes, at + 4));  // sections are far below 4 GB
+    }
+    return at + 12;
+}
+
+// Where the islands section's first island with a link keeps its link count: the section
+// holds the island pool (a slot count, then per slot its generation, its live byte and,
+// if live, the island's six int32 fields, link_count the fourth). Returns 0 when none.
+std::size_t linked_island_count_at(const Bytes& bytes) {
+    std::size_t at = section_content_at(bytes, i2d::islands_section);
+    const int32_t slots = int32_t(read_u32(bytes, at));
+    at += 4;
+    for (int32_t slot = 0; slot < slots && at < bytes.size(); ++slot) {
+        const bool live = bytes[at + 2] != 0;
+        at += 3;
+        if (live) {
+            if (read_u32(bytes, at + 12) > 0) {
+                return at + 12;
+            }
+            at += 6 * 4;
+        }
+    }
+    return 0;
+}
+
+}  // namespace
+
+// An island's link count one short of its joints and contacts would go below zero as
+// they end; one that says it lost links past the cap would overflow. Both are refused,
+// and the world they were restored into is as it was.
+I2D_TEST(unit_snapshot_island_link_counts_must_match_the_links) {
+    const i2d_world_id world = small_world();
+    const Bytes good = save(world);
+    const std::size_t count_at = linked_island_count_at(good);
+    I2D_REQUIRE(count_at != 0);
+    const uint64_t hash = i2d_world_get_state_hash(world);
+
+    Bytes short_count = good;
+    write_u32(short_count, count_at, read_u32(good, count_at) - 1);
+    fix_checksum(short_count);
+    I2D_CHECK(i2d_world_restore_snapshot(world, short_count.data(), short_count.size()) == I2D_ERR_INVALID_SNAPSHOT);
+    I2D_CHECK(std::strstr(i2d_last_error_message(), "link count") != nullptr);
+    I2D_CHECK(i2d_world_get_state_hash(world) == hash);
+
+    Bytes too_many_lost = good;
+    write_u32(too_many_lost, count_at + 4, 0x7fffffffu);
+    fix_checksum(too_many_lost);
+    I2D_CHECK(I2D_IS_NULL(i2d_world_create_from_snapshot(too_many_lost.data(), too_many_lost.size(), nullptr)));
+    I2D_CHECK(std::strstr(i2d_last_error_message(), "island") != nullptr);
+
+    I2D_CHECK(i2d_world_restore_snapshot(world, good.data(), good.size()) == I2D_OK);
+    i2d_world_destroy(world);
+}
+
+// A rollback state is held to the calls' rules as a snapshot is, unless the world saved
+// it itself: the ground (the first body in the state's body section: a count, then each
+// body's transform, centre and linear velocity before its angular velocity) made to turn
+// is refused, and the world keeps its state.
+I2D_TEST(unit_rollback_state_values_no_call_could_set_are_refused) {
+    constexpr std::size_t angular_velocity_at = 4 + 16 + 8 + 8;
+    const i2d_world_id world = small_world();
+    Bytes state(i2d_world_get_state_size(world));
+    I2D_REQUIRE(i2d_world_save_state(world, state.data(), state.size(), nullptr) == I2D_OK);
+    const std::size_t at = section_content_at(state, i2d::dynamic_bodies_section) + angular_velocity_at;
+    I2D_REQUIRE(at + 4 <= state.size());
+    float spin = 0.0f;
+    std::memcpy(&spin, &state[at], sizeof spin);
+    I2D_REQUIRE(spin == 0.0f);
+    spin = 1.0f;
+    std::memcpy(&state[at], &spin, sizeof spin);
+    fix_checksum(state);
+    const uint64_t hash = i2d_world_get_state_hash(world);
+    I2D_CHECK(i2d_world_restore_state(world, state.data(), state.size()) == I2D_ERR_INVALID_SNAPSHOT);
+    I2D_CHECK(std::strstr(i2d_last_error_message(), "rollback state refused") != nullptr);
+    I2D_CHECK(std::strstr(i2d_last_error_message(), "static and moves") != nullptr);
+    I2D_CHECK(i2d_world_get_state_hash(world) == hash);
     i2d_world_destroy(world);
 }

@@ -123,7 +123,7 @@ I2D_TEST(unit_world_draw_graph_colors_name_live_contacts) {
     // A restore forgets the colouring: the points take their plain colours.
     std::vector<unsigned char> state(world.state_size());
     I2D_REQUIRE(world.save_state(state.data(), state.size()) == state.size());
-    I2D_REQUIRE(world.restore_state(state.data(), state.size()) == nullptr);
+    I2D_REQUIRE(world.restore_state(state.data(), state.size(), [](const World&) { return true; }) == nullptr);
     seen = Seen{};
     world.draw(draw);
     I2D_CHECK(seen.points.size() == 2);

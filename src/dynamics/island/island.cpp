@@ -2,6 +2,7 @@
 // Islands: merging on link, lazy splitting, sleeping and waking.
 #include "dynamics/island/island.hpp"
 
+#include <algorithm>
 #include <cfloat>
 
 #include "core/assert.hpp"
@@ -94,7 +95,7 @@ void Islands::link(int32_t body_a, int32_t body_b) {
 void Islands::unlink(int32_t body) {
     Island& record = islands_[bodies_[body].island];
     --record.link_count;
-    ++record.removed_links;
+    record.removed_links = std::min(record.removed_links + 1, max_removed_links);
 }
 
 void Islands::apply(const std::vector<LinkChange>& changes) {
@@ -118,7 +119,7 @@ void Islands::merge(int32_t from, int32_t into) {
     target.tail_body = source.tail_body;
     target.body_count += source.body_count;
     target.link_count += source.link_count;
-    target.removed_links += source.removed_links;
+    target.removed_links = std::min(target.removed_links + source.removed_links, max_removed_links);
     remove_awake_island(from);
     islands_.free(from);
 }

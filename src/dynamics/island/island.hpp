@@ -41,11 +41,16 @@ class SaveIo;
 /// Calls follow(other) for each body that a contact or joint links `body` to.
 using LinkVisitor = FunctionRef<void(int32_t body, FunctionRef<void(int32_t other)> follow)>;
 
+// Only whether an island lost links matters (it may be in pieces), so the count stops
+// here: an island that never sleeps loses links for as long as it runs. Half the range,
+// so that two islands' counts add without overflow when they merge.
+constexpr int32_t max_removed_links = INT32_MAX / 2;
+
 struct Island {
     int32_t head_body = null_index, tail_body = null_index;
     int32_t body_count = 0;
-    int32_t link_count = 0;     // contacts joining two of its bodies
-    int32_t removed_links = 0;  // links lost since it was known to be connected
+    int32_t link_count = 0;     // contacts and joints joining two of its bodies
+    int32_t removed_links = 0;  // links lost since it was known to be connected, up to max_removed_links
     int32_t awake_index = null_index;  // in the awake island list; null while asleep
 };
 

@@ -148,7 +148,7 @@ const char* World::load_state(const void* data, std::size_t size) {
     return reader.failed() ? reader.error() : check_loaded();
 }
 
-const char* World::restore_state(const void* data, std::size_t size) {
+const char* World::restore_state(const void* data, std::size_t size, FunctionRef<bool(const World&)> values_valid) {
     SnapshotHeader header;
     if (const char* problem = read_snapshot_header(data, size, SnapshotKind::state, header)) {
         return problem;
@@ -165,6 +165,9 @@ const char* World::restore_state(const void* data, std::size_t size) {
     } else {
         save_backup();
         const char* problem = load_state(data, size);
+        if (problem == nullptr && !values_valid(*this)) {
+            problem = state_values_refused;
+        }
         if (problem != nullptr) {
             load_state(rollback_backup_.data(), rollback_backup_.size());  // what was saved from this world loads
             stages_->solver.forget_caches();

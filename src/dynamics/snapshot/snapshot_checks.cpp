@@ -134,9 +134,37 @@ const char* World::check_loaded() const {
         if (has_awake_body != (contact.awake_index != null_index)) {
             return "a contact is awake without an awake body, or asleep beside one";
         }
+        const int32_t island = bodies_[contact.edges[0].body].island;
         if ((contact.flags & contact_island_link) != 0 &&
-            bodies_[contact.edges[0].body].island != bodies_[contact.edges[1].body].island) {
-            return "a contact links bodies of two islands";
+            (island == null_index || bodies_[contact.edges[1].body].island != island)) {
+            return "a contact links bodies of two islands, or of none";
+        }
+    }
+    return check_loaded_island_links();
+}
+
+// Each island counts the joints and contacts that link its bodies: unlinking one takes it
+// off that count, which a count too small would take below zero. Run once the links
+// themselves were checked to join bodies of one island.
+const char* World::check_loaded_island_links() const {
+    const WorldStages& stages = *stages_;
+    const Pool<Island>& islands = stages.islands.pool();
+    std::vector<int32_t> links(std::size_t(islands.capacity()), 0);
+    const Pool<Joint>& joints = stages.joints.pool();
+    for (int32_t j = 0; j < joints.capacity(); ++j) {
+        if (joints.is_live(j) && joints[j].island_link) {
+            ++links[std::size_t(bodies_[joints[j].def.body_a].island)];
+        }
+    }
+    const Pool<Contact>& contacts = stages.contacts.pool();
+    for (int32_t c = 0; c < contacts.capacity(); ++c) {
+        if (contacts.is_live(c) && (contacts[c].flags & contact_island_link) != 0) {
+            ++links[std::size_t(bodies_[contacts[c].edges[0].body].island)];
+        }
+    }
+    for (int32_t i = 0; i < islands.capacity(); ++i) {
+        if (islands.is_live(i) && islands[i].link_count != links[std::size_t(i)]) {
+            return "an island's link count is not the number of joints and contacts linking its bodies";
         }
     }
     return nullptr;
@@ -159,8 +187,8 @@ const char* World::check_loaded_islands(int32_t island_members) const {
                 return "an island's body list is broken";
             }
         }
-        if (count == 0 || count != island.body_count || island.tail_body != prev || island.link_count < 0 ||
-            island.removed_links < 0) {
+        if (count == 0 || count != island.body_count || island.tail_body != prev || island.removed_links < 0 ||
+            island.removed_links > max_removed_links) {
             return "an island's counts are wrong";
         }
         members += count;

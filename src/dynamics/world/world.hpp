@@ -300,7 +300,11 @@ public:
     std::size_t save_state(void* buffer, std::size_t capacity) const;
     /// Brings the world back to a rollback state saved from it since its last structural
     /// change; returns null, or what is wrong with the state (then the world is as it was).
-    const char* restore_state(const void* data, std::size_t size);
+    /// A state the world did not save itself is checked as a snapshot is: its structure
+    /// here, its values by `values_valid` (the C API's rules for its calls); when that
+    /// says false, the state is refused as state_values_refused.
+    const char* restore_state(const void* data, std::size_t size, FunctionRef<bool(const World&)> values_valid);
+    static constexpr const char* state_values_refused = "it holds a value no call could have set";
     /// Changes with every structural change: a state saved before it is refused.
     uint64_t structure_version() const { return structure_version_; }
 
@@ -372,6 +376,7 @@ private:
     /// follows (lists, links, indices) leads where it should.
     const char* check_loaded() const;
     const char* check_loaded_islands(int32_t island_members) const;
+    const char* check_loaded_island_links() const;
     const char* check_loaded_shapes() const;
 
     WorldDef settings_;
