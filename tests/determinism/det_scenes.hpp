@@ -29,6 +29,9 @@
 // relax or not) overflow the colours (the overflow colour solves its hinges one at a
 // time); a body held at two places at once (two hinges that cannot both hold: the guard
 // undoes their passes); and boxes falling onto the net.
+//
+// hung_bridges hangs 24 taut bridges at both ends: loops that the exact solve cuts and
+// the loops' position projection moves after every step.
 #pragma once
 
 #include <impulse2d/impulse2d.h>
@@ -439,6 +442,42 @@ inline i2d_world_id hinge_net(const i2d_world_def& wd) {
     for (int k = 0; k < 24; ++k) {
         const i2d_body_id box = add_body(world, I2D_BODY_DYNAMIC, i2d_vec2{left + 0.4f * float(k), top + 3.0f});
         add_mixed_shape(box, k, &shape);
+    }
+    return world;
+}
+
+// 24 taut bridges of ten planks, in four columns of six, hung from the ground at both
+// ends; a box and a few shapes fall onto each. Each bridge closes a loop through the
+// ground, which the exact solve cuts and the loops' projection moves back onto its joints
+// after every step: more trees than a block of work holds (joint_trees_per_work_block).
+inline i2d_world_id hung_bridges(const i2d_world_def& wd) {
+    constexpr int columns = 4, rows = 6, planks = 10;
+    constexpr float plank_length = 1.0f, column_spacing = 12.0f, row_spacing = 3.0f;
+    const i2d_world_id world = i2d_world_create(&wd);
+    if (I2D_IS_NULL(world)) {
+        return world;
+    }
+    const i2d_shape_def shape = material(0.6f, 0.0f);
+    const i2d_body_id ground = add_ground(world, shape, 30.0f);
+    for (int b = 0; b < columns * rows; ++b) {
+        const float left = -24.0f + column_spacing * float(b % columns);
+        const float y = row_spacing * float(1 + b / columns);
+        i2d_body_id previous = ground;
+        for (int k = 0; k < planks; ++k) {
+            const float x = left + plank_length * (float(k) + 0.5f);
+            const i2d_body_id plank = add_body(world, I2D_BODY_DYNAMIC, i2d_vec2{x, y});
+            i2d_shape_create_box(plank, &shape, 0.5f * plank_length, 0.0625f);
+            add_hinge(world, previous, plank, i2d_vec2{x - 0.5f * plank_length, y});
+            previous = plank;
+        }
+        add_hinge(world, previous, ground, i2d_vec2{left + plank_length * float(planks), y});
+        const float middle = left + 0.5f * plank_length * float(planks);
+        const i2d_body_id box = add_body(world, I2D_BODY_DYNAMIC, i2d_vec2{middle + 0.3f * float(b % 3), y + 1.0f});
+        i2d_shape_create_box(box, &shape, 0.4f, 0.4f);
+        for (int k = 0; k < 3; ++k) {
+            const i2d_body_id piece = add_body(world, I2D_BODY_DYNAMIC, i2d_vec2{left + 2.0f + 3.0f * float(k), y + 0.6f});
+            add_mixed_shape(piece, b + k, &shape);
+        }
     }
     return world;
 }

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 // Joints keep the step's determinism: heaps of ragdolls (revolute joints with limits,
-// springs and motors, coloured with the contacts) and a net of hinges (solved W at a time,
-// in chunks the workers cut differently) give the same state hash at every step
+// springs and motors, coloured with the contacts), a net of hinges (solved W at a time,
+// in chunks the workers cut differently) and bridges hung at both ends (loops solved
+// exactly and projected) give the same state hash at every step
 // with 1 and 2 workers, and with 2 workers on a job system that runs the tasks shuffled.
 #include <impulse2d/impulse2d.h>
 
@@ -13,6 +14,10 @@ using det::check_workers;
 I2D_TEST(det_joints_ragdoll_heap_gives_the_same_bits_with_1_and_2_workers) { check_workers(det::ragdoll_heap, 240); }
 
 I2D_TEST(det_joints_hinge_net_gives_the_same_bits_with_1_and_2_workers) { check_workers(det::hinge_net, 240); }
+
+// Loops through the ground, each solved exactly and moved back onto its joints after the
+// step, a bridge to a block of work.
+I2D_TEST(det_joints_hung_bridges_give_the_same_bits_with_1_and_2_workers) { check_workers(det::hung_bridges, 240); }
 
 // A crowd of 1100 ragdoll bodies: the workers gather the joints to solve in parts, and
 // pieces of colours cut between workers end at whole SIMD blocks of hinges.

@@ -74,6 +74,12 @@ public:
     void solve(int32_t begin, int32_t end, std::vector<JointConstraint>& constraints, BodyState* states,
                const BodyMotion* motions, const JointStep& step, bool use_bias);
 
+    /// After the step's last pass: moves the bodies of the trees that close loops so that
+    /// their rigid rows' position errors close, damped where the rows barely see a
+    /// direction; velocities and impulses are left as they are.
+    void project(int32_t begin, int32_t end, std::vector<JointConstraint>& constraints, BodyState* states,
+                 const BodyMotion* motions, float linear_slop);
+
     struct Vec3 {
         float x = 0.0f, y = 0.0f, z = 0.0f;
     };
@@ -83,8 +89,9 @@ public:
     };
 
 private:
+    // `compliant`: the projection's rows (joint_tree.cpp), else rigid.
     void factor(int32_t tree, const std::vector<JointConstraint>& constraints, const BodyState* states,
-                const BodyMotion* motions);
+                const BodyMotion* motions, bool compliant);
     struct Node {
         int32_t parent;  // node index, or null_index for a tree's root
         int32_t item;    // a body's state, or a joint's constraint
@@ -110,9 +117,13 @@ private:
                         float bias_rate);
     // Solves the factored tree for the right side in x (indexed from the tree's first node).
     void substitute(int32_t tree, Vec3* x) const;
+    // `projecting`: the rows the last velocity solve found dependent stay dropped.
     void solve_cuts(int32_t tree, const std::vector<JointConstraint>& constraints, const BodyState* states,
-                    float bias_rate);
+                    float bias_rate, bool projecting);
     void apply(int32_t tree, std::vector<JointConstraint>& constraints, BodyState* states, const JointStep& step);
+    bool projects(int32_t tree, const std::vector<JointConstraint>& constraints, const BodyState* states,
+                  float gap_limit) const;
+    void move_bodies(int32_t first, int32_t last, BodyState* states, float gap_limit) const;
     // The exact pass's guard, over the body nodes [first, last) of one tree.
     void save_velocities(int32_t first, int32_t last, const BodyState* states);
     bool bodies_within_limits(int32_t first, int32_t last, const BodyState* states, const JointStep& step) const;
@@ -130,6 +141,7 @@ private:
     std::vector<Cut> cuts_;              // tree by tree
     std::vector<int32_t> cut_starts_;    // per tree its first cut; one more at the end
     std::vector<Vec3> cut_impulses_;     // per cut: the pass's impulse on its rows
+    std::vector<uint8_t> cut_rows_dropped_;  // per cut, 3 rows: dependent in the last velocity solve
     std::vector<int32_t> response_starts_;  // per tree: its first response in responses_
     std::vector<Vec3> responses_;        // per tree, per cut row: the tree's answer to a unit impulse on it
     // Build scratch: union-find over states with each group's holds (joints to a body

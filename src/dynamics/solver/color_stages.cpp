@@ -144,6 +144,12 @@ void Solver::solve_joint_trees(const StepContext& step, Solver& self, const Colo
                                    use_bias);
 }
 
+void Solver::project_joint_trees(const StepContext& step, Solver& self, const NoStageArg&, int32_t begin, int32_t end,
+                                 int32_t) {
+    self.joint_solver_.project_trees(begin, end, self.body_pass_.states(), self.body_pass_.motions(),
+                                     step.tolerances.linear_slop);
+}
+
 void Solver::check_bounce(const StepContext& step, Solver& self, const NoStageArg&, int32_t, int32_t, int32_t) {
     self.plan_.bounce = self.contact_solver_.any_bounce(step.settings.restitution_threshold);
 }

@@ -50,9 +50,14 @@ public:
         trees_.build(constraints_, joints, bodies, state_count, may_hold);
     }
     int32_t tree_count() const { return trees_.tree_count(); }
+    int32_t cut_count() const { return trees_.cut_count(); }
     void solve_trees(const JointStep& step, int32_t begin, int32_t end, BodyState* states, const BodyMotion* motions,
                      bool use_bias) {
         trees_.solve(begin, end, constraints_, states, motions, step, use_bias);
+    }
+    /// After the last pass: the loops' position errors closed (JointTrees::project).
+    void project_trees(int32_t begin, int32_t end, BodyState* states, const BodyMotion* motions, float linear_slop) {
+        trees_.project(begin, end, constraints_, states, motions, linear_slop);
     }
     /// Impulses back to the joints, and their reactions over the last substep; notes
     /// whether any passed its threshold.

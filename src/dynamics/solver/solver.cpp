@@ -223,6 +223,9 @@ void Solver::build_stages(const StepContext& step) {
         add_color_stages<&Solver::relax_and_store, true>(last_pass);
     }
     add_stage<&Solver::solve_joint_trees>(*this, ColorPass{0, last_pass, 0}, trees, joint_trees_per_work_block);
+    if (joint_solver_.cut_count() > 0) {
+        add_stage<&Solver::project_joint_trees>(*this, NoStageArg{}, trees, joint_trees_per_work_block);
+    }
     if (elastic) {
         add_stage<&Solver::check_bounce>(*this, NoStageArg{}, 1, 1);
         constexpr int32_t restitution_iterations = 4;
@@ -252,6 +255,7 @@ bool Solver::stages_changed(const StepContext& step) {
     key.push_back(contact_solver_.overflow_count());
     key.push_back(joint_solver_.count());
     key.push_back(joint_solver_.tree_count());
+    key.push_back(joint_solver_.cut_count() > 0 ? 1 : 0);
     key.push_back(graph_.any_elastic_contact() ? 1 : 0);
     for (const ColorRun& r : plan_.color_runs) {
         key.push_back(r.joint_count);

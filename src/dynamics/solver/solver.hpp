@@ -153,6 +153,8 @@ private:
                             int32_t worker);
     static void solve_joint_trees(const StepContext& step, Solver& solver, const ColorPass& arg, int32_t begin,
                                   int32_t end, int32_t worker);
+    static void project_joint_trees(const StepContext& step, Solver& solver, const NoStageArg&, int32_t begin,
+                                    int32_t end, int32_t worker);
     static void store_joints(const StepContext& step, Solver& solver, const NoStageArg&, int32_t begin, int32_t end,
                              int32_t worker);
     static void check_bounce(const StepContext& step, Solver& solver, const NoStageArg&, int32_t begin, int32_t end,
