@@ -71,8 +71,11 @@ I2D_API size_t i2d_world_get_state_size(i2d_world_id world);
 I2D_API i2d_status i2d_world_save_state(i2d_world_id world, void* buffer, size_t capacity, size_t* written);
 /** Brings the world back to a rollback state saved from it. A refused state (another
  *  world's, saved before a structural change, truncated or corrupted in any byte) answers
- *  I2D_ERR_INVALID_SNAPSHOT with a message, and the world is as it was. Refused inside
- *  callbacks (I2D_ERR_WORLD_LOCKED). */
+ *  I2D_ERR_INVALID_SNAPSHOT with a message, and the world is as it was. A state whose bytes
+ *  are not those of one of the world's recent saves is checked as a snapshot is (its
+ *  lists and links, and every value against the rule of the call that sets it); one the
+ *  world saved restores without those checks. Refused inside callbacks
+ *  (I2D_ERR_WORLD_LOCKED). */
 I2D_API i2d_status i2d_world_restore_state(i2d_world_id world, const void* buffer, size_t size);
 
 /** The same object in another world made from a snapshot that held it (same index and
