@@ -304,7 +304,9 @@ public:
     /// here, its values by `values_valid` (the C API's rules for its calls); when that
     /// says false, the state is refused as state_values_refused.
     const char* restore_state(const void* data, std::size_t size, FunctionRef<bool(const World&)> values_valid);
-    static constexpr const char* state_values_refused = "it holds a value no call could have set";
+    // An array, not a pointer to a literal: one object, so its address tells it from other
+    // problems (equal literals in two files need not share an address, and in Debug did not).
+    static constexpr char state_values_refused[] = "it holds a value no call could have set";
     /// Changes with every structural change: a state saved before it is refused.
     uint64_t structure_version() const { return structure_version_; }
 
