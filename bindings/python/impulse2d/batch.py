@@ -46,9 +46,10 @@ class WorldBatch:
         contact hook raised in any of them."""
         status = lib.i2d_worlds_step(C.addressof(self._ids), len(self._worlds), time_step, substeps, C.byref(self._def))
         raised: Optional[BaseException] = None
-        for world in self._worlds:
-            exception = world._take_hook_exception()
-            raised = raised or exception
+        if World._hooks_ever_set:
+            for world in self._worlds:
+                exception = world._take_hook_exception()
+                raised = raised or exception
         check(status)
         if raised is not None:
             raise raised
