@@ -245,7 +245,10 @@ void JointTrees::build(std::vector<JointConstraint>& constraints, const Pool<Joi
     // exactly after the contacts, a heap of 100 ragdolls kept a limb trembling at 8 Hz
     // and 0.05 m/s, never falling asleep, in about one landing of three; its widest joint
     // gap on landing fell only from 73 to 39 mm, since the continuous stage moves a fast
-    // limb back alone.
+    // limb back alone. Nor does projecting a free tree after the step hold it: the moves
+    // put limbs into what they lie on, contacts push them out, the soft rows open again,
+    // and the heap's widest gap stayed at 32 to 113 mm, its bottom layers kept awake
+    // (bench/results/epyc-2vcpu/2026-11-29-experiments-free-tree-projection-and-narrow-kernels.txt).
     const auto group_of = [this](const int32_t* key) {
         return set_of_[std::size_t(key[1] != null_index ? key[1] : key[2])];
     };
