@@ -159,7 +159,7 @@ def test_pd_pilot_lands_most_seeds_with_more_than_200():
 
 
 def test_vector_sub_envs_match_single_envs_bitwise_through_autoreset():
-    n, seed, steps = 4, 10, 400
+    n, seed, steps = 4, 10, 800
     rng = np.random.default_rng(3)
     # A pilot with a random twist, so that episodes end at different times.
     noise = rng.random((steps, n)) < 0.15
