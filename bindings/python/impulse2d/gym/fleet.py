@@ -41,13 +41,13 @@ DEFAULT_SUBSTEPS = 4
 # pilot lands 19 of 20 and the continuous pilot 20, as 8 substeps at 60 Hz did (18 and
 # 20), with half the substeps.
 LEG_JOINT_RATE_SHARE = 1.0 / 6.0
-WORLD_JOINT_HERTZ = 60.0  # i2d_default_world_def's joint_hertz
 LEG_JOINT_DAMPING_RATIO = 10.0
 
 
 def leg_joint_hertz(substeps: int) -> float:
     """The joint_hertz of a lander's world stepped in substeps per frame, Hz."""
-    return min(WORLD_JOINT_HERTZ, LEG_JOINT_RATE_SHARE * K.FRAMES_PER_SECOND * substeps)
+    world_hertz = lib.i2d_default_world_def().joint_hertz
+    return min(world_hertz, LEG_JOINT_RATE_SHARE * K.FRAMES_PER_SECOND * substeps)
 
 
 class FrameResult:
