@@ -7,35 +7,23 @@
 
 #include "core/assert.hpp"
 #include "core/prefetch.hpp"
-#include "dynamics/solver/effective_mass.hpp"
 #include "math/math.hpp"
 
 namespace i2d {
 
 namespace {
 
-// At the start of the step.
-Vec2 relative_velocity(const BodyMotion& a, const BodyMotion& b, Vec2 r_a, Vec2 r_b) {
-    return (b.start_linear_velocity + cross(b.start_angular_velocity, r_b)) -
-           (a.start_linear_velocity + cross(a.start_angular_velocity, r_a));
-}
-
+// A point's anchors, separation and last step's impulses; the kernels' finish_pack
+// derives the rest of its row.
 template <int W>
-void pack_point(ContactPointLanes<W>& p, int lane, const ContactPoint& cp, Vec2 normal, const BodyMotion& ma,
-                const BodyMotion& mb) {
+void pack_point(ContactPointLanes<W>& p, int lane, const ContactPoint& cp) {
     p.anchor_ax[lane] = cp.anchor_a.x;
     p.anchor_ay[lane] = cp.anchor_a.y;
     p.anchor_bx[lane] = cp.anchor_b.x;
     p.anchor_by[lane] = cp.anchor_b.y;
-    p.base_separation[lane] = cp.separation - dot(cp.anchor_b - cp.anchor_a, normal);
-    const float speed = dot(relative_velocity(ma, mb, cp.anchor_a, cp.anchor_b), normal);
-    p.relative_velocity[lane] = speed;
-    p.start_speed[lane] = speed;
-    p.normal_mass[lane] = effective_mass(ma, mb, cp.anchor_a, cp.anchor_b, normal);
-    p.tangent_mass[lane] = effective_mass(ma, mb, cp.anchor_a, cp.anchor_b, left_perp(normal));
+    p.base_separation[lane] = cp.separation;
     p.normal_impulse[lane] = cp.normal_impulse;
     p.tangent_impulse[lane] = cp.tangent_impulse;
-    p.max_normal_impulse[lane] = 0.0f;
 }
 
 // What the kernels must read for this contact (contact_block.hpp). Restitution's pass
@@ -59,7 +47,8 @@ uint8_t uses_of(const Contact& contact, bool keeps_max_push) {
 // One contact into one lane. The block was zeroed: what a contact leaves out (a second
 // point, padding lanes) stays zero, which the kernels read as nothing to do.
 template <int W>
-void pack_lane(ContactBlock<W>& block, int lane, const Contact& contact, const ContactLayout& layout) {
+void pack_lane(ContactBlock<W>& block, PackLanes<W>& inputs, int lane, const Contact& contact,
+               const ContactLayout& layout) {
     const int32_t state_a = contact.state_a != null_index ? contact.state_a : layout.fixed_state;
     const int32_t state_b = contact.state_b != null_index ? contact.state_b : layout.fixed_state;
     const BodyMotion& ma = layout.motions[state_a];
@@ -79,9 +68,28 @@ void pack_lane(ContactBlock<W>& block, int lane, const Contact& contact, const C
     block.rolling_impulse[lane] = contact.rolling_impulse;
     const Vec2 relative_acceleration = mb.free_acceleration - ma.free_acceleration;
     block.approach_acceleration[lane] = max_of(-dot(relative_acceleration, contact.normal), 0.0f);
-    for (int32_t i = 0; i < contact.point_count; ++i) {
-        pack_point(block.points[i], lane, contact.points[i], contact.normal, ma, mb);
+    inputs.vax[lane] = ma.start_linear_velocity.x;
+    inputs.vay[lane] = ma.start_linear_velocity.y;
+    inputs.wa[lane] = ma.start_angular_velocity;
+    inputs.vbx[lane] = mb.start_linear_velocity.x;
+    inputs.vby[lane] = mb.start_linear_velocity.y;
+    inputs.wb[lane] = mb.start_angular_velocity;
+    for (int32_t i = 0; i < 2; ++i) {
+        const bool has = i < contact.point_count;
+        inputs.has_point[i][lane] = has ? 1.0f : 0.0f;
+        if (has) {
+            pack_point(block.points[i], lane, contact.points[i]);
+        }
     }
+}
+
+// A lane no contact fills: the fixed state's, with no point.
+template <int W>
+void pad_lane(ContactBlock<W>& block, PackLanes<W>& inputs, int lane, int32_t fixed_state) {
+    block.state_a[lane] = block.state_b[lane] = fixed_state;
+    inputs.vax[lane] = inputs.vay[lane] = inputs.wa[lane] = 0.0f;
+    inputs.vbx[lane] = inputs.vby[lane] = inputs.wb[lane] = 0.0f;
+    inputs.has_point[0][lane] = inputs.has_point[1][lane] = 0.0f;
 }
 
 // Contacts are read in colour order, which jumps through the contact pool: each one is
@@ -223,6 +231,7 @@ void ContactSolver::pack_range(const ContactLayout& layout, int32_t begin, int32
     ContactBlock<W>* out = blocks<W>().data();
     const int32_t lane_end = end * W;
     uint8_t uses = 0;
+    PackLanes<W> inputs;
     for (int32_t lane = begin * W; lane < lane_end; ++lane) {
         ContactBlock<W>& block = out[lane / W];
         if (lane % W == 0) {
@@ -233,12 +242,13 @@ void ContactSolver::pack_range(const ContactLayout& layout, int32_t begin, int32
         const int32_t contact = lane_contacts_[std::size_t(lane)];
         if (contact >= 0) {
             prefetch_ahead(layout, lane_contacts_.data(), lane, lane_end);
-            pack_lane(block, lane % W, layout.contacts[contact], layout);
+            pack_lane(block, inputs, lane % W, layout.contacts[contact], layout);
             uses |= uses_of(layout.contacts[contact], layout.any_elastic);
         } else {
-            block.state_a[lane % W] = block.state_b[lane % W] = layout.fixed_state;
+            pad_lane(block, inputs, lane % W, layout.fixed_state);
         }
         if (lane % W == W - 1) {
+            kernels_->finish_pack(&block, &inputs);
             block_uses_[std::size_t(lane / W)] = uses;
             uses = 0;
         }
@@ -265,7 +275,9 @@ void ContactSolver::pack_overflow(const ContactLayout& layout, int32_t begin, in
     for (int32_t k = begin; k < end; ++k) {
         prefetch_ahead(layout, overflow_contacts_.data(), k, end);
         const Contact& contact = layout.contacts[overflow_contacts_[std::size_t(k)]];
-        pack_lane(overflow_[std::size_t(k)], 0, contact, layout);
+        PackLanes<1> inputs;
+        pack_lane(overflow_[std::size_t(k)], inputs, 0, contact, layout);
+        scalar_contact_kernels().finish_pack(&overflow_[std::size_t(k)], &inputs);
         overflow_uses_[std::size_t(k)] = uses_of(contact, layout.any_elastic);
     }
 }

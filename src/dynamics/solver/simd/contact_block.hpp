@@ -49,6 +49,17 @@ struct alignas(W >= 4 ? 4 * W : 4) ContactBlock {
     ContactPointLanes<W> points[2];
 };
 
+/// What packing gathers of a block's contacts one lane at a time for the kernels to
+/// finish all lanes at once (ContactKernels::finish_pack): the arithmetic of packing
+/// (effective masses, speeds, base separations) costs more one lane at a time than
+/// gathering its inputs. Lanes with no point i have has_point[i] 0.
+template <int W>
+struct alignas(W >= 4 ? 4 * W : 4) PackLanes {
+    float vax[W], vay[W], wa[W];  // body A's velocities when the step began
+    float vbx[W], vby[W], wb[W];
+    float has_point[2][W];  // 1 where the lane's contact has point i, else 0
+};
+
 /// What some lane of a block needs beyond a plain contact, so that the solve passes
 /// read only those fields: in a 16-lane block every field is a cache line, and the
 /// passes stream every block from memory. A block's uses are the union of its lanes'.
@@ -89,6 +100,10 @@ struct ContactKernels {
     // Each point's separation where the substeps left the bodies, m: 2 W floats per block,
     // point 0's lanes then point 1's (store sets touching from them).
     void (*final_separations)(const void* blocks, int32_t count, const BodyState* states, float* separations);
+    // One block packed lane by lane (anchors, normal, masses, impulses, and each point's
+    // separation in base_separation) finished from `inputs` (a PackLanes of the width):
+    // base separations, normal speeds, effective masses.
+    void (*finish_pack)(void* block, const void* inputs);
     HingeKernel warm_start_hinges;
     HingeKernel solve_hinges;
 };

@@ -505,6 +505,46 @@ I2D_FORCE_INLINE void final_separations_block(const ContactBlock<W>& c, const Bo
     }
 }
 
+// 1 / (mA + mB + (rA x d)^2 iA + (rB x d)^2 iB), or 0 where that is not positive:
+// effective_mass.hpp's arithmetic in lanes.
+template <class L>
+I2D_FORCE_INLINE typename L::F effective_mass_lanes(const PairLanes<L>& c, const PointLanes<L>& p, typename L::F dx,
+                                                    typename L::F dy) {
+    const typename L::F ra = p.rax * dy - p.ray * dx, rb = p.rbx * dy - p.rby * dx;
+    const typename L::F k = c.ma + c.mb + c.ia * ra * ra + c.ib * rb * rb;
+    return L::blend(L::gt(k, L::splat(0.0f)), L::splat(0.0f), L::splat(1.0f) / k);
+}
+
+// A point's row from its anchors and separation, where the lane has the point; a lane
+// without it keeps the zeros packing left.
+template <class L, int W>
+I2D_FORCE_INLINE void finish_point(ContactPointLanes<W>& p, const PairLanes<L>& c, const Velocities<L>& start,
+                                   typename L::M has) {
+    using F = typename L::F;
+    const F zero = L::splat(0.0f);
+    const PointLanes<L> anchors = PointLanes<L>::load(p);
+    const F offset = (anchors.rbx - anchors.rax) * c.nx + (anchors.rby - anchors.ray) * c.ny;
+    L::store(p.base_separation, L::blend(has, zero, L::load(p.base_separation) - offset));
+    const F speed = L::blend(has, zero, relative_speed<L>(start, anchors, c.nx, c.ny));
+    L::store(p.relative_velocity, speed);
+    L::store(p.start_speed, speed);
+    L::store(p.normal_mass, L::blend(has, zero, effective_mass_lanes<L>(c, anchors, c.nx, c.ny)));
+    L::store(p.tangent_mass, L::blend(has, zero, effective_mass_lanes<L>(c, anchors, c.tx(), c.ty())));
+}
+
+template <class L, int W>
+I2D_FORCE_INLINE void finish_pack_block(ContactBlock<W>& c, const PackLanes<W>& in) {
+    const PairLanes<L> pair = PairLanes<L>::load(c);
+    const Velocities<L> start{L::load(in.vax), L::load(in.vay), L::load(in.wa),
+                              L::load(in.vbx), L::load(in.vby), L::load(in.wb)};
+    for (int i = 0; i < 2; ++i) {
+        const typename L::M has = L::gt(L::load(in.has_point[i]), L::splat(0.0f));
+        if (L::any(has)) {
+            finish_point<L, W>(c.points[i], pair, start, has);
+        }
+    }
+}
+
 /// The table entries of one lane type.
 template <class L>
 struct KernelsOf {
@@ -532,6 +572,9 @@ struct KernelsOf {
         for (int32_t k = 0; k < count; ++k) {
             final_separations_block<L, W>(c[k], states, separations + 2 * W * k);
         }
+    }
+    static void finish_pack(void* block, const void* inputs) {
+        finish_pack_block<L, W>(*static_cast<ContactBlock<W>*>(block), *static_cast<const PackLanes<W>*>(inputs));
     }
 };
 

@@ -20,6 +20,7 @@ const ContactKernels* avx2_contact_kernels() {
                                         &KernelsOf<LanesAvx2>::solve,
                                         &KernelsOf<LanesAvx2>::restitution,
                                         &KernelsOf<LanesAvx2>::final_separations,
+                                        &KernelsOf<LanesAvx2>::finish_pack,
                                         &HingeKernelsOf<LanesAvx2>::warm_start,
                                         &HingeKernelsOf<LanesAvx2>::solve};
     return &kernels;

@@ -23,6 +23,7 @@ const ContactKernels* avx512_contact_kernels() {
                                         &KernelsOf<LanesAvx512>::solve,
                                         &KernelsOf<LanesAvx512>::restitution,
                                         &KernelsOf<LanesAvx512>::final_separations,
+                                        &KernelsOf<LanesAvx512>::finish_pack,
                                         &HingeKernelsOf<LanesAvx512>::warm_start,
                                         &HingeKernelsOf<LanesAvx512>::solve};
     return &kernels;

@@ -16,6 +16,7 @@ const ContactKernels* neon_contact_kernels() {
                                         &KernelsOf<LanesNeon>::solve,
                                         &KernelsOf<LanesNeon>::restitution,
                                         &KernelsOf<LanesNeon>::final_separations,
+                                        &KernelsOf<LanesNeon>::finish_pack,
                                         &HingeKernelsOf<LanesNeon>::warm_start,
                                         &HingeKernelsOf<LanesNeon>::solve};
     return &kernels;

@@ -14,6 +14,7 @@ const ContactKernels& scalar_contact_kernels() {
                                         &KernelsOf<Lanes1>::solve,
                                         &KernelsOf<Lanes1>::restitution,
                                         &KernelsOf<Lanes1>::final_separations,
+                                        &KernelsOf<Lanes1>::finish_pack,
                                         &HingeKernelsOf<Lanes1>::warm_start,
                                         &HingeKernelsOf<Lanes1>::solve};
     return kernels;

@@ -16,6 +16,7 @@ const ContactKernels* sse2_contact_kernels() {
                                         &KernelsOf<LanesSse2>::solve,
                                         &KernelsOf<LanesSse2>::restitution,
                                         &KernelsOf<LanesSse2>::final_separations,
+                                        &KernelsOf<LanesSse2>::finish_pack,
                                         &HingeKernelsOf<LanesSse2>::warm_start,
                                         &HingeKernelsOf<LanesSse2>::solve};
     return &kernels;

@@ -18,6 +18,7 @@ const ContactKernels* wasm128_contact_kernels() {
                                         &KernelsOf<LanesWasm128>::solve,
                                         &KernelsOf<LanesWasm128>::restitution,
                                         &KernelsOf<LanesWasm128>::final_separations,
+                                        &KernelsOf<LanesWasm128>::finish_pack,
                                         &HingeKernelsOf<LanesWasm128>::warm_start,
                                         &HingeKernelsOf<LanesWasm128>::solve};
     return &kernels;
