@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // ContactSet: new contacts from the broadphase's pairs, found by the workers and made
 // on one thread in the broadphase's order.
+#include "core/prefetch.hpp"
 #include "core/radix_sort.hpp"
 #include "dynamics/constants.hpp"
 #include "dynamics/contact/contact_set.hpp"
@@ -14,21 +15,23 @@ namespace i2d {
 // (box2d#739): a trigger zone on a static body sees a kinematic platform. Static against
 // static never reaches here (the broadphase never pairs it). The custom filter hook comes
 // last: game code is asked only about pairs that could otherwise touch.
+// The shapes' own refusals come before the look-up of known pairs: in rain, 86 % of the
+// candidates are two limbs of one ragdoll (one filter group), and 5 % two shapes of one
+// body, against 8 % known pairs. pair_range asks for both shapes' lines ahead.
 bool ContactSet::may_pair(int32_t shape_a, int32_t shape_b) const {
-    if (pair_set_.contains(pair_key(shape_a, shape_b))) {
-        return false;
-    }
     const Shape& a = shapes_[shape_a];
     const Shape& b = shapes_[shape_b];
-    if (a.body == b.body || (a.is_sensor && b.is_sensor)) {
+    if (a.body == b.body || (a.is_sensor && b.is_sensor) || !should_collide(a.filter, b.filter)) {
+        return false;
+    }
+    if (pair_set_.contains(pair_key(shape_a, shape_b))) {
         return false;
     }
     if (bodies_[a.body].type != BodyType::dynamic && bodies_[b.body].type != BodyType::dynamic &&
         !a.is_sensor && !b.is_sensor) {
         return false;
     }
-    return should_collide(a.filter, b.filter) && !joints_.keeps_apart(a.body, b.body) &&
-           hooks_.allows_pair(events_.ids, shapes_, shape_a, shape_b);
+    return !joints_.keeps_apart(a.body, b.body) && hooks_.allows_pair(events_.ids, shapes_, shape_a, shape_b);
 }
 
 // One pair-finding stage's range: the self search's parts, or the queries.
@@ -38,7 +41,15 @@ void ContactSet::pair_range(const StepContext&, ContactSet& self, const PairStag
     std::vector<ShapePairCandidate>& out = self.search_.block_pairs[arg.list][std::size_t(begin / arg.items_per_block)];
     out.clear();
     const auto accept = [&self](int32_t a, int32_t b) { return self.may_pair(a, b); };
-    const auto ahead = [&self](int32_t a, int32_t b) { self.pair_set_.prefetch(pair_key(a, b)); };
+    // The lines may_pair reads: each shape's body and flags, and its filter.
+    const auto ahead = [&self](int32_t a, int32_t b) {
+        for (const int32_t shape : {a, b}) {
+            const Shape& s = self.shapes_[shape];
+            prefetch_line(&s);
+            prefetch_line(&s.filter);
+        }
+        self.pair_set_.prefetch(pair_key(a, b));
+    };
     if constexpr (SelfSearch) {
         self.search_.broad_phase->self_pairs(begin, end, accept, out, ahead);
     } else {
