@@ -159,6 +159,7 @@ private:
     std::vector<QueryEntry> query_scratch_;
     // Set by begin_pair_queries when the dynamic tree's pairs come from self_pairs.
     bool dynamic_pairs_by_self_search_ = false;
+    bool self_search_marked_ = false;  // the moved dynamic proxies are marked in their tree
     std::vector<TreeNodePair> self_parts_;
     // The commit's shared tree builds.
     StageRunner runner_;

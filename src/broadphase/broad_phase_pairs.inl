@@ -54,6 +54,8 @@ void BroadPhase::update_pairs(Accept&& accept, std::vector<ShapePairCandidate>& 
 }
 
 // A leaf pair of which neither proxy moved was paired, or refused, when one last did.
+// Where the moved proxies are marked in the tree (begin_pair_queries), the search meets
+// no other pairs.
 template <class Accept, class Ahead>
 void BroadPhase::self_pairs(int32_t begin, int32_t end, Accept&& accept, std::vector<ShapePairCandidate>& out,
                             Ahead&& ahead) const {
@@ -62,7 +64,7 @@ void BroadPhase::self_pairs(int32_t begin, int32_t end, Accept&& accept, std::ve
     for (int32_t part = begin; part < end; ++part) {
         dynamic.self_overlaps(self_parts_[std::size_t(part)], [&](int32_t proxy_a, int32_t shape_a, int32_t proxy_b,
                                                                   int32_t shape_b) {
-            if (move_set_.contains(make_proxy_key(proxy_a, ProxyKind::dynamic_proxy)) ||
+            if (self_search_marked_ || move_set_.contains(make_proxy_key(proxy_a, ProxyKind::dynamic_proxy)) ||
                 move_set_.contains(make_proxy_key(proxy_b, ProxyKind::dynamic_proxy))) {
                 batch.add(shape_a, shape_b);
             }

@@ -92,6 +92,26 @@ void DynamicTree::enlarge_proxy(int32_t proxy, const AABB& fat_aabb) {
     }
 }
 
+// As move_proxy_in_place_at marks: up to the first ancestor marked already, whose own
+// ancestors are. Clearing walks the same paths and stops at the first node it cleared.
+void DynamicTree::mark_moved(int32_t proxy) {
+    const int32_t leaf = proxy_nodes_[std::size_t(proxy)];
+    I2D_ASSERT(leaf != null_index && nodes_[leaf].is_leaf());
+    moved_leaves_.push_back(leaf);
+    for (int32_t index = leaf; index != null_index && !nodes_[index].moved_below; index = nodes_[index].parent) {
+        nodes_[index].moved_below = true;
+    }
+}
+
+void DynamicTree::clear_moved_marks() {
+    for (const int32_t leaf : moved_leaves_) {
+        for (int32_t index = leaf; index != null_index && nodes_[index].moved_below; index = nodes_[index].parent) {
+            nodes_[index].moved_below = false;
+        }
+    }
+    moved_leaves_.clear();
+}
+
 // Every ancestor is marked, so that the rebuild finds each marked node by descending from
 // the root through marked nodes alone; marking stops at a marked ancestor, whose own
 // ancestors are marked already. The rebuild frees the marked nodes and makes their boxes

@@ -44,6 +44,7 @@ struct alignas(32) TreeNode {
     int32_t parent = null_index; // also the free list link for free nodes
     int16_t height = 0;          // leaves 0; -1 when free
     bool grown = false;          // internal: a leaf below moved in place; rebuilt by rebuild_grown()
+    bool moved_below = false;    // a leaf at or below is marked moved (mark_moved); never saved
 
     // Two slots shared by both kinds of node, which keeps a node at 32 bytes (two per
     // cache line): internal nodes hold their children, leaves their user value (a
@@ -139,6 +140,13 @@ public:
     /// `part` whose boxes overlap (touching included), each pair once.
     template <class Visit>
     void self_overlaps(TreeNodePair part, Visit&& visit) const;
+    /// From the first mark until clear_moved_marks, self_overlaps reports only pairs with a
+    /// marked leaf, and skips without walking them the node pairs with none below: the
+    /// pairs of proxies that did not move were paired, or refused, when one of them last
+    /// moved. The parts (split_self_overlaps) stay those of the whole tree, so the pairs
+    /// come in the order an unmarked search gives them. The tree must not change in between.
+    void mark_moved(int32_t proxy);
+    void clear_moved_marks();
 
     /// Calls visit(input, proxy, user_value) -> float for every leaf whose box the ray
     /// (origin + t translation, t up to the current max fraction) crosses and whose
@@ -184,8 +192,9 @@ private:
     /// Hands push() the node pairs one level down from `pair` that can still hold an
     /// overlapping leaf pair: a node with itself gives its children with themselves and
     /// with each other; two nodes give the taller one's children with the other.
+    /// moved_only: as the search does, only pairs with a marked leaf below (mark_moved).
     template <class Push>
-    void expand_pair(TreeNodePair pair, Push&& push) const;
+    void expand_pair(TreeNodePair pair, Push&& push, bool moved_only = false) const;
     void refine_parts(int32_t max_share, std::vector<TreeNodePair>& parts);
     void refine_part(TreeNodePair part, int64_t max_weight, std::vector<TreeNodePair>& out) const;
     int64_t leaf_weight(TreeNodePair part) const;
@@ -234,6 +243,7 @@ private:
     std::vector<int32_t> proxy_nodes_;  // proxy id -> leaf node; null_index when free
     std::vector<uint64_t> proxy_categories_;  // proxy id -> category bits
     std::vector<int32_t> free_proxies_;
+    std::vector<int32_t> moved_leaves_;  // marked by mark_moved, for clear_moved_marks
     std::vector<TreeNode> compact_scratch_;
     std::vector<CompactItem> compact_stack_;
     int32_t root_ = null_index;

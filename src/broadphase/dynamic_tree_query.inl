@@ -3,6 +3,7 @@
 #pragma once
 
 #include "core/assert.hpp"
+#include "core/force_inline.hpp"
 #include "core/growable_stack.hpp"
 
 namespace i2d {
@@ -54,21 +55,26 @@ void DynamicTree::query(const AABB& box, Visit&& visit) const {
     }
 }
 
+// Inlined: called, it took the search's leaf visits out of line with it.
 template <class Push>
-void DynamicTree::expand_pair(TreeNodePair pair, Push&& push) const {
+I2D_FORCE_INLINE void DynamicTree::expand_pair(TreeNodePair pair, Push&& push, bool moved_only) const {
+    // Whether the search takes two nodes: both, unless it keeps to moved leaves.
+    const auto searches = [this, moved_only](int32_t a, int32_t b) {
+        return !moved_only || moved_leaves_.empty() || nodes_[a].moved_below || nodes_[b].moved_below;
+    };
     const TreeNode& a = nodes_[pair.a];
     if (pair.a == pair.b) {
         if (a.is_leaf()) {
             return;
         }
         const int32_t first = a.child1(), second = a.child2();
-        if (!nodes_[first].is_leaf()) {
+        if (!nodes_[first].is_leaf() && searches(first, first)) {
             push(TreeNodePair{first, first});
         }
-        if (!nodes_[second].is_leaf()) {
+        if (!nodes_[second].is_leaf() && searches(second, second)) {
             push(TreeNodePair{second, second});
         }
-        if (overlaps(nodes_[first].aabb, nodes_[second].aabb)) {
+        if (searches(first, second) && overlaps(nodes_[first].aabb, nodes_[second].aabb)) {
             push(TreeNodePair{first, second});
         }
         return;
@@ -77,20 +83,20 @@ void DynamicTree::expand_pair(TreeNodePair pair, Push&& push) const {
     if (!a.is_leaf() && !b.is_leaf()) {
         for (const int32_t child_a : {a.child1(), a.child2()}) {
             for (const int32_t child_b : {b.child1(), b.child2()}) {
-                if (overlaps(nodes_[child_a].aabb, nodes_[child_b].aabb)) {
+                if (searches(child_a, child_b) && overlaps(nodes_[child_a].aabb, nodes_[child_b].aabb)) {
                     push(TreeNodePair{child_a, child_b});
                 }
             }
         }
     } else if (!a.is_leaf()) {
         for (const int32_t child : {a.child1(), a.child2()}) {
-            if (overlaps(nodes_[child].aabb, b.aabb)) {
+            if (searches(child, pair.b) && overlaps(nodes_[child].aabb, b.aabb)) {
                 push(TreeNodePair{child, pair.b});
             }
         }
     } else {
         for (const int32_t child : {b.child1(), b.child2()}) {
-            if (overlaps(a.aabb, nodes_[child].aabb)) {
+            if (searches(pair.a, child) && overlaps(a.aabb, nodes_[child].aabb)) {
                 push(TreeNodePair{pair.a, child});
             }
         }
@@ -104,6 +110,9 @@ void DynamicTree::self_overlaps(TreeNodePair part, Visit&& visit) const {
     const auto report = [&](int32_t a, int32_t b) {
         visit(nodes_[a].proxy(), nodes_[a].user_value(), nodes_[b].proxy(), nodes_[b].user_value());
     };
+    if (!(moved_leaves_.empty() || nodes_[part.a].moved_below || nodes_[part.b].moved_below)) {
+        return;  // nothing below moved
+    }
     if (is_leaf_pair(part)) {
         report(part.a, part.b);
         return;
@@ -118,7 +127,7 @@ void DynamicTree::self_overlaps(TreeNodePair part, Visit&& visit) const {
     };
     TreeNodePair pair = part;
     for (;;) {
-        expand_pair(pair, take);
+        expand_pair(pair, take, true);
         if (stack.empty()) {
             return;
         }
