@@ -195,6 +195,10 @@ private:
     /// moved_only: as the search does, only pairs with a marked leaf below (mark_moved).
     template <class Push>
     void expand_pair(TreeNodePair pair, Push&& push, bool moved_only = false) const;
+    /// Whether a marked leaf lies below either node, or nothing is marked.
+    bool holds_moved_leaf(int32_t a, int32_t b) const {
+        return moved_leaves_.empty() || nodes_[a].moved_below || nodes_[b].moved_below;
+    }
     void refine_parts(int32_t max_share, std::vector<TreeNodePair>& parts);
     void refine_part(TreeNodePair part, int64_t max_weight, std::vector<TreeNodePair>& out) const;
     int64_t leaf_weight(TreeNodePair part) const;

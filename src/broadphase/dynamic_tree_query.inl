@@ -58,10 +58,7 @@ void DynamicTree::query(const AABB& box, Visit&& visit) const {
 // Inlined: called, it took the search's leaf visits out of line with it.
 template <class Push>
 I2D_FORCE_INLINE void DynamicTree::expand_pair(TreeNodePair pair, Push&& push, bool moved_only) const {
-    // Whether the search takes two nodes: both, unless it keeps to moved leaves.
-    const auto searches = [this, moved_only](int32_t a, int32_t b) {
-        return !moved_only || moved_leaves_.empty() || nodes_[a].moved_below || nodes_[b].moved_below;
-    };
+    const auto searches = [this, moved_only](int32_t a, int32_t b) { return !moved_only || holds_moved_leaf(a, b); };
     const TreeNode& a = nodes_[pair.a];
     if (pair.a == pair.b) {
         if (a.is_leaf()) {
@@ -110,8 +107,8 @@ void DynamicTree::self_overlaps(TreeNodePair part, Visit&& visit) const {
     const auto report = [&](int32_t a, int32_t b) {
         visit(nodes_[a].proxy(), nodes_[a].user_value(), nodes_[b].proxy(), nodes_[b].user_value());
     };
-    if (!(moved_leaves_.empty() || nodes_[part.a].moved_below || nodes_[part.b].moved_below)) {
-        return;  // nothing below moved
+    if (!holds_moved_leaf(part.a, part.b)) {
+        return;
     }
     if (is_leaf_pair(part)) {
         report(part.a, part.b);
