@@ -92,6 +92,13 @@ I2D_FORCE_INLINE typename L::M nonzero(typename L::F a) {
     return L::either(L::lt(a, L::splat(0.0f)), L::gt(a, L::splat(0.0f)));
 }
 
+// 1 / k where k > 0, else 0: the mass of a row from its inverse, 0 for a row that no body
+// can move along.
+template <class L>
+I2D_FORCE_INLINE typename L::F positive_inverse(typename L::F k) {
+    return L::blend(L::gt(k, L::splat(0.0f)), L::splat(0.0f), L::splat(1.0f) / k);
+}
+
 template <class L>
 I2D_FORCE_INLINE typename L::M all_lanes() {
     return L::eq(L::splat(0.0f), L::splat(0.0f));
@@ -393,8 +400,7 @@ I2D_FORCE_INLINE void solve_rolling(Velocities<L>& v, ContactBlock<W>& c, const 
     using F = typename L::F;
     const F arm = L::load(c.rolling_resistance);
     const typename L::M rolls = nonzero<L>(arm);
-    const F k = pair.ia + pair.ib;
-    const F rolling_mass = L::blend(L::gt(k, L::splat(0.0f)), L::splat(0.0f), L::splat(1.0f) / k);
+    const F rolling_mass = positive_inverse<L>(pair.ia + pair.ib);
     const F max_torque = arm * normal_total;
     const F old = L::load(c.rolling_impulse);
     const F impulse = clamp_lanes<L>(old - rolling_mass * (v.wb - v.wa), -max_torque, max_torque);
@@ -511,8 +517,7 @@ template <class L>
 I2D_FORCE_INLINE typename L::F effective_mass_lanes(const PairLanes<L>& c, const PointLanes<L>& p, typename L::F dx,
                                                     typename L::F dy) {
     const typename L::F ra = p.rax * dy - p.ray * dx, rb = p.rbx * dy - p.rby * dx;
-    const typename L::F k = c.ma + c.mb + c.ia * ra * ra + c.ib * rb * rb;
-    return L::blend(L::gt(k, L::splat(0.0f)), L::splat(0.0f), L::splat(1.0f) / k);
+    return positive_inverse<L>(c.ma + c.mb + c.ia * ra * ra + c.ib * rb * rb);
 }
 
 // A point's row from its anchors and separation, where the lane has the point; a lane
