@@ -93,21 +93,17 @@ void DynamicTree::enlarge_proxy(int32_t proxy, const AABB& fat_aabb) {
 }
 
 // As move_proxy_in_place_at marks: up to the first ancestor marked already, whose own
-// ancestors are. Clearing walks the same paths and stops at the first node it cleared.
+// ancestors are. Clearing walks the same paths and stops where an earlier leaf's walk cleared.
 void DynamicTree::mark_moved(int32_t proxy) {
     const int32_t leaf = proxy_nodes_[std::size_t(proxy)];
     I2D_ASSERT(leaf != null_index && nodes_[leaf].is_leaf());
     moved_leaves_.push_back(leaf);
-    for (int32_t index = leaf; index != null_index && !nodes_[index].moved_below; index = nodes_[index].parent) {
-        nodes_[index].moved_below = true;
-    }
+    set_flag_up_from(leaf, &TreeNode::moved_below, true);
 }
 
 void DynamicTree::clear_moved_marks() {
     for (const int32_t leaf : moved_leaves_) {
-        for (int32_t index = leaf; index != null_index && nodes_[index].moved_below; index = nodes_[index].parent) {
-            nodes_[index].moved_below = false;
-        }
+        set_flag_up_from(leaf, &TreeNode::moved_below, false);
     }
     moved_leaves_.clear();
 }
@@ -120,10 +116,7 @@ void DynamicTree::clear_moved_marks() {
 void DynamicTree::move_proxy_in_place_at(int32_t leaf, const AABB& fat_aabb) {
     I2D_ASSERT(nodes_[leaf].is_leaf());
     nodes_[leaf].aabb = fat_aabb;
-    for (int32_t index = nodes_[leaf].parent; index != null_index && !nodes_[index].grown;
-         index = nodes_[index].parent) {
-        nodes_[index].grown = true;
-    }
+    set_flag_up_from(nodes_[leaf].parent, &TreeNode::grown, true);
 }
 
 // Branch and bound down one path: the cost of making node X the new leaf's sibling is

@@ -182,6 +182,14 @@ public:
 private:
     /// No leaf has moved in place since the last rebuild_grown(): every box is current.
     bool answers_queries() const { return root_ == null_index || !nodes_[root_].grown; }
+    /// Sets a node's flag to `value`, and its ancestors' up to the first that has it already:
+    /// a flag that says something of the nodes below (grown, moved_below) is set on whole
+    /// paths from the root, so the one found set has its ancestors set too.
+    void set_flag_up_from(int32_t node, bool TreeNode::*flag, bool value) {
+        for (int32_t index = node; index != null_index && nodes_[index].*flag != value; index = nodes_[index].parent) {
+            nodes_[index].*flag = value;
+        }
+    }
     void prefetch_node(int32_t node) const {
 #if defined(__GNUC__)
         __builtin_prefetch(&nodes_[node]);
