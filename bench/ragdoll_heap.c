@@ -10,10 +10,13 @@
  * a foreign limb between its bodies: 60 mm is about an arm's thickness), and when every body
  * slept. Deterministic: the same figures on every run and worker count.
  *
- * Usage: impulse2d_ragdoll_heap [--count N] [--spacings S,S,...] [--seconds T] [--no-continuous]
+ * Usage: impulse2d_ragdoll_heap [--count N] [--spacings S,S,...] [--height H] [--seconds T]
+ *                               [--no-continuous]
  *   --count N          ragdolls, 1..1000; default 100 (ten layers)
  *   --spacings LIST    metres between neighbours in a layer, each 0.3..2; default
  *                      0.78,0.79,0.8,0.81,0.82,0.83,0.85
+ *   --height H         metres from the ground to the lowest layer's feet, 0..100; default 2
+ *                      (--count 1 --height 20: one ragdoll landing at 20 m/s, no heap)
  *   --seconds T        the longest a heap is stepped waiting for sleep, 1..600; default 30
  *   --no-continuous    continuous collision off
  * Exit status: 0 every heap ran, 2 bad usage, 3 an i2d call failed. Never an assertion on the
@@ -39,16 +42,17 @@ enum { EXIT_OK = 0, EXIT_USAGE = 2, EXIT_API_ERROR = 3 };
 #define SUBSTEPS 4
 
 static const float time_step = 1.0f / 60.0f;
-static const float drop_height = 2.0f;  /* m: the lowest layer's feet above the ground */
 static const float layer_height = 2.0f; /* m between layers */
 static const float feet_above_spawn = 0.275f; /* m: where bench_ragdoll_create puts the feet */
 static const double held_open_gap = 0.06;     /* m: about an arm's thickness */
 static const double open_gap = 0.02;          /* m */
 static const float min_spacing = 0.3f, max_spacing = 2.0f; /* m */
+static const double max_height = 100.0;                     /* m */
 
 typedef struct options {
     int32_t count;
     int32_t seconds;
+    float height; /* m: the lowest layer's feet above the ground */
     bool continuous;
     int32_t spacing_count;
     float spacings[MAX_SPACINGS];
@@ -83,10 +87,21 @@ static bool parse_spacings(const char* text, options* opt) {
     }
 }
 
+static bool parse_height(const char* text, float* out) {
+    char* end = NULL;
+    const double value = text ? strtod(text, &end) : -1.0;
+    if (!text || end == text || *end != '\0' || !(value >= 0.0 && value <= max_height)) {
+        return false;
+    }
+    *out = (float)value;
+    return true;
+}
+
 static bool parse_options(int argc, char** argv, options* opt) {
     int i;
     opt->count = 100;
     opt->seconds = 30;
+    opt->height = 2.0f;
     opt->continuous = true;
     parse_spacings("0.78,0.79,0.8,0.81,0.82,0.83,0.85", opt);
     for (i = 1; i < argc; ++i) {
@@ -98,13 +113,15 @@ static bool parse_options(int argc, char** argv, options* opt) {
             ++i;
         } else if (strcmp(arg, "--spacings") == 0 && parse_spacings(value, opt)) {
             ++i;
+        } else if (strcmp(arg, "--height") == 0 && parse_height(value, &opt->height)) {
+            ++i;
         } else if (strcmp(arg, "--no-continuous") == 0) {
             opt->continuous = false;
         } else {
             fprintf(stderr,
                     "usage: impulse2d_ragdoll_heap [--count 1..%d] [--spacings S,S,... (each %.1f..%.1f m)] "
-                    "[--seconds 1..600] [--no-continuous]\n",
-                    MAX_RAGDOLLS, (double)min_spacing, (double)max_spacing);
+                    "[--height 0..%.0f m] [--seconds 1..600] [--no-continuous]\n",
+                    MAX_RAGDOLLS, (double)min_spacing, (double)max_spacing, max_height);
             return false;
         }
     }
@@ -135,7 +152,7 @@ static i2d_world_id build_heap(const options* opt, float spacing, bench_ragdoll*
     for (i = 0; i < opt->count; ++i) {
         const int32_t layer = i / PER_LAYER, column = i % PER_LAYER;
         const i2d_vec2 spawn = {spacing * ((float)column - 0.5f * (float)(PER_LAYER - 1)),
-                                drop_height + layer_height * (float)layer - feet_above_spawn};
+                                opt->height + layer_height * (float)layer - feet_above_spawn};
         const bench_ragdoll_def def = bench_default_ragdoll_def(spawn, i + 1);
         if (!bench_ragdoll_create(world, &def, &dolls[i])) {
             i2d_world_destroy(world);
@@ -218,9 +235,9 @@ int main(int argc, char** argv) {
         return EXIT_USAGE;
     }
     bench_print_build_line(stdout, "impulse2d_ragdoll_heap");
-    printf("# %d ragdolls in layers of %d, %.0f m apart from %.0f m up; 1/60 s steps, %d substeps; continuous "
+    printf("# %d ragdolls in layers of %d, %.0f m apart from %.1f m up; 1/60 s steps, %d substeps; continuous "
            "collision %s; up to %d s\n",
-           (int)opt.count, PER_LAYER, (double)layer_height, (double)drop_height, SUBSTEPS,
+           (int)opt.count, PER_LAYER, (double)layer_height, (double)opt.height, SUBSTEPS,
            opt.continuous ? "on" : "off", (int)opt.seconds);
     printf("# widest: the widest joint gap after any step (anchors' distance), at that step and joint (the bone\n"
            "# the joint holds); >20/>60 mm: steps whose widest gap passed 20 or 60 mm (60: a limb's thickness)\n");
