@@ -377,6 +377,42 @@ I2D_TEST(det_rollback_eight_frames_back_and_again_gives_the_same_bits) {
 
 // A state restores only into its own world, as its structure stood; truncated, changed
 // or foreign bytes are refused; each refusal leaves the world as it was.
+// A contact keeps only the points it has (format 6): two worlds alike but for a box lying
+// flat (two points) where the other has a ball (one point) differ in their states by one
+// point's bytes, and the ball's world goes on from its state as if never saved.
+I2D_TEST(det_rollback_state_holds_only_the_points_a_contact_has) {
+    // A point as a contact saves it: two anchors (2 x 8 bytes), its separation and two
+    // impulses (3 x 4), its feature id (4) and its base separation for recycling (4).
+    constexpr size_t point_bytes = 36;
+    const i2d_shape_def def = det::material(0.6f, 0.0f);
+    i2d_world_id worlds[2];
+    size_t sizes[2];
+    for (int kind = 0; kind < 2; ++kind) {
+        const i2d_world_def wd = i2d_default_world_def();
+        worlds[kind] = i2d_world_create(&wd);
+        det::add_ground(worlds[kind], def, 5.0f);
+        const i2d_body_id body = det::add_body(worlds[kind], I2D_BODY_DYNAMIC, i2d_vec2{0.0f, 0.5f});
+        if (kind == 0) {
+            i2d_shape_create_box(body, &def, 0.5f, 0.5f);
+        } else {
+            const i2d_circle ball = {{0.0f, 0.0f}, 0.5f};
+            i2d_shape_create_circle(body, &def, &ball);
+        }
+        step(worlds[kind], 30);
+        i2d_contact_data contact;
+        I2D_REQUIRE(i2d_body_get_contact_data(body, &contact, 1) == 1);
+        I2D_CHECK(contact.manifold.point_count == 2 - kind);
+        sizes[kind] = i2d_world_get_state_size(worlds[kind]);
+    }
+    I2D_CHECK(sizes[0] == sizes[1] + point_bytes);
+    const Bytes state = save_state(worlds[1]);
+    const std::vector<uint64_t> straight = step(worlds[1], 20);
+    I2D_REQUIRE(i2d_world_restore_state(worlds[1], state.data(), state.size()) == I2D_OK);
+    I2D_CHECK(step(worlds[1], 20) == straight);
+    i2d_world_destroy(worlds[0]);
+    i2d_world_destroy(worlds[1]);
+}
+
 I2D_TEST(det_rollback_state_refusals_leave_the_world_as_it_was) {
     const i2d_world_id world = det::mixed_scene(i2d_default_world_def());
     step(world, 20);

@@ -47,8 +47,9 @@ struct SnapshotHeader {
 // shape's opt-ins to the contact hooks (off in older snapshots). 4 added the world's
 // enable_impact_chains (on in older snapshots, as in a new world). 5 gives static bodies
 // extents of 0 (older snapshots hold the ones their shapes gave, which nothing read: they
-// load as 0).
-constexpr uint32_t snapshot_format_version = 5;
+// load as 0). 6 keeps a contact's points, feature ids and base separations only up to its
+// point count (the rest were never read; they load as a fresh contact's).
+constexpr uint32_t snapshot_format_version = 6;
 constexpr std::size_t snapshot_header_size = 48;
 
 /// Writes the header into the first snapshot_header_size bytes of `out`.

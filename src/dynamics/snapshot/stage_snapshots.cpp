@@ -17,7 +17,7 @@ namespace i2d {
 
 namespace {
 
-// Room for one contact's fields (contact_fields writes 199 bytes; the stage asserts it).
+// Room for one contact's fields (contact_fields writes at most 199 bytes; the stage asserts it).
 constexpr std::size_t contact_saved_bytes = 256;
 
 // Each entry of an awake list is a live item that knows its place.

@@ -10,6 +10,7 @@
 // islands, tree nodes) are whole in both.
 #pragma once
 
+#include <algorithm>
 #include <vector>
 
 #include "broadphase/dynamic_tree.hpp"
@@ -292,7 +293,11 @@ I2D_FORCE_INLINE void contact_fields(Io& io, C& c) {
     io(c.hit_speed);
     io(c.hit_point);
     io.check(c.hit_point >= 0 && c.hit_point < 2, "a contact's hit point is out of range");
-    for (auto& point : c.points) {
+    // Format 6 keeps only the points a contact has: the rest are never read (the points,
+    // their ids and base separations past point_count), and load as a fresh contact's.
+    const int32_t kept_points = io.has_version(6) ? std::clamp(c.point_count, 0, 2) : 2;
+    for (int32_t i = 0; i < kept_points; ++i) {
+        auto& point = c.points[i];
         io(point.anchor_a);
         io(point.anchor_b);
         io(point.separation);
@@ -306,10 +311,19 @@ I2D_FORCE_INLINE void contact_fields(Io& io, C& c) {
         io(edge.prev_key);
         io(edge.next_key);
     }
-    io(c.point_ids[0]);
-    io(c.point_ids[1]);
-    io(c.base_separations[0]);
-    io(c.base_separations[1]);
+    for (int32_t i = 0; i < kept_points; ++i) {
+        io(c.point_ids[i]);
+    }
+    for (int32_t i = 0; i < kept_points; ++i) {
+        io(c.base_separations[i]);
+    }
+    if constexpr (Io::loading) {
+        for (int32_t i = kept_points; i < 2; ++i) {
+            c.points[i] = ContactPoint{};
+            c.point_ids[i] = 0u;
+            c.base_separations[i] = 0.0f;
+        }
+    }
     io(c.made_rotation_a);
     io(c.made_rotation_b);
     io(c.made_relative_pose);
