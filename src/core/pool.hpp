@@ -129,10 +129,10 @@ template <class T>
 template <class Io, class Fields>
 void Pool<T>::load(Io& io, Fields&& fields) {
     const int32_t slots = io.count(3, max_slots, "a pool has more slots than the bytes left could hold");
-    // Emptied but not freed: a pool loaded again and again (a rollback) allocates nothing.
-    items_.clear();
-    generations_.clear();
-    alive_.clear();
+    // Resized, not emptied: a pool loaded again and again (a rollback) neither allocates
+    // nor builds every slot afresh. A live slot's item is wholly written by fields (each
+    // struct's field list names every member); a free slot is never read (allocate()
+    // makes it afresh).
     free_.clear();
     count_ = 0;
     items_.resize(std::size_t(slots));
@@ -151,17 +151,20 @@ void Pool<T>::load(Io& io, Fields&& fields) {
         }
     }
     const int32_t free_count = io.count(4, slots, "a pool's free list is longer than its slots");
-    std::vector<uint8_t> listed(std::size_t(slots), 0);
+    // A listed slot is marked in alive_ while the list is read (no table of its own).
+    constexpr uint8_t listed = 2;
     for (int32_t k = 0; k < free_count && !io.failed(); ++k) {
         int32_t index = 0;
         io(index);
         if (!io.check(index >= 0 && index < slots, "a pool's free list names a slot out of range") ||
-            !io.check(alive_[std::size_t(index)] == 0 && listed[std::size_t(index)] == 0,
-                      "a pool's free list names a live slot or one slot twice")) {
+            !io.check(alive_[std::size_t(index)] == 0, "a pool's free list names a live slot or one slot twice")) {
             break;
         }
-        listed[std::size_t(index)] = 1;
+        alive_[std::size_t(index)] = listed;
         free_.push_back(index);
+    }
+    for (const int32_t index : free_) {
+        alive_[std::size_t(index)] = 0;
     }
 }
 
