@@ -130,9 +130,9 @@ template <class Io, class Fields>
 void Pool<T>::load(Io& io, Fields&& fields) {
     const int32_t slots = io.count(3, max_slots, "a pool has more slots than the bytes left could hold");
     // Resized, not emptied: a pool loaded again and again (a rollback) neither allocates
-    // nor builds every slot afresh. A live slot's item is wholly written by fields (each
-    // struct's field list names every member); a free slot is never read (allocate()
-    // makes it afresh).
+    // nor builds every slot afresh. A live slot's item is wholly written as it loads (by
+    // fields, or by what its owner derives from the rest); a free slot is never read
+    // (allocate() makes it afresh).
     free_.clear();
     count_ = 0;
     items_.resize(std::size_t(slots));

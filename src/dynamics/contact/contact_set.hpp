@@ -161,6 +161,8 @@ private:
     void remove_awake(int32_t contact);
     void mix_material(Contact& contact, const Shape& a, const Shape& b) const;
     bool is_awake(int32_t body) const { return bodies_[body].awake_index != null_index; }
+    // snapshot/stage_snapshots.cpp
+    void derive_shape_fields(LoadIo& io);
     // contact_pairs.cpp
     // A pair-finding stage's argument: its list of each block's pairs.
     struct PairStage {

@@ -48,7 +48,8 @@ struct SnapshotHeader {
 // enable_impact_chains (on in older snapshots, as in a new world). 5 gives static bodies
 // extents of 0 (older snapshots hold the ones their shapes gave, which nothing read: they
 // load as 0). 6 keeps a contact's points, feature ids and base separations only up to its
-// point count (the rest were never read; they load as a fresh contact's).
+// point count (the rest were never read; they load as a fresh contact's), and leaves out
+// its edges' bodies and its mixed material, which its shapes give.
 constexpr uint32_t snapshot_format_version = 6;
 constexpr std::size_t snapshot_header_size = 48;
 

@@ -17,7 +17,7 @@ namespace i2d {
 
 namespace {
 
-// Room for one contact's fields (contact_fields writes at most 199 bytes; the stage asserts it).
+// Room for one contact's fields (contact_fields writes under 200 bytes; the stage asserts it).
 constexpr std::size_t contact_saved_bytes = 256;
 
 // Each entry of an awake list is a live item that knows its place.
@@ -68,6 +68,9 @@ void ContactSet::save(SaveIo& io) const {
 
 void ContactSet::load(LoadIo& io) {
     pool_.load(io, [](LoadIo& in, Contact& c) { contact_fields(in, c); });
+    if (io.has_version(6)) {
+        derive_shape_fields(io);
+    }
     list_fields(io, awake_, Pool<Contact>::max_slots, "the awake contacts are more than the bytes left could hold");
     check_awake_list(io, awake_, pool_, "the awake contact list and the contacts disagree");
     pair_set_.clear();
@@ -83,6 +86,24 @@ void ContactSet::load(LoadIo& io) {
     solvable_.clear();
     link_changes_.clear();
     ++layout_version_;
+}
+
+// What format 6 leaves out because the shapes say it: each edge's body and the mixed
+// material, for contacts whose shapes are there (check_loaded refuses the rest).
+void ContactSet::derive_shape_fields(LoadIo& io) {
+    for (int32_t i = 0; i < pool_.capacity() && !io.failed(); ++i) {
+        if (!pool_.is_live(i)) {
+            continue;
+        }
+        Contact& c = pool_[i];
+        if (io.check(shapes_.is_live(c.shape_a) && shapes_.is_live(c.shape_b), "a contact names a missing shape")) {
+            const Shape& a = shapes_[c.shape_a];
+            const Shape& b = shapes_[c.shape_b];
+            c.edges[0].body = a.body;
+            c.edges[1].body = b.body;
+            mix_material(c, a, b);
+        }
+    }
 }
 
 void ContactSet::swap_state(ContactSet& other) noexcept {

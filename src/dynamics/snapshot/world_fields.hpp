@@ -285,10 +285,14 @@ I2D_FORCE_INLINE void contact_fields(Io& io, C& c) {
     io(c.state_a);
     io(c.state_b);
     io(c.rolling_impulse);
-    io(c.friction);
-    io(c.restitution);
-    io(c.rolling_resistance);
-    io(c.tangent_speed);
+    // Format 6 mixes the material again from the shapes as it loads (ContactSet::load),
+    // as the contact did when it was made and whenever a shape's material changed since.
+    if (!io.has_version(6)) {
+        io(c.friction);
+        io(c.restitution);
+        io(c.rolling_resistance);
+        io(c.tangent_speed);
+    }
     io(c.awake_index);
     io(c.hit_speed);
     io(c.hit_point);
@@ -307,7 +311,9 @@ I2D_FORCE_INLINE void contact_fields(Io& io, C& c) {
     io(c.shape_a);
     io(c.shape_b);
     for (auto& edge : c.edges) {
-        io(edge.body);
+        if (!io.has_version(6)) {
+            io(edge.body);  // format 6: the body of the edge's shape, set as the contact loads
+        }
         io(edge.prev_key);
         io(edge.next_key);
     }
