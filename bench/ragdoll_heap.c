@@ -6,9 +6,9 @@
  *
  * For each spacing it prints the widest joint gap (the distance between a joint's two anchors
  * in the world, after each step) with the step and joint where it was, how many steps the
- * widest gap of the heap stayed above 20 mm and above 60 mm (a joint held open that long has
- * a foreign limb between its bodies: 60 mm is about an arm's thickness), and when every body
- * slept. Deterministic: the same figures on every run and worker count.
+ * widest gap of the heap stayed above 20 mm and above 60 mm (a joint held open that long
+ * likely has another ragdoll's limb between its bodies: 60 mm is about an arm's thickness),
+ * and when every body slept. Deterministic: the same figures on every run.
  *
  * Usage: impulse2d_ragdoll_heap [--count N] [--spacings S,S,...] [--height H] [--seconds T]
  *                               [--no-continuous]
