@@ -375,8 +375,6 @@ I2D_TEST(det_rollback_eight_frames_back_and_again_gives_the_same_bits) {
     }
 }
 
-// A state restores only into its own world, as its structure stood; truncated, changed
-// or foreign bytes are refused; each refusal leaves the world as it was.
 // A contact keeps only the points it has (format 6): two worlds alike but for a box lying
 // flat (two points) where the other has a ball (one point) differ in their states by one
 // point's bytes, and the ball's world goes on from its state as if never saved.
@@ -413,6 +411,8 @@ I2D_TEST(det_rollback_state_holds_only_the_points_a_contact_has) {
     i2d_world_destroy(worlds[1]);
 }
 
+// A state restores only into its own world, as its structure stood; truncated, changed
+// or foreign bytes are refused; each refusal leaves the world as it was.
 I2D_TEST(det_rollback_state_refusals_leave_the_world_as_it_was) {
     const i2d_world_id world = det::mixed_scene(i2d_default_world_def());
     step(world, 20);
